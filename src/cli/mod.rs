@@ -1,0 +1,110 @@
+//! The command-line surface (clap derive): one file per subcommand, errors mapped to exit codes.
+
+mod completions;
+mod params;
+mod ports;
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use clap::{Parser, Subcommand};
+
+use crate::exit::Exit;
+use crate::profile::Profile;
+
+/// Terminal and scripting shell for TMCL and SMD4 stepper-motor modules.
+#[derive(Debug, Parser)]
+#[command(name = "tmclsh", version, about, long_about = None, max_term_width = 100)]
+pub struct Cli {
+    /// Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables.
+    #[arg(long, global = true, value_name = "FILE", env = "TMCLSH_PROFILE")]
+    pub profile: Option<PathBuf>,
+
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Print the module's axis and global parameters (those matching FILTER).
+    Params(params::ParamsArgs),
+    /// List the serial ports of this machine.
+    Ports,
+    /// Print a shell completion script.
+    Completions(completions::CompletionsArgs),
+}
+
+/// Parses the process arguments and runs; returns the exit code.
+pub fn main() -> Exit {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            let _ = e.print();
+            return if e.use_stderr() {
+                Exit::Refused
+            } else {
+                Exit::Success
+            };
+        }
+    };
+    let mut stdout = std::io::stdout().lock();
+    match run(cli, &mut stdout) {
+        Ok(exit) => exit,
+        Err(failure) => {
+            eprintln!("tmclsh: {}", failure.message);
+            failure.exit
+        }
+    }
+}
+
+/// An error on its way to stderr, with the exit code it means.
+#[derive(Debug)]
+pub struct Failure {
+    /// What to print.
+    pub message: String,
+    /// The exit code.
+    pub exit: Exit,
+}
+
+impl Failure {
+    fn new(exit: Exit, message: impl Into<String>) -> Self {
+        Failure {
+            message: message.into(),
+            exit,
+        }
+    }
+}
+
+/// Runs a parsed command line, printing results to `out`.
+pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
+    let profile = load_profile(&cli)?;
+    let result = match cli.command {
+        Some(Command::Params(args)) => params::run(&args, &profile, out),
+        Some(Command::Ports) => ports::run(out),
+        Some(Command::Completions(args)) => completions::run(&args, out),
+        None => {
+            let mut help = <Cli as clap::CommandFactory>::command();
+            write!(out, "{}", help.render_help())
+        }
+    };
+    match result {
+        Ok(()) => Ok(Exit::Success),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
+        Err(e) => Err(Failure::new(Exit::Link, e.to_string())),
+    }
+}
+
+fn load_profile(cli: &Cli) -> Result<Arc<Profile>, Failure> {
+    match &cli.profile {
+        None => Ok(Profile::builtin()),
+        Some(path) => Profile::from_file(path)
+            .map(Arc::new)
+            .map_err(|e| Failure::new(Exit::Refused, e.to_string())),
+    }
+}
+
+/// The clap command, for completions and docs.
+pub fn command() -> clap::Command {
+    <Cli as clap::CommandFactory>::command()
+}

@@ -1,0 +1,15 @@
+//! tmclsh — a terminal and scripting shell for the ASCII command interfaces of stepper-motor
+//! modules: Trinamic modules speaking TMCL (TMCM-142 first) and AML SMD4 drives.
+//!
+//! The library holds everything; the `tmclsh` binary only parses arguments and maps errors to exit
+//! codes. Protocols are pure code ([`protocol`]), module tables are data ([`profile`]), and every
+//! face — the REPL, one-shot `-c` lines, piped stdin and Rhai scripts — goes through the same
+//! session to a link: a serial port, a TCP socket or the built-in simulated module.
+#![deny(missing_docs)]
+
+pub mod cli;
+pub mod exit;
+pub mod link;
+pub mod profile;
+pub mod protocol;
+pub mod suggest;

@@ -1,0 +1,65 @@
+//! Links: the byte pipes between tmclsh and a module — a serial port, a TCP socket, or the
+//! built-in simulator in-process. Small on purpose: send, receive before a deadline, describe,
+//! discard stale input, reopen after the link was lost.
+
+mod serial;
+mod tcp;
+
+use std::io;
+use std::time::Instant;
+
+pub use serial::SerialLink;
+pub use tcp::TcpLink;
+
+/// Why a link operation failed.
+#[derive(Debug, thiserror::Error)]
+pub enum LinkError {
+    /// Nothing arrived before the deadline.
+    #[error("timed out")]
+    Timeout,
+    /// The other end is gone (USB unplugged, TCP peer closed, simulator exited).
+    #[error("link lost: {0}")]
+    Lost(String),
+    /// The link could not be opened.
+    #[error("{0}")]
+    Open(String),
+}
+
+impl LinkError {
+    /// Classifies an I/O error: time-outs stay time-outs, everything else means the link is gone.
+    pub fn from_io(error: io::Error) -> LinkError {
+        match error.kind() {
+            io::ErrorKind::TimedOut | io::ErrorKind::WouldBlock => LinkError::Timeout,
+            _ => LinkError::Lost(error.to_string()),
+        }
+    }
+}
+
+/// A bidirectional byte link to one bus of modules.
+pub trait Link: Send {
+    /// Writes all of `bytes`.
+    fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError>;
+
+    /// Waits until at least one byte arrives or `deadline` passes; returns the number of bytes
+    /// read into `buf` (never 0), or [`LinkError::Timeout`].
+    fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError>;
+
+    /// Drops bytes that have already arrived (stale replies, line noise), without waiting.
+    fn discard_input(&mut self) -> Result<(), LinkError>;
+
+    /// What the link talks to, for banners and messages ("serial /dev/ttyUSB0 at 9600 baud").
+    fn describe(&self) -> String;
+
+    /// Opens the link again after it was lost. The default cannot.
+    fn reopen(&mut self) -> Result<(), LinkError> {
+        Err(LinkError::Open(format!(
+            "{} cannot be reopened",
+            self.describe()
+        )))
+    }
+
+    /// Seconds per byte on the wire, where the link knows it (serial: 10 bits per byte).
+    fn byte_time(&self) -> Option<std::time::Duration> {
+        None
+    }
+}

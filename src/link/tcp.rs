@@ -1,0 +1,101 @@
+//! TCP connections (Ethernet modules, serial servers, `tmclsh sim --listen`).
+
+use std::io::{Read, Write};
+use std::net::{TcpStream, ToSocketAddrs};
+use std::time::{Duration, Instant};
+
+use super::{Link, LinkError};
+
+/// An open TCP connection.
+pub struct TcpLink {
+    address: String,
+    stream: TcpStream,
+}
+
+impl TcpLink {
+    /// Connects to `address` (`host:port`), giving up after `timeout`.
+    pub fn connect(address: &str, timeout: Duration) -> Result<Self, LinkError> {
+        let stream = connect(address, timeout)?;
+        Ok(TcpLink {
+            address: address.to_string(),
+            stream,
+        })
+    }
+}
+
+fn connect(address: &str, timeout: Duration) -> Result<TcpStream, LinkError> {
+    let fail =
+        |e: &dyn std::fmt::Display| LinkError::Open(format!("cannot connect to {address}: {e}"));
+    let addrs = address.to_socket_addrs().map_err(|e| fail(&e))?;
+    let mut last = None;
+    for addr in addrs {
+        match TcpStream::connect_timeout(&addr, timeout) {
+            Ok(stream) => {
+                stream.set_nodelay(true).map_err(|e| fail(&e))?;
+                return Ok(stream);
+            }
+            Err(e) => last = Some(e),
+        }
+    }
+    Err(match last {
+        Some(e) => fail(&e),
+        None => fail(&"no address"),
+    })
+}
+
+impl Link for TcpLink {
+    fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
+        self.stream.write_all(bytes).map_err(LinkError::from_io)
+    }
+
+    fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
+        let wait = deadline.saturating_duration_since(Instant::now());
+        if wait.is_zero() {
+            return Err(LinkError::Timeout);
+        }
+        self.stream
+            .set_read_timeout(Some(wait))
+            .map_err(LinkError::from_io)?;
+        match self.stream.read(buf) {
+            Ok(0) => Err(LinkError::Lost(format!(
+                "{} closed the connection",
+                self.address
+            ))),
+            Ok(n) => Ok(n),
+            Err(e) => Err(LinkError::from_io(e)),
+        }
+    }
+
+    fn discard_input(&mut self) -> Result<(), LinkError> {
+        self.stream
+            .set_nonblocking(true)
+            .map_err(LinkError::from_io)?;
+        let mut buf = [0u8; 512];
+        let result = loop {
+            match self.stream.read(&mut buf) {
+                Ok(0) => {
+                    break Err(LinkError::Lost(format!(
+                        "{} closed the connection",
+                        self.address
+                    )));
+                }
+                Ok(_) => continue,
+                Err(e) if e.kind() == std::io::ErrorKind::WouldBlock => break Ok(()),
+                Err(e) => break Err(LinkError::from_io(e)),
+            }
+        };
+        self.stream
+            .set_nonblocking(false)
+            .map_err(LinkError::from_io)?;
+        result
+    }
+
+    fn describe(&self) -> String {
+        format!("tcp {}", self.address)
+    }
+
+    fn reopen(&mut self) -> Result<(), LinkError> {
+        self.stream = connect(&self.address, Duration::from_secs(2))?;
+        Ok(())
+    }
+}

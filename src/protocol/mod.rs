@@ -1,0 +1,3 @@
+//! Protocol dialects spoken by the modules tmclsh talks to.
+
+pub mod tmcl;

@@ -1,0 +1,122 @@
+//! The command-line surface: `params`, `completions`, `ports`, usage errors and exit codes.
+
+use crate::util::{code, repo, run, stderr, stdout, tempdir};
+
+#[test]
+fn params_filter_lists_the_matching_parameters() {
+    let out = run(&["params", "max"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    let names: Vec<&str> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split_whitespace().nth(2).unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "max_positioning_speed",
+            "max_acceleration",
+            "max_current",
+            "max_encoder_deviation"
+        ]
+    );
+    assert!(
+        text.lines().next().unwrap().starts_with("kind"),
+        "header: {text}"
+    );
+}
+
+#[test]
+fn params_without_filter_lists_axis_and_global_parameters() {
+    let text = stdout(&run(&["params"]));
+    assert!(text.contains("actual_position"));
+    let host = text
+        .lines()
+        .find(|l| l.contains("serial_host_address"))
+        .expect("GP 76 listed");
+    assert_eq!(
+        host.split_whitespace().take(4).collect::<Vec<_>>(),
+        ["global/0", "76", "serial_host_address", "RWE"]
+    );
+    assert!(text.contains("user_variable_55"));
+}
+
+#[test]
+fn params_with_a_filter_that_matches_nothing_says_so() {
+    let out = run(&["params", "no_such_thing"]);
+    assert_eq!(code(&out), 0);
+    assert!(stdout(&out).is_empty());
+    assert!(stderr(&out).contains("no TMCM-142 parameter matches 'no_such_thing'"));
+}
+
+#[test]
+fn a_user_profile_replaces_the_builtin_tables() {
+    let dir = tempdir();
+    let path = dir.join("custom.toml");
+    std::fs::write(
+        &path,
+        "[meta]\nmodule = \"TMCM-X\"\n[[axis_parameter]]\nnumber = 9\nname = \"Max thing\"\nident = \"max_thing\"\naccess = \"RW\"\n",
+    )
+    .unwrap();
+    let out = run(&["--profile", path.to_str().unwrap(), "params", "max"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(stdout(&out).contains("max_thing"));
+    assert!(!stdout(&out).contains("max_current"));
+}
+
+#[test]
+fn a_broken_profile_is_refused_with_exit_2() {
+    let dir = tempdir();
+    let path = dir.join("broken.toml");
+    std::fs::write(&path, "[meta]\nmodule = 5\n").unwrap();
+    let out = run(&["--profile", path.to_str().unwrap(), "params"]);
+    assert_eq!(code(&out), 2);
+    assert!(
+        stderr(&out).contains("does not follow the profile schema"),
+        "{}",
+        stderr(&out)
+    );
+    let out = run(&["--profile", "/nonexistent.toml", "params"]);
+    assert_eq!(code(&out), 2);
+    assert!(stderr(&out).contains("cannot read profile /nonexistent.toml"));
+}
+
+#[test]
+fn usage_errors_exit_2_and_help_exits_0() {
+    let out = run(&["--no-such-flag"]);
+    assert_eq!(code(&out), 2);
+    assert!(stderr(&out).contains("--no-such-flag"));
+    let out = run(&["--help"]);
+    assert_eq!(code(&out), 0);
+    assert!(stdout(&out).contains("Usage: tmclsh"));
+    let out = run(&["completions", "tcsh"]);
+    assert_eq!(code(&out), 2);
+}
+
+#[test]
+fn ports_lists_without_failing() {
+    let out = run(&["ports"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+}
+
+#[test]
+fn committed_completions_match_what_the_binary_generates() {
+    let files = [
+        ("bash", "tmclsh.bash"),
+        ("zsh", "_tmclsh"),
+        ("fish", "tmclsh.fish"),
+        ("elvish", "tmclsh.elv"),
+        ("powershell", "_tmclsh.ps1"),
+    ];
+    for (shell, file) in files {
+        let out = run(&["completions", shell]);
+        assert_eq!(code(&out), 0);
+        let committed = std::fs::read(repo().join("completions").join(file))
+            .unwrap_or_else(|e| panic!("completions/{file}: {e}"));
+        assert!(
+            committed == out.stdout,
+            "completions/{file} is stale; regenerate with: cargo run -q -- completions {shell} > completions/{file}"
+        );
+    }
+}

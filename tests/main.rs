@@ -1,0 +1,6 @@
+//! Integration tests: the real `tmclsh` binary, over pseudo-terminals and loopback TCP, against
+//! the simulator. One test binary keeps link times low (see TESTING.md).
+
+mod util;
+
+mod cli;
