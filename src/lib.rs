@@ -12,4 +12,5 @@ pub mod exit;
 pub mod link;
 pub mod profile;
 pub mod protocol;
+pub mod sim;
 pub mod suggest;
