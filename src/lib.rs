@@ -12,5 +12,6 @@ pub mod exit;
 pub mod link;
 pub mod profile;
 pub mod protocol;
+pub mod session;
 pub mod sim;
 pub mod suggest;

@@ -41,7 +41,8 @@ pub trait Link: Send {
     fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError>;
 
     /// Waits until at least one byte arrives or `deadline` passes; returns the number of bytes
-    /// read into `buf` (never 0), or [`LinkError::Timeout`].
+    /// read into `buf` (never 0), or [`LinkError::Timeout`]. A deadline already past still
+    /// returns bytes that have arrived, without waiting.
     fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError>;
 
     /// Drops bytes that have already arrived (stale replies, line noise), without waiting.

@@ -63,6 +63,8 @@ pub(crate) struct CommandRow {
     pub value_range: Option<[i64; 2]>,
     pub param_use: Option<String>,
     #[serde(default)]
+    pub starts_motion: bool,
+    #[serde(default)]
     pub uncertain: bool,
 }
 

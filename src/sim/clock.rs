@@ -22,7 +22,9 @@ pub struct SystemClock {
 impl SystemClock {
     /// A clock starting now.
     pub fn new() -> Self {
-        SystemClock { start: Instant::now() }
+        SystemClock {
+            start: Instant::now(),
+        }
     }
 }
 
@@ -56,7 +58,8 @@ impl ManualClock {
 
     /// Moves time forward.
     pub fn advance(&self, duration: Duration) {
-        self.micros.fetch_add(duration.as_micros() as u64, Ordering::SeqCst);
+        self.micros
+            .fetch_add(duration.as_micros() as u64, Ordering::SeqCst);
     }
 }
 

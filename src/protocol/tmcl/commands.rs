@@ -145,6 +145,8 @@ pub struct CommandSpec {
     pub value_range: Option<(i64, i64)>,
     /// What the command does with its parameter, for commands that name one.
     pub param_use: Option<ParamUse>,
+    /// Whether the command can set the motor moving (an aborted run stops such modules).
+    pub starts_motion: bool,
     /// Whether the entry is best knowledge rather than confirmed.
     pub uncertain: bool,
 }
@@ -291,6 +293,7 @@ impl CommandTable {
                         ));
                     }
                 },
+                starts_motion: row.starts_motion,
                 uncertain: row.uncertain,
             });
         }

@@ -1,0 +1,107 @@
+//! Sessions: the only place where a protocol meets I/O. A session owns a link and speaks one
+//! dialect over it — entering the module's ASCII mode, stripping echoes, matching replies to the
+//! addressed module, timing out with a clear error, resynchronising, logging the transcript, and
+//! stopping motors it set moving when a run is aborted. The REPL, `-c` lines, piped stdin and
+//! Rhai scripts all go through the same session.
+
+pub mod interrupt;
+pub mod tmcl;
+pub mod transcript;
+
+use std::time::Duration;
+
+use crate::exit::{Exit, ExitStatus};
+use crate::protocol::tmcl::{InputError, Status};
+
+pub use transcript::Transcript;
+
+/// Settings shared by every dialect's session.
+#[derive(Debug, Clone)]
+pub struct SessionOptions {
+    /// The module addressed by lines without an address character (`--module`).
+    pub module: u8,
+    /// How long to wait for a reply (`--timeout`).
+    pub timeout: Duration,
+    /// Refuse invalid lines before sending (off with `--no-validate`).
+    pub validate: bool,
+    /// Send the enter-ASCII-mode frame on open (off with `--no-enter`).
+    pub enter: bool,
+    /// Leave modules in ASCII mode on exit (`--stay-ascii`).
+    pub stay_ascii: bool,
+}
+
+impl Default for SessionOptions {
+    fn default() -> Self {
+        SessionOptions {
+            module: 1,
+            timeout: Duration::from_millis(1000),
+            validate: true,
+            enter: true,
+            stay_ascii: false,
+        }
+    }
+}
+
+/// Why a request failed.
+#[derive(Debug, thiserror::Error)]
+pub enum SessionError {
+    /// The line was refused before sending.
+    #[error("{0}")]
+    Refused(#[from] InputError),
+    /// A helper command or argument was wrong.
+    #[error("{0}")]
+    Usage(String),
+    /// The module answered with an error status.
+    #[error("module {module} refused '{sent}': status {status}")]
+    Device {
+        /// The module's address character.
+        module: char,
+        /// The line sent.
+        sent: String,
+        /// The status it answered.
+        status: Status,
+    },
+    /// Nothing (usable) came back in time.
+    #[error("no reply from module {module} within {} ms{hint}", timeout.as_millis())]
+    Timeout {
+        /// The module's address character.
+        module: char,
+        /// How long we waited.
+        timeout: Duration,
+        /// What may be wrong.
+        hint: String,
+    },
+    /// The link could not be opened, or what came back was not a usable reply.
+    #[error("{0}")]
+    Link(String),
+    /// The link is gone (USB unplugged, TCP peer closed).
+    #[error("link lost: {0}")]
+    Lost(String),
+    /// Ctrl-C.
+    #[error("interrupted")]
+    Interrupted,
+}
+
+impl ExitStatus for SessionError {
+    fn exit(&self) -> Exit {
+        match self {
+            SessionError::Refused(_) | SessionError::Usage(_) => Exit::Refused,
+            SessionError::Device { .. } => Exit::DeviceError,
+            SessionError::Timeout { .. } | SessionError::Link(_) | SessionError::Lost(_) => {
+                Exit::Link
+            }
+            SessionError::Interrupted => Exit::Interrupted,
+        }
+    }
+}
+
+impl From<crate::link::LinkError> for SessionError {
+    fn from(error: crate::link::LinkError) -> Self {
+        use crate::link::LinkError;
+        match error {
+            LinkError::Lost(message) => SessionError::Lost(message),
+            LinkError::Open(message) => SessionError::Link(message),
+            LinkError::Timeout => SessionError::Link("timed out".into()),
+        }
+    }
+}

@@ -1,0 +1,500 @@
+//! Session logic against a small scripted module whose quirks each test chooses (echo mode, line
+//! endings, 139 reply, noise). The real simulator over ptys is exercised by the integration tests.
+
+use std::collections::VecDeque;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use crate::link::{Link, LinkError};
+use crate::profile::Profile;
+use crate::protocol::tmcl::frame::{CommandFrame, FrameDecoder, ReplyFrame};
+use crate::protocol::tmcl::line::{self, Op};
+use crate::protocol::tmcl::{Instruction, Status};
+
+use super::super::{SessionError, SessionOptions};
+use super::{Answer, Echo, TmclSession, WireMode};
+
+/// How the scripted module behaves.
+#[derive(Clone)]
+struct Quirks {
+    ascii: bool,
+    gp67: i32,
+    replies_to_139: bool,
+    reply_ending: &'static [u8],
+    echo_ending: &'static [u8],
+    silent: bool,
+    echo_noise: bool,
+    garbage_before_reply: &'static [u8],
+    foreign_reply_first: bool,
+}
+
+impl Default for Quirks {
+    fn default() -> Self {
+        Quirks {
+            ascii: false,
+            gp67: 0,
+            replies_to_139: true,
+            reply_ending: b"\r",
+            echo_ending: b"\r",
+            silent: false,
+            echo_noise: false,
+            garbage_before_reply: b"",
+            foreign_reply_first: false,
+        }
+    }
+}
+
+#[derive(Default)]
+struct Wire {
+    sent: Vec<u8>,
+    out: VecDeque<u8>,
+}
+
+struct FakeModule {
+    quirks: Quirks,
+    wire: Arc<Mutex<Wire>>,
+    frames: FrameDecoder,
+    line: Vec<u8>,
+    position: i32,
+}
+
+impl FakeModule {
+    fn input(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            if self.quirks.ascii {
+                self.ascii_byte(b);
+            } else {
+                self.frames.push(&[b]);
+                if let Some(Ok(frame)) = self.frames.next_frame() {
+                    self.binary_frame(CommandFrame::decode(&frame).unwrap());
+                }
+            }
+        }
+    }
+
+    fn emit(&self, bytes: &[u8]) {
+        if !self.quirks.silent {
+            self.wire.lock().unwrap().out.extend(bytes);
+        }
+    }
+
+    fn binary_frame(&mut self, frame: CommandFrame) {
+        if frame.address != 1 {
+            return;
+        }
+        let i = frame.instruction;
+        let value = if i.command == 6 && i.type_ == 1 {
+            self.position
+        } else {
+            0
+        };
+        if i.command == 139 {
+            self.quirks.ascii = true;
+            if !self.quirks.replies_to_139 {
+                return;
+            }
+        }
+        let reply = ReplyFrame {
+            host: 2,
+            module: 1,
+            status: Status::Ok,
+            command: i.command,
+            value,
+        };
+        self.emit(&reply.encode());
+    }
+
+    fn ascii_byte(&mut self, b: u8) {
+        if b != b'\r' {
+            self.line.push(b);
+            return;
+        }
+        let text = String::from_utf8_lossy(&std::mem::take(&mut self.line)).into_owned();
+        if !text.starts_with('A') {
+            return; // not addressed to us (or garbage)
+        }
+        let echo = Echo::from_gp67(self.quirks.gp67);
+        if echo != Echo::None {
+            let mut shown = text.clone().into_bytes();
+            if self.quirks.echo_noise {
+                *shown.last_mut().unwrap() ^= 0x01;
+            }
+            self.emit(&shown);
+            self.emit(self.quirks.echo_ending);
+        }
+        if self.quirks.foreign_reply_first {
+            self.emit(b"BC 100 7\r");
+        }
+        self.emit(self.quirks.garbage_before_reply);
+        let profile = Profile::builtin();
+        let (status, value) = match line::parse(&text, &profile).map(|l| l.op) {
+            Ok(Op::Command(i)) if i.command == 10 && i.type_ == 67 => (100, self.quirks.gp67),
+            Ok(Op::Command(i)) if i.command == 9 && i.type_ == 67 => {
+                self.quirks.gp67 = i.value;
+                (100, 0)
+            }
+            Ok(Op::Command(i)) if i.command == 6 && i.type_ == 1 => (100, self.position),
+            Ok(Op::Command(i)) if i.command == 5 && i.type_ == 1 => {
+                self.position = i.value;
+                (100, 0)
+            }
+            Ok(Op::Command(i)) if i.command == 6 && i.type_ == 200 => (3, 0),
+            Ok(Op::Ascii(crate::protocol::tmcl::AsciiWord::Bin)) => {
+                self.emit(b"BA 100 0");
+                self.emit(self.quirks.reply_ending);
+                self.quirks.ascii = false;
+                return;
+            }
+            Ok(_) => (100, 0),
+            Err(_) => (2, 0),
+        };
+        self.emit(format!("BA {status} {value}").as_bytes());
+        self.emit(self.quirks.reply_ending);
+    }
+}
+
+struct FakeLink {
+    module: FakeModule,
+}
+
+impl Link for FakeLink {
+    fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
+        self.module
+            .wire
+            .lock()
+            .unwrap()
+            .sent
+            .extend_from_slice(bytes);
+        self.module.input(bytes);
+        Ok(())
+    }
+
+    fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
+        let mut wire = self.module.wire.lock().unwrap();
+        if wire.out.is_empty() {
+            drop(wire);
+            // Nothing will ever arrive: the wait a real link would do until the deadline.
+            std::thread::sleep(deadline.saturating_duration_since(Instant::now()));
+            return Err(LinkError::Timeout);
+        }
+        let n = buf.len().min(wire.out.len());
+        for slot in buf.iter_mut().take(n) {
+            *slot = wire.out.pop_front().unwrap();
+        }
+        Ok(n)
+    }
+
+    fn discard_input(&mut self) -> Result<(), LinkError> {
+        self.module.wire.lock().unwrap().out.clear();
+        Ok(())
+    }
+
+    fn describe(&self) -> String {
+        "scripted module".into()
+    }
+}
+
+fn options() -> SessionOptions {
+    SessionOptions {
+        timeout: Duration::from_millis(30),
+        ..SessionOptions::default()
+    }
+}
+
+fn open_with(
+    quirks: Quirks,
+    options: SessionOptions,
+) -> (Result<TmclSession, SessionError>, Arc<Mutex<Wire>>) {
+    let wire = Arc::new(Mutex::new(Wire::default()));
+    let module = FakeModule {
+        quirks,
+        wire: wire.clone(),
+        frames: FrameDecoder::new(),
+        line: Vec::new(),
+        position: -5000,
+    };
+    let link = Box::new(FakeLink { module });
+    (
+        TmclSession::open(link, Profile::builtin(), options, None),
+        wire,
+    )
+}
+
+fn open(quirks: Quirks) -> (TmclSession, Arc<Mutex<Wire>>) {
+    let (session, wire) = open_with(quirks, options());
+    (session.expect("session opens"), wire)
+}
+
+fn sent_text(wire: &Arc<Mutex<Wire>>) -> String {
+    String::from_utf8_lossy(&wire.lock().unwrap().sent).into_owned()
+}
+
+#[test]
+fn enters_ascii_mode_reads_a_value_and_restores_binary_mode() {
+    let (mut s, wire) = open(Quirks::default());
+    assert_eq!(s.module_state(1), Some((WireMode::Ascii, Echo::Character)));
+    let x = s.execute("GAP actual_position, 0").unwrap();
+    assert_eq!(x.sent, "AGAP 1, 0");
+    assert_eq!(x.raw, "BA 100 -5000");
+    assert_eq!(
+        x.answer,
+        Answer::Reply {
+            status: Status::Ok,
+            value: -5000
+        }
+    );
+    s.close();
+    let sent = wire.lock().unwrap().sent.clone();
+    let enter = CommandFrame {
+        address: 1,
+        instruction: Instruction::new(139, 0, 0, 0),
+    }
+    .encode();
+    assert!(sent.starts_with(&enter), "139 frame first");
+    assert_eq!(sent[9], b'\r', "a CR right after the frame clears garbage");
+    assert!(sent_text(&wire).ends_with("ABIN\r"), "binary mode restored");
+}
+
+#[test]
+fn every_echo_mode_with_every_line_ending() {
+    let endings: [&'static [u8]; 4] = [b"", b"\r", b"\n", b"\r\n"];
+    for gp67 in [0x00, 0x10, 0x20] {
+        for echo_ending in endings {
+            for reply_ending in &endings[1..] {
+                let quirks = Quirks {
+                    gp67,
+                    echo_ending,
+                    reply_ending,
+                    ..Quirks::default()
+                };
+                let (mut s, _) = open(quirks);
+                for round in 0..3 {
+                    let x = s.execute(&format!("SAP 1, 0, {round}")).unwrap();
+                    assert!(
+                        x.ok(),
+                        "gp67={gp67:#x} echo_end={echo_ending:?} reply_end={reply_ending:?}"
+                    );
+                    let x = s.execute("GAP 1, 0").unwrap();
+                    assert_eq!(
+                        x.value(),
+                        Some(round),
+                        "gp67={gp67:#x} {echo_ending:?} {reply_ending:?}"
+                    );
+                    assert_eq!(x.raw, format!("BA 100 {round}"));
+                }
+                assert!(s.take_notices().is_empty(), "no noise reported");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_module_already_in_ascii_mode_is_left_in_it() {
+    let quirks = Quirks {
+        ascii: true,
+        gp67: 0x21,
+        ..Quirks::default()
+    };
+    let (mut s, wire) = open(quirks);
+    assert_eq!(s.module_state(1), Some((WireMode::Ascii, Echo::None)));
+    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    s.close();
+    assert!(
+        !sent_text(&wire).contains("BIN"),
+        "found in ASCII mode, so no BIN"
+    );
+}
+
+#[test]
+fn a_module_that_does_not_answer_139_is_still_entered_and_restored() {
+    let quirks = Quirks {
+        replies_to_139: false,
+        ..Quirks::default()
+    };
+    let (mut s, wire) = open(quirks);
+    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    s.close();
+    assert!(sent_text(&wire).ends_with("ABIN\r"));
+}
+
+#[test]
+fn no_enter_skips_the_139_frame() {
+    let quirks = Quirks {
+        ascii: true,
+        gp67: 0x20,
+        ..Quirks::default()
+    };
+    let (s, wire) = open_with(
+        quirks,
+        SessionOptions {
+            enter: false,
+            ..options()
+        },
+    );
+    let mut s = s.unwrap();
+    assert!(wire.lock().unwrap().sent.starts_with(b"AGGP 67, 0\r"));
+    s.close();
+    assert!(!sent_text(&wire).contains("BIN"));
+}
+
+#[test]
+fn a_silent_module_times_out_with_a_clear_message() {
+    let (session, _) = open_with(
+        Quirks {
+            silent: true,
+            ..Quirks::default()
+        },
+        options(),
+    );
+    let e = session.err().expect("cannot open on a silent module");
+    assert_eq!(crate::exit::ExitStatus::exit(&e), crate::exit::Exit::Link);
+    let text = e.to_string();
+    assert!(
+        text.starts_with("no reply from module A within 30 ms"),
+        "{text}"
+    );
+    assert!(text.contains("does not answer in ASCII mode"), "{text}");
+}
+
+#[test]
+fn a_reply_from_another_module_is_reported_not_taken() {
+    let (mut s, _) = open(Quirks {
+        foreign_reply_first: true,
+        gp67: 0x20,
+        ..Quirks::default()
+    });
+    s.take_notices();
+    let x = s.execute("GAP 1, 0").unwrap();
+    assert_eq!(x.value(), Some(-5000));
+    let notices = s.take_notices();
+    assert!(
+        notices
+            .iter()
+            .any(|n| n.contains("reply from module C while waiting for module A")),
+        "{notices:?}"
+    );
+}
+
+#[test]
+fn garbage_before_the_reply_is_reported_and_skipped() {
+    let (mut s, _) = open(Quirks {
+        garbage_before_reply: b"\x8b\x01\x00junk\r",
+        ..Quirks::default()
+    });
+    s.take_notices();
+    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    let notices = s.take_notices();
+    assert!(
+        notices
+            .iter()
+            .any(|n| n.contains("unexpected data") && n.contains("\\x8B")),
+        "{notices:?}"
+    );
+}
+
+#[test]
+fn an_echo_that_differs_from_what_was_sent_is_line_noise() {
+    let (session, _) = open_with(
+        Quirks {
+            echo_noise: true,
+            ..Quirks::default()
+        },
+        options(),
+    );
+    let e = session.err().expect("noise while probing is an error");
+    assert!(
+        e.to_string()
+            .contains("line noise: module A echoed 'AGGP 67, 1' for 'AGGP 67, 0'"),
+        "{e}"
+    );
+}
+
+#[test]
+fn refused_lines_send_nothing() {
+    let (mut s, wire) = open(Quirks::default());
+    let before = wire.lock().unwrap().sent.len();
+    let e = s.execute("SAP 6, 0, 99").unwrap_err();
+    assert!(matches!(e, SessionError::Refused(_)), "{e}");
+    assert!(s.execute("CALC ADD, 1").is_err());
+    assert!(s.execute("GAPP 1, 0").is_err());
+    assert_eq!(wire.lock().unwrap().sent.len(), before);
+}
+
+#[test]
+fn no_validate_sends_what_parses_in_canonical_form() {
+    let (s, wire) = open_with(
+        Quirks::default(),
+        SessionOptions {
+            validate: false,
+            ..options()
+        },
+    );
+    let mut s = s.unwrap();
+    let x = s.execute("sap 6 0 99").unwrap();
+    assert_eq!(x.sent, "ASAP 6, 0, 99");
+    let x = s.execute("gapp 1 0").unwrap();
+    assert_eq!(x.sent, "AGAPP 1, 0");
+    assert_eq!(x.status(), Some(Status::InvalidCommand));
+    assert!(
+        s.take_notices()
+            .iter()
+            .any(|n| n.starts_with("not validated"))
+    );
+    assert!(sent_text(&wire).contains("AGAPP 1, 0\r"));
+}
+
+#[test]
+fn device_errors_come_back_as_unsuccessful_exchanges() {
+    let (mut s, _) = open(Quirks::default());
+    let x = s.execute("GAP 200, 0").unwrap();
+    assert!(!x.ok());
+    assert_eq!(x.raw, "BA 3 0");
+    let e = x.checked().unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "module A refused 'AGAP 200, 0': status 3 (wrong type)"
+    );
+}
+
+#[test]
+fn changing_the_echo_setting_is_followed() {
+    let (mut s, _) = open(Quirks::default());
+    assert_eq!(s.set_echo(1, Echo::Line).unwrap(), Echo::Line);
+    assert_eq!(s.module_state(1), Some((WireMode::Ascii, Echo::Line)));
+    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    s.execute("SGP 67, 0, 0x20").unwrap();
+    assert_eq!(s.module_state(1), Some((WireMode::Ascii, Echo::None)));
+    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+}
+
+#[test]
+fn after_bin_lines_go_as_binary_frames() {
+    let (mut s, wire) = open(Quirks::default());
+    s.execute("BIN").unwrap();
+    assert_eq!(s.module_state(1).unwrap().0, WireMode::Binary);
+    let x = s.execute("GAP 1, 0").unwrap();
+    assert_eq!(x.value(), Some(-5000));
+    assert_eq!(x.raw, "BA 100 -5000");
+    let frame = CommandFrame {
+        address: 1,
+        instruction: Instruction::new(6, 1, 0, 0),
+    }
+    .encode();
+    assert!(wire.lock().unwrap().sent.ends_with(&frame));
+    assert!(matches!(s.execute("RUN"), Err(SessionError::Refused(_))));
+}
+
+#[test]
+fn stop_motion_sends_mst_to_modules_that_were_moved() {
+    let (mut s, wire) = open(Quirks::default());
+    assert!(s.stop_motion().is_empty());
+    s.execute("ROR 0, 1000").unwrap();
+    assert!(s.may_be_moving());
+    let report = s.stop_motion();
+    assert_eq!(
+        report,
+        vec!["stopped motor 0 of module A (MST)".to_string()]
+    );
+    assert!(sent_text(&wire).ends_with("AMST 0\r"));
+    assert!(!s.may_be_moving());
+}
