@@ -12,6 +12,8 @@ pub mod exit;
 pub mod link;
 pub mod profile;
 pub mod protocol;
+pub mod repl;
 pub mod session;
+pub mod shell;
 pub mod sim;
 pub mod suggest;

@@ -1,8 +1,10 @@
 //! The command-line surface (clap derive): one file per subcommand, errors mapped to exit codes.
 
 mod completions;
-mod params;
+pub mod connection;
+pub(crate) mod params;
 mod ports;
+pub mod shell;
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -16,10 +18,14 @@ use crate::profile::Profile;
 /// Terminal and scripting shell for TMCL and SMD4 stepper-motor modules.
 #[derive(Debug, Parser)]
 #[command(name = "tmclsh", version, about, long_about = None, max_term_width = 100)]
+#[command(args_conflicts_with_subcommands = true)]
 pub struct Cli {
     /// Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables.
     #[arg(long, global = true, value_name = "FILE", env = "TMCLSH_PROFILE")]
     pub profile: Option<PathBuf>,
+
+    #[command(flatten)]
+    shell: shell::ShellArgs,
 
     #[command(subcommand)]
     command: Option<Command>,
@@ -83,10 +89,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Params(args)) => params::run(&args, &profile, out),
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
-        None => {
-            let mut help = <Cli as clap::CommandFactory>::command();
-            write!(out, "{}", help.render_help())
-        }
+        None => return shell::run(cli.shell, &profile),
     };
     match result {
         Ok(()) => Ok(Exit::Success),

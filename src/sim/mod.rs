@@ -5,7 +5,10 @@
 //! Thin adapters serve a device on a pseudo-terminal, on loopback TCP, or in-process behind a
 //! [`crate::link::Link`]; decorators add line pacing and fault injection to any device.
 
+mod builtin;
 pub mod clock;
+
+pub use builtin::builtin_link;
 
 use std::time::Duration;
 

@@ -1,0 +1,107 @@
+//! Connection and session flags shared by the shell and every subcommand that talks to a module.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::Duration;
+
+use crate::exit::Exit;
+use crate::link::{Link, SerialLink, TcpLink};
+use crate::profile::Profile;
+use crate::session::{SessionOptions, Transcript};
+
+use super::Failure;
+
+/// Where the module is: a serial port, a TCP address, or (neither) the built-in simulator.
+#[derive(Debug, Clone, clap::Args)]
+pub struct ConnectionArgs {
+    /// Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to
+    /// its built-in simulated module.
+    #[arg(long, value_name = "PATH", env = "TMCLSH_PORT", conflicts_with = "tcp")]
+    pub port: Option<String>,
+    /// Serial bit rate (8N1).
+    #[arg(long, value_name = "N", env = "TMCLSH_BAUD", default_value_t = 9600)]
+    pub baud: u32,
+    /// TCP address of the module or of a serial server (HOST:PORT).
+    #[arg(long, value_name = "HOST:PORT")]
+    pub tcp: Option<String>,
+}
+
+/// How requests are sent and checked.
+#[derive(Debug, Clone, clap::Args)]
+pub struct SessionArgs {
+    /// Address of the target module (1 = address character A).
+    #[arg(long, short = 'm', value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
+    pub module: u8,
+    /// Milliseconds to wait for a reply before giving up (exit code 3).
+    #[arg(long, value_name = "MS", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
+    pub timeout: u64,
+    /// Append every byte sent and received, timestamped and decoded, to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub log: Option<PathBuf>,
+    /// Send lines the validator would refuse (still canonicalised where they parse).
+    #[arg(long)]
+    pub no_validate: bool,
+    /// Do not send the enter-ASCII-mode frame (the module is already in ASCII mode).
+    #[arg(long)]
+    pub no_enter: bool,
+    /// Leave the modules in ASCII mode on exit instead of restoring the mode they were found in.
+    #[arg(long)]
+    pub stay_ascii: bool,
+}
+
+impl SessionArgs {
+    /// The session options these flags select.
+    pub fn options(&self) -> SessionOptions {
+        SessionOptions {
+            module: self.module,
+            timeout: Duration::from_millis(self.timeout),
+            validate: !self.no_validate,
+            enter: !self.no_enter,
+            stay_ascii: self.stay_ascii,
+        }
+    }
+
+    /// Opens the transcript, if asked for.
+    pub fn transcript(&self) -> Result<Option<Transcript>, Failure> {
+        self.log
+            .as_deref()
+            .map(|path| {
+                Transcript::open(path).map_err(|e| {
+                    Failure::new(
+                        Exit::Refused,
+                        format!("cannot open log file {}: {e}", path.display()),
+                    )
+                })
+            })
+            .transpose()
+    }
+}
+
+impl ConnectionArgs {
+    /// Whether the built-in simulator is meant.
+    pub fn is_builtin(&self) -> bool {
+        self.port.is_none() && self.tcp.is_none()
+    }
+
+    /// Opens the link.
+    pub fn open(
+        &self,
+        profile: &Arc<Profile>,
+        timeout: Duration,
+    ) -> Result<Box<dyn Link>, Failure> {
+        let link: Box<dyn Link> = if let Some(path) = &self.port {
+            Box::new(
+                SerialLink::open(path, self.baud)
+                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
+            )
+        } else if let Some(address) = &self.tcp {
+            Box::new(
+                TcpLink::connect(address, timeout)
+                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
+            )
+        } else {
+            crate::sim::builtin_link(profile)
+        };
+        Ok(link)
+    }
+}

@@ -1,0 +1,208 @@
+//! Tab completion, as a pure function of the line and the profile: mnemonics (keeping a typed
+//! address character), keywords, axis parameter names for SAP/GAP/STAP/RSAP, global parameter
+//! names with their banks for SGP/GGP/STGP/RSGP, helper commands and their arguments.
+
+use crate::profile::{Param, Profile};
+use crate::protocol::tmcl::commands::{CommandSpec, OperandKind};
+use crate::shell::helpers::{self, ArgKind};
+
+/// A completion: what is shown in the list, and what replaces the word.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Candidate {
+    /// Shown in the candidate list.
+    pub display: String,
+    /// Inserted in place of the word.
+    pub replacement: String,
+}
+
+/// What the word at the cursor should be completed as.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Completion {
+    /// Candidates replacing the word starting at byte `start`.
+    Words {
+        /// Where the word starts.
+        start: usize,
+        /// The candidates.
+        candidates: Vec<Candidate>,
+    },
+    /// A file name starting at byte `start` (left to a filename completer).
+    File {
+        /// Where the word starts.
+        start: usize,
+    },
+}
+
+/// Completes the word ending at `pos` in `line`.
+pub fn complete(line: &str, pos: usize, profile: &Profile) -> Completion {
+    let before = &line[..pos];
+    let start = before.rfind([' ', ',', '\t']).map_or(0, |i| i + 1);
+    let word = &before[start..];
+    let words = |candidates| Completion::Words { start, candidates };
+    if let Some(rest) = before.trim_start().strip_prefix(':') {
+        return complete_helper(rest, start, word, profile);
+    }
+    let head_end = before.trim_start().len();
+    let leading = before.len() - head_end;
+    let tokens: Vec<&str> = before[leading..]
+        .split([' ', ',', '\t'])
+        .filter(|t| !t.is_empty())
+        .collect();
+    let at_first_word = start <= leading || tokens.len() <= 1 && !before.ends_with([' ', ',']);
+    if at_first_word {
+        return words(mnemonics(word, profile));
+    }
+    // The command word, possibly after a lone address character ("A GAP").
+    let (command, operand_index) = match tokens.as_slice() {
+        [addr, cmd, ..] if addr.len() == 1 && profile.commands.by_mnemonic(addr).is_none() => {
+            (*cmd, operand_index(tokens.len() - 2, before))
+        }
+        [cmd, ..] => (*cmd, operand_index(tokens.len() - 1, before)),
+        [] => return words(Vec::new()),
+    };
+    let Some(spec) = spec_of(command, profile) else {
+        return words(Vec::new());
+    };
+    words(operand_candidates(spec, operand_index, word, profile))
+}
+
+/// Which operand the cursor is in, given how many tokens follow the command word.
+fn operand_index(tokens_after_command: usize, before: &str) -> usize {
+    if before.ends_with([' ', ',', '\t']) {
+        tokens_after_command
+    } else {
+        tokens_after_command.saturating_sub(1)
+    }
+}
+
+/// The command spec of a typed command word, which may carry an address character.
+pub fn spec_of<'a>(word: &str, profile: &'a Profile) -> Option<&'a CommandSpec> {
+    profile.commands.by_mnemonic(word).or_else(|| {
+        word.get(1..)
+            .and_then(|tail| profile.commands.by_mnemonic(tail))
+    })
+}
+
+fn mnemonics(word: &str, profile: &Profile) -> Vec<Candidate> {
+    let upper = word.to_ascii_uppercase();
+    let mut out: Vec<Candidate> = profile
+        .commands
+        .words()
+        .filter(|m| m.starts_with(&upper))
+        .map(|m| Candidate {
+            display: m.to_string(),
+            replacement: format!("{m} "),
+        })
+        .collect();
+    if out.is_empty() && upper.len() >= 2 && upper.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        // "AG" → AGAP, AGGP …: the first letter is an address character.
+        let (address, tail) = upper.split_at(1);
+        out.extend(
+            profile
+                .commands
+                .words()
+                .filter(|m| m.starts_with(tail))
+                .map(|m| Candidate {
+                    display: format!("{address}{m}"),
+                    replacement: format!("{address}{m} "),
+                }),
+        );
+    }
+    out
+}
+
+fn operand_candidates(
+    spec: &CommandSpec,
+    index: usize,
+    word: &str,
+    profile: &Profile,
+) -> Vec<Candidate> {
+    let Some(operand) = spec.operands.get(index) else {
+        return Vec::new();
+    };
+    let lower = word.to_ascii_lowercase();
+    match operand.kind {
+        OperandKind::Keyword => spec
+            .keywords
+            .iter()
+            .filter(|k| k.name.starts_with(&word.to_ascii_uppercase()))
+            .map(|k| Candidate {
+                display: k.name.clone(),
+                replacement: format!("{}, ", k.name),
+            })
+            .collect(),
+        OperandKind::AxisParam => params(&profile.axis, &lower, |p| {
+            format!("{} ({})", p.ident, p.number)
+        }),
+        OperandKind::GlobalParam => params(&profile.global, &lower, |p| {
+            format!("{} ({}, bank {})", p.ident, p.number, p.bank())
+        }),
+        _ => Vec::new(),
+    }
+}
+
+fn params(list: &[Param], prefix: &str, display: impl Fn(&Param) -> String) -> Vec<Candidate> {
+    list.iter()
+        .filter(|p| p.ident.starts_with(prefix))
+        .map(|p| Candidate {
+            display: display(p),
+            replacement: format!("{}, ", p.ident),
+        })
+        .collect()
+}
+
+fn complete_helper(rest: &str, start: usize, word: &str, profile: &Profile) -> Completion {
+    let Some((name, _)) = rest.split_once(' ') else {
+        let candidates = helpers::HELPERS
+            .iter()
+            .filter(|h| h.name.starts_with(&rest.to_ascii_lowercase()))
+            .map(|h| Candidate {
+                display: format!(":{}", h.name),
+                replacement: format!(":{} ", h.name),
+            })
+            .collect();
+        return Completion::Words { start, candidates };
+    };
+    let Ok(helper) = helpers::find(name) else {
+        return Completion::Words {
+            start,
+            candidates: Vec::new(),
+        };
+    };
+    let lower = word.to_ascii_lowercase();
+    let fixed = |options: &[&str]| {
+        options
+            .iter()
+            .filter(|o| o.starts_with(&lower))
+            .map(|o| Candidate {
+                display: o.to_string(),
+                replacement: o.to_string(),
+            })
+            .collect()
+    };
+    let candidates = match helper.arg {
+        ArgKind::File => return Completion::File { start },
+        ArgKind::Echo => fixed(&["char", "line", "none"]),
+        ArgKind::Param => profile
+            .axis
+            .iter()
+            .chain(&profile.global)
+            .filter(|p| p.ident.starts_with(&lower))
+            .map(|p| Candidate {
+                display: p.ident.clone(),
+                replacement: p.ident.clone(),
+            })
+            .collect(),
+        ArgKind::Topic => {
+            let mut topics: Vec<&str> = vec!["params", "exit", "ascii"];
+            topics.extend(helpers::HELPERS.iter().map(|h| h.name));
+            let mut out: Vec<Candidate> = fixed(&topics);
+            out.extend(mnemonics(word, profile));
+            out
+        }
+        ArgKind::None | ArgKind::Module | ArgKind::Address => Vec::new(),
+    };
+    Completion::Words { start, candidates }
+}
+
+#[cfg(test)]
+mod tests;

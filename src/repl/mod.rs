@@ -1,0 +1,204 @@
+//! The interactive shell: rustyline with history, completion, hints and highlighting; decoded,
+//! coloured replies; Ctrl-C stops a command (and the motor) in flight; a lost link is waited for
+//! and reopened with history and settings intact.
+
+pub mod complete;
+pub mod editor;
+pub mod hint;
+
+use std::io::{IsTerminal, Write};
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use crossterm::style::Stylize;
+use rustyline::error::ReadlineError;
+use rustyline::history::DefaultHistory;
+use rustyline::{CompletionType, Config, Editor};
+
+use crate::exit::Exit;
+use crate::protocol::tmcl::Instruction;
+use crate::protocol::tmcl::validate::Mode;
+use crate::session::tmcl::WireMode;
+use crate::session::{SessionError, interrupt};
+use crate::shell::render::decode;
+use crate::shell::{Flow, Shell};
+
+use editor::ReplHelper;
+
+/// Whether output may be coloured: a terminal, and NO_COLOR unset.
+pub fn color_enabled() -> bool {
+    std::env::var_os("NO_COLOR").is_none() && std::io::stdout().is_terminal()
+}
+
+/// Where the history lives: the user's data directory.
+fn history_path() -> Option<PathBuf> {
+    dirs::data_dir().map(|d| d.join("tmclsh").join("history"))
+}
+
+/// Runs the REPL until `:quit` or Ctrl-D; the session is closed (modules restored) at the end.
+pub fn run(shell: &mut Shell, banner: &str) -> Exit {
+    let color = color_enabled();
+    let config = Config::builder()
+        .completion_type(CompletionType::List)
+        .auto_add_history(true)
+        .history_ignore_space(true)
+        .max_history_size(5000)
+        .map(|b| b.build())
+        .unwrap_or_default();
+    let mut editor: Editor<ReplHelper, DefaultHistory> = match Editor::with_config(config) {
+        Ok(editor) => editor,
+        Err(e) => {
+            eprintln!("tmclsh: cannot start the line editor: {e}");
+            return Exit::Link;
+        }
+    };
+    editor.set_helper(Some(ReplHelper::new(
+        shell.session.profile().clone(),
+        color,
+    )));
+    let history = history_path();
+    if let Some(path) = &history {
+        let _ = editor.load_history(path);
+    }
+    let mut out = std::io::stdout();
+    let _ = writeln!(out, "{banner}");
+    let _ = writeln!(
+        out,
+        "Type :help for help, Tab to complete, Ctrl-D to leave."
+    );
+    loop {
+        let mode = match shell.session.module_state(shell.session.target()) {
+            Some((WireMode::Binary, _)) => Mode::Binary,
+            _ => Mode::Ascii,
+        };
+        if let Some(helper) = editor.helper_mut() {
+            helper.mode = mode;
+        }
+        match editor.readline(&shell.prompt()) {
+            Ok(text) => {
+                if handle(shell, text.trim(), color, &mut out) == Flow::Quit {
+                    break;
+                }
+            }
+            Err(ReadlineError::Interrupted) => continue,
+            Err(ReadlineError::Eof) => break,
+            Err(e) => {
+                eprintln!("tmclsh: {e}");
+                break;
+            }
+        }
+    }
+    if let Some(path) = &history {
+        if let Some(dir) = path.parent() {
+            let _ = std::fs::create_dir_all(dir);
+        }
+        let _ = editor.save_history(path);
+    }
+    for message in shell.session.close() {
+        let _ = writeln!(out, "{message}");
+    }
+    Exit::Success
+}
+
+/// Runs one typed line and shows its outcome.
+fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Flow {
+    if text.is_empty() {
+        return Flow::Continue;
+    }
+    interrupt::take();
+    let result = if text.starts_with(':') {
+        shell.helper(text, out)
+    } else {
+        shell.session.execute(text).map(|exchange| {
+            let decoded = decode(&exchange, shell.session.profile());
+            let shown = if shell.raw {
+                exchange.raw.clone()
+            } else {
+                decoded.text
+            };
+            let shown = match (color, decoded.ok) {
+                (false, _) => shown,
+                (true, true) => shown.green().to_string(),
+                (true, false) => shown.red().to_string(),
+            };
+            let _ = writeln!(out, "{shown}");
+            Flow::Continue
+        })
+    };
+    for notice in shell.session.take_notices() {
+        let line = if color {
+            notice.yellow().to_string()
+        } else {
+            notice
+        };
+        let _ = writeln!(out, "{line}");
+    }
+    match result {
+        Ok(flow) => flow,
+        Err(SessionError::Interrupted) => {
+            interrupt::take();
+            stop_target(shell, out);
+            Flow::Continue
+        }
+        Err(SessionError::Lost(message)) => {
+            let _ = writeln!(out, "link lost: {message}");
+            wait_for_link(shell, out);
+            Flow::Continue
+        }
+        Err(e) => {
+            let line = format!("error: {e}");
+            let _ = writeln!(out, "{}", if color { line.red().to_string() } else { line });
+            Flow::Continue
+        }
+    }
+}
+
+/// After Ctrl-C: MST to the target module, and to every module this session set moving.
+fn stop_target(shell: &mut Shell, out: &mut dyn Write) {
+    let target = shell.session.target();
+    let mut report = Vec::new();
+    for motor in 0..shell.session.profile().axes {
+        match shell
+            .session
+            .request(target, Instruction::new(3, 0, motor, 0))
+        {
+            Ok(_) => report.push(format!(
+                "interrupted: stopped motor {motor} of the target module (MST)"
+            )),
+            Err(e) => report.push(format!("interrupted; MST failed: {e}")),
+        }
+    }
+    report.extend(shell.session.stop_motion());
+    for line in report {
+        let _ = writeln!(out, "{line}");
+    }
+}
+
+/// Waits for the port to come back, reopens it and re-enters ASCII mode; Ctrl-C gives up.
+fn wait_for_link(shell: &mut Shell, out: &mut dyn Write) {
+    let _ = writeln!(
+        out,
+        "waiting for {} to come back (Ctrl-C to stop waiting)…",
+        shell.session.describe()
+    );
+    let mut next_try = Instant::now();
+    loop {
+        if interrupt::take() {
+            let _ = writeln!(
+                out,
+                "stopped waiting; commands will fail until the link is back"
+            );
+            return;
+        }
+        if Instant::now() >= next_try {
+            match shell.session.reconnect() {
+                Ok(()) => {
+                    let _ = writeln!(out, "reconnected: {}", shell.session.describe());
+                    return;
+                }
+                Err(_) => next_try = Instant::now() + Duration::from_millis(500),
+            }
+        }
+        std::thread::sleep(interrupt::SLICE);
+    }
+}

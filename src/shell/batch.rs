@@ -1,0 +1,138 @@
+//! Non-interactive use: `-c LINE` arguments, or stdin lines when stdin is not a terminal.
+//!
+//! For each command stdout gets exactly one line, the reply as the module sent it (without echo or
+//! line ending); diagnostics go to stderr. The first failing line stops the run with its exit code
+//! (1 device error status, 2 refused before sending, 3 no reply or link lost, 130 Ctrl-C), after
+//! stopping the motors the run set moving.
+
+use std::io::{BufRead, Write};
+use std::sync::mpsc;
+
+use crate::exit::{Exit, ExitStatus};
+use crate::session::tmcl::Answer;
+use crate::session::{SessionError, interrupt};
+
+use super::{Flow, Shell};
+
+/// Where lines come from.
+pub enum Lines {
+    /// Given up front (`-c`).
+    Given(std::vec::IntoIter<String>),
+    /// Read as they arrive (stdin); a reader thread keeps Ctrl-C responsive while waiting.
+    Stream(mpsc::Receiver<std::io::Result<String>>),
+}
+
+impl Lines {
+    /// Lines of stdin, read on a thread as they arrive.
+    pub fn stdin() -> Lines {
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            for line in std::io::stdin().lock().lines() {
+                if tx.send(line).is_err() {
+                    break;
+                }
+            }
+        });
+        Lines::Stream(rx)
+    }
+
+    fn next(&mut self) -> Option<Result<String, SessionError>> {
+        match self {
+            Lines::Given(lines) => lines.next().map(Ok),
+            Lines::Stream(rx) => loop {
+                if interrupt::pending() {
+                    return Some(Err(SessionError::Interrupted));
+                }
+                match rx.recv_timeout(interrupt::SLICE) {
+                    Ok(Ok(line)) => return Some(Ok(line)),
+                    Ok(Err(e)) => {
+                        return Some(Err(SessionError::Usage(format!("reading stdin: {e}"))));
+                    }
+                    Err(mpsc::RecvTimeoutError::Timeout) => continue,
+                    Err(mpsc::RecvTimeoutError::Disconnected) => return None,
+                }
+            },
+        }
+    }
+}
+
+/// Runs every line; returns the exit code. The session is closed (modules restored) at the end.
+pub fn run(shell: &mut Shell, mut lines: Lines, out: &mut dyn Write, err: &mut dyn Write) -> Exit {
+    let mut number = 0;
+    let exit = loop {
+        let line = match lines.next() {
+            None => break Exit::Success,
+            Some(Ok(line)) => line,
+            Some(Err(e)) => break fail(shell, &e, err, None),
+        };
+        number += 1;
+        let text = line.trim();
+        if text.is_empty() || text.starts_with('#') {
+            continue;
+        }
+        match step(shell, text, out, err) {
+            Ok(Flow::Continue) => {}
+            Ok(Flow::Quit) => break Exit::Success,
+            Err(e) => break fail(shell, &e, err, Some((number, text))),
+        }
+    };
+    for message in shell.session.close() {
+        let _ = writeln!(err, "tmclsh: {message}");
+    }
+    exit
+}
+
+fn step(
+    shell: &mut Shell,
+    text: &str,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Result<Flow, SessionError> {
+    if interrupt::pending() {
+        return Err(SessionError::Interrupted);
+    }
+    if text.starts_with(':') {
+        let flow = shell.helper(text, out);
+        report_notices(shell, err);
+        return flow;
+    }
+    let result = shell.session.execute(text);
+    report_notices(shell, err);
+    let exchange = result?;
+    let shown = match &exchange.answer {
+        Answer::Version(version) => version.clone(),
+        _ => exchange.raw.clone(),
+    };
+    if writeln!(out, "{shown}").and_then(|()| out.flush()).is_err() {
+        // stdout closed (e.g. piped into `head`): not an error, just stop.
+        return Ok(Flow::Quit);
+    }
+    exchange.checked()?;
+    Ok(Flow::Continue)
+}
+
+fn report_notices(shell: &mut Shell, err: &mut dyn Write) {
+    for notice in shell.session.take_notices() {
+        let _ = writeln!(err, "tmclsh: {notice}");
+    }
+}
+
+/// Reports a failure, stops what the run set moving, and gives the exit code.
+fn fail(
+    shell: &mut Shell,
+    error: &SessionError,
+    err: &mut dyn Write,
+    at: Option<(usize, &str)>,
+) -> Exit {
+    let _ = match at {
+        Some((number, text)) => writeln!(err, "tmclsh: line {number} ({text}): {error}"),
+        None => writeln!(err, "tmclsh: {error}"),
+    };
+    interrupt::take();
+    if shell.session.may_be_moving() {
+        for message in shell.session.stop_motion() {
+            let _ = writeln!(err, "tmclsh: {message}");
+        }
+    }
+    error.exit()
+}
