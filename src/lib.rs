@@ -13,6 +13,7 @@ pub mod link;
 pub mod profile;
 pub mod protocol;
 pub mod repl;
+pub mod script;
 pub mod session;
 pub mod shell;
 pub mod sim;

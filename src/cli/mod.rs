@@ -4,6 +4,7 @@ mod completions;
 pub mod connection;
 pub(crate) mod params;
 mod ports;
+pub mod run;
 pub mod shell;
 
 use std::io::Write;
@@ -39,6 +40,8 @@ enum Command {
     Ports,
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
+    /// Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link).
+    Run(run::RunArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
@@ -89,6 +92,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Params(args)) => params::run(&args, &profile, out),
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
+        Some(Command::Run(args)) => return run::run(args, &profile),
         None => return shell::run(cli.shell, &profile),
     };
     match result {

@@ -73,8 +73,8 @@ fn banner(connection: &ConnectionArgs, shell: &Shell, profile: &Profile) -> Stri
         format!(
             "tmclsh {version} — {} on {}, module {}",
             profile.module,
-            shell.session.describe(),
-            shell.session.target()
+            shell.session_ref().describe(),
+            shell.session_ref().target()
         )
     }
 }

@@ -53,7 +53,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         }
     };
     editor.set_helper(Some(ReplHelper::new(
-        shell.session.profile().clone(),
+        shell.session().profile().clone(),
         color,
     )));
     let history = history_path();
@@ -67,7 +67,8 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         "Type :help for help, Tab to complete, Ctrl-D to leave."
     );
     loop {
-        let mode = match shell.session.module_state(shell.session.target()) {
+        let session = shell.session_ref();
+        let mode = match session.module_state(session.target()) {
             Some((WireMode::Binary, _)) => Mode::Binary,
             _ => Mode::Ascii,
         };
@@ -94,7 +95,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         }
         let _ = editor.save_history(path);
     }
-    for message in shell.session.close() {
+    for message in shell.session().close() {
         let _ = writeln!(out, "{message}");
     }
     Exit::Success
@@ -109,8 +110,8 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
     let result = if text.starts_with(':') {
         shell.helper(text, out)
     } else {
-        shell.session.execute(text).map(|exchange| {
-            let decoded = decode(&exchange, shell.session.profile());
+        shell.session().execute(text).map(|exchange| {
+            let decoded = decode(&exchange, shell.session().profile());
             let shown = if shell.raw {
                 exchange.raw.clone()
             } else {
@@ -125,7 +126,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
             Flow::Continue
         })
     };
-    for notice in shell.session.take_notices() {
+    for notice in shell.session().take_notices() {
         let line = if color {
             notice.yellow().to_string()
         } else {
@@ -155,11 +156,11 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
 
 /// After Ctrl-C: MST to the target module, and to every module this session set moving.
 fn stop_target(shell: &mut Shell, out: &mut dyn Write) {
-    let target = shell.session.target();
+    let target = shell.session().target();
     let mut report = Vec::new();
-    for motor in 0..shell.session.profile().axes {
+    for motor in 0..shell.session().profile().axes {
         match shell
-            .session
+            .session()
             .request(target, Instruction::new(3, 0, motor, 0))
         {
             Ok(_) => report.push(format!(
@@ -168,7 +169,7 @@ fn stop_target(shell: &mut Shell, out: &mut dyn Write) {
             Err(e) => report.push(format!("interrupted; MST failed: {e}")),
         }
     }
-    report.extend(shell.session.stop_motion());
+    report.extend(shell.session().stop_motion());
     for line in report {
         let _ = writeln!(out, "{line}");
     }
@@ -179,7 +180,7 @@ fn wait_for_link(shell: &mut Shell, out: &mut dyn Write) {
     let _ = writeln!(
         out,
         "waiting for {} to come back (Ctrl-C to stop waiting)…",
-        shell.session.describe()
+        shell.session().describe()
     );
     let mut next_try = Instant::now();
     loop {
@@ -191,9 +192,9 @@ fn wait_for_link(shell: &mut Shell, out: &mut dyn Write) {
             return;
         }
         if Instant::now() >= next_try {
-            match shell.session.reconnect() {
+            match shell.session().reconnect() {
                 Ok(()) => {
-                    let _ = writeln!(out, "reconnected: {}", shell.session.describe());
+                    let _ = writeln!(out, "reconnected: {}", shell.session().describe());
                     return;
                 }
                 Err(_) => next_try = Instant::now() + Duration::from_millis(500),

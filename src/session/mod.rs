@@ -80,6 +80,14 @@ pub enum SessionError {
     /// Ctrl-C.
     #[error("interrupted")]
     Interrupted,
+    /// A script (`:source`) failed; the message names file, line and column.
+    #[error("{message}")]
+    Script {
+        /// The exit code the failure means.
+        exit: Exit,
+        /// What happened.
+        message: String,
+    },
 }
 
 impl ExitStatus for SessionError {
@@ -91,6 +99,7 @@ impl ExitStatus for SessionError {
                 Exit::Link
             }
             SessionError::Interrupted => Exit::Interrupted,
+            SessionError::Script { exit, .. } => *exit,
         }
     }
 }

@@ -76,7 +76,7 @@ pub fn run(shell: &mut Shell, mut lines: Lines, out: &mut dyn Write, err: &mut d
             Err(e) => break fail(shell, &e, err, Some((number, text))),
         }
     };
-    for message in shell.session.close() {
+    for message in shell.session().close() {
         let _ = writeln!(err, "tmclsh: {message}");
     }
     exit
@@ -96,7 +96,7 @@ fn step(
         report_notices(shell, err);
         return flow;
     }
-    let result = shell.session.execute(text);
+    let result = shell.session().execute(text);
     report_notices(shell, err);
     let exchange = result?;
     let shown = match &exchange.answer {
@@ -112,7 +112,7 @@ fn step(
 }
 
 fn report_notices(shell: &mut Shell, err: &mut dyn Write) {
-    for notice in shell.session.take_notices() {
+    for notice in shell.session().take_notices() {
         let _ = writeln!(err, "tmclsh: {notice}");
     }
 }
@@ -129,8 +129,8 @@ fn fail(
         None => writeln!(err, "tmclsh: {error}"),
     };
     interrupt::take();
-    if shell.session.may_be_moving() {
-        for message in shell.session.stop_motion() {
+    if shell.session().may_be_moving() {
+        for message in shell.session().stop_motion() {
             let _ = writeln!(err, "tmclsh: {message}");
         }
     }

@@ -10,8 +10,9 @@ use std::path::Path;
 
 use crate::cli::params::write_table;
 use crate::protocol::tmcl::line::{address_char, address_of};
+use crate::script::{self, Limits};
 use crate::session::tmcl::{Echo, Exchange, TmclSession, WireMode};
-use crate::session::{SessionError, Transcript};
+use crate::session::{SessionError, Transcript, interrupt};
 
 use helpers::ArgKind;
 
@@ -26,8 +27,8 @@ pub enum Flow {
 
 /// A session and how its results are shown.
 pub struct Shell {
-    /// The conversation with the modules.
-    pub session: TmclSession,
+    /// The conversation with the modules; lent out while a script runs (`:source`).
+    session: Option<TmclSession>,
     /// Show replies exactly as received (`:raw`).
     pub raw: bool,
 }
@@ -36,16 +37,42 @@ impl Shell {
     /// A shell over an open session.
     pub fn new(session: TmclSession) -> Self {
         Shell {
-            session,
+            session: Some(session),
             raw: false,
         }
     }
 
+    /// The session.
+    pub fn session(&mut self) -> &mut TmclSession {
+        self.session
+            .as_mut()
+            .expect("the session is back after every script run")
+    }
+
+    /// The session, read-only.
+    pub fn session_ref(&self) -> &TmclSession {
+        self.session
+            .as_ref()
+            .expect("the session is back after every script run")
+    }
+
+    /// Lends the session to `f` by value (scripts own the session while they run).
+    pub fn lend<T>(&mut self, f: impl FnOnce(TmclSession) -> (TmclSession, T)) -> T {
+        let session = self
+            .session
+            .take()
+            .expect("the session is back after every script run");
+        let (session, result) = f(session);
+        self.session = Some(session);
+        result
+    }
+
     /// The prompt: the target's address character, and the wire mode when it is binary.
     pub fn prompt(&self) -> String {
-        let target = self.session.target();
+        let session = self.session_ref();
+        let target = session.target();
         let c = address_char(target).unwrap_or('?');
-        match self.session.module_state(target) {
+        match session.module_state(target) {
             Some((WireMode::Binary, _)) => format!("{c}[bin]> "),
             _ => format!("{c}> "),
         }
@@ -65,11 +92,11 @@ impl Shell {
                 helper.usage
             )));
         }
-        let target = self.session.target();
+        let target = self.session().target();
         match helper.name {
-            "help" => write_help(arg, self.session.profile(), out)?,
+            "help" => write_help(arg, self.session().profile(), out)?,
             "params" => {
-                let profile = self.session.profile().clone();
+                let profile = self.session().profile().clone();
                 let rows: Vec<_> = profile.matching(arg).collect();
                 if rows.is_empty() {
                     writeln!(out, "no parameter matches '{arg}'")?;
@@ -79,7 +106,7 @@ impl Shell {
             }
             "target" => {
                 let module = parse_module(arg)?;
-                self.session.set_target(module)?;
+                self.session().set_target(module)?;
                 writeln!(
                     out,
                     "target: module {} ({})",
@@ -90,7 +117,7 @@ impl Shell {
             "echo" => {
                 let echo = Echo::parse(arg)
                     .ok_or_else(|| SessionError::Usage(format!("usage: {}", helper.usage)))?;
-                let echo = self.session.set_echo(target, echo)?;
+                let echo = self.session().set_echo(target, echo)?;
                 writeln!(out, "echo: {}", echo.name())?;
             }
             "log" => self.set_log(arg, out)?,
@@ -100,15 +127,15 @@ impl Shell {
             }
             "run" => {
                 let address = parse_address(arg)?;
-                let exchange = self.session.run_program(target, address)?.checked()?;
+                let exchange = self.session().run_program(target, address)?.checked()?;
                 self.report_program(&exchange, "started", out)?;
             }
             "stop" => {
-                let exchange = self.session.stop_program(target)?.checked()?;
+                let exchange = self.session().stop_program(target)?.checked()?;
                 self.report_program(&exchange, "stopped", out)?;
             }
             "bin" => {
-                self.session.leave_ascii(target)?;
+                self.session().leave_ascii(target)?;
                 writeln!(
                     out,
                     "module {} is in binary direct mode: lines go out as binary frames (:ascii returns)",
@@ -116,13 +143,14 @@ impl Shell {
                 )?;
             }
             "ascii" => {
-                self.session.enter_ascii(target)?;
+                self.session().enter_ascii(target)?;
                 writeln!(
                     out,
                     "module {} is in ASCII mode",
                     address_char(target).unwrap_or('?')
                 )?;
             }
+            "source" => self.source(arg, out)?,
             "quit" => return Ok(Flow::Quit),
             other => unreachable!("helper table and dispatch disagree on :{other}"),
         }
@@ -136,7 +164,7 @@ impl Shell {
         out: &mut dyn Write,
     ) -> io::Result<()> {
         let module = exchange.module;
-        let mode = match self.session.module_state(module) {
+        let mode = match self.session().module_state(module) {
             Some((WireMode::Binary, _)) => "binary",
             _ => "ASCII",
         };
@@ -147,19 +175,39 @@ impl Shell {
         )
     }
 
+    /// Runs a script over this shell's session; on failure the motors it moved are stopped.
+    fn source(&mut self, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
+        let mut words = arg.split_whitespace();
+        let path = words
+            .next()
+            .ok_or_else(|| SessionError::Usage("usage: :source SCRIPT.rhai [ARGS...]".into()))?;
+        let args: Vec<String> = words.map(String::from).collect();
+        let outcome = self
+            .lend(|session| script::run_file(Path::new(path), &args, session, Limits::default()));
+        let Err(report) = outcome else { return Ok(()) };
+        interrupt::take();
+        for message in self.session().stop_motion() {
+            writeln!(out, "{message}")?;
+        }
+        Err(SessionError::Script {
+            exit: report.exit,
+            message: report.message,
+        })
+    }
+
     fn set_log(&mut self, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
         if arg.is_empty() {
-            match self.session.transcript() {
+            match self.session().transcript() {
                 Some(t) => writeln!(out, "logging to {}", t.path().display())?,
                 None => writeln!(out, "not logging; :log FILE starts")?,
             }
         } else if arg == "off" {
-            self.session.set_transcript(None);
+            self.session().set_transcript(None);
             writeln!(out, "transcript stopped")?;
         } else {
             let transcript = Transcript::open(Path::new(arg))
                 .map_err(|e| SessionError::Usage(format!("cannot open log file {arg}: {e}")))?;
-            self.session.set_transcript(Some(transcript));
+            self.session().set_transcript(Some(transcript));
             writeln!(out, "logging to {arg}")?;
         }
         Ok(())

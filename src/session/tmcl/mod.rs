@@ -452,6 +452,12 @@ impl TmclSession {
         Ok(())
     }
 
+    /// Writes a remark into the transcript; false when no transcript is being written.
+    pub fn annotate(&mut self, text: &str) -> bool {
+        self.note(text);
+        self.transcript.is_some()
+    }
+
     fn note(&mut self, text: &str) {
         self.log(Entry::Note, b"", text);
     }
