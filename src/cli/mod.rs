@@ -1,6 +1,8 @@
 //! The command-line surface (clap derive): one file per subcommand, errors mapped to exit codes.
 
+mod asm;
 mod completions;
+mod disasm;
 mod params;
 mod ports;
 
@@ -33,6 +35,10 @@ enum Command {
     Ports,
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
+    /// Assemble a stand-alone TMCL program (check it, list it, write FILE.bin).
+    Asm(asm::AsmArgs),
+    /// Turn a program file back into TMCL source.
+    Disasm(disasm::DisasmArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
@@ -83,6 +89,8 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Params(args)) => params::run(&args, &profile, out),
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
+        Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
+        Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
         None => {
             let mut help = <Cli as clap::CommandFactory>::command();
             write!(out, "{}", help.render_help())
