@@ -22,6 +22,17 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
     $completions = @(switch ($command) {
         'tmclsh' {
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
+            [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
+            [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Append every byte sent and received, timestamped and decoded, to FILE')
+            [CompletionResult]::new('-c', '-c', [CompletionResultType]::ParameterName, 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal')
+            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
+            [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
+            [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
@@ -29,6 +40,9 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('params', 'params', [CompletionResultType]::ParameterValue, 'Print the module''s axis and global parameters (those matching FILTER)')
             [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports of this machine')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
+            [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)')
+            [CompletionResult]::new('asm', 'asm', [CompletionResultType]::ParameterValue, 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)')
+            [CompletionResult]::new('disasm', 'disasm', [CompletionResultType]::ParameterValue, 'Turn a program file back into TMCL source')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -50,10 +64,46 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             break
         }
+        'tmclsh;run' {
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
+            [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
+            [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Append every byte sent and received, timestamped and decoded, to FILE')
+            [CompletionResult]::new('--max-operations', '--max-operations', [CompletionResultType]::ParameterName, 'Operations after which a runaway script is stopped (0: no limit)')
+            [CompletionResult]::new('--max-call-depth', '--max-call-depth', [CompletionResultType]::ParameterName, 'Deepest nesting of function calls')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
+            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
+            [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
+            [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
+            break
+        }
+        'tmclsh;asm' {
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Write the program file (format in the README); without it the source is only checked')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Write the program file (format in the README); without it the source is only checked')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
+            [CompletionResult]::new('--list', '--list', [CompletionResultType]::ParameterName, 'Print the listing: address, the 7 instruction bytes and the source line')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
+            break
+        }
+        'tmclsh;disasm' {
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
+            break
+        }
         'tmclsh;help' {
             [CompletionResult]::new('params', 'params', [CompletionResultType]::ParameterValue, 'Print the module''s axis and global parameters (those matching FILTER)')
             [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports of this machine')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
+            [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)')
+            [CompletionResult]::new('asm', 'asm', [CompletionResultType]::ParameterValue, 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)')
+            [CompletionResult]::new('disasm', 'disasm', [CompletionResultType]::ParameterValue, 'Turn a program file back into TMCL source')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -64,6 +114,15 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;help;completions' {
+            break
+        }
+        'tmclsh;help;run' {
+            break
+        }
+        'tmclsh;help;asm' {
+            break
+        }
+        'tmclsh;help;disasm' {
             break
         }
         'tmclsh;help;help' {

@@ -19,6 +19,17 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
     var completions = [
         &'tmclsh'= {
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand -c 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
             cand -h 'Print help'
             cand --help 'Print help'
             cand -V 'Print version'
@@ -26,6 +37,9 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
+            cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
+            cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
+            cand disasm 'Turn a program file back into TMCL source'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;params'= {
@@ -43,10 +57,43 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -h 'Print help'
             cand --help 'Print help'
         }
+        &'tmclsh;run'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --max-operations 'Operations after which a runaway script is stopped (0: no limit)'
+            cand --max-call-depth 'Deepest nesting of function calls'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
+        &'tmclsh;asm'= {
+            cand -o 'Write the program file (format in the README); without it the source is only checked'
+            cand --output 'Write the program file (format in the README); without it the source is only checked'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --list 'Print the listing: address, the 7 instruction bytes and the source line'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
+        &'tmclsh;disasm'= {
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
         &'tmclsh;help'= {
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
+            cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
+            cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
+            cand disasm 'Turn a program file back into TMCL source'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;help;params'= {
@@ -54,6 +101,12 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;ports'= {
         }
         &'tmclsh;help;completions'= {
+        }
+        &'tmclsh;help;run'= {
+        }
+        &'tmclsh;help;asm'= {
+        }
+        &'tmclsh;help;disasm'= {
         }
         &'tmclsh;help;help'= {
         }

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_tmclsh_global_optspecs
-    string join \n profile= h/help V/version
+    string join \n profile= port= baud= tcp= m/module= timeout= log= no-validate no-enter stay-ascii c= h/help V/version
 end
 
 function __fish_tmclsh_needs_command
@@ -25,11 +25,24 @@ function __fish_tmclsh_using_subcommand
 end
 
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -s c -d 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s V -l version -d 'Print version'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "ports" -d 'List the serial ports of this machine'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "completions" -d 'Print a shell completion script'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "disasm" -d 'Turn a program file back into TMCL source'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'Print help'
@@ -37,7 +50,29 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l profile -d 'Modu
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -s h -l help -d 'Print help'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions help" -f -a "ports" -d 'List the serial ports of this machine'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions help" -f -a "completions" -d 'Print a shell completion script'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-operations -d 'Operations after which a runaway script is stopped (0: no limit)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-call-depth -d 'Deepest nesting of function calls' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -s o -l output -d 'Write the program file (format in the README); without it the source is only checked' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -l list -d 'Print the listing: address, the 7 instruction bytes and the source line'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "ports" -d 'List the serial ports of this machine'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "completions" -d 'Print a shell completion script'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "disasm" -d 'Turn a program file back into TMCL source'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'

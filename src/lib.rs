@@ -7,6 +7,7 @@
 //! session to a link: a serial port, a TCP socket or the built-in simulated module.
 #![deny(missing_docs)]
 
+pub mod asm;
 pub mod cli;
 pub mod exit;
 pub mod link;

@@ -1,7 +1,9 @@
 //! The command-line surface (clap derive): one file per subcommand, errors mapped to exit codes.
 
+mod asm;
 mod completions;
 pub mod connection;
+mod disasm;
 pub(crate) mod params;
 mod ports;
 pub mod run;
@@ -19,7 +21,6 @@ use crate::profile::Profile;
 /// Terminal and scripting shell for TMCL and SMD4 stepper-motor modules.
 #[derive(Debug, Parser)]
 #[command(name = "tmclsh", version, about, long_about = None, max_term_width = 100)]
-#[command(args_conflicts_with_subcommands = true)]
 pub struct Cli {
     /// Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables.
     #[arg(long, global = true, value_name = "FILE", env = "TMCLSH_PROFILE")]
@@ -42,6 +43,10 @@ enum Command {
     Completions(completions::CompletionsArgs),
     /// Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link).
     Run(run::RunArgs),
+    /// Assemble a stand-alone TMCL program (check it, list it, write FILE.bin).
+    Asm(asm::AsmArgs),
+    /// Turn a program file back into TMCL source.
+    Disasm(disasm::DisasmArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
@@ -93,6 +98,8 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
         Some(Command::Run(args)) => return run::run(args, &profile),
+        Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
+        Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
         None => return shell::run(cli.shell, &profile),
     };
     match result {

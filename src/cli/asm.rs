@@ -1,0 +1,98 @@
+//! `tmclsh asm FILE.tmc [-o FILE.bin] [--list]`: assemble a stand-alone TMCL program.
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use crate::asm::{self, Program};
+use crate::exit::Exit;
+use crate::profile::Profile;
+
+use super::Failure;
+
+/// Arguments of `asm`.
+#[derive(Debug, clap::Args)]
+pub struct AsmArgs {
+    /// TMCL source file (as the TMCL-IDE writes it).
+    #[arg(value_name = "FILE.tmc")]
+    pub file: PathBuf,
+    /// Write the program file (format in the README); without it the source is only checked.
+    #[arg(short, long, value_name = "FILE.bin")]
+    pub output: Option<PathBuf>,
+    /// Print the listing: address, the 7 instruction bytes and the source line.
+    #[arg(long)]
+    pub list: bool,
+}
+
+pub fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
+    let name = args.file.display().to_string();
+    let bytes = std::fs::read(&args.file)
+        .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {name}: {e}")))?;
+    if asm::is_program_file(&bytes) {
+        return Err(Failure::new(
+            Exit::Refused,
+            format!("{name} is an assembled program file, not source; use `tmclsh disasm {name}`"),
+        ));
+    }
+    // Only comments may hold non-ASCII text; old Windows files are not UTF-8 there.
+    let source = String::from_utf8_lossy(&bytes);
+    let program = match asm::assemble(&source, &name, profile) {
+        Ok(program) => program,
+        Err(errors) => {
+            for warning in &errors.warnings {
+                eprintln!("{warning}");
+            }
+            for error in &errors.errors {
+                eprintln!("{error}");
+            }
+            let count = errors.errors.len();
+            let plural = if count == 1 { "" } else { "s" };
+            return Err(Failure::new(
+                Exit::Refused,
+                format!("{name}: {count} error{plural}, nothing assembled"),
+            ));
+        }
+    };
+    for warning in &program.warnings {
+        eprintln!("{warning}");
+    }
+    if let Some(path) = &args.output {
+        let bytes = asm::write_binary(&program.instructions)
+            .map_err(|e| Failure::new(Exit::Refused, e.to_string()))?;
+        std::fs::write(path, bytes).map_err(|e| {
+            Failure::new(
+                Exit::Refused,
+                format!("cannot write {}: {e}", path.display()),
+            )
+        })?;
+    }
+    report(args, &program, &source, profile, out).or_else(|e| {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            Ok(())
+        } else {
+            Err(Failure::new(Exit::Refused, e.to_string()))
+        }
+    })?;
+    Ok(Exit::Success)
+}
+
+fn report(
+    args: &AsmArgs,
+    program: &Program,
+    source: &str,
+    profile: &Profile,
+    out: &mut dyn Write,
+) -> std::io::Result<()> {
+    if args.list {
+        write!(out, "{}", program.listing(source))?;
+    }
+    let summary = format!(
+        "{} instructions of {} ({} bytes)",
+        program.instructions.len(),
+        profile.program_memory,
+        program.byte_len()
+    );
+    match &args.output {
+        Some(path) => writeln!(out, "{}: {summary}", path.display()),
+        None => writeln!(out, "{}: {summary}", args.file.display()),
+    }
+}

@@ -1,0 +1,43 @@
+//! `tmclsh disasm FILE.bin`: a program file back to TMCL source, on stdout.
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use crate::asm;
+use crate::exit::Exit;
+use crate::profile::Profile;
+
+use super::Failure;
+
+/// Arguments of `disasm`.
+#[derive(Debug, clap::Args)]
+pub struct DisasmArgs {
+    /// Program file written by `tmclsh asm -o`.
+    #[arg(value_name = "FILE.bin")]
+    pub file: PathBuf,
+}
+
+pub fn run(args: &DisasmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
+    let name = args.file.display().to_string();
+    let bytes = std::fs::read(&args.file)
+        .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {name}: {e}")))?;
+    let instructions = asm::read_binary(&bytes)
+        .map_err(|e| Failure::new(Exit::Refused, format!("{name}: {e}")))?;
+    let disassembly = asm::disassemble(&instructions, profile);
+    for (address, error) in &disassembly.problems {
+        eprintln!("{name}: warning: instruction {address} is not valid in a program: {error}");
+    }
+    let written = writeln!(
+        out,
+        "// {name}: {} instructions, disassembled for the {}",
+        instructions.len(),
+        profile.module
+    )
+    .and_then(|()| out.write_all(disassembly.source.as_bytes()));
+    match written {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(Failure::new(Exit::Refused, e.to_string()))
+        }
+        _ => Ok(Exit::Success),
+    }
+}
