@@ -7,7 +7,10 @@ mod disasm;
 pub(crate) mod params;
 mod ports;
 pub mod run;
+mod scan;
 pub mod shell;
+mod snapshot;
+mod transcript;
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -47,6 +50,12 @@ enum Command {
     Asm(asm::AsmArgs),
     /// Turn a program file back into TMCL source.
     Disasm(disasm::DisasmArgs),
+    /// Save the module's parameters to a TOML file, compare with one, or write one back.
+    Snapshot(snapshot::SnapshotArgs),
+    /// Find the modules on the bus, with firmware versions and echo settings.
+    Scan(scan::ScanArgs),
+    /// Turn a --log transcript into a replayable Rhai script.
+    Transcript(transcript::TranscriptArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
@@ -100,6 +109,9 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Run(args)) => return run::run(args, &profile),
         Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
         Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
+        Some(Command::Snapshot(args)) => return snapshot::run(args, &profile, out),
+        Some(Command::Scan(args)) => return scan::run(args, &profile, out),
+        Some(Command::Transcript(args)) => return transcript::run(args, &profile, out),
         None => return shell::run(cli.shell, &profile),
     };
     match result {

@@ -182,16 +182,7 @@ fn complete_helper(rest: &str, start: usize, word: &str, profile: &Profile) -> C
     let candidates = match helper.arg {
         ArgKind::File => return Completion::File { start },
         ArgKind::Echo => fixed(&["char", "line", "none"]),
-        ArgKind::Param => profile
-            .axis
-            .iter()
-            .chain(&profile.global)
-            .filter(|p| p.ident.starts_with(&lower))
-            .map(|p| Candidate {
-                display: p.ident.clone(),
-                replacement: p.ident.clone(),
-            })
-            .collect(),
+        ArgKind::Param => param_names(profile, &lower),
         ArgKind::Topic => {
             let mut topics: Vec<&str> = vec!["params", "exit", "ascii"];
             topics.extend(helpers::HELPERS.iter().map(|h| h.name));
@@ -199,9 +190,32 @@ fn complete_helper(rest: &str, start: usize, word: &str, profile: &Profile) -> C
             out.extend(mnemonics(word, profile));
             out
         }
+        ArgKind::Snapshot if first_argument(rest) => fixed(&["save", "diff", "restore"]),
+        ArgKind::Record if !first_argument(rest) => param_names(profile, &lower),
+        ArgKind::Snapshot | ArgKind::Record => return Completion::File { start },
         ArgKind::None | ArgKind::Module | ArgKind::Address => Vec::new(),
     };
     Completion::Words { start, candidates }
+}
+
+/// Axis and global parameter identifiers starting with `prefix`.
+fn param_names(profile: &Profile, prefix: &str) -> Vec<Candidate> {
+    profile
+        .axis
+        .iter()
+        .chain(&profile.global)
+        .filter(|p| p.ident.starts_with(prefix))
+        .map(|p| Candidate {
+            display: p.ident.clone(),
+            replacement: p.ident.clone(),
+        })
+        .collect()
+}
+
+/// Whether the cursor is in a helper's first argument (`rest` is the line after the colon).
+fn first_argument(rest: &str) -> bool {
+    let args = rest.split_once(' ').map_or("", |(_, a)| a.trim_start());
+    !args.contains(char::is_whitespace)
 }
 
 #[cfg(test)]

@@ -18,6 +18,10 @@ pub enum ArgKind {
     Topic,
     /// A program address.
     Address,
+    /// `save`, `diff` or `restore`, then a snapshot file.
+    Snapshot,
+    /// A CSV file, then parameter names.
+    Record,
 }
 
 /// One helper command.
@@ -96,6 +100,36 @@ pub const HELPERS: &[Helper] = &[
         arg: ArgKind::None,
     },
     Helper {
+        name: "snapshot",
+        usage: ":snapshot save|diff|restore FILE",
+        summary: "save the module's parameters to a TOML file, compare with one, or write one back",
+        arg: ArgKind::Snapshot,
+    },
+    Helper {
+        name: "scan",
+        usage: ":scan [ADDRESSES] [TIME]",
+        summary: "find the modules on the bus (default 1-26), with firmware and echo",
+        arg: ArgKind::Module,
+    },
+    Helper {
+        name: "watch",
+        usage: ":watch PARAM[,PARAM…] [INTERVAL]",
+        summary: "live table of parameters; any key stops, Ctrl-C also stops the motor",
+        arg: ArgKind::Param,
+    },
+    Helper {
+        name: "record",
+        usage: ":record FILE.csv PARAM[,…] [INTERVAL] [DURATION]",
+        summary: "sample parameters with timestamps into a CSV file",
+        arg: ArgKind::Record,
+    },
+    Helper {
+        name: "plot",
+        usage: ":plot [FILE.csv]",
+        summary: "chart the last recording (or a CSV file) against time",
+        arg: ArgKind::File,
+    },
+    Helper {
         name: "quit",
         usage: ":quit",
         summary: "leave, putting the modules back in the mode they were found in",
@@ -141,7 +175,11 @@ mod tests {
         assert_eq!(find("params").unwrap().name, "params");
         assert_eq!(find("par").unwrap().name, "params");
         assert_eq!(find("QUIT").unwrap().name, "quit");
-        assert!(find("r").unwrap_err().contains("ambiguous: :raw, :run"));
+        assert!(
+            find("r")
+                .unwrap_err()
+                .contains("ambiguous: :raw, :run, :record")
+        );
         assert_eq!(
             find("prams").unwrap_err(),
             "unknown helper ':prams'; did you mean :params?; :help lists them"

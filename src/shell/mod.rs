@@ -31,6 +31,8 @@ pub struct Shell {
     session: Option<TmclSession>,
     /// Show replies exactly as received (`:raw`).
     pub raw: bool,
+    /// What the commissioning helpers remember (the last recording).
+    pub commission: crate::commission::shell::State,
 }
 
 impl Shell {
@@ -39,6 +41,7 @@ impl Shell {
         Shell {
             session: Some(session),
             raw: false,
+            commission: Default::default(),
         }
     }
 
@@ -151,6 +154,16 @@ impl Shell {
                 )?;
             }
             "source" => self.source(arg, out)?,
+            "snapshot" | "scan" | "watch" | "record" | "plot" => {
+                let session = self.session.as_mut().expect("the session is back");
+                crate::commission::shell::helper(
+                    session,
+                    &mut self.commission,
+                    helper.name,
+                    arg,
+                    out,
+                )?
+            }
             "quit" => return Ok(Flow::Quit),
             other => unreachable!("helper table and dispatch disagree on :{other}"),
         }
