@@ -43,6 +43,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)')
             [CompletionResult]::new('asm', 'asm', [CompletionResultType]::ParameterValue, 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)')
             [CompletionResult]::new('disasm', 'disasm', [CompletionResultType]::ParameterValue, 'Turn a program file back into TMCL source')
+            [CompletionResult]::new('download', 'download', [CompletionResultType]::ParameterValue, 'Store a program (source or program file) in the module, verify it, optionally run it')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -97,6 +98,23 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             break
         }
+        'tmclsh;download' {
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
+            [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
+            [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Append every byte sent and received, timestamped and decoded, to FILE')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
+            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
+            [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
+            [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')
+            [CompletionResult]::new('--run', '--run', [CompletionResultType]::ParameterName, 'Start the program after downloading it')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
+            break
+        }
         'tmclsh;help' {
             [CompletionResult]::new('params', 'params', [CompletionResultType]::ParameterValue, 'Print the module''s axis and global parameters (those matching FILTER)')
             [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports of this machine')
@@ -104,6 +122,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)')
             [CompletionResult]::new('asm', 'asm', [CompletionResultType]::ParameterValue, 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)')
             [CompletionResult]::new('disasm', 'disasm', [CompletionResultType]::ParameterValue, 'Turn a program file back into TMCL source')
+            [CompletionResult]::new('download', 'download', [CompletionResultType]::ParameterValue, 'Store a program (source or program file) in the module, verify it, optionally run it')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -123,6 +142,9 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;help;disasm' {
+            break
+        }
+        'tmclsh;help;download' {
             break
         }
         'tmclsh;help;help' {

@@ -25,6 +25,9 @@ _tmclsh() {
             tmclsh,disasm)
                 cmd="tmclsh__subcmd__disasm"
                 ;;
+            tmclsh,download)
+                cmd="tmclsh__subcmd__download"
+                ;;
             tmclsh,help)
                 cmd="tmclsh__subcmd__help"
                 ;;
@@ -46,6 +49,9 @@ _tmclsh() {
             tmclsh__subcmd__help,disasm)
                 cmd="tmclsh__subcmd__help__subcmd__disasm"
                 ;;
+            tmclsh__subcmd__help,download)
+                cmd="tmclsh__subcmd__help__subcmd__download"
+                ;;
             tmclsh__subcmd__help,help)
                 cmd="tmclsh__subcmd__help__subcmd__help"
                 ;;
@@ -65,7 +71,7 @@ _tmclsh() {
 
     case "${cmd}" in
         tmclsh)
-            opts="-m -c -h -V --profile --port --baud --tcp --module --timeout --log --no-validate --no-enter --stay-ascii --help --version params ports completions run asm disasm help"
+            opts="-m -c -h -V --profile --port --baud --tcp --module --timeout --log --no-validate --no-enter --stay-ascii --help --version params ports completions run asm disasm download help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -176,8 +182,54 @@ _tmclsh() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        tmclsh__subcmd__download)
+            opts="-m -h --port --baud --tcp --module --timeout --log --no-validate --no-enter --stay-ascii --run --profile --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --module)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --log)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         tmclsh__subcmd__help)
-            opts="params ports completions run asm disasm help"
+            opts="params ports completions run asm disasm download help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -219,6 +271,20 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__help__subcmd__disasm)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        tmclsh__subcmd__help__subcmd__download)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )

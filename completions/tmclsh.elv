@@ -40,6 +40,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
+            cand download 'Store a program (source or program file) in the module, verify it, optionally run it'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;params'= {
@@ -87,6 +88,22 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -h 'Print help'
             cand --help 'Print help'
         }
+        &'tmclsh;download'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --run 'Start the program after downloading it'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
         &'tmclsh;help'= {
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
@@ -94,6 +111,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
+            cand download 'Store a program (source or program file) in the module, verify it, optionally run it'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;help;params'= {
@@ -107,6 +125,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;asm'= {
         }
         &'tmclsh;help;disasm'= {
+        }
+        &'tmclsh;help;download'= {
         }
         &'tmclsh;help;help'= {
         }

@@ -43,6 +43,7 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "completions" -d 'Prin
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "disasm" -d 'Turn a program file back into TMCL source'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "download" -d 'Store a program (source or program file) in the module, verify it, optionally run it'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'Print help'
@@ -69,10 +70,23 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -l list -d 'Print the
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -s h -l help -d 'Print help'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "ports" -d 'List the serial ports of this machine'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "completions" -d 'Print a shell completion script'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "disasm" -d 'Turn a program file back into TMCL source'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l run -d 'Start the program after downloading it'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download help" -f -a "ports" -d 'List the serial ports of this machine'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download help" -f -a "completions" -d 'Print a shell completion script'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download help" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download help" -f -a "disasm" -d 'Turn a program file back into TMCL source'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download help" -f -a "download" -d 'Store a program (source or program file) in the module, verify it, optionally run it'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'

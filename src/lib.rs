@@ -12,6 +12,7 @@ pub mod cli;
 pub mod exit;
 pub mod link;
 pub mod profile;
+pub mod program;
 pub mod protocol;
 pub mod repl;
 pub mod script;

@@ -4,6 +4,7 @@ mod asm;
 mod completions;
 pub mod connection;
 mod disasm;
+pub mod download;
 pub(crate) mod params;
 mod ports;
 pub mod run;
@@ -47,6 +48,8 @@ enum Command {
     Asm(asm::AsmArgs),
     /// Turn a program file back into TMCL source.
     Disasm(disasm::DisasmArgs),
+    /// Store a program (source or program file) in the module, verify it, optionally run it.
+    Download(download::DownloadArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
@@ -82,7 +85,8 @@ pub struct Failure {
 }
 
 impl Failure {
-    fn new(exit: Exit, message: impl Into<String>) -> Self {
+    /// A failure with its exit code.
+    pub fn new(exit: Exit, message: impl Into<String>) -> Self {
         Failure {
             message: message.into(),
             exit,
@@ -100,6 +104,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Run(args)) => return run::run(args, &profile),
         Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
         Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
+        Some(Command::Download(args)) => return download::run(args, &profile, out),
         None => return shell::run(cli.shell, &profile),
     };
     match result {

@@ -8,7 +8,10 @@ pub mod render;
 use std::io::{self, Write};
 use std::path::Path;
 
+use crate::cli::download;
 use crate::cli::params::write_table;
+use crate::program;
+use crate::protocol::tmcl::Instruction;
 use crate::protocol::tmcl::line::{address_char, address_of};
 use crate::script::{self, Limits};
 use crate::session::tmcl::{Echo, Exchange, TmclSession, WireMode};
@@ -133,6 +136,50 @@ impl Shell {
             "stop" => {
                 let exchange = self.session().stop_program(target)?.checked()?;
                 self.report_program(&exchange, "stopped", out)?;
+            }
+            "step" | "reset" | "status" => {
+                let command = match helper.name {
+                    "step" => 130,
+                    "reset" => 131,
+                    _ => 135,
+                };
+                let exchange =
+                    program::control(self.session(), target, Instruction::new(command, 0, 0, 0))?;
+                let mode = program::mode_text(self.session_ref(), target);
+                let c = address_char(target).unwrap_or('?');
+                match helper.name {
+                    "status" => {
+                        let value = exchange.value().unwrap_or(0);
+                        writeln!(
+                            out,
+                            "program on module {c}: {} ({value}); the module is in {mode} mode",
+                            program::status_name(value)
+                        )?
+                    }
+                    name => writeln!(
+                        out,
+                        "program {name} done on module {c}; the module is in {mode} mode"
+                    )?,
+                }
+            }
+            "download" => {
+                let (path, run) = match arg.strip_suffix("--run") {
+                    Some(path) => (path.trim(), true),
+                    None => (arg, false),
+                };
+                if path.is_empty() {
+                    return Err(SessionError::Usage(format!("usage: {}", helper.usage)));
+                }
+                let profile = self.session_ref().profile().clone();
+                let script_error = |f: crate::cli::Failure| SessionError::Script {
+                    exit: f.exit,
+                    message: f.message,
+                };
+                let instructions =
+                    download::load(Path::new(path), &profile).map_err(script_error)?;
+                let text = download::download_and_run(self.session(), &instructions, run)
+                    .map_err(script_error)?;
+                writeln!(out, "{text}")?;
             }
             "bin" => {
                 self.session().leave_ascii(target)?;

@@ -336,6 +336,31 @@ impl TmclSession {
         !self.moved.is_empty() || !self.running.is_empty()
     }
 
+    /// Stores one program instruction while the module is in download mode (binary mode, after
+    /// command 132). The instruction is checked as a program instruction, not as a direct-mode
+    /// command; the module answers status 101 (stored).
+    pub fn store_instruction(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<Exchange, SessionError> {
+        if self.contact(module)? != WireMode::Binary {
+            return Err(SessionError::Usage(format!(
+                "module {module} must be in binary mode to store a program"
+            )));
+        }
+        let line = Line {
+            address: Some(module),
+            op: Op::Command(instruction),
+        };
+        match validate::validate(&line, &self.profile, Mode::Program) {
+            Ok(_) => {}
+            Err(error) if self.options.validate => return Err(error.into()),
+            Err(error) => self.notices.push(format!("not validated: {error}")),
+        }
+        self.binary_request(module, instruction)
+    }
+
     /// Starts the module's stored TMCL program: ASCII `RUN`, or command 129 in binary mode.
     pub fn run_program(
         &mut self,
