@@ -6,6 +6,7 @@
 //! [`crate::link::Link`]; decorators add line pacing and fault injection to any device.
 
 pub mod clock;
+pub mod smd4;
 
 use std::time::Duration;
 

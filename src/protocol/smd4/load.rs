@@ -23,7 +23,6 @@ pub(crate) struct Smd4File {
 #[derive(Debug, Default, Deserialize)]
 pub(crate) struct SimulationRow {
     pub multi_line_quiet_gap_ms: Option<u64>,
-    pub ambient_temperature_c: Option<i64>,
     pub dhcp_ip: Option<String>,
     pub dhcp_netmask: Option<String>,
     pub dhcp_gateway: Option<String>,

@@ -18,8 +18,6 @@ pub const BUILTIN_TOML: &str = include_str!("../../../data/smd4.toml");
 pub struct SimConstants {
     /// How long the line must stay quiet before a multi-line reply counts as complete.
     pub quiet_gap: Duration,
-    /// MOTOR:T.
-    pub ambient_temperature_c: i64,
     /// IP address a DHCP server assigned.
     pub dhcp_ip: Ipv4Addr,
     /// Net mask a DHCP server assigned.
@@ -80,7 +78,6 @@ impl Smd4Spec {
                 .collect(),
             sim: SimConstants {
                 quiet_gap: Duration::from_millis(sim.multi_line_quiet_gap_ms.unwrap_or(100)),
-                ambient_temperature_c: sim.ambient_temperature_c.unwrap_or(25),
                 dhcp_ip: ip(&sim.dhcp_ip, Ipv4Addr::new(10, 0, 97, 70))?,
                 dhcp_netmask: ip(&sim.dhcp_netmask, Ipv4Addr::new(255, 255, 248, 0))?,
                 dhcp_gateway: ip(&sim.dhcp_gateway, Ipv4Addr::new(10, 0, 96, 1))?,
