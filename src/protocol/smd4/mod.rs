@@ -33,7 +33,7 @@ pub use format::{ErrorSpelling, FlagCase, FloatStyle};
 pub use hints::{Candidate, Completion, complete, hint, hint_for_line, usage};
 pub use items::{DataItem, Value};
 pub use multiline::{Progress, ReplyCollector, default_quiet_gap};
-pub use request::{PrefixStyle, Request, RequestError};
+pub use request::{ADDRESSING_HELP, PrefixStyle, Request, RequestError};
 pub use response::{Expectation, Response, ResponseError, parse_response};
 pub use spec::{SimConstants, Smd4Spec};
 pub use types::{ArgValue, ItemType};

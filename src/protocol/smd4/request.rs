@@ -14,6 +14,17 @@ use crate::exit::{Exit, ExitStatus};
 /// The request terminator.
 pub const TERMINATOR: &str = "\r\n";
 
+/// The addressing rules of the document, for help texts.
+pub const ADDRESSING_HELP: &str = "\
+Addressing (several SMD4s on one RS232/RS485 bus): a request may start with @N.
+  @0        broadcast: every drive executes it, none replies
+  @1..@247  only the drive whose COMS:SERIAL:SLAVEADDR is N executes and replies
+  other N   ignored by every drive
+The first complete packet with a prefix switches a drive into addressing mode until it restarts
+(power cycle or SYS:RESET): from then on it silently ignores packets without a prefix, malformed
+packets and packets for other addresses. Whether a comma follows the prefix (@3MOTOR:STOP or
+@3,MOTOR:STOP) is not settled by the document; the first form is its template.";
+
 /// Whether a comma follows the address prefix of a request.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum PrefixStyle {
