@@ -3,7 +3,7 @@
 //! Pure code: text in, values out. The command table, flag names, error texts and simulator
 //! constants are data (`data/smd4.toml`), loaded once by [`Smd4Spec::builtin`].
 //!
-//! A session uses it like this: [`validate`] the typed [`Request`] (refuse with exit 2), send
+//! A session uses it like this: [`validate()`] the typed [`Request`] (refuse with exit 2), send
 //! [`Request::wire`], feed the received lines to a [`ReplyCollector`] built from
 //! [`Expectation::for_request`], and look at the [`Response`] (a [`DeviceError`] means exit 1).
 
