@@ -54,10 +54,11 @@ fn store_all(
     for (address, instruction) in program.iter().enumerate() {
         let exchange = s.store_instruction(module, *instruction)?;
         if exchange.status() != Some(Status::Stored) {
+            let status = exchange.status().unwrap_or(Status::Other(0));
             return Err(SessionError::Device {
-                module: address_char(module).unwrap_or('?'),
+                module: address_char(module).unwrap_or('?').to_string(),
                 sent: format!("instruction {address} ({})", exchange.sent),
-                status: exchange.status().unwrap_or(Status::Other(0)),
+                reason: format!("status {status}, expected 101 (stored)"),
             });
         }
         progress(address + 1, program.len() * 2);
