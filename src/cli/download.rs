@@ -17,7 +17,7 @@ use crate::session::tmcl::TmclSession;
 
 use super::Failure;
 use super::connection::{ConnectionArgs, SessionArgs};
-use super::shell::open_session;
+use super::shell::open_tmcl;
 
 /// Arguments of `download`.
 #[derive(Debug, Clone, clap::Args)]
@@ -108,7 +108,7 @@ pub fn run(
 ) -> Result<Exit, Failure> {
     interrupt::install();
     let instructions = load(&args.file, profile)?;
-    let mut session = open_session(&args.connection, &args.session, profile)?;
+    let mut session = open_tmcl(&args.connection, &args.session, profile)?;
     let result = download_and_run(&mut session, &instructions, args.run);
     for notice in session.take_notices() {
         eprintln!("tmclsh: {notice}");

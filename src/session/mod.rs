@@ -4,8 +4,10 @@
 //! stopping motors it set moving when a run is aborted. The REPL, `-c` lines, piped stdin and
 //! Rhai scripts all go through the same session.
 
+mod any;
 pub mod interrupt;
 mod rx;
+pub mod smd4;
 pub mod tmcl;
 pub mod transcript;
 mod wire;
@@ -15,6 +17,7 @@ use std::time::Duration;
 use crate::exit::{Exit, ExitStatus};
 use crate::protocol::tmcl::InputError;
 
+pub use any::{Reply, Session};
 pub use transcript::Transcript;
 
 /// Settings shared by every dialect's session.
