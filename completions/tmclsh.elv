@@ -22,16 +22,20 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand -c 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
-            cand -h 'Print help'
-            cand --help 'Print help'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
             cand -V 'Print version'
             cand --version 'Print version'
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
@@ -40,6 +44,10 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
+            cand download 'Store a program (source or program file) in the module, verify it, optionally run it'
+            cand snapshot 'Save the module''s parameters to a TOML file, compare with one, or write one back'
+            cand scan 'Find the modules on the bus, with firmware versions and echo settings'
+            cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;params'= {
@@ -61,18 +69,22 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --max-operations 'Operations after which a runaway script is stopped (0: no limit)'
             cand --max-call-depth 'Deepest nesting of function calls'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
-            cand -h 'Print help'
-            cand --help 'Print help'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;asm'= {
             cand -o 'Write the program file (format in the README); without it the source is only checked'
@@ -87,6 +99,137 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -h 'Print help'
             cand --help 'Print help'
         }
+        &'tmclsh;download'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --run 'Start the program after downloading it'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;snapshot'= {
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -h 'Print help'
+            cand --help 'Print help'
+            cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
+            cand diff 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
+            cand restore 'Write FILE''s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'tmclsh;snapshot;save'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;snapshot;diff'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;snapshot;restore'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --store 'Afterwards store the written parameters to EEPROM (STAP/STGP), after a confirmation'
+            cand --yes 'Confirm --store without asking (for scripts)'
+            cand --dry-run 'Only print the lines that would be sent'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;snapshot;help'= {
+            cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
+            cand diff 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
+            cand restore 'Write FILE''s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'tmclsh;snapshot;help;save'= {
+        }
+        &'tmclsh;snapshot;help;diff'= {
+        }
+        &'tmclsh;snapshot;help;restore'= {
+        }
+        &'tmclsh;snapshot;help;help'= {
+        }
+        &'tmclsh;scan'= {
+            cand --addresses 'Addresses to try: numbers 1..255 and letters A..Z, single or as ranges (1-26, A,C,30-40). Addresses above 26 have no ASCII character and are tried with binary frames'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;transcript'= {
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -h 'Print help'
+            cand --help 'Print help'
+            cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'tmclsh;transcript;to-rhai'= {
+            cand -o 'Write the script to FILE instead of stdout'
+            cand --output 'Write the script to FILE instead of stdout'
+            cand --wait 'Milliseconds the script waits for a live value (position, switch) to reach the value the transcript saw'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
+        &'tmclsh;transcript;help'= {
+            cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'tmclsh;transcript;help;to-rhai'= {
+        }
+        &'tmclsh;transcript;help;help'= {
+        }
         &'tmclsh;help'= {
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
@@ -94,6 +237,10 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
+            cand download 'Store a program (source or program file) in the module, verify it, optionally run it'
+            cand snapshot 'Save the module''s parameters to a TOML file, compare with one, or write one back'
+            cand scan 'Find the modules on the bus, with firmware versions and echo settings'
+            cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;help;params'= {
@@ -107,6 +254,26 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;asm'= {
         }
         &'tmclsh;help;disasm'= {
+        }
+        &'tmclsh;help;download'= {
+        }
+        &'tmclsh;help;snapshot'= {
+            cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
+            cand diff 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
+            cand restore 'Write FILE''s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+        }
+        &'tmclsh;help;snapshot;save'= {
+        }
+        &'tmclsh;help;snapshot;diff'= {
+        }
+        &'tmclsh;help;snapshot;restore'= {
+        }
+        &'tmclsh;help;scan'= {
+        }
+        &'tmclsh;help;transcript'= {
+            cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
+        }
+        &'tmclsh;help;transcript;to-rhai'= {
         }
         &'tmclsh;help;help'= {
         }

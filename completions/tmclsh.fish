@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_tmclsh_global_optspecs
-    string join \n profile= port= baud= tcp= m/module= timeout= log= no-validate no-enter stay-ascii c= h/help V/version
+    string join \n profile= port= baud= tcp= protocol= m/module= timeout= log= no-validate no-enter stay-ascii address= prefix-comma quiet-gap= c= h/help V/version
 end
 
 function __fish_tmclsh_needs_command
@@ -28,14 +28,19 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -l profile -d 'Module profil
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s c -d 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
-complete -c tmclsh -n "__fish_tmclsh_needs_command" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s V -l version -d 'Print version'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "ports" -d 'List the serial ports of this machine'
@@ -43,6 +48,10 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "completions" -d 'Prin
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "disasm" -d 'Turn a program file back into TMCL source'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "download" -d 'Store a program (source or program file) in the module, verify it, optionally run it'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "snapshot" -d 'Save the module\'s parameters to a TOML file, compare with one, or write one back'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "scan" -d 'Find the modules on the bus, with firmware versions and echo settings'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "transcript" -d 'Turn a --log transcript into a replayable Rhai script'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'Print help'
@@ -53,26 +62,129 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -s h -l help 
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-operations -d 'Operations after which a runaway script is stopped (0: no limit)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-call-depth -d 'Deepest nesting of function calls' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -s o -l output -d 'Write the program file (format in the README); without it the source is only checked' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -l list -d 'Print the listing: address, the 7 instruction bytes and the source line'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -s h -l help -d 'Print help'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "ports" -d 'List the serial ports of this machine'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "completions" -d 'Print a shell completion script'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "disasm" -d 'Turn a program file back into TMCL source'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l run -d 'Start the program after downloading it'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -f -a "save" -d 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -f -a "diff" -d 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -f -a "restore" -d 'Write FILE\'s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l store -d 'Afterwards store the written parameters to EEPROM (STAP/STGP), after a confirmation'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l yes -d 'Confirm --store without asking (for scripts)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l dry-run -d 'Only print the lines that would be sent'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "save" -d 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "diff" -d 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "restore" -d 'Write FILE\'s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l addresses -d 'Addresses to try: numbers 1..255 and letters A..Z, single or as ranges (1-26, A,C,30-40). Addresses above 26 have no ASCII character and are tried with binary frames' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -f -a "to-rhai" -d 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from to-rhai" -s o -l output -d 'Write the script to FILE instead of stdout' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from to-rhai" -l wait -d 'Milliseconds the script waits for a live value (position, switch) to reach the value the transcript saw' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from to-rhai" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from to-rhai" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from help" -f -a "to-rhai" -d 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "ports" -d 'List the serial ports of this machine'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "completions" -d 'Print a shell completion script'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "disasm" -d 'Turn a program file back into TMCL source'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "download" -d 'Store a program (source or program file) in the module, verify it, optionally run it'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "snapshot" -d 'Save the module\'s parameters to a TOML file, compare with one, or write one back'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "scan" -d 'Find the modules on the bus, with firmware versions and echo settings'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "transcript" -d 'Turn a --log transcript into a replayable Rhai script'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from snapshot" -f -a "save" -d 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from snapshot" -f -a "diff" -d 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from snapshot" -f -a "restore" -d 'Write FILE\'s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from transcript" -f -a "to-rhai" -d 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'

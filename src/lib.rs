@@ -13,6 +13,7 @@ pub mod commission;
 pub mod exit;
 pub mod link;
 pub mod profile;
+pub mod program;
 pub mod protocol;
 pub mod repl;
 pub mod script;

@@ -7,6 +7,9 @@ use std::time::Duration;
 use crate::exit::Exit;
 use crate::link::{Link, SerialLink, TcpLink};
 use crate::profile::Profile;
+use crate::protocol::Dialect;
+use crate::protocol::smd4::PrefixStyle;
+use crate::session::smd4::Smd4Options;
 use crate::session::{SessionOptions, Transcript};
 
 use super::Failure;
@@ -24,6 +27,44 @@ pub struct ConnectionArgs {
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT")]
     pub tcp: Option<String>,
+    /// The protocol the module speaks (also selects the built-in simulated module).
+    #[arg(long, value_enum, default_value_t = Dialect::Tmcl, env = "TMCLSH_PROTOCOL")]
+    pub protocol: Dialect,
+}
+
+/// Settings of the SMD4 dialect.
+#[derive(Debug, Clone, clap::Args)]
+#[command(next_help_heading = "SMD4")]
+pub struct Smd4Args {
+    /// SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=247))]
+    pub address: Option<u32>,
+    /// SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual's @3MOTOR:STOP.
+    #[arg(long)]
+    pub prefix_comma: bool,
+    /// SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have
+    /// no end marker).
+    #[arg(long, value_name = "MS", value_parser = clap::value_parser!(u64).range(1..))]
+    pub quiet_gap: Option<u64>,
+}
+
+impl Smd4Args {
+    /// The SMD4 session options these flags select.
+    pub fn options(&self) -> Smd4Options {
+        let defaults = Smd4Options::default();
+        Smd4Options {
+            address: self.address,
+            prefix: if self.prefix_comma {
+                PrefixStyle::Comma
+            } else {
+                PrefixStyle::Attached
+            },
+            quiet_gap: self
+                .quiet_gap
+                .map(Duration::from_millis)
+                .unwrap_or(defaults.quiet_gap),
+        }
+    }
 }
 
 /// How requests are sent and checked.
@@ -100,7 +141,7 @@ impl ConnectionArgs {
                     .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
             )
         } else {
-            crate::sim::builtin_link(profile)
+            crate::sim::builtin_link(profile, self.protocol)
         };
         Ok(link)
     }

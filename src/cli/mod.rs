@@ -4,6 +4,7 @@ mod asm;
 mod completions;
 pub mod connection;
 mod disasm;
+pub mod download;
 pub(crate) mod params;
 mod ports;
 pub mod run;
@@ -50,6 +51,8 @@ enum Command {
     Asm(asm::AsmArgs),
     /// Turn a program file back into TMCL source.
     Disasm(disasm::DisasmArgs),
+    /// Store a program (source or program file) in the module, verify it, optionally run it.
+    Download(download::DownloadArgs),
     /// Save the module's parameters to a TOML file, compare with one, or write one back.
     Snapshot(snapshot::SnapshotArgs),
     /// Find the modules on the bus, with firmware versions and echo settings.
@@ -91,7 +94,8 @@ pub struct Failure {
 }
 
 impl Failure {
-    fn new(exit: Exit, message: impl Into<String>) -> Self {
+    /// A failure with its exit code.
+    pub fn new(exit: Exit, message: impl Into<String>) -> Self {
         Failure {
             message: message.into(),
             exit,
@@ -109,6 +113,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Run(args)) => return run::run(args, &profile),
         Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
         Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
+        Some(Command::Download(args)) => return download::run(args, &profile, out),
         Some(Command::Snapshot(args)) => return snapshot::run(args, &profile, out),
         Some(Command::Scan(args)) => return scan::run(args, &profile, out),
         Some(Command::Transcript(args)) => return transcript::run(args, &profile, out),

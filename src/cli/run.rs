@@ -9,7 +9,7 @@ use crate::script::{self, Limits};
 use crate::session::interrupt;
 
 use super::Failure;
-use super::connection::{ConnectionArgs, SessionArgs};
+use super::connection::{ConnectionArgs, SessionArgs, Smd4Args};
 use super::shell::open_session;
 
 /// Arguments of `run`.
@@ -24,6 +24,9 @@ pub struct RunArgs {
     /// How requests are sent and checked.
     #[command(flatten)]
     pub session: SessionArgs,
+    /// SMD4 settings.
+    #[command(flatten)]
+    pub smd4: Smd4Args,
     /// Operations after which a runaway script is stopped (0: no limit).
     #[arg(long, value_name = "N", default_value_t = Limits::default().max_operations)]
     pub max_operations: u64,
@@ -40,7 +43,7 @@ pub struct RunArgs {
 pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     interrupt::install();
     script::check_file(&args.script).map_err(|r| Failure::new(r.exit, r.message))?;
-    let session = open_session(&args.connection, &args.session, profile)?;
+    let session = open_session(&args.connection, &args.session, &args.smd4, profile)?;
     let limits = Limits {
         max_operations: args.max_operations,
         max_call_depth: args.max_call_depth,

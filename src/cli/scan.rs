@@ -29,6 +29,12 @@ pub struct ScanArgs {
 /// Runs the scan; exit code 3 when no module answered.
 pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Result<Exit, Failure> {
     interrupt::install();
+    if args.connection.protocol != crate::protocol::Dialect::Tmcl {
+        return Err(Failure::new(
+            Exit::Refused,
+            "scan works with TMCL modules only",
+        ));
+    }
     let addresses = scan::parse_addresses(&args.addresses)
         .map_err(|e| Failure::new(Exit::Refused, format!("--addresses: {e}")))?;
     let options = args.session.options();

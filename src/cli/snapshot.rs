@@ -15,7 +15,7 @@ use crate::session::{SessionError, interrupt};
 
 use super::Failure;
 use super::connection::{ConnectionArgs, SessionArgs};
-use super::shell::open_session;
+use super::shell::open_tmcl;
 
 /// Arguments of `snapshot`.
 #[derive(Debug, Clone, clap::Args)]
@@ -142,7 +142,7 @@ fn with_session(
     profile: &Arc<Profile>,
     f: impl FnOnce(&mut TmclSession) -> Result<(), SessionError>,
 ) -> Result<Exit, Failure> {
-    let mut s = open_session(connection, session, profile)?;
+    let mut s = open_tmcl(connection, session, profile)?;
     let result = f(&mut s);
     for notice in s.take_notices() {
         eprintln!("tmclsh: {notice}");

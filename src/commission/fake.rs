@@ -66,9 +66,9 @@ impl FakeDevice {
 
     fn refused(name: &str) -> SessionError {
         SessionError::Device {
-            module: 'A',
+            module: "A".into(),
             sent: name.to_string(),
-            status: Status::WrongType,
+            reason: format!("status {}", Status::WrongType),
         }
     }
 }

@@ -7,8 +7,7 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use crate::session::SessionError;
-use crate::session::tmcl::TmclSession;
+use crate::session::{Session, SessionError};
 use crate::sim::clock::SystemClock;
 
 use super::actions::{self, RestoreOptions};
@@ -27,18 +26,19 @@ pub struct State {
 
 /// Runs `:NAME ARG` for the commissioning helpers.
 pub fn helper(
-    session: &mut TmclSession,
+    session: &mut Session,
     state: &mut State,
     name: &str,
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
+    let what = format!(":{name}");
     match name {
-        "snapshot" => snapshot(session, arg, out),
-        "scan" => scan_bus(session, arg, out),
-        "watch" => watch(session, arg, out),
+        "snapshot" => snapshot(param_device(session, &what)?, arg, out),
+        "scan" => scan_bus(session.tmcl(&what)?, arg, out),
+        "watch" => watch(param_device(session, &what)?, arg, out),
         "record" => {
-            let (path, recording) = record(session, arg, out)?;
+            let (path, recording) = record(param_device(session, &what)?, arg, out)?;
             state.last_recording = Some((path, recording));
             Ok(())
         }
@@ -49,11 +49,29 @@ pub fn helper(
     }
 }
 
+/// The session's module as a [`ParamDevice`]; a dialect whose session implements the trait gets
+/// an arm here.
+pub fn param_device<'a>(
+    session: &'a mut Session,
+    what: &str,
+) -> Result<&'a mut dyn ParamDevice, SessionError> {
+    match session {
+        Session::Tmcl(s) => Ok(s),
+        Session::Smd4(_) => Err(SessionError::Usage(format!(
+            "{what} works with TMCL modules only"
+        ))),
+    }
+}
+
 fn usage(text: &str) -> SessionError {
     SessionError::Usage(format!("usage: {text}"))
 }
 
-fn snapshot(session: &mut TmclSession, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
+fn snapshot(
+    session: &mut dyn ParamDevice,
+    arg: &str,
+    out: &mut dyn Write,
+) -> Result<(), SessionError> {
     const USAGE: &str =
         ":snapshot save FILE | diff FILE [FILE2] | restore FILE [--dry-run] [--store --yes]";
     let words: Vec<&str> = arg.split_whitespace().collect();
@@ -105,7 +123,11 @@ fn snapshot(session: &mut TmclSession, arg: &str, out: &mut dyn Write) -> Result
     }
 }
 
-fn scan_bus(session: &mut TmclSession, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
+fn scan_bus(
+    session: &mut crate::session::tmcl::TmclSession,
+    arg: &str,
+    out: &mut dyn Write,
+) -> Result<(), SessionError> {
     const USAGE: &str = ":scan [ADDRESSES] [TIME PER REPLY]  (e.g. :scan 1-26 200ms)";
     let words: Vec<&str> = arg.split_whitespace().collect();
     let addresses = match words.first() {
@@ -163,7 +185,11 @@ fn interactive() -> bool {
     std::io::stdin().is_terminal() && std::io::stdout().is_terminal()
 }
 
-fn watch(session: &mut TmclSession, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
+fn watch(
+    session: &mut dyn ParamDevice,
+    arg: &str,
+    out: &mut dyn Write,
+) -> Result<(), SessionError> {
     const USAGE: &str =
         ":watch PARAM[,PARAM…] [INTERVAL]  (e.g. :watch actual_position,actual_speed 200ms)";
     let words: Vec<&str> = arg.split_whitespace().collect();
@@ -181,7 +207,7 @@ fn watch(session: &mut TmclSession, arg: &str, out: &mut dyn Write) -> Result<()
 }
 
 fn record(
-    session: &mut TmclSession,
+    session: &mut dyn ParamDevice,
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(PathBuf, Recording), SessionError> {

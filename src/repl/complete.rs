@@ -3,6 +3,8 @@
 //! names with their banks for SGP/GGP/STGP/RSGP, helper commands and their arguments.
 
 use crate::profile::{Param, Profile};
+use crate::protocol::Dialect;
+use crate::protocol::smd4::Smd4Spec;
 use crate::protocol::tmcl::commands::{CommandSpec, OperandKind};
 use crate::shell::helpers::{self, ArgKind};
 
@@ -32,15 +34,54 @@ pub enum Completion {
     },
 }
 
+/// What typed lines mean: the TMCL tables or the SMD4 command table.
+#[derive(Debug, Clone, Copy)]
+pub enum Grammar<'a> {
+    /// TMCL command lines.
+    Tmcl(&'a Profile),
+    /// SMD4 requests.
+    Smd4(&'a Smd4Spec),
+}
+
+impl Grammar<'_> {
+    fn dialect(&self) -> Dialect {
+        match self {
+            Grammar::Tmcl(_) => Dialect::Tmcl,
+            Grammar::Smd4(_) => Dialect::Smd4,
+        }
+    }
+}
+
 /// Completes the word ending at `pos` in `line`.
-pub fn complete(line: &str, pos: usize, profile: &Profile) -> Completion {
+pub fn complete(line: &str, pos: usize, grammar: Grammar) -> Completion {
     let before = &line[..pos];
     let start = before.rfind([' ', ',', '\t']).map_or(0, |i| i + 1);
     let word = &before[start..];
-    let words = |candidates| Completion::Words { start, candidates };
     if let Some(rest) = before.trim_start().strip_prefix(':') {
-        return complete_helper(rest, start, word, profile);
+        return complete_helper(rest, start, word, grammar);
     }
+    match grammar {
+        Grammar::Tmcl(profile) => complete_tmcl(before, start, word, profile),
+        Grammar::Smd4(spec) => {
+            let found = crate::protocol::smd4::complete(&spec.commands, before);
+            let candidates = found
+                .candidates
+                .into_iter()
+                .map(|c| Candidate {
+                    display: c.display,
+                    replacement: c.replacement,
+                })
+                .collect();
+            Completion::Words {
+                start: found.start,
+                candidates,
+            }
+        }
+    }
+}
+
+fn complete_tmcl(before: &str, start: usize, word: &str, profile: &Profile) -> Completion {
+    let words = |candidates| Completion::Words { start, candidates };
     let head_end = before.trim_start().len();
     let leading = before.len() - head_end;
     let tokens: Vec<&str> = before[leading..]
@@ -150,10 +191,10 @@ fn params(list: &[Param], prefix: &str, display: impl Fn(&Param) -> String) -> V
         .collect()
 }
 
-fn complete_helper(rest: &str, start: usize, word: &str, profile: &Profile) -> Completion {
+fn complete_helper(rest: &str, start: usize, word: &str, grammar: Grammar) -> Completion {
+    let dialect = grammar.dialect();
     let Some((name, _)) = rest.split_once(' ') else {
-        let candidates = helpers::HELPERS
-            .iter()
+        let candidates = helpers::available(dialect)
             .filter(|h| h.name.starts_with(&rest.to_ascii_lowercase()))
             .map(|h| Candidate {
                 display: format!(":{}", h.name),
@@ -162,7 +203,7 @@ fn complete_helper(rest: &str, start: usize, word: &str, profile: &Profile) -> C
             .collect();
         return Completion::Words { start, candidates };
     };
-    let Ok(helper) = helpers::find(name) else {
+    let Ok(helper) = helpers::find(name, dialect) else {
         return Completion::Words {
             start,
             candidates: Vec::new(),
@@ -182,32 +223,35 @@ fn complete_helper(rest: &str, start: usize, word: &str, profile: &Profile) -> C
     let candidates = match helper.arg {
         ArgKind::File => return Completion::File { start },
         ArgKind::Echo => fixed(&["char", "line", "none"]),
-        ArgKind::Param => param_names(profile, &lower),
+        ArgKind::Param => name_candidates(grammar, &lower),
         ArgKind::Topic => {
-            let mut topics: Vec<&str> = vec!["params", "exit", "ascii"];
-            topics.extend(helpers::HELPERS.iter().map(|h| h.name));
+            let mut topics: Vec<&str> = match grammar {
+                Grammar::Tmcl(_) => vec!["params", "exit", "ascii"],
+                Grammar::Smd4(_) => vec!["exit", "addressing"],
+            };
+            topics.extend(helpers::available(dialect).map(|h| h.name));
             let mut out: Vec<Candidate> = fixed(&topics);
-            out.extend(mnemonics(word, profile));
+            if let Grammar::Tmcl(profile) = grammar {
+                out.extend(mnemonics(word, profile));
+            }
             out
         }
         ArgKind::Snapshot if first_argument(rest) => fixed(&["save", "diff", "restore"]),
-        ArgKind::Record if !first_argument(rest) => param_names(profile, &lower),
+        ArgKind::Record if !first_argument(rest) => name_candidates(grammar, &lower),
         ArgKind::Snapshot | ArgKind::Record => return Completion::File { start },
         ArgKind::None | ArgKind::Module | ArgKind::Address => Vec::new(),
     };
     Completion::Words { start, candidates }
 }
 
-/// Axis and global parameter identifiers starting with `prefix`.
-fn param_names(profile: &Profile, prefix: &str) -> Vec<Candidate> {
-    profile
-        .axis
-        .iter()
-        .chain(&profile.global)
-        .filter(|p| p.ident.starts_with(prefix))
-        .map(|p| Candidate {
-            display: p.ident.clone(),
-            replacement: p.ident.clone(),
+/// The names starting with `prefix` (lower case), as candidates.
+fn name_candidates(grammar: Grammar, prefix: &str) -> Vec<Candidate> {
+    names(grammar)
+        .into_iter()
+        .filter(|n| n.to_ascii_lowercase().starts_with(prefix))
+        .map(|n| Candidate {
+            display: n.clone(),
+            replacement: n,
         })
         .collect()
 }
@@ -216,6 +260,23 @@ fn param_names(profile: &Profile, prefix: &str) -> Vec<Candidate> {
 fn first_argument(rest: &str) -> bool {
     let args = rest.split_once(' ').map_or("", |(_, a)| a.trim_start());
     !args.contains(char::is_whitespace)
+}
+
+/// Parameter identifiers (TMCL) or mnemonics (SMD4), for `:params` completion.
+fn names(grammar: Grammar) -> Vec<String> {
+    match grammar {
+        Grammar::Tmcl(profile) => profile
+            .axis
+            .iter()
+            .chain(&profile.global)
+            .map(|p| p.ident.clone())
+            .collect(),
+        Grammar::Smd4(spec) => spec
+            .commands
+            .mnemonics()
+            .map(|m| m.to_ascii_lowercase())
+            .collect(),
+    }
 }
 
 #[cfg(test)]

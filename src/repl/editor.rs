@@ -12,16 +12,26 @@ use rustyline::validate::Validator;
 use rustyline::{Context, Helper};
 
 use crate::profile::Profile;
+use crate::protocol::Dialect;
+use crate::protocol::smd4::{self, Request, Smd4Spec};
 use crate::protocol::tmcl::line;
 use crate::protocol::tmcl::validate::{Mode, validate};
 use crate::shell::helpers;
 
-use super::complete::{Completion, complete};
+use super::complete::{Completion, Grammar, complete};
 use super::hint::hint;
+
+/// What the REPL's lines are checked against.
+pub enum Tables {
+    /// A TMCL module's profile.
+    Tmcl(Arc<Profile>),
+    /// The SMD4 command table.
+    Smd4(&'static Smd4Spec),
+}
 
 /// Completion, hints and highlighting for the REPL.
 pub struct ReplHelper {
-    profile: Arc<Profile>,
+    tables: Tables,
     files: FilenameCompleter,
     /// The mode lines are validated for (ASCII, or binary after `:bin`).
     pub mode: Mode,
@@ -30,10 +40,10 @@ pub struct ReplHelper {
 }
 
 impl ReplHelper {
-    /// A helper for this profile.
-    pub fn new(profile: Arc<Profile>, color: bool) -> Self {
+    /// A helper for these tables.
+    pub fn new(tables: Tables, color: bool) -> Self {
         ReplHelper {
-            profile,
+            tables,
             files: FilenameCompleter::new(),
             mode: Mode::Ascii,
             color,
@@ -48,11 +58,31 @@ impl ReplHelper {
         }
         if let Some(rest) = text.strip_prefix(':') {
             let name = rest.split_whitespace().next().unwrap_or("");
-            return helpers::find(name).is_err();
+            return helpers::find(name, self.dialect()).is_err();
         }
-        match line::parse(text, &self.profile) {
-            Ok(parsed) => validate(&parsed, &self.profile, self.mode).is_err(),
-            Err(_) => true,
+        match &self.tables {
+            Tables::Tmcl(profile) => match line::parse(text, profile) {
+                Ok(parsed) => validate(&parsed, profile, self.mode).is_err(),
+                Err(_) => true,
+            },
+            Tables::Smd4(spec) => match Request::parse(text) {
+                Ok(request) => smd4::validate(&request, &spec.commands).is_err(),
+                Err(_) => true,
+            },
+        }
+    }
+
+    fn dialect(&self) -> Dialect {
+        match self.tables {
+            Tables::Tmcl(_) => Dialect::Tmcl,
+            Tables::Smd4(_) => Dialect::Smd4,
+        }
+    }
+
+    fn grammar(&self) -> Grammar<'_> {
+        match &self.tables {
+            Tables::Tmcl(profile) => Grammar::Tmcl(profile),
+            Tables::Smd4(spec) => Grammar::Smd4(spec),
         }
     }
 }
@@ -66,7 +96,7 @@ impl Completer for ReplHelper {
         pos: usize,
         ctx: &Context<'_>,
     ) -> rustyline::Result<(usize, Vec<Pair>)> {
-        match complete(text, pos, &self.profile) {
+        match complete(text, pos, self.grammar()) {
             Completion::Words { start, candidates } => Ok((
                 start,
                 candidates
@@ -86,9 +116,15 @@ impl Hinter for ReplHelper {
     type Hint = String;
 
     fn hint(&self, text: &str, pos: usize, _ctx: &Context<'_>) -> Option<String> {
-        (pos == text.len())
-            .then(|| hint(text, &self.profile))
-            .flatten()
+        if pos != text.len() {
+            return None;
+        }
+        match &self.tables {
+            Tables::Tmcl(profile) => hint(text, profile),
+            Tables::Smd4(spec) => {
+                smd4::hint_for_line(&spec.commands, text).map(|h| format!("  ← {h}"))
+            }
+        }
     }
 }
 

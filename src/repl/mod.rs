@@ -16,14 +16,13 @@ use rustyline::history::DefaultHistory;
 use rustyline::{CompletionType, Config, Editor};
 
 use crate::exit::Exit;
-use crate::protocol::tmcl::Instruction;
 use crate::protocol::tmcl::validate::Mode;
 use crate::session::tmcl::WireMode;
-use crate::session::{SessionError, interrupt};
-use crate::shell::render::decode;
+use crate::session::{Session, SessionError, interrupt};
+use crate::shell::render::decode_reply;
 use crate::shell::{Flow, Shell};
 
-use editor::ReplHelper;
+use editor::{ReplHelper, Tables};
 
 /// Whether output may be coloured: a terminal, and NO_COLOR unset.
 pub fn color_enabled() -> bool {
@@ -52,10 +51,11 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
             return Exit::Link;
         }
     };
-    editor.set_helper(Some(ReplHelper::new(
-        shell.session().profile().clone(),
-        color,
-    )));
+    let tables = match shell.session_ref() {
+        Session::Tmcl(s) => Tables::Tmcl(s.profile().clone()),
+        Session::Smd4(s) => Tables::Smd4(s.spec()),
+    };
+    editor.set_helper(Some(ReplHelper::new(tables, color)));
     let history = history_path();
     if let Some(path) = &history {
         let _ = editor.load_history(path);
@@ -67,10 +67,12 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         "Type :help for help, Tab to complete, Ctrl-D to leave."
     );
     loop {
-        let session = shell.session_ref();
-        let mode = match session.module_state(session.target()) {
-            Some((WireMode::Binary, _)) => Mode::Binary,
-            _ => Mode::Ascii,
+        let mode = match shell.session_ref() {
+            Session::Tmcl(s) => match s.module_state(s.target()) {
+                Some((WireMode::Binary, _)) => Mode::Binary,
+                _ => Mode::Ascii,
+            },
+            Session::Smd4(_) => Mode::Ascii,
         };
         if let Some(helper) = editor.helper_mut() {
             helper.mode = mode;
@@ -110,10 +112,10 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
     let result = if text.starts_with(':') {
         shell.helper(text, out)
     } else {
-        shell.session().execute(text).map(|exchange| {
-            let decoded = decode(&exchange, shell.session().profile());
+        shell.session().execute(text).map(|reply| {
+            let decoded = decode_reply(&reply, shell.session_ref());
             let shown = if shell.raw {
-                exchange.raw.clone()
+                reply.shown()
             } else {
                 decoded.text
             };
@@ -156,21 +158,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
 
 /// After Ctrl-C: MST to the target module, and to every module this session set moving.
 fn stop_target(shell: &mut Shell, out: &mut dyn Write) {
-    let target = shell.session().target();
-    let mut report = Vec::new();
-    for motor in 0..shell.session().profile().axes {
-        match shell
-            .session()
-            .request(target, Instruction::new(3, 0, motor, 0))
-        {
-            Ok(_) => report.push(format!(
-                "interrupted: stopped motor {motor} of the target module (MST)"
-            )),
-            Err(e) => report.push(format!("interrupted; MST failed: {e}")),
-        }
-    }
-    report.extend(shell.session().stop_motion());
-    for line in report {
+    for line in shell.session().stop_target() {
         let _ = writeln!(out, "{line}");
     }
 }

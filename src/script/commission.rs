@@ -3,7 +3,9 @@
 //! `record_csv` (CSV files). The extension is required, so a script cannot overwrite arbitrary
 //! files with a snapshot or a recording.
 
+use std::cell::RefCell;
 use std::path::{Path, PathBuf};
+use std::rc::Rc;
 use std::time::Duration;
 
 use rhai::{Array, Dynamic, Engine, INT, Map};
@@ -16,10 +18,10 @@ use crate::sim::clock::SystemClock;
 
 use super::common::duration;
 use super::failure::{Fallible, device, refused};
-use super::tmcl::Shared;
 
-/// Registers the commissioning functions over `session`.
-pub fn register(engine: &mut Engine, session: &Shared) {
+/// Registers the commissioning functions over `session` (any dialect whose session is a
+/// [`ParamDevice`]).
+pub fn register<S: ParamDevice + 'static>(engine: &mut Engine, session: &Rc<RefCell<S>>) {
     let s = session.clone();
     volatile!(
         engine,
@@ -99,7 +101,7 @@ pub fn register(engine: &mut Engine, session: &Shared) {
 
 /// Writes the snapshot back (verifying each value), storing to EEPROM when `store`; returns how
 /// many parameters were written and verified.
-fn restore(session: &Shared, path: &str, store: bool) -> Fallible<INT> {
+fn restore<S: ParamDevice>(session: &RefCell<S>, path: &str, store: bool) -> Fallible<INT> {
     let path = allowed(path, "toml")?;
     let options = RestoreOptions {
         store,

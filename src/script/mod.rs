@@ -19,6 +19,7 @@ macro_rules! volatile {
 mod commission;
 mod common;
 pub mod failure;
+mod smd4;
 mod tmcl;
 mod waiting;
 
@@ -29,7 +30,9 @@ use std::rc::Rc;
 use rhai::{Dynamic, Engine, EvalAltResult, OptimizationLevel, Position, Scope};
 
 use crate::exit::Exit;
+use crate::session::Session;
 use crate::session::interrupt;
+use crate::session::smd4::Smd4Session;
 use crate::session::tmcl::TmclSession;
 
 pub use failure::ScriptFailure;
@@ -65,9 +68,9 @@ pub struct Report {
 pub fn run_file(
     path: &Path,
     args: &[String],
-    session: TmclSession,
+    session: Session,
     limits: Limits,
-) -> (TmclSession, Result<(), Report>) {
+) -> (Session, Result<(), Report>) {
     let name = path.display().to_string();
     match std::fs::read_to_string(path) {
         Ok(source) => run_source(&name, &source, args, session, limits),
@@ -86,18 +89,64 @@ pub fn run_source(
     name: &str,
     source: &str,
     args: &[String],
-    session: TmclSession,
+    session: Session,
     limits: Limits,
-) -> (TmclSession, Result<(), Report>) {
-    let shared = Rc::new(RefCell::new(session));
-    let result = {
-        let engine = engine(&shared, limits);
-        execute(&engine, name, source, args)
+) -> (Session, Result<(), Report>) {
+    let script = Script {
+        name,
+        source,
+        args,
+        limits,
     };
-    let session = Rc::try_unwrap(shared)
-        .map(RefCell::into_inner)
-        .unwrap_or_else(|_| unreachable!("the engine holding the other handles is dropped"));
-    (session, result)
+    match session {
+        Session::Tmcl(s) => {
+            let (s, result) = script.run(s, TmclSession::annotate, |engine, s| {
+                tmcl::register(engine, s);
+                commission::register(engine, s);
+            });
+            (Session::Tmcl(s), result)
+        }
+        Session::Smd4(s) => {
+            let (s, result) = script.run(s, Smd4Session::annotate, smd4::register);
+            (Session::Smd4(s), result)
+        }
+    }
+}
+
+/// A script about to run.
+struct Script<'a> {
+    name: &'a str,
+    source: &'a str,
+    args: &'a [String],
+    limits: Limits,
+}
+
+impl Script<'_> {
+    /// Runs over a session of type `S`: the engine holds the session for the run and gives it
+    /// back when dropped.
+    fn run<S: 'static>(
+        &self,
+        session: S,
+        annotate: fn(&mut S, &str) -> bool,
+        register: fn(&mut Engine, &Rc<RefCell<S>>),
+    ) -> (S, Result<(), Report>) {
+        let shared = Rc::new(RefCell::new(session));
+        let result = {
+            let mut engine = base_engine(self.limits);
+            let log_session = shared.clone();
+            common::register(&mut engine, move |message| {
+                if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
+                    eprintln!("log: {message}");
+                }
+            });
+            register(&mut engine, &shared);
+            execute(&engine, self.name, self.source, self.args)
+        };
+        let session = Rc::try_unwrap(shared)
+            .map(RefCell::into_inner)
+            .unwrap_or_else(|_| unreachable!("the engine holding the other handles is dropped"));
+        (session, result)
+    }
 }
 
 /// Checks that a script compiles, before any connection is opened.
@@ -108,20 +157,6 @@ pub fn check_file(path: &Path) -> Result<(), Report> {
         message: format!("cannot read script {name}: {e}"),
     })?;
     compile(&base_engine(Limits::default()), &name, &source).map(|_| ())
-}
-
-fn engine(session: &tmcl::Shared, limits: Limits) -> Engine {
-    let mut engine = base_engine(limits);
-    let log_session = session.clone();
-    common::register(&mut engine, move |message| {
-        let mut s = log_session.borrow_mut();
-        if !s.annotate(&format!("script: {message}")) {
-            eprintln!("log: {message}");
-        }
-    });
-    tmcl::register(&mut engine, session);
-    commission::register(&mut engine, session);
-    engine
 }
 
 /// The engine with limits and sandboxing, without device functions.

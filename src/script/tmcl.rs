@@ -195,6 +195,28 @@ pub fn register(engine: &mut Engine, session: &Shared) {
         })
     });
     let s = session.clone();
+    volatile!(engine, "download", move |path: &str| -> Fallible<INT> {
+        // The only file a script reads is the one it names here.
+        let profile = s.borrow().profile().clone();
+        let instructions = crate::cli::download::load(std::path::Path::new(path), &profile)
+            .map_err(|f| super::failure::ScriptFailure::new(f.exit, f.message).into_rhai())?;
+        let mut session = s.borrow_mut();
+        let target = session.target();
+        device(crate::program::download(
+            &mut session,
+            target,
+            &instructions,
+            |_, _| {},
+        ))?;
+        Ok(instructions.len() as INT)
+    });
+    let s = session.clone();
+    volatile!(engine, "program_status", move || -> Fallible<INT> {
+        let mut session = s.borrow_mut();
+        let target = session.target();
+        device(crate::program::status(&mut session, target)).map(INT::from)
+    });
+    let s = session.clone();
     volatile!(engine, "run_program", move || {
         let target = s.borrow().target();
         checked(s.borrow_mut().run_program(target, None)).map(|_| ())

@@ -4,15 +4,20 @@
 //! stopping motors it set moving when a run is aborted. The REPL, `-c` lines, piped stdin and
 //! Rhai scripts all go through the same session.
 
+mod any;
 pub mod interrupt;
+mod rx;
+pub mod smd4;
 pub mod tmcl;
 pub mod transcript;
+mod wire;
 
 use std::time::Duration;
 
 use crate::exit::{Exit, ExitStatus};
-use crate::protocol::tmcl::{InputError, Status};
+use crate::protocol::tmcl::InputError;
 
+pub use any::{Reply, Session};
 pub use transcript::Transcript;
 
 /// Settings shared by every dialect's session.
@@ -51,21 +56,24 @@ pub enum SessionError {
     /// A helper command or argument was wrong.
     #[error("{0}")]
     Usage(String),
-    /// The module answered with an error status.
-    #[error("module {module} refused '{sent}': status {status}")]
+    /// The line was refused before sending by a dialect's validator (SMD4).
+    #[error("{0}")]
+    Rejected(String),
+    /// The module answered with an error status or error code.
+    #[error("module {module} refused '{sent}': {reason}")]
     Device {
-        /// The module's address character.
-        module: char,
+        /// The module (address character, or `@N` for SMD4).
+        module: String,
         /// The line sent.
         sent: String,
-        /// The status it answered.
-        status: Status,
+        /// The status or error it answered.
+        reason: String,
     },
     /// Nothing (usable) came back in time.
     #[error("no reply from module {module} within {} ms{hint}", timeout.as_millis())]
     Timeout {
-        /// The module's address character.
-        module: char,
+        /// The module (address character, or `@N` for SMD4).
+        module: String,
         /// How long we waited.
         timeout: Duration,
         /// What may be wrong.
@@ -93,7 +101,9 @@ pub enum SessionError {
 impl ExitStatus for SessionError {
     fn exit(&self) -> Exit {
         match self {
-            SessionError::Refused(_) | SessionError::Usage(_) => Exit::Refused,
+            SessionError::Refused(_) | SessionError::Rejected(_) | SessionError::Usage(_) => {
+                Exit::Refused
+            }
             SessionError::Device { .. } => Exit::DeviceError,
             SessionError::Timeout { .. } | SessionError::Link(_) | SessionError::Lost(_) => {
                 Exit::Link

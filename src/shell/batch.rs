@@ -9,7 +9,6 @@ use std::io::{BufRead, Write};
 use std::sync::mpsc;
 
 use crate::exit::{Exit, ExitStatus};
-use crate::session::tmcl::Answer;
 use crate::session::{SessionError, interrupt};
 
 use super::{Flow, Shell};
@@ -98,16 +97,13 @@ fn step(
     }
     let result = shell.session().execute(text);
     report_notices(shell, err);
-    let exchange = result?;
-    let shown = match &exchange.answer {
-        Answer::Version(version) => version.clone(),
-        _ => exchange.raw.clone(),
-    };
+    let reply = result?;
+    let shown = reply.shown();
     if writeln!(out, "{shown}").and_then(|()| out.flush()).is_err() {
         // stdout closed (e.g. piped into `head`): not an error, just stop.
         return Ok(Flow::Quit);
     }
-    exchange.checked()?;
+    reply.checked()?;
     Ok(Flow::Continue)
 }
 

@@ -1,5 +1,7 @@
 //! Helper commands: lines starting with `:`, shared by the REPL and non-interactive use. The table
-//! drives dispatch, `:help` and completion.
+//! drives dispatch, `:help` and completion; each helper says which dialects have it.
+
+use crate::protocol::Dialect;
 
 /// What a helper's argument is, for completion.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -24,6 +26,17 @@ pub enum ArgKind {
     Record,
 }
 
+/// Which dialects have a helper.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Only {
+    /// Both.
+    Both,
+    /// TMCL modules.
+    Tmcl,
+    /// SMD4 drives.
+    Smd4,
+}
+
 /// One helper command.
 #[derive(Debug, Clone, Copy)]
 pub struct Helper {
@@ -35,127 +48,225 @@ pub struct Helper {
     pub summary: &'static str,
     /// What its argument is.
     pub arg: ArgKind,
+    /// Where it exists.
+    pub only: Only,
+}
+
+impl Helper {
+    /// Whether the helper exists for `dialect`.
+    pub fn available(&self, dialect: Dialect) -> bool {
+        matches!(
+            (self.only, dialect),
+            (Only::Both, _) | (Only::Tmcl, Dialect::Tmcl) | (Only::Smd4, Dialect::Smd4)
+        )
+    }
+}
+
+const fn helper(
+    name: &'static str,
+    usage: &'static str,
+    summary: &'static str,
+    arg: ArgKind,
+    only: Only,
+) -> Helper {
+    Helper {
+        name,
+        usage,
+        summary,
+        arg,
+        only,
+    }
 }
 
 /// Every helper command.
 pub const HELPERS: &[Helper] = &[
-    Helper {
-        name: "help",
-        usage: ":help [topic]",
-        summary: "this help; topics: a command (GAP), a helper (:run), params, exit, ascii",
-        arg: ArgKind::Topic,
-    },
-    Helper {
-        name: "params",
-        usage: ":params [filter]",
-        summary: "list the module's parameters (matching filter)",
-        arg: ArgKind::Param,
-    },
-    Helper {
-        name: "target",
-        usage: ":target N|CHAR",
-        summary: "address another module on the bus (2 or B)",
-        arg: ArgKind::Module,
-    },
-    Helper {
-        name: "echo",
-        usage: ":echo char|line|none",
-        summary: "set the module's echo (global parameter 67 bits 4/5, keeping bit 0)",
-        arg: ArgKind::Echo,
-    },
-    Helper {
-        name: "log",
-        usage: ":log FILE|off",
-        summary: "append a transcript of every byte to FILE, or stop",
-        arg: ArgKind::File,
-    },
-    Helper {
-        name: "raw",
-        usage: ":raw",
-        summary: "toggle showing replies exactly as received",
-        arg: ArgKind::None,
-    },
-    Helper {
-        name: "run",
-        usage: ":run [address]",
-        summary: "start the module's stored TMCL program (ASCII RUN, or command 129)",
-        arg: ArgKind::Address,
-    },
-    Helper {
-        name: "stop",
-        usage: ":stop",
-        summary: "stop the module's TMCL program (ASCII STOP, or command 128)",
-        arg: ArgKind::None,
-    },
-    Helper {
-        name: "bin",
-        usage: ":bin",
-        summary: "leave ASCII mode; lines are then sent as binary frames (direct mode)",
-        arg: ArgKind::None,
-    },
-    Helper {
-        name: "ascii",
-        usage: ":ascii",
-        summary: "enter ASCII mode again (command 139)",
-        arg: ArgKind::None,
-    },
-    Helper {
-        name: "snapshot",
-        usage: ":snapshot save|diff|restore FILE",
-        summary: "save the module's parameters to a TOML file, compare with one, or write one back",
-        arg: ArgKind::Snapshot,
-    },
-    Helper {
-        name: "scan",
-        usage: ":scan [ADDRESSES] [TIME]",
-        summary: "find the modules on the bus (default 1-26), with firmware and echo",
-        arg: ArgKind::Module,
-    },
-    Helper {
-        name: "watch",
-        usage: ":watch PARAM[,PARAM…] [INTERVAL]",
-        summary: "live table of parameters; any key stops, Ctrl-C also stops the motor",
-        arg: ArgKind::Param,
-    },
-    Helper {
-        name: "record",
-        usage: ":record FILE.csv PARAM[,…] [INTERVAL] [DURATION]",
-        summary: "sample parameters with timestamps into a CSV file",
-        arg: ArgKind::Record,
-    },
-    Helper {
-        name: "plot",
-        usage: ":plot [FILE.csv]",
-        summary: "chart the last recording (or a CSV file) against time",
-        arg: ArgKind::File,
-    },
-    Helper {
-        name: "quit",
-        usage: ":quit",
-        summary: "leave, putting the modules back in the mode they were found in",
-        arg: ArgKind::None,
-    },
+    helper(
+        "help",
+        ":help [topic]",
+        "this help; topics: a command, a helper, params, exit, ascii or addressing",
+        ArgKind::Topic,
+        Only::Both,
+    ),
+    helper(
+        "params",
+        ":params [filter]",
+        "list the module's parameters or settings (matching filter)",
+        ArgKind::Param,
+        Only::Both,
+    ),
+    helper(
+        "target",
+        ":target N|CHAR",
+        "address another module on the bus (TMCL: 2 or B; SMD4: @N, none for no prefix)",
+        ArgKind::Module,
+        Only::Both,
+    ),
+    helper(
+        "echo",
+        ":echo char|line|none",
+        "set the module's echo (global parameter 67 bits 4/5, keeping bit 0)",
+        ArgKind::Echo,
+        Only::Tmcl,
+    ),
+    helper(
+        "flags",
+        ":flags",
+        "the SFLAGS and EFLAGS bit tables with the drive's current flags",
+        ArgKind::None,
+        Only::Smd4,
+    ),
+    helper(
+        "log",
+        ":log FILE|off",
+        "append a transcript of every byte to FILE, or stop",
+        ArgKind::File,
+        Only::Both,
+    ),
+    helper(
+        "raw",
+        ":raw",
+        "toggle showing replies exactly as received",
+        ArgKind::None,
+        Only::Both,
+    ),
+    helper(
+        "run",
+        ":run [address]",
+        "start the module's stored TMCL program (ASCII RUN, or command 129)",
+        ArgKind::Address,
+        Only::Tmcl,
+    ),
+    helper(
+        "stop",
+        ":stop",
+        "stop the module's TMCL program (ASCII STOP, or command 128)",
+        ArgKind::None,
+        Only::Tmcl,
+    ),
+    helper(
+        "step",
+        ":step",
+        "execute the program's next instruction (command 130)",
+        ArgKind::None,
+        Only::Tmcl,
+    ),
+    helper(
+        "reset",
+        ":reset",
+        "program counter to 0, program stopped (command 131)",
+        ArgKind::None,
+        Only::Tmcl,
+    ),
+    helper(
+        "status",
+        ":status",
+        "application status (135): stopped, running, stepping or reset",
+        ArgKind::None,
+        Only::Tmcl,
+    ),
+    helper(
+        "download",
+        ":download FILE [--run]",
+        "store a program (.tmc source or .bin) in the module, verify it, optionally run it",
+        ArgKind::File,
+        Only::Tmcl,
+    ),
+    helper(
+        "bin",
+        ":bin",
+        "leave ASCII mode; lines are then sent as binary frames (direct mode)",
+        ArgKind::None,
+        Only::Tmcl,
+    ),
+    helper(
+        "ascii",
+        ":ascii",
+        "enter ASCII mode again (command 139)",
+        ArgKind::None,
+        Only::Tmcl,
+    ),
+    helper(
+        "source",
+        ":source SCRIPT.rhai [ARGS...]",
+        "run a Rhai script against the session (Ctrl-C stops it and the motors)",
+        ArgKind::File,
+        Only::Both,
+    ),
+    helper(
+        "snapshot",
+        ":snapshot save|diff|restore FILE",
+        "save the module's parameters to a TOML file, compare with one, or write one back",
+        ArgKind::Snapshot,
+        Only::Tmcl,
+    ),
+    helper(
+        "scan",
+        ":scan [ADDRESSES] [TIME]",
+        "find the modules on the bus (default 1-26), with firmware and echo",
+        ArgKind::Module,
+        Only::Tmcl,
+    ),
+    helper(
+        "watch",
+        ":watch PARAM[,PARAM…] [INTERVAL]",
+        "live table of parameters; any key stops, Ctrl-C also stops the motor",
+        ArgKind::Param,
+        Only::Tmcl,
+    ),
+    helper(
+        "record",
+        ":record FILE.csv PARAM[,…] [INTERVAL] [DURATION]",
+        "sample parameters with timestamps into a CSV file",
+        ArgKind::Record,
+        Only::Tmcl,
+    ),
+    helper(
+        "plot",
+        ":plot [FILE.csv]",
+        "chart the last recording (or a CSV file) against time",
+        ArgKind::File,
+        Only::Both,
+    ),
+    helper(
+        "quit",
+        ":quit",
+        "leave, putting the modules back in the mode they were found in",
+        ArgKind::None,
+        Only::Both,
+    ),
 ];
 
+/// The helpers `dialect` has.
+pub fn available(dialect: Dialect) -> impl Iterator<Item = &'static Helper> {
+    HELPERS.iter().filter(move |h| h.available(dialect))
+}
+
 /// The helper with this name (without colon), or the unique one it is a prefix of.
-pub fn find(name: &str) -> Result<&'static Helper, String> {
+pub fn find(name: &str, dialect: Dialect) -> Result<&'static Helper, String> {
     let name = name.to_ascii_lowercase();
-    if let Some(h) = HELPERS.iter().find(|h| h.name == name) {
+    if let Some(h) = available(dialect).find(|h| h.name == name) {
         return Ok(h);
     }
-    let matches: Vec<&Helper> = HELPERS
-        .iter()
+    if let Some(h) = HELPERS.iter().find(|h| h.name == name) {
+        let which = if h.only == Only::Tmcl {
+            "TMCL modules"
+        } else {
+            "SMD4 drives"
+        };
+        return Err(format!(":{name} works with {which} only"));
+    }
+    let matches: Vec<&Helper> = available(dialect)
         .filter(|h| h.name.starts_with(&name))
         .collect();
     match matches.as_slice() {
         [one] => Ok(one),
-        [] => Err(format!(
-            "unknown helper ':{name}'{}; :help lists them",
-            crate::suggest::did_you_mean(
-                &crate::suggest::nearest(&name, HELPERS.iter().map(|h| h.name))
-                    .map(|n| format!(":{n}"))
-            )
-        )),
+        [] => {
+            let nearest = crate::suggest::nearest(&name, available(dialect).map(|h| h.name));
+            Err(format!(
+                "unknown helper ':{name}'{}; :help lists them",
+                crate::suggest::did_you_mean(&nearest.map(|n| format!(":{n}")))
+            ))
+        }
         many => Err(format!(
             "':{name}' is ambiguous: {}",
             many.iter()
@@ -172,18 +283,32 @@ mod tests {
 
     #[test]
     fn helpers_resolve_by_name_or_unique_prefix() {
-        assert_eq!(find("params").unwrap().name, "params");
-        assert_eq!(find("par").unwrap().name, "params");
-        assert_eq!(find("QUIT").unwrap().name, "quit");
+        assert_eq!(find("params", Dialect::Tmcl).unwrap().name, "params");
+        assert_eq!(find("par", Dialect::Tmcl).unwrap().name, "params");
+        assert_eq!(find("QUIT", Dialect::Smd4).unwrap().name, "quit");
         assert!(
-            find("r")
+            find("r", Dialect::Tmcl)
                 .unwrap_err()
-                .contains("ambiguous: :raw, :run, :record")
+                .contains("ambiguous: :raw, :run, :reset, :record")
         );
+        assert_eq!(find("r", Dialect::Smd4).unwrap().name, "raw");
         assert_eq!(
-            find("prams").unwrap_err(),
+            find("prams", Dialect::Tmcl).unwrap_err(),
             "unknown helper ':prams'; did you mean :params?; :help lists them"
         );
+    }
+
+    #[test]
+    fn dialect_specific_helpers_say_where_they_belong() {
+        assert_eq!(
+            find("flags", Dialect::Tmcl).unwrap_err(),
+            ":flags works with SMD4 drives only"
+        );
+        assert_eq!(
+            find("bin", Dialect::Smd4).unwrap_err(),
+            ":bin works with TMCL modules only"
+        );
+        assert!(find("flags", Dialect::Smd4).is_ok());
     }
 
     #[test]

@@ -1,20 +1,21 @@
-//! What the REPL and non-interactive use share: a session plus display settings, and the helper
-//! commands (`:help`, `:target`, `:run` …).
+//! What the REPL and non-interactive use share: a session of either dialect plus display
+//! settings, and the helper commands (`:help`, `:target`, `:run` …).
 
 pub mod batch;
+mod help;
 pub mod helpers;
 pub mod render;
+mod smd4_helpers;
+mod tmcl_helpers;
 
 use std::io::{self, Write};
 use std::path::Path;
 
-use crate::cli::params::write_table;
-use crate::protocol::tmcl::line::{address_char, address_of};
+use crate::protocol::tmcl::line::address_char;
 use crate::script::{self, Limits};
-use crate::session::tmcl::{Echo, Exchange, TmclSession, WireMode};
-use crate::session::{SessionError, Transcript, interrupt};
-
-use helpers::ArgKind;
+use crate::session::smd4::drive_name;
+use crate::session::tmcl::WireMode;
+use crate::session::{Session, SessionError, Transcript, interrupt};
 
 /// Whether to go on after a helper command.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -28,7 +29,7 @@ pub enum Flow {
 /// A session and how its results are shown.
 pub struct Shell {
     /// The conversation with the modules; lent out while a script runs (`:source`).
-    session: Option<TmclSession>,
+    session: Option<Session>,
     /// Show replies exactly as received (`:raw`).
     pub raw: bool,
     /// What the commissioning helpers remember (the last recording).
@@ -37,7 +38,7 @@ pub struct Shell {
 
 impl Shell {
     /// A shell over an open session.
-    pub fn new(session: TmclSession) -> Self {
+    pub fn new(session: Session) -> Self {
         Shell {
             session: Some(session),
             raw: false,
@@ -46,21 +47,21 @@ impl Shell {
     }
 
     /// The session.
-    pub fn session(&mut self) -> &mut TmclSession {
+    pub fn session(&mut self) -> &mut Session {
         self.session
             .as_mut()
             .expect("the session is back after every script run")
     }
 
     /// The session, read-only.
-    pub fn session_ref(&self) -> &TmclSession {
+    pub fn session_ref(&self) -> &Session {
         self.session
             .as_ref()
             .expect("the session is back after every script run")
     }
 
     /// Lends the session to `f` by value (scripts own the session while they run).
-    pub fn lend<T>(&mut self, f: impl FnOnce(TmclSession) -> (TmclSession, T)) -> T {
+    pub fn lend<T>(&mut self, f: impl FnOnce(Session) -> (Session, T)) -> T {
         let session = self
             .session
             .take()
@@ -70,14 +71,21 @@ impl Shell {
         result
     }
 
-    /// The prompt: the target's address character, and the wire mode when it is binary.
+    /// The prompt: TMCL shows the target's address character and binary mode; SMD4 the prefix.
     pub fn prompt(&self) -> String {
-        let session = self.session_ref();
-        let target = session.target();
-        let c = address_char(target).unwrap_or('?');
-        match session.module_state(target) {
-            Some((WireMode::Binary, _)) => format!("{c}[bin]> "),
-            _ => format!("{c}> "),
+        match self.session_ref() {
+            Session::Tmcl(session) => {
+                let target = session.target();
+                let c = address_char(target).unwrap_or('?');
+                match session.module_state(target) {
+                    Some((WireMode::Binary, _)) => format!("{c}[bin]> "),
+                    _ => format!("{c}> "),
+                }
+            }
+            Session::Smd4(session) => match session.address() {
+                Some(_) => format!("smd4 {}> ", drive_name(session.address())),
+                None => "smd4> ".to_string(),
+            },
         }
     }
 
@@ -88,70 +96,20 @@ impl Shell {
             Some((name, arg)) => (name, arg.trim()),
             None => (body, ""),
         };
-        let helper = helpers::find(name).map_err(SessionError::Usage)?;
-        if helper.arg == ArgKind::None && !arg.is_empty() {
+        let dialect = self.session_ref().dialect();
+        let helper = helpers::find(name, dialect).map_err(SessionError::Usage)?;
+        if helper.arg == helpers::ArgKind::None && !arg.is_empty() {
             return Err(SessionError::Usage(format!(
                 "{} takes no argument",
                 helper.usage
             )));
         }
-        let target = self.session().target();
         match helper.name {
-            "help" => write_help(arg, self.session().profile(), out)?,
-            "params" => {
-                let profile = self.session().profile().clone();
-                let rows: Vec<_> = profile.matching(arg).collect();
-                if rows.is_empty() {
-                    writeln!(out, "no parameter matches '{arg}'")?;
-                } else {
-                    write_table(&rows, out)?;
-                }
-            }
-            "target" => {
-                let module = parse_module(arg)?;
-                self.session().set_target(module)?;
-                writeln!(
-                    out,
-                    "target: module {} ({})",
-                    module,
-                    address_char(module).unwrap_or('?')
-                )?;
-            }
-            "echo" => {
-                let echo = Echo::parse(arg)
-                    .ok_or_else(|| SessionError::Usage(format!("usage: {}", helper.usage)))?;
-                let echo = self.session().set_echo(target, echo)?;
-                writeln!(out, "echo: {}", echo.name())?;
-            }
+            "help" => help::write_help(arg, self.session_ref(), out)?,
             "log" => self.set_log(arg, out)?,
             "raw" => {
                 self.raw = !self.raw;
                 writeln!(out, "raw output {}", if self.raw { "on" } else { "off" })?;
-            }
-            "run" => {
-                let address = parse_address(arg)?;
-                let exchange = self.session().run_program(target, address)?.checked()?;
-                self.report_program(&exchange, "started", out)?;
-            }
-            "stop" => {
-                let exchange = self.session().stop_program(target)?.checked()?;
-                self.report_program(&exchange, "stopped", out)?;
-            }
-            "bin" => {
-                self.session().leave_ascii(target)?;
-                writeln!(
-                    out,
-                    "module {} is in binary direct mode: lines go out as binary frames (:ascii returns)",
-                    address_char(target).unwrap_or('?')
-                )?;
-            }
-            "ascii" => {
-                self.session().enter_ascii(target)?;
-                writeln!(
-                    out,
-                    "module {} is in ASCII mode",
-                    address_char(target).unwrap_or('?')
-                )?;
             }
             "source" => self.source(arg, out)?,
             "snapshot" | "scan" | "watch" | "record" | "plot" => {
@@ -165,27 +123,12 @@ impl Shell {
                 )?
             }
             "quit" => return Ok(Flow::Quit),
-            other => unreachable!("helper table and dispatch disagree on :{other}"),
+            name => match self.session() {
+                Session::Tmcl(session) => tmcl_helpers::run(session, helper, arg, out)?,
+                Session::Smd4(session) => smd4_helpers::run(session, name, arg, out)?,
+            },
         }
         Ok(Flow::Continue)
-    }
-
-    fn report_program(
-        &mut self,
-        exchange: &Exchange,
-        verb: &str,
-        out: &mut dyn Write,
-    ) -> io::Result<()> {
-        let module = exchange.module;
-        let mode = match self.session().module_state(module) {
-            Some((WireMode::Binary, _)) => "binary",
-            _ => "ASCII",
-        };
-        writeln!(
-            out,
-            "program {verb} on module {}; the module is in {mode} mode",
-            address_char(module).unwrap_or('?')
-        )
     }
 
     /// Runs a script over this shell's session; on failure the motors it moved are stopped.
@@ -209,18 +152,19 @@ impl Shell {
     }
 
     fn set_log(&mut self, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
+        let session = self.session();
         if arg.is_empty() {
-            match self.session().transcript() {
+            match session.transcript() {
                 Some(t) => writeln!(out, "logging to {}", t.path().display())?,
                 None => writeln!(out, "not logging; :log FILE starts")?,
             }
         } else if arg == "off" {
-            self.session().set_transcript(None);
+            session.set_transcript(None);
             writeln!(out, "transcript stopped")?;
         } else {
             let transcript = Transcript::open(Path::new(arg))
                 .map_err(|e| SessionError::Usage(format!("cannot open log file {arg}: {e}")))?;
-            self.session().set_transcript(Some(transcript));
+            session.set_transcript(Some(transcript));
             writeln!(out, "logging to {arg}")?;
         }
         Ok(())
@@ -231,119 +175,4 @@ impl From<io::Error> for SessionError {
     fn from(e: io::Error) -> Self {
         SessionError::Link(format!("output: {e}"))
     }
-}
-
-fn parse_module(arg: &str) -> Result<u8, SessionError> {
-    let usage = || {
-        SessionError::Usage(format!(
-            "usage: :target N|CHAR (1..26 or A..Z), not '{arg}'"
-        ))
-    };
-    if let Ok(n) = arg.parse::<u8>() {
-        return (1..=26).contains(&n).then_some(n).ok_or_else(usage);
-    }
-    let mut chars = arg.chars();
-    match (chars.next(), chars.next()) {
-        (Some(c), None) => address_of(c).ok_or_else(usage),
-        _ => Err(usage()),
-    }
-}
-
-fn parse_address(arg: &str) -> Result<Option<i32>, SessionError> {
-    if arg.is_empty() {
-        return Ok(None);
-    }
-    arg.parse::<i32>()
-        .ok()
-        .filter(|a| *a >= 0)
-        .map(Some)
-        .ok_or_else(|| {
-            SessionError::Usage(format!(
-                "usage: :run [address], address a number, not '{arg}'"
-            ))
-        })
-}
-
-fn write_help(
-    topic: &str,
-    profile: &crate::profile::Profile,
-    out: &mut dyn Write,
-) -> io::Result<()> {
-    let topic = topic.trim().trim_start_matches(':');
-    if topic.is_empty() {
-        writeln!(
-            out,
-            "Type TMCL commands as in the TMCL-IDE, e.g. GAP actual_position, 0 or MVP ABS, 0, 1000."
-        )?;
-        writeln!(
-            out,
-            "Parameter names work in place of numbers; Tab completes, hints show units and ranges."
-        )?;
-        writeln!(
-            out,
-            "A leading address character reaches another module: CGAP 4, 0.\n"
-        )?;
-        writeln!(out, "Helper commands:")?;
-        for h in helpers::HELPERS {
-            writeln!(out, "  {:<24} {}", h.usage, h.summary)?;
-        }
-        writeln!(
-            out,
-            "\nMore: :help COMMAND, :help params, :help exit, :help ascii"
-        )?;
-        return Ok(());
-    }
-    match topic.to_ascii_lowercase().as_str() {
-        "params" => writeln!(
-            out,
-            "Parameters are listed by :params [filter]; use their names in SAP/GAP/SGP/GGP lines."
-        )?,
-        "exit" => writeln!(
-            out,
-            "Exit codes: 0 success, 1 device error status or failed assertion, 2 refused before sending, 3 connection/timeout/lost link, 130 Ctrl-C."
-        )?,
-        "ascii" => {
-            writeln!(
-                out,
-                "ASCII mode (manual 6.6): lines are <address char><command>, replies <host char><module char> <status> <value>."
-            )?;
-            writeln!(
-                out,
-                "Only ROL ROR MST MVP SAP GAP STAP RSAP SGP GGP STGP RSGP RFS SIO GIO SAC SCO GCO CCO UF0-UF7, plus BIN RUN STOP."
-            )?;
-            writeln!(
-                out,
-                "Echo (GP 67 bits 4/5): char, line or none (:echo). :bin switches to binary frames for the rest."
-            )?;
-        }
-        word => {
-            if let Ok(h) = helpers::find(word) {
-                writeln!(out, "{:<24} {}", h.usage, h.summary)?;
-            } else if let Some(spec) = profile.commands.by_mnemonic(word).or_else(|| {
-                word.parse()
-                    .ok()
-                    .and_then(|n| profile.commands.by_number(n))
-            }) {
-                writeln!(
-                    out,
-                    "{} — {} (command {})",
-                    spec.usage(),
-                    spec.name,
-                    spec.number
-                )?;
-                for k in &spec.keywords {
-                    writeln!(out, "  {:<8} {}", k.name, k.meaning)?;
-                }
-                let place = match (spec.ascii_allowed, spec.direct_mode) {
-                    (true, _) => "ASCII and binary direct mode",
-                    (false, true) => "binary direct mode only (:bin)",
-                    (false, false) => "stand-alone programs only",
-                };
-                writeln!(out, "  usable in: {place}")?;
-            } else {
-                writeln!(out, "no help on '{topic}'; :help lists topics")?;
-            }
-        }
-    }
-    Ok(())
 }

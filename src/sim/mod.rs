@@ -7,6 +7,7 @@
 
 mod builtin;
 pub mod clock;
+pub mod smd4;
 
 pub use builtin::builtin_link;
 

@@ -1,7 +1,7 @@
 use super::*;
 
 fn words(line: &str) -> Vec<String> {
-    match complete(line, line.len(), &Profile::builtin()) {
+    match complete(line, line.len(), Grammar::Tmcl(&Profile::builtin())) {
         Completion::Words { candidates, .. } => {
             candidates.into_iter().map(|c| c.replacement).collect()
         }
@@ -36,7 +36,7 @@ fn axis_parameter_names_for_axis_commands() {
     assert_eq!(words("SAP max_c"), vec!["max_current, "]);
     assert_eq!(words("A GAP max_c"), vec!["max_current, "]);
     assert!(words("STAP ").len() > 10);
-    let all = complete("RSAP max_", 9, &Profile::builtin());
+    let all = complete("RSAP max_", 9, Grammar::Tmcl(&Profile::builtin()));
     let Completion::Words { start, candidates } = all else {
         panic!()
     };
@@ -46,7 +46,8 @@ fn axis_parameter_names_for_axis_commands() {
 
 #[test]
 fn global_parameter_names_show_their_bank() {
-    let Completion::Words { candidates, .. } = complete("GGP serial_ho", 13, &Profile::builtin())
+    let Completion::Words { candidates, .. } =
+        complete("GGP serial_ho", 13, Grammar::Tmcl(&Profile::builtin()))
     else {
         panic!()
     };
@@ -68,4 +69,29 @@ fn helpers_and_their_arguments() {
     assert_eq!(words(":log tr"), vec!["<file>"]);
     assert!(words(":help G").contains(&"GAP ".to_string()));
     assert_eq!(words(":params actual_s"), vec!["actual_speed"]);
+}
+
+#[test]
+fn smd4_mnemonics_complete_level_by_level() {
+    let spec = crate::protocol::smd4::Smd4Spec::builtin();
+    let Completion::Words { candidates, .. } = complete("MOTOR:VM", 8, Grammar::Smd4(spec)) else {
+        panic!()
+    };
+    assert_eq!(
+        candidates
+            .iter()
+            .map(|c| c.replacement.as_str())
+            .collect::<Vec<_>>(),
+        ["MOTOR:VMAX"]
+    );
+    let Completion::Words { candidates, .. } = complete(":fl", 3, Grammar::Smd4(spec)) else {
+        panic!()
+    };
+    assert_eq!(candidates[0].replacement, ":flags ");
+    let Completion::Words { candidates, .. } =
+        complete(":fl", 3, Grammar::Tmcl(&Profile::builtin()))
+    else {
+        panic!()
+    };
+    assert!(candidates.is_empty(), ":flags is SMD4 only");
 }

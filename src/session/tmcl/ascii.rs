@@ -39,11 +39,11 @@ impl TmclSession {
         wait: Option<Duration>,
     ) -> Result<Exchange, SessionError> {
         let c = address_char(module).unwrap_or('?');
-        self.drain()?;
+        self.wire.drain()?;
         let mut line = Vec::with_capacity(text.len() + 1);
         line.extend_from_slice(text.as_bytes());
         line.push(b'\r');
-        self.send(&line, &format!("to module {c}"))?;
+        self.wire.send(&line, &format!("to module {c}"))?;
         let timeout = wait
             .unwrap_or(self.options.timeout)
             .min(self.options.timeout);
@@ -63,9 +63,9 @@ impl TmclSession {
                 &mut scanned,
             )? {
                 Scan::Reply(reply, raw, used) => {
-                    let bytes = self.rx.take(used);
+                    let bytes = self.wire.rx.take(used);
                     let meaning = format!("{c}: {}, value {}", reply.status, reply.value);
-                    self.log(Entry::Received, &bytes, &meaning);
+                    self.wire.log(Entry::Received, &bytes, &meaning);
                     return Ok(Exchange {
                         module,
                         sent: text.to_string(),
@@ -79,7 +79,7 @@ impl TmclSession {
                 }
                 Scan::More => {}
             }
-            if !self.fill(deadline)? {
+            if !self.wire.fill(deadline)? {
                 return Err(self.timed_out(c, timeout, echo_seen));
             }
         }
@@ -95,7 +95,7 @@ impl TmclSession {
         echo_seen: &mut bool,
         scanned: &mut usize,
     ) -> Result<Scan, SessionError> {
-        let buf = self.rx.bytes();
+        let buf = self.wire.rx.bytes();
         let mut pos = 0;
         loop {
             while pos < buf.len() && matches!(buf[pos], b'\r' | b'\n' | 0) {
@@ -128,14 +128,14 @@ impl TmclSession {
                 }
                 Some(reply) if reply.module == module => {
                     if report {
-                        self.notices.push(format!(
+                        self.wire.notices.push(format!(
                             "ignored a reply that came before the echo (stale?): {text}"
                         ));
                     }
                 }
                 Some(reply) => {
                     if report {
-                        self.notices.push(format!(
+                        self.wire.notices.push(format!(
                             "ignored a reply from module {} while waiting for module {module}: {text}",
                             reply.module
                         ));
@@ -143,7 +143,7 @@ impl TmclSession {
                 }
                 None if !*echo_seen && looks_like_echo(line, sent) => {
                     let sent_text = String::from_utf8_lossy(sent).into_owned();
-                    self.rx.take(line_end);
+                    self.wire.rx.take(line_end);
                     return Err(SessionError::Link(format!(
                         "line noise: module {module} echoed '{text}' for '{sent_text}', so it may have \
                          executed something else; check the cabling and the baud rate"
@@ -153,7 +153,8 @@ impl TmclSession {
                     if report {
                         let mut shown = String::new();
                         escape_into(line, &mut shown);
-                        self.notices
+                        self.wire
+                            .notices
                             .push(format!("ignored unexpected data from the line: {shown}"));
                     }
                 }
@@ -164,11 +165,12 @@ impl TmclSession {
     }
 
     fn timed_out(&mut self, module: char, timeout: Duration, echo_seen: bool) -> SessionError {
-        let partial = self.rx.clear();
+        let partial = self.wire.rx.clear();
         let hint = if !partial.is_empty() {
             let mut shown = String::new();
             escape_into(&partial, &mut shown);
-            self.log(Entry::Received, &partial, "incomplete, no reply");
+            self.wire
+                .log(Entry::Received, &partial, "incomplete, no reply");
             format!(" (received only {shown})")
         } else if echo_seen {
             " (the command was echoed but not answered)".to_string()
@@ -177,13 +179,13 @@ impl TmclSession {
         };
         // A CR ends whatever part of our line the module may still hold, so the next line starts
         // clean; any reply it provokes is drained before the next exchange.
-        let _ = self.send(b"\r", "resynchronise after timeout");
-        self.note(&format!(
+        let _ = self.wire.send(b"\r", "resynchronise after timeout");
+        self.wire.note(&format!(
             "no reply from module {module} within {} ms",
             timeout.as_millis()
         ));
         SessionError::Timeout {
-            module,
+            module: module.to_string(),
             timeout,
             hint,
         }

@@ -20,14 +20,15 @@ impl TmclSession {
         module: u8,
         instruction: Instruction,
     ) -> Result<Exchange, SessionError> {
-        self.drain()?;
+        self.wire.drain()?;
         let sent = self.describe_instruction(&instruction);
         let frame = CommandFrame {
             address: module,
             instruction,
         }
         .encode();
-        self.send(&frame, &format!("{sent} to module {module} (binary)"))?;
+        self.wire
+            .send(&frame, &format!("{sent} to module {module} (binary)"))?;
         let exchange = |answer, raw| Exchange {
             module,
             sent: sent.clone(),
@@ -40,20 +41,21 @@ impl TmclSession {
         }
         let deadline = Instant::now() + self.options.timeout;
         loop {
-            while self.rx.len() >= FRAME_LEN {
-                let bytes = self.rx.take(FRAME_LEN);
+            while self.wire.rx.len() >= FRAME_LEN {
+                let bytes = self.wire.rx.take(FRAME_LEN);
                 let mut raw = [0u8; FRAME_LEN];
                 raw.copy_from_slice(&bytes);
                 if instruction.command == 136 && instruction.type_ == 0 {
                     let (_, text) = decode_version_string(&raw);
-                    self.log(Entry::Received, &bytes, &format!("version {text}"));
+                    self.wire
+                        .log(Entry::Received, &bytes, &format!("version {text}"));
                     return Ok(exchange(Answer::Version(text.clone()), text));
                 }
                 let reply = match ReplyFrame::decode(&raw) {
                     Ok(reply) => reply,
                     Err(e) => {
-                        self.log(Entry::Received, &bytes, "bad checksum");
-                        self.rx.clear();
+                        self.wire.log(Entry::Received, &bytes, "bad checksum");
+                        self.wire.rx.clear();
                         return Err(SessionError::Link(format!(
                             "corrupted reply from module {module}: {e}"
                         )));
@@ -63,16 +65,16 @@ impl TmclSession {
                     "from module {}: {}, value {}",
                     reply.module, reply.status, reply.value
                 );
-                self.log(Entry::Received, &bytes, &meaning);
+                self.wire.log(Entry::Received, &bytes, &meaning);
                 if reply.command == 138 && reply.status == Status::PositionReachedEvent {
-                    self.notices.push(format!(
+                    self.wire.notices.push(format!(
                         "module {}: target position reached (event)",
                         reply.module
                     ));
                     continue;
                 }
                 if reply.module != module || reply.command != instruction.command {
-                    self.notices.push(format!(
+                    self.wire.notices.push(format!(
                         "ignored reply {} while waiting for module {module}",
                         hex(&bytes)
                     ));
@@ -87,13 +89,14 @@ impl TmclSession {
                     raw,
                 ));
             }
-            if !self.fill(deadline)? {
-                let partial = self.rx.clear();
+            if !self.wire.fill(deadline)? {
+                let partial = self.wire.rx.clear();
                 if !partial.is_empty() {
-                    self.log(Entry::Received, &partial, "incomplete frame, discarded");
+                    self.wire
+                        .log(Entry::Received, &partial, "incomplete frame, discarded");
                 }
                 return Err(SessionError::Timeout {
-                    module: address_char(module).unwrap_or('?'),
+                    module: address_char(module).unwrap_or('?').to_string(),
                     timeout: self.options.timeout,
                     hint: if partial.is_empty() {
                         String::new()

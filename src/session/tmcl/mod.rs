@@ -8,8 +8,6 @@ mod ascii;
 mod binary;
 mod mode;
 mod probe;
-mod rx;
-mod wire;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::Arc;
@@ -22,7 +20,8 @@ use crate::protocol::tmcl::syntax::parse_line;
 use crate::protocol::tmcl::validate::{self, Mode};
 use crate::protocol::tmcl::{Instruction, Status};
 
-use super::transcript::{Entry, Transcript};
+use super::transcript::Transcript;
+use super::wire::Wire;
 use super::{SessionError, SessionOptions};
 
 pub use mode::{Echo, WireMode};
@@ -87,9 +86,9 @@ impl Exchange {
     pub fn checked(self) -> Result<Exchange, SessionError> {
         match self.answer {
             Answer::Reply { status, .. } if !status.is_success() => Err(SessionError::Device {
-                module: address_char(self.module).unwrap_or('?'),
+                module: address_char(self.module).unwrap_or('?').to_string(),
                 sent: self.sent,
-                status,
+                reason: format!("status {status}"),
             }),
             _ => Ok(self),
         }
@@ -98,16 +97,13 @@ impl Exchange {
 
 /// A TMCL conversation with the modules on one link.
 pub struct TmclSession {
-    link: Box<dyn Link>,
+    wire: Wire,
     profile: Arc<Profile>,
     options: SessionOptions,
     target: u8,
     modules: BTreeMap<u8, mode::ModuleState>,
-    rx: rx::Rx,
-    transcript: Option<Transcript>,
     moved: BTreeSet<u8>,
     running: BTreeSet<u8>,
-    notices: Vec<String>,
 }
 
 impl TmclSession {
@@ -138,18 +134,16 @@ impl TmclSession {
             )));
         }
         let mut session = TmclSession {
-            link,
+            wire: Wire::new(link, transcript),
             profile,
             target: options.module,
             options,
             modules: BTreeMap::new(),
-            rx: rx::Rx::default(),
-            transcript,
             moved: BTreeSet::new(),
             running: BTreeSet::new(),
-            notices: Vec::new(),
         };
-        session.note(&format!("session opened on {}", session.link.describe()));
+        let opened = format!("session opened on {}", session.wire.link.describe());
+        session.wire.note(&opened);
         Ok(session)
     }
 
@@ -160,7 +154,7 @@ impl TmclSession {
 
     /// What the link talks to.
     pub fn describe(&self) -> String {
-        self.link.describe()
+        self.wire.link.describe()
     }
 
     /// The module lines without an address character go to.
@@ -192,17 +186,17 @@ impl TmclSession {
 
     /// Messages gathered since the last call: validator warnings, line noise, ignored replies.
     pub fn take_notices(&mut self) -> Vec<String> {
-        std::mem::take(&mut self.notices)
+        std::mem::take(&mut self.wire.notices)
     }
 
     /// Starts or stops writing the transcript.
     pub fn set_transcript(&mut self, transcript: Option<Transcript>) {
-        self.transcript = transcript;
+        self.wire.transcript = transcript;
     }
 
     /// The transcript being written, if any.
     pub fn transcript(&self) -> Option<&Transcript> {
-        self.transcript.as_ref()
+        self.wire.transcript.as_ref()
     }
 
     /// Parses, validates and sends one command line; returns the module's answer. An error
@@ -223,7 +217,7 @@ impl TmclSession {
                     .and_then(line::address_of)
                     .unwrap_or(self.target);
                 self.contact(module)?;
-                self.notices.push(format!("not validated: {error}"));
+                self.wire.notices.push(format!("not validated: {error}"));
                 let sent = line::format_raw(&raw, self.target);
                 self.ascii_request(module, &sent, None)
             }
@@ -251,10 +245,11 @@ impl TmclSession {
         };
         match validate::validate(&line, &self.profile, mode) {
             Ok(warnings) => self
+                .wire
                 .notices
                 .extend(warnings.iter().map(ToString::to_string)),
             Err(error) if self.options.validate => return Err(error.into()),
-            Err(error) => self.notices.push(format!("not validated: {error}")),
+            Err(error) => self.wire.notices.push(format!("not validated: {error}")),
         }
         let exchange = match (wire, op) {
             (WireMode::Ascii, Op::Ascii(AsciiWord::Bin)) => self.leave_ascii(module)?,
@@ -338,7 +333,7 @@ impl TmclSession {
         }
         self.moved.clear();
         for line in &report {
-            self.note(line);
+            self.wire.note(line);
         }
         report
     }
@@ -346,6 +341,31 @@ impl TmclSession {
     /// Whether this session started motion or a program that may still be going.
     pub fn may_be_moving(&self) -> bool {
         !self.moved.is_empty() || !self.running.is_empty()
+    }
+
+    /// Stores one program instruction while the module is in download mode (binary mode, after
+    /// command 132). The instruction is checked as a program instruction, not as a direct-mode
+    /// command; the module answers status 101 (stored).
+    pub fn store_instruction(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<Exchange, SessionError> {
+        if self.contact(module)? != WireMode::Binary {
+            return Err(SessionError::Usage(format!(
+                "module {module} must be in binary mode to store a program"
+            )));
+        }
+        let line = Line {
+            address: Some(module),
+            op: Op::Command(instruction),
+        };
+        match validate::validate(&line, &self.profile, Mode::Program) {
+            Ok(_) => {}
+            Err(error) if self.options.validate => return Err(error.into()),
+            Err(error) => self.wire.notices.push(format!("not validated: {error}")),
+        }
+        self.binary_request(module, instruction)
     }
 
     /// Starts the module's stored TMCL program: ASCII `RUN`, or command 129 in binary mode.
@@ -443,15 +463,16 @@ impl TmclSession {
                 ));
             }
         }
-        self.note("session closed");
+        self.wire.note("session closed");
         report
     }
 
     /// Reopens a lost link and re-enters ASCII mode on the modules that were in it.
     pub fn reconnect(&mut self) -> Result<(), SessionError> {
-        self.link.reopen()?;
-        self.rx.clear();
-        self.note(&format!("link reopened: {}", self.link.describe()));
+        self.wire.link.reopen()?;
+        self.wire.rx.clear();
+        self.wire
+            .note(&format!("link reopened: {}", self.wire.link.describe()));
         let ascii: Vec<u8> = self
             .modules
             .iter()
@@ -466,23 +487,8 @@ impl TmclSession {
 
     /// Writes a remark into the transcript; false when no transcript is being written.
     pub fn annotate(&mut self, text: &str) -> bool {
-        self.note(text);
-        self.transcript.is_some()
-    }
-
-    fn note(&mut self, text: &str) {
-        self.log(Entry::Note, b"", text);
-    }
-
-    fn log(&mut self, entry: Entry, bytes: &[u8], meaning: &str) {
-        if let Some(t) = &mut self.transcript {
-            if let Err(e) = t.record(entry, bytes, meaning) {
-                let path = t.path().display().to_string();
-                self.transcript = None;
-                self.notices
-                    .push(format!("stopped writing the transcript {path}: {e}"));
-            }
-        }
+        self.wire.note(text);
+        self.wire.transcript.is_some()
     }
 
     /// A human description of an instruction for the transcript.

@@ -122,18 +122,18 @@ impl TmclSession {
 
     /// Sends 139 and learns the echo mode (see the module docs).
     pub fn enter_ascii(&mut self, module: u8) -> Result<(), SessionError> {
-        self.drain()?;
+        self.wire.drain()?;
         let frame = CommandFrame {
             address: module,
             instruction: Instruction::new(139, 0, 0, 0),
         };
         let bytes = frame.encode();
-        self.send(
+        self.wire.send(
             &bytes,
             &format!("enter ASCII mode (139) to module {module}"),
         )?;
         let found_binary = self.optional_binary_reply(module)?;
-        self.send(
+        self.wire.send(
             b"\r",
             "end of line, clears any partial line in ASCII-mode modules",
         )?;
@@ -154,24 +154,25 @@ impl TmclSession {
     /// Waits briefly for the binary reply some firmware sends to 139; true if it came.
     fn optional_binary_reply(&mut self, module: u8) -> Result<bool, SessionError> {
         let deadline = Instant::now() + OPTIONAL_REPLY_WAIT.min(self.options.timeout);
-        while self.rx.len() < FRAME_LEN {
-            if !self.fill(deadline)? {
+        while self.wire.rx.len() < FRAME_LEN {
+            if !self.wire.fill(deadline)? {
                 break;
             }
         }
-        if self.rx.len() < FRAME_LEN {
-            let stray = self.rx.clear();
+        if self.wire.rx.len() < FRAME_LEN {
+            let stray = self.wire.rx.clear();
             if !stray.is_empty() {
-                self.log(Entry::Received, &stray, "partial data after 139, discarded");
+                self.wire
+                    .log(Entry::Received, &stray, "partial data after 139, discarded");
             }
             return Ok(false);
         }
-        let bytes = self.rx.take(FRAME_LEN);
+        let bytes = self.wire.rx.take(FRAME_LEN);
         let mut frame = [0u8; FRAME_LEN];
         frame.copy_from_slice(&bytes);
         match ReplyFrame::decode(&frame) {
             Ok(reply) if reply.module == module && reply.command == 139 => {
-                self.log(
+                self.wire.log(
                     Entry::Received,
                     &bytes,
                     &format!("binary reply to 139: status {}", reply.status),
@@ -179,8 +180,9 @@ impl TmclSession {
                 Ok(true)
             }
             _ => {
-                self.log(Entry::Received, &bytes, "not a reply to 139, discarded");
-                self.notices.push(format!(
+                self.wire
+                    .log(Entry::Received, &bytes, "not a reply to 139, discarded");
+                self.wire.notices.push(format!(
                     "unexpected bytes after entering ASCII mode: {}",
                     hex(&bytes)
                 ));
@@ -200,7 +202,7 @@ impl TmclSession {
             Err(SessionError::Timeout { timeout, .. }) => {
                 self.modules.remove(&module);
                 return Err(SessionError::Timeout {
-                    module: c,
+                    module: c.to_string(),
                     timeout,
                     hint: format!(
                         ": module {c} does not answer in ASCII mode (check --module, the port and its \
@@ -237,7 +239,7 @@ impl TmclSession {
                 "binary"
             }
         );
-        self.note(&note);
+        self.wire.note(&note);
         Ok(())
     }
 
@@ -252,7 +254,7 @@ impl TmclSession {
         state.echo_known = false;
         let found = Some(state.found_in);
         if let Err(e) = self.learn_echo(module, found) {
-            self.notices.push(format!(
+            self.wire.notices.push(format!(
                 "could not read the echo setting of module {module}: {e}"
             ));
         }
@@ -282,7 +284,8 @@ impl TmclSession {
         if let Some(state) = self.modules.get_mut(&module) {
             state.mode = WireMode::Binary;
         }
-        self.note(&format!("module {c} left ASCII mode (binary direct mode)"));
+        self.wire
+            .note(&format!("module {c} left ASCII mode (binary direct mode)"));
         Ok(exchange)
     }
 

@@ -35,7 +35,7 @@ impl TmclSession {
 
     /// Sends a lone CR, which ends whatever partial line ASCII-mode modules hold.
     pub fn end_partial_line(&mut self) -> Result<(), SessionError> {
-        self.send(
+        self.wire.send(
             b"\r",
             "end of line, clears what the probes left in line buffers",
         )

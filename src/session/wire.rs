@@ -1,23 +1,42 @@
-//! Sending and receiving bytes: every byte goes through here, so every byte reaches the
-//! transcript, and every wait is sliced so Ctrl-C is noticed promptly.
+//! The byte side every dialect's session shares: the link, the receive buffer, the transcript and
+//! the notices. Every byte goes through here, so every byte reaches the transcript, and every wait
+//! is sliced so Ctrl-C is noticed promptly.
 
 use std::time::Instant;
 
-use super::super::transcript::Entry;
-use super::super::{SessionError, interrupt};
-use super::TmclSession;
-use crate::link::LinkError;
+use crate::link::{Link, LinkError};
 
-impl TmclSession {
+use super::rx::Rx;
+use super::transcript::{Entry, Transcript};
+use super::{SessionError, interrupt};
+
+/// A link with its receive buffer, transcript and notices.
+pub(crate) struct Wire {
+    pub link: Box<dyn Link>,
+    pub rx: Rx,
+    pub transcript: Option<Transcript>,
+    pub notices: Vec<String>,
+}
+
+impl Wire {
+    pub fn new(link: Box<dyn Link>, transcript: Option<Transcript>) -> Self {
+        Wire {
+            link,
+            rx: Rx::default(),
+            transcript,
+            notices: Vec::new(),
+        }
+    }
+
     /// Writes bytes to the link and the transcript.
-    pub(super) fn send(&mut self, bytes: &[u8], meaning: &str) -> Result<(), SessionError> {
+    pub fn send(&mut self, bytes: &[u8], meaning: &str) -> Result<(), SessionError> {
         self.log(Entry::Sent, bytes, meaning);
         self.link.send(bytes).map_err(SessionError::from)
     }
 
     /// Reads what arrives before `deadline` into the receive buffer. `Ok(false)` when the
     /// deadline passed with nothing new; `Err(Interrupted)` on Ctrl-C.
-    pub(super) fn fill(&mut self, deadline: Instant) -> Result<bool, SessionError> {
+    pub fn fill(&mut self, deadline: Instant) -> Result<bool, SessionError> {
         let mut buf = [0u8; 512];
         loop {
             if interrupt::pending() {
@@ -41,7 +60,7 @@ impl TmclSession {
     }
 
     /// Drops bytes that arrived outside any exchange (late replies, line noise), logging them.
-    pub(super) fn drain(&mut self) -> Result<(), SessionError> {
+    pub fn drain(&mut self) -> Result<(), SessionError> {
         let mut buf = [0u8; 512];
         loop {
             match self.link.recv(&mut buf, Instant::now()) {
@@ -60,5 +79,22 @@ impl TmclSession {
             );
         }
         Ok(())
+    }
+
+    /// A remark in the transcript.
+    pub fn note(&mut self, text: &str) {
+        self.log(Entry::Note, b"", text);
+    }
+
+    /// Records bytes or a note; a transcript that cannot be written is closed with a notice.
+    pub fn log(&mut self, entry: Entry, bytes: &[u8], meaning: &str) {
+        if let Some(t) = &mut self.transcript {
+            if let Err(e) = t.record(entry, bytes, meaning) {
+                let path = t.path().display().to_string();
+                self.transcript = None;
+                self.notices
+                    .push(format!("stopped writing the transcript {path}: {e}"));
+            }
+        }
     }
 }

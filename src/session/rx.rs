@@ -2,7 +2,7 @@
 
 /// The receive buffer of a session.
 #[derive(Debug, Default)]
-pub(super) struct Rx {
+pub(crate) struct Rx {
     buf: Vec<u8>,
 }
 

@@ -1,0 +1,137 @@
+//! Stand-alone TMCL programs on the module, from the host's side: download with read-back
+//! verification, and program control (run, stop, step, reset, status) from ASCII mode, switching
+//! to binary mode transparently for the control functions ASCII mode lacks.
+
+use crate::protocol::tmcl::line::address_char;
+use crate::protocol::tmcl::{Instruction, Status};
+use crate::session::SessionError;
+use crate::session::tmcl::{Exchange, TmclSession, WireMode};
+use crate::shell::render::application_status;
+
+/// What a download did.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct DownloadReport {
+    /// Instructions stored.
+    pub stored: usize,
+    /// Whether every instruction was read back and matched (false when the module cannot read
+    /// its memory back, e.g. code protection).
+    pub verified: bool,
+}
+
+/// Downloads `program` to `module` from address 0: download mode (132), each instruction,
+/// quit (133), then read-back through 134 where the module allows it. `progress(done, total)` is
+/// called as instructions go out. The module is returned to the mode it was in.
+pub fn download(
+    session: &mut TmclSession,
+    module: u8,
+    program: &[Instruction],
+    mut progress: impl FnMut(usize, usize),
+) -> Result<DownloadReport, SessionError> {
+    session.in_binary(module, |s| {
+        s.request(module, Instruction::new(132, 0, 0, 0))?
+            .checked()?;
+        let stored = store_all(s, module, program, &mut progress);
+        // Leave download mode whatever happened, so the module executes commands again.
+        let quit = s
+            .request(module, Instruction::new(133, 0, 0, 0))
+            .and_then(Exchange::checked);
+        stored?;
+        quit?;
+        let verified = verify(s, module, program, &mut progress)?;
+        Ok(DownloadReport {
+            stored: program.len(),
+            verified,
+        })
+    })
+}
+
+fn store_all(
+    s: &mut TmclSession,
+    module: u8,
+    program: &[Instruction],
+    progress: &mut impl FnMut(usize, usize),
+) -> Result<(), SessionError> {
+    for (address, instruction) in program.iter().enumerate() {
+        let exchange = s.store_instruction(module, *instruction)?;
+        if exchange.status() != Some(Status::Stored) {
+            let status = exchange.status().unwrap_or(Status::Other(0));
+            return Err(SessionError::Device {
+                module: address_char(module).unwrap_or('?').to_string(),
+                sent: format!("instruction {address} ({})", exchange.sent),
+                reason: format!("status {status}, expected 101 (stored)"),
+            });
+        }
+        progress(address + 1, program.len() * 2);
+    }
+    Ok(())
+}
+
+/// Reads the program back with 134 (type 0 value, type 1 command/type/motor — the simulator's
+/// documented convention). Returns false when the module does not support reading back.
+fn verify(
+    s: &mut TmclSession,
+    module: u8,
+    program: &[Instruction],
+    progress: &mut impl FnMut(usize, usize),
+) -> Result<bool, SessionError> {
+    for (address, expected) in program.iter().enumerate() {
+        let at = address as i32;
+        let value = s.request(module, Instruction::new(134, 0, 0, at))?;
+        if matches!(
+            value.status(),
+            Some(Status::NotAvailable | Status::InvalidCommand | Status::WrongType)
+        ) {
+            s.annotate("the module does not read its program memory back; download not verified");
+            return Ok(false);
+        }
+        let value = value.checked()?.value().unwrap_or(0);
+        let fields = s
+            .request(module, Instruction::new(134, 1, 0, at))?
+            .checked()?
+            .value()
+            .unwrap_or(0);
+        let got = Instruction::new(
+            (fields >> 16) as u8,
+            (fields >> 8) as u8,
+            fields as u8,
+            value,
+        );
+        if got != *expected {
+            return Err(SessionError::Link(format!(
+                "verification failed at address {address}: stored {got:?}, expected {expected:?}"
+            )));
+        }
+        progress(program.len() + address + 1, program.len() * 2);
+    }
+    Ok(true)
+}
+
+/// A control function (130 step, 131 reset, 135 status) sent in binary mode, switching there and
+/// back when the module is in ASCII mode.
+pub fn control(
+    session: &mut TmclSession,
+    module: u8,
+    instruction: Instruction,
+) -> Result<Exchange, SessionError> {
+    session.in_binary(module, |s| s.request(module, instruction)?.checked())
+}
+
+/// The application status (135): 0 stopped, 1 running, 2 stepping, 3 reset.
+pub fn status(session: &mut TmclSession, module: u8) -> Result<i32, SessionError> {
+    Ok(control(session, module, Instruction::new(135, 0, 0, 0))?
+        .value()
+        .unwrap_or(0))
+}
+
+/// "stopped", "running" … for a status value.
+pub fn status_name(value: i32) -> &'static str {
+    application_status(value)
+}
+
+/// The mode the module is left in, for messages.
+pub fn mode_text(session: &TmclSession, module: u8) -> &'static str {
+    match session.module_state(module) {
+        Some((WireMode::Binary, _)) => "binary",
+        _ => "ASCII",
+    }
+}

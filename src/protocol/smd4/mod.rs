@@ -1,0 +1,40 @@
+//! The text protocol of AML SMD4 stepper drives: requests `[@addr]MNEMONIC[,arg…]`, replies
+//! `[prefix,]SFLAGS,EFLAGS[,data…]`, flag words, error codes, the command table and validation.
+//! Pure code: text in, values out. The command table, flag names, error texts and simulator
+//! constants are data (`data/smd4.toml`), loaded once by [`Smd4Spec::builtin`].
+//!
+//! A session uses it like this: [`validate()`] the typed [`Request`] (refuse with exit 2), send
+//! [`Request::wire`], feed the received lines to a [`ReplyCollector`] built from
+//! [`Expectation::for_request`], and look at the [`Response`] (a [`DeviceError`] means exit 1).
+
+pub mod commands;
+pub mod errors;
+pub mod flags;
+pub mod format;
+pub mod hints;
+pub mod items;
+pub(crate) mod load;
+pub mod multiline;
+pub mod request;
+pub mod response;
+pub mod spec;
+pub mod types;
+pub mod validate;
+
+#[cfg(test)]
+mod tests;
+
+pub use commands::{
+    ArgProblem, ArgSpec, Choice, CommandSpec, CommandTable, Example, Kind, ReplyShape,
+};
+pub use errors::{DeviceError, ErrorCode, ErrorInfo};
+pub use flags::{Eflags, FlagBit, FlagTable, Sflags};
+pub use format::{ErrorSpelling, FlagCase, FloatStyle};
+pub use hints::{Candidate, Completion, complete, hint, hint_for_line, usage};
+pub use items::{DataItem, Value};
+pub use multiline::{Progress, ReplyCollector, default_quiet_gap};
+pub use request::{ADDRESSING_HELP, PrefixStyle, Request, RequestError};
+pub use response::{Expectation, Response, ResponseError, parse_response};
+pub use spec::{SimConstants, Smd4Spec};
+pub use types::{ArgValue, ItemType};
+pub use validate::{Access, Checked, MAX_ADDRESS, ValidationError, validate};

@@ -1,0 +1,5 @@
+//! Tests of the SMD4 protocol against the document: every example, every validation error.
+
+mod examples;
+mod responses;
+mod validation;
