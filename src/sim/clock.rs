@@ -11,6 +11,12 @@ pub trait Clock: Send + Sync {
 
     /// Lets `duration` pass: the wall clock sleeps, a manual clock jumps ahead.
     fn wait(&self, duration: Duration);
+
+    /// How long, in real time, until the clock shows `target`; `None` when real time does not
+    /// move this clock (a manual clock), so a server waits only for input or a wake-up.
+    fn real_time_until(&self, target: Duration) -> Option<Duration> {
+        Some(target.saturating_sub(self.now()))
+    }
 }
 
 /// Real time.
@@ -22,7 +28,9 @@ pub struct SystemClock {
 impl SystemClock {
     /// A clock starting now.
     pub fn new() -> Self {
-        SystemClock { start: Instant::now() }
+        SystemClock {
+            start: Instant::now(),
+        }
     }
 }
 
@@ -56,7 +64,8 @@ impl ManualClock {
 
     /// Moves time forward.
     pub fn advance(&self, duration: Duration) {
-        self.micros.fetch_add(duration.as_micros() as u64, Ordering::SeqCst);
+        self.micros
+            .fetch_add(duration.as_micros() as u64, Ordering::SeqCst);
     }
 }
 
@@ -67,6 +76,10 @@ impl Clock for ManualClock {
 
     fn wait(&self, duration: Duration) {
         self.advance(duration);
+    }
+
+    fn real_time_until(&self, _target: Duration) -> Option<Duration> {
+        None
     }
 }
 
