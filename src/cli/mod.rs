@@ -3,6 +3,7 @@
 mod completions;
 mod params;
 mod ports;
+mod sim;
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -33,6 +34,8 @@ enum Command {
     Ports,
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
+    /// Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin.
+    Sim(sim::SimArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
@@ -48,7 +51,8 @@ pub fn main() -> Exit {
             };
         }
     };
-    let mut stdout = std::io::stdout().lock();
+    // Not locked for the whole run: `sim` prints from its console thread too.
+    let mut stdout = std::io::stdout();
     match run(cli, &mut stdout) {
         Ok(exit) => exit,
         Err(failure) => {
@@ -83,6 +87,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Params(args)) => params::run(&args, &profile, out),
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
+        Some(Command::Sim(args)) => return sim::run(&args, profile, out),
         None => {
             let mut help = <Cli as clap::CommandFactory>::command();
             write!(out, "{}", help.render_help())
