@@ -9,6 +9,8 @@ pub(crate) mod params;
 mod ports;
 pub mod run;
 pub mod shell;
+mod sim;
+mod sim_smd4;
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -50,6 +52,8 @@ enum Command {
     Disasm(disasm::DisasmArgs),
     /// Store a program (source or program file) in the module, verify it, optionally run it.
     Download(download::DownloadArgs),
+    /// Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin.
+    Sim(sim::SimArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
@@ -65,7 +69,8 @@ pub fn main() -> Exit {
             };
         }
     };
-    let mut stdout = std::io::stdout().lock();
+    // Not locked for the whole run: `sim` prints from its console thread too.
+    let mut stdout = std::io::stdout();
     match run(cli, &mut stdout) {
         Ok(exit) => exit,
         Err(failure) => {
@@ -105,6 +110,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
         Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
         Some(Command::Download(args)) => return download::run(args, &profile, out),
+        Some(Command::Sim(args)) => return sim::run(&args, profile, out),
         None => return shell::run(cli.shell, &profile),
     };
     match result {
