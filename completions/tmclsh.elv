@@ -48,6 +48,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand snapshot 'Save the module''s parameters to a TOML file, compare with one, or write one back'
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
+            cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;params'= {
@@ -230,6 +231,43 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         }
         &'tmclsh;transcript;help;help'= {
         }
+        &'tmclsh;sim'= {
+            cand --protocol 'The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4)'
+            cand --listen 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed'
+            cand --modules 'Module addresses on the simulated RS-485 bus'
+            cand --baud 'Pace bytes like a serial line at N baud (10 bits per byte, both directions)'
+            cand --state 'Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts'
+            cand --left-switch 'Position of the left limit switch (microsteps); not connected by default'
+            cand --right-switch 'Position of the right limit switch'
+            cand --home-switch 'Position of the reference (home) switch, active at and right of it'
+            cand --reply-end 'Ending of ASCII replies: none, cr, lf or crlf'
+            cand --echo-end 'What follows an echoed line: none, cr, lf or crlf (stands for the typed CR in character echo mode)'
+            cand --backspace-echo 'Echo of a backspace in character echo mode: erase (BS SP BS) or plain (BS)'
+            cand --drop-rate 'Drop replies with this probability (0..1)'
+            cand --corrupt-rate 'Corrupt one byte of a reply with this probability'
+            cand --delay-rate 'Delay replies with this probability, by --delay-ms'
+            cand --delay-ms 'How long a delayed reply is held back'
+            cand --silent-after 'Answer nothing after N replies (commands still execute)'
+            cand --hangup-after 'Hang up after N replies (pty: a new one appears, its path printed; TCP: the connection closes and the next client is served)'
+            cand --fault-seed 'Seed of the fault decisions (same seed, same faults)'
+            cand --flag-case 'Hex case of the flag words: upper (0x088E, the text) or lower (0x088e, many examples)'
+            cand --float-decimals 'Decimals of FLOAT replies: 4 (every example) or 5 (the type table)'
+            cand --error-spelling 'Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic) or bare (-103)'
+            cand --prefix-only 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --pty 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
+            cand -v 'Log every frame and line received and sent, decoded, to stderr'
+            cand --verbose 'Log every frame and line received and sent, decoded, to stderr'
+            cand --manual-clock 'Let simulation time pass only on the console command `advance` (deterministic tests)'
+            cand --no-reply-to-139 'Switch to ASCII mode on command 139 without a binary reply'
+            cand --no-reply-to-bin 'Switch back to binary mode on BIN without an ASCII reply'
+            cand --float-missing-e 'Leave the E out of floats (1.0000+01), as two examples do'
+            cand --no-current-rounding 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)'
+            cand --no-reply-prefix 'Send replies to addressed packets without the @N, prefix'
+            cand --scientific-positions 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
         &'tmclsh;help'= {
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
@@ -241,6 +279,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand snapshot 'Save the module''s parameters to a TOML file, compare with one, or write one back'
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
+            cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;help;params'= {
@@ -274,6 +313,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
         }
         &'tmclsh;help;transcript;to-rhai'= {
+        }
+        &'tmclsh;help;sim'= {
         }
         &'tmclsh;help;help'= {
         }

@@ -52,6 +52,7 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "download" -d 'Store a
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "snapshot" -d 'Save the module\'s parameters to a TOML file, compare with one, or write one back'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "scan" -d 'Find the modules on the bus, with firmware versions and echo settings'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "transcript" -d 'Turn a --log transcript into a replayable Rhai script'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "sim" -d 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'Print help'
@@ -173,17 +174,56 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_see
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from to-rhai" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from help" -f -a "to-rhai" -d 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "ports" -d 'List the serial ports of this machine'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "completions" -d 'Print a shell completion script'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "disasm" -d 'Turn a program file back into TMCL source'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "download" -d 'Store a program (source or program file) in the module, verify it, optionally run it'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "snapshot" -d 'Save the module\'s parameters to a TOML file, compare with one, or write one back'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "scan" -d 'Find the modules on the bus, with firmware versions and echo settings'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "transcript" -d 'Turn a --log transcript into a replayable Rhai script'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l protocol -d 'The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l listen -d 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l modules -d 'Module addresses on the simulated RS-485 bus' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l baud -d 'Pace bytes like a serial line at N baud (10 bits per byte, both directions)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l state -d 'Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l left-switch -d 'Position of the left limit switch (microsteps); not connected by default' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l right-switch -d 'Position of the right limit switch' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l home-switch -d 'Position of the reference (home) switch, active at and right of it' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l reply-end -d 'Ending of ASCII replies: none, cr, lf or crlf' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l echo-end -d 'What follows an echoed line: none, cr, lf or crlf (stands for the typed CR in character echo mode)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l backspace-echo -d 'Echo of a backspace in character echo mode: erase (BS SP BS) or plain (BS)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l drop-rate -d 'Drop replies with this probability (0..1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l corrupt-rate -d 'Corrupt one byte of a reply with this probability' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l delay-rate -d 'Delay replies with this probability, by --delay-ms' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l delay-ms -d 'How long a delayed reply is held back' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l silent-after -d 'Answer nothing after N replies (commands still execute)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l hangup-after -d 'Hang up after N replies (pty: a new one appears, its path printed; TCP: the connection closes and the next client is served)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l fault-seed -d 'Seed of the fault decisions (same seed, same faults)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l flag-case -d 'Hex case of the flag words: upper (0x088E, the text) or lower (0x088e, many examples)' -r -f -a "upper\t''
+lower\t''"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l float-decimals -d 'Decimals of FLOAT replies: 4 (every example) or 5 (the type table)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l error-spelling -d 'Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic) or bare (-103)' -r -f -a "paren\t''
+comma\t''
+bare\t''"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l prefix-only -d 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)' -r -f -a "attached\t''
+comma\t''"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l pty -d 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s v -l verbose -d 'Log every frame and line received and sent, decoded, to stderr'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l manual-clock -d 'Let simulation time pass only on the console command `advance` (deterministic tests)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-139 -d 'Switch to ASCII mode on command 139 without a binary reply'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-bin -d 'Switch back to binary mode on BIN without an ASCII reply'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l float-missing-e -d 'Leave the E out of floats (1.0000+01), as two examples do'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-current-rounding -d 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-prefix -d 'Send replies to addressed packets without the @N, prefix'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l scientific-positions -d 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "ports" -d 'List the serial ports of this machine'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "completions" -d 'Print a shell completion script'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "disasm" -d 'Turn a program file back into TMCL source'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "download" -d 'Store a program (source or program file) in the module, verify it, optionally run it'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "snapshot" -d 'Save the module\'s parameters to a TOML file, compare with one, or write one back'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "scan" -d 'Find the modules on the bus, with firmware versions and echo settings'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "transcript" -d 'Turn a --log transcript into a replayable Rhai script'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "sim" -d 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from snapshot" -f -a "save" -d 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from snapshot" -f -a "diff" -d 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from snapshot" -f -a "restore" -d 'Write FILE\'s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'

@@ -5,3 +5,4 @@ mod util;
 
 mod asm;
 mod cli;
+mod sim;

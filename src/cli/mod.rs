@@ -12,6 +12,8 @@ mod scan;
 pub mod shell;
 mod snapshot;
 mod transcript;
+mod sim;
+mod sim_smd4;
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -59,6 +61,8 @@ enum Command {
     Scan(scan::ScanArgs),
     /// Turn a --log transcript into a replayable Rhai script.
     Transcript(transcript::TranscriptArgs),
+    /// Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin.
+    Sim(sim::SimArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
@@ -74,7 +78,8 @@ pub fn main() -> Exit {
             };
         }
     };
-    let mut stdout = std::io::stdout().lock();
+    // Not locked for the whole run: `sim` prints from its console thread too.
+    let mut stdout = std::io::stdout();
     match run(cli, &mut stdout) {
         Ok(exit) => exit,
         Err(failure) => {
@@ -117,6 +122,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Snapshot(args)) => return snapshot::run(args, &profile, out),
         Some(Command::Scan(args)) => return scan::run(args, &profile, out),
         Some(Command::Transcript(args)) => return transcript::run(args, &profile, out),
+        Some(Command::Sim(args)) => return sim::run(&args, profile, out),
         None => return shell::run(cli.shell, &profile),
     };
     match result {

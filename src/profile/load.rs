@@ -118,6 +118,10 @@ pub(crate) struct SimulationRow {
     #[serde(default)]
     pub outputs: Vec<u8>,
     pub adc_max: Option<i32>,
+    pub frame_timeout_ms: Option<u32>,
+    pub ascii_line_max: Option<usize>,
+    pub encoder_usteps_per_count: Option<f64>,
+    pub instruction_us: Option<u32>,
 }
 
 impl ProfileFile {

@@ -130,6 +130,15 @@ pub struct SimConstants {
     pub outputs: Vec<u8>,
     /// Full-scale ADC reading.
     pub adc_max: i32,
+    /// A partial binary frame older than this is discarded, so the receiver resynchronises
+    /// after line noise or a half-sent frame.
+    pub frame_timeout_ms: u32,
+    /// Characters kept per ASCII command line; further characters are dropped.
+    pub ascii_line_max: usize,
+    /// Microsteps per count of the simulated encoder.
+    pub encoder_usteps_per_count: f64,
+    /// Execution time of one stand-alone program instruction, in microseconds.
+    pub instruction_us: u32,
 }
 
 /// A module's tables.
@@ -286,6 +295,12 @@ impl Profile {
                 digital_inputs: sim.map(|s| s.digital_inputs.clone()).unwrap_or_default(),
                 outputs: sim.map(|s| s.outputs.clone()).unwrap_or_default(),
                 adc_max: sim.and_then(|s| s.adc_max).unwrap_or(1023),
+                frame_timeout_ms: sim.and_then(|s| s.frame_timeout_ms).unwrap_or(100),
+                ascii_line_max: sim.and_then(|s| s.ascii_line_max).unwrap_or(80),
+                encoder_usteps_per_count: sim
+                    .and_then(|s| s.encoder_usteps_per_count)
+                    .unwrap_or(1.0),
+                instruction_us: sim.and_then(|s| s.instruction_us).unwrap_or(100),
             },
             snapshot: file.snapshot.clone(),
         })

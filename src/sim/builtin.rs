@@ -6,9 +6,23 @@ use crate::link::Link;
 use crate::profile::Profile;
 use crate::protocol::Dialect;
 
+use super::clock::SystemClock;
+use super::inprocess::SimLink;
+use super::smd4::{Smd4Options, Smd4Sim};
+use super::tmcl::{Bus, BusOptions};
+
 /// A link to a freshly powered-up simulated module (address 1) of `profile`, or a simulated SMD4,
-/// in-process.
+/// in-process, running on the wall clock so motion takes real time.
 pub fn builtin_link(profile: &Arc<Profile>, dialect: Dialect) -> Box<dyn Link> {
-    let _ = (profile, dialect);
-    unimplemented!("the in-process simulator arrives with the simulator work")
+    let clock = Arc::new(SystemClock::new());
+    let link = match dialect {
+        Dialect::Tmcl => SimLink::new(
+            Box::new(Bus::new(profile.clone(), BusOptions::default())),
+            clock,
+        )
+        .named(format!("simulated {} (built-in)", profile.module)),
+        Dialect::Smd4 => SimLink::new(Box::new(Smd4Sim::new(Smd4Options::default())), clock)
+            .named("simulated SMD4 (built-in)"),
+    };
+    Box::new(link)
 }

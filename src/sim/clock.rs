@@ -11,6 +11,12 @@ pub trait Clock: Send + Sync {
 
     /// Lets `duration` pass: the wall clock sleeps, a manual clock jumps ahead.
     fn wait(&self, duration: Duration);
+
+    /// How long, in real time, until the clock shows `target`; `None` when real time does not
+    /// move this clock (a manual clock), so a server waits only for input or a wake-up.
+    fn real_time_until(&self, target: Duration) -> Option<Duration> {
+        Some(target.saturating_sub(self.now()))
+    }
 }
 
 /// Real time.
@@ -70,6 +76,10 @@ impl Clock for ManualClock {
 
     fn wait(&self, duration: Duration) {
         self.advance(duration);
+    }
+
+    fn real_time_until(&self, _target: Duration) -> Option<Duration> {
+        None
     }
 }
 

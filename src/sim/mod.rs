@@ -7,7 +7,14 @@
 
 mod builtin;
 pub mod clock;
+pub mod console;
+pub mod fault;
+pub mod inprocess;
+pub mod pacing;
+#[cfg(unix)]
+pub mod serve;
 pub mod smd4;
+pub mod tmcl;
 
 pub use builtin::builtin_link;
 
@@ -29,5 +36,42 @@ pub trait Device: Send {
     /// Whether the device has hung up (fault injection); adapters then close the connection.
     fn hung_up(&self) -> bool {
         false
+    }
+
+    /// A new connection replaces one that hung up: a device that hung up may talk again.
+    fn reconnect(&mut self) {}
+
+    /// Runs a control command (from the `tmclsh sim` console or a test): set an input, move a
+    /// switch, trigger a fault. `None` when the device does not know the command, so that
+    /// decorators can pass it on to the device they wrap.
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+        let _ = (now, command);
+        None
+    }
+}
+
+impl<D: Device + ?Sized> Device for Box<D> {
+    fn receive(&mut self, now: Duration, bytes: &[u8]) {
+        (**self).receive(now, bytes)
+    }
+
+    fn poll_output(&mut self, now: Duration, out: &mut Vec<u8>) {
+        (**self).poll_output(now, out)
+    }
+
+    fn next_due(&self, now: Duration) -> Option<Duration> {
+        (**self).next_due(now)
+    }
+
+    fn hung_up(&self) -> bool {
+        (**self).hung_up()
+    }
+
+    fn reconnect(&mut self) {
+        (**self).reconnect()
+    }
+
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+        (**self).control(now, command)
     }
 }

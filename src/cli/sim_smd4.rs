@@ -1,0 +1,80 @@
+//! The `tmclsh sim --protocol smd4` flags: each quirk of the SMD4 document behind a switch, so
+//! clients can be tested against every reading of it.
+
+use std::path::Path;
+
+use crate::protocol::smd4::{ErrorSpelling, FlagCase, FloatStyle, PrefixStyle};
+use crate::sim::Device;
+use crate::sim::smd4::{PositionFormat, PrefixAcceptance, Smd4Options, Smd4Sim};
+
+/// Quirk switches of the simulated SMD4.
+#[derive(Debug, Clone, clap::Args)]
+#[command(next_help_heading = "SMD4 quirks (with --protocol smd4)")]
+pub struct Smd4SimArgs {
+    /// Hex case of the flag words: upper (0x088E, the text) or lower (0x088e, many examples).
+    #[arg(long, value_name = "CASE", default_value = "upper", value_parser = ["upper", "lower"])]
+    pub flag_case: String,
+    /// Decimals of FLOAT replies: 4 (every example) or 5 (the type table).
+    #[arg(long, value_name = "N", default_value_t = 4, value_parser = clap::value_parser!(u8).range(4..=5))]
+    pub float_decimals: u8,
+    /// Leave the E out of floats (1.0000+01), as two examples do.
+    #[arg(long)]
+    pub float_missing_e: bool,
+    /// Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic)
+    /// or bare (-103).
+    #[arg(long, value_name = "HOW", default_value = "paren", value_parser = ["paren", "comma", "bare"])]
+    pub error_spelling: String,
+    /// Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps).
+    #[arg(long)]
+    pub no_current_rounding: bool,
+    /// Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP).
+    #[arg(long, value_name = "FORM", value_parser = ["attached", "comma"])]
+    pub prefix_only: Option<String>,
+    /// Send replies to addressed packets without the @N, prefix.
+    #[arg(long)]
+    pub no_reply_prefix: bool,
+    /// Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00).
+    #[arg(long)]
+    pub scientific_positions: bool,
+}
+
+impl Smd4SimArgs {
+    /// The options these switches select; `state` keeps STORE'd settings across restarts.
+    pub fn options(&self, state: Option<&Path>) -> Smd4Options {
+        Smd4Options {
+            flag_case: if self.flag_case == "lower" {
+                FlagCase::Lower
+            } else {
+                FlagCase::Upper
+            },
+            float_style: FloatStyle {
+                decimals: self.float_decimals,
+                missing_e: self.float_missing_e,
+            },
+            error_spelling: match self.error_spelling.as_str() {
+                "comma" => ErrorSpelling::Comma,
+                "bare" => ErrorSpelling::Bare,
+                _ => ErrorSpelling::Parenthesised,
+            },
+            current_rounding: !self.no_current_rounding,
+            prefix: match self.prefix_only.as_deref() {
+                Some("attached") => PrefixAcceptance::Only(PrefixStyle::Attached),
+                Some("comma") => PrefixAcceptance::Only(PrefixStyle::Comma),
+                _ => PrefixAcceptance::Either,
+            },
+            reply_prefix: !self.no_reply_prefix,
+            position_format: if self.scientific_positions {
+                PositionFormat::Scientific
+            } else {
+                PositionFormat::Fixed
+            },
+            state_file: state.map(Path::to_path_buf),
+            ..Smd4Options::default()
+        }
+    }
+
+    /// The simulated drive.
+    pub fn device(&self, state: Option<&Path>) -> Box<dyn Device> {
+        Box::new(Smd4Sim::new(self.options(state)))
+    }
+}

@@ -1,0 +1,147 @@
+use super::*;
+use crate::protocol::tmcl::{CommandFrame, Instruction, ReplyFrame};
+use crate::sim::tmcl::Bus;
+
+fn gap4() -> [u8; 9] {
+    CommandFrame {
+        address: 1,
+        instruction: Instruction::new(6, 4, 0, 0),
+    }
+    .encode()
+}
+
+/// Sends GAP 4 at `t` and returns what is sent by then.
+fn ask(device: &mut Faulty<Bus>, t: Duration) -> Vec<u8> {
+    device.receive(t, &gap4());
+    let mut out = Vec::new();
+    device.poll_output(t, &mut out);
+    out
+}
+
+fn faulty(faults: Faults) -> Faulty<Bus> {
+    Faulty::new(Bus::builtin(), faults)
+}
+
+#[test]
+fn without_faults_every_reply_passes_unchanged() {
+    let mut device = faulty(Faults::default());
+    for i in 0..20 {
+        let out = ask(&mut device, Duration::from_millis(i));
+        assert!(ReplyFrame::decode(out[..].try_into().unwrap()).is_ok());
+    }
+}
+
+#[test]
+fn drops_follow_the_rate_and_the_seed() {
+    let pattern = |seed| {
+        let mut device = faulty(Faults {
+            drop_rate: 0.5,
+            seed,
+            ..Faults::default()
+        });
+        (0..200)
+            .map(|i| ask(&mut device, Duration::from_millis(i)).is_empty())
+            .collect::<Vec<bool>>()
+    };
+    let a = pattern(7);
+    assert_eq!(a, pattern(7), "same seed, same faults");
+    assert_ne!(a, pattern(8));
+    let dropped = a.iter().filter(|d| **d).count();
+    assert!(
+        (60..140).contains(&dropped),
+        "{dropped} of 200 dropped at rate 0.5"
+    );
+    let mut all = faulty(Faults {
+        drop_rate: 1.0,
+        ..Faults::default()
+    });
+    assert!(ask(&mut all, Duration::ZERO).is_empty());
+}
+
+#[test]
+fn corrupted_replies_fail_their_checksum() {
+    let mut device = faulty(Faults {
+        corrupt_rate: 1.0,
+        ..Faults::default()
+    });
+    for i in 0..50 {
+        let out = ask(&mut device, Duration::from_millis(i));
+        assert_eq!(out.len(), 9);
+        assert!(ReplyFrame::decode(out[..].try_into().unwrap()).is_err());
+    }
+}
+
+#[test]
+fn delayed_replies_arrive_late_and_in_order() {
+    let mut device = faulty(Faults {
+        delay_rate: 1.0,
+        delay: Duration::from_millis(100),
+        ..Faults::default()
+    });
+    assert!(ask(&mut device, Duration::ZERO).is_empty());
+    assert_eq!(
+        device.next_due(Duration::ZERO),
+        Some(Duration::from_millis(100))
+    );
+    let mut out = Vec::new();
+    device.poll_output(Duration::from_millis(99), &mut out);
+    assert!(out.is_empty());
+    device.poll_output(Duration::from_millis(100), &mut out);
+    assert_eq!(out.len(), 9);
+}
+
+#[test]
+fn a_silent_device_still_executes() {
+    let mut device = faulty(Faults {
+        silent_after: Some(2),
+        ..Faults::default()
+    });
+    assert_eq!(ask(&mut device, Duration::ZERO).len(), 9);
+    assert_eq!(ask(&mut device, Duration::ZERO).len(), 9);
+    let mvp = CommandFrame {
+        address: 1,
+        instruction: Instruction::new(4, 0, 0, 1000),
+    };
+    device.receive(Duration::ZERO, &mvp.encode());
+    let mut out = Vec::new();
+    device.poll_output(Duration::ZERO, &mut out);
+    assert!(out.is_empty());
+    let motor = device.inner_mut().motor(Duration::ZERO, 1).unwrap();
+    assert_eq!(motor.target, 1000, "the silent module moved anyway");
+}
+
+#[test]
+fn hanging_up_after_n_replies_and_reconnecting() {
+    let mut device = faulty(Faults {
+        hangup_after: Some(3),
+        ..Faults::default()
+    });
+    for _ in 0..3 {
+        assert!(!device.hung_up());
+        assert_eq!(ask(&mut device, Duration::ZERO).len(), 9);
+    }
+    assert!(device.hung_up());
+    assert!(ask(&mut device, Duration::ZERO).is_empty());
+    device.reconnect();
+    assert!(!device.hung_up());
+    assert_eq!(ask(&mut device, Duration::ZERO).len(), 9);
+}
+
+#[test]
+fn faults_change_at_run_time_through_control_commands() {
+    let mut device = faulty(Faults::default());
+    let now = Duration::ZERO;
+    assert!(device.control(now, "drop 1").unwrap().is_ok());
+    assert!(ask(&mut device, now).is_empty());
+    device.control(now, "drop 0").unwrap().unwrap();
+    device.control(now, "silent on").unwrap().unwrap();
+    assert!(ask(&mut device, now).is_empty());
+    device.control(now, "silent off").unwrap().unwrap();
+    assert_eq!(ask(&mut device, now).len(), 9);
+    assert!(device.control(now, "drop 2").unwrap().is_err());
+    // Commands of the wrapped bus pass through.
+    assert!(device.control(now, "input 3 1").unwrap().is_ok());
+    assert!(device.control(now, "nonsense").is_none());
+    device.control(now, "hangup").unwrap().unwrap();
+    assert!(device.hung_up());
+}

@@ -1,0 +1,189 @@
+//! Serving a device to other programs: on a pseudo-terminal, where it looks like a serial port,
+//! or on TCP. One thread per adapter; it waits on I/O with a timeout derived from the device's
+//! `next_due` (or until woken by the console), never with fixed sleeps.
+
+mod pty;
+mod tcp;
+
+use std::io::{self, Read, Write};
+use std::os::fd::{AsFd, BorrowedFd};
+use std::os::unix::net::UnixStream;
+use std::sync::Arc;
+use std::time::Duration;
+
+use nix::errno::Errno;
+use nix::poll::{PollFd, PollFlags, PollTimeout, poll};
+
+use super::Device;
+use super::clock::Clock;
+use super::inprocess::SharedDevice;
+
+/// Wakes a serving thread, e.g. after a console command changed the device or the clock.
+#[derive(Debug, Clone)]
+pub struct Waker(Arc<UnixStream>);
+
+impl Waker {
+    /// Makes the server look at the device again now.
+    pub fn wake(&self) {
+        // Non-blocking: when the pipe is full a wake-up is pending anyway.
+        let _ = (&*self.0).write(&[1]);
+    }
+}
+
+/// The receiving end of a [`Waker`], owned by the server.
+#[derive(Debug)]
+pub struct WakeReceiver(UnixStream);
+
+impl WakeReceiver {
+    fn drain(&mut self) {
+        let mut buf = [0u8; 64];
+        while matches!(self.0.read(&mut buf), Ok(n) if n > 0) {}
+    }
+}
+
+/// A connected waker pair.
+pub fn wake_pair() -> io::Result<(Waker, WakeReceiver)> {
+    let (tx, rx) = UnixStream::pair()?;
+    tx.set_nonblocking(true)?;
+    rx.set_nonblocking(true)?;
+    Ok((Waker(Arc::new(tx)), WakeReceiver(rx)))
+}
+
+/// Why serving one connection ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum End {
+    /// The peer closed the connection.
+    Closed,
+    /// The device hung up (fault injection).
+    HungUp,
+    /// The extra descriptor became readable (a new TCP client is waiting).
+    Other,
+}
+
+/// A device, its clock and the means to serve it.
+pub struct Server {
+    device: SharedDevice,
+    clock: Arc<dyn Clock>,
+    wake: WakeReceiver,
+    log: Box<dyn FnMut(&str) + Send>,
+}
+
+/// A byte stream that can be polled.
+trait Port: Read + Write + AsFd {}
+impl<T: Read + Write + AsFd> Port for T {}
+
+impl Server {
+    /// A server for `device`; `log` receives connection events (connects, hang-ups).
+    pub fn new(
+        device: SharedDevice,
+        clock: Arc<dyn Clock>,
+        wake: WakeReceiver,
+        log: Box<dyn FnMut(&str) + Send>,
+    ) -> Server {
+        Server {
+            device,
+            clock,
+            wake,
+            log,
+        }
+    }
+
+    fn with_device<R>(&self, f: impl FnOnce(&mut dyn Device, Duration) -> R) -> R {
+        let now = self.clock.now();
+        let mut device = self.device.lock().unwrap_or_else(|e| e.into_inner());
+        f(&mut *device, now)
+    }
+
+    /// A new connection: the device may talk again and stale output is dropped.
+    fn fresh_connection(&self) {
+        self.with_device(|device, now| {
+            device.reconnect();
+            let mut stale = Vec::new();
+            device.poll_output(now, &mut stale);
+        });
+    }
+
+    /// Moves bytes between `port` and the device until the connection ends.
+    fn pump(&mut self, port: &mut dyn Port, extra: Option<BorrowedFd>) -> io::Result<End> {
+        let mut out = Vec::new();
+        let mut buf = [0u8; 4096];
+        loop {
+            let (due, hung) = self.with_device(|device, now| {
+                device.poll_output(now, &mut out);
+                (device.next_due(now), device.hung_up())
+            });
+            let wrote = !out.is_empty();
+            if wrote {
+                match port.write_all(&out).and_then(|()| port.flush()) {
+                    Ok(()) => {}
+                    Err(e) if e.kind() == io::ErrorKind::WouldBlock => {
+                        (self.log)(&format!("nobody reads: {} bytes dropped", out.len()));
+                    }
+                    Err(_) => return Ok(End::Closed),
+                }
+                out.clear();
+            }
+            if hung {
+                return Ok(End::HungUp);
+            }
+            let mut timeout = due.and_then(|d| self.clock.real_time_until(d));
+            if timeout == Some(Duration::ZERO) && !wrote {
+                // Due but nothing came: look again shortly rather than spin.
+                timeout = Some(Duration::from_millis(1));
+            }
+            let (port_ready, wake_ready, extra_ready) = {
+                let mut fds = vec![
+                    PollFd::new(port.as_fd(), PollFlags::POLLIN),
+                    PollFd::new(self.wake.0.as_fd(), PollFlags::POLLIN),
+                ];
+                if let Some(fd) = extra {
+                    fds.push(PollFd::new(fd, PollFlags::POLLIN));
+                }
+                match poll(&mut fds, poll_timeout(timeout)) {
+                    Ok(_) => {}
+                    Err(Errno::EINTR) => continue,
+                    Err(e) => return Err(e.into()),
+                }
+                let ready = |fd: &PollFd| {
+                    fd.revents().is_some_and(|r| {
+                        r.intersects(PollFlags::POLLIN | PollFlags::POLLHUP | PollFlags::POLLERR)
+                    })
+                };
+                (
+                    ready(&fds[0]),
+                    ready(&fds[1]),
+                    fds.get(2).is_some_and(ready),
+                )
+            };
+            if wake_ready {
+                self.wake.drain();
+            }
+            if port_ready {
+                match port.read(&mut buf) {
+                    Ok(0) => return Ok(End::Closed),
+                    Ok(n) => self.with_device(|device, now| device.receive(now, &buf[..n])),
+                    Err(e)
+                        if matches!(
+                            e.kind(),
+                            io::ErrorKind::WouldBlock | io::ErrorKind::Interrupted
+                        ) => {}
+                    Err(_) => return Ok(End::Closed),
+                }
+            }
+            if extra_ready {
+                return Ok(End::Other);
+            }
+        }
+    }
+}
+
+/// A poll timeout in whole milliseconds, rounded up so the server never wakes too early.
+fn poll_timeout(timeout: Option<Duration>) -> PollTimeout {
+    match timeout {
+        None => PollTimeout::NONE,
+        Some(d) => {
+            let ms = d.as_nanos().div_ceil(1_000_000).min(i32::MAX as u128) as i32;
+            PollTimeout::try_from(ms).unwrap_or(PollTimeout::MAX)
+        }
+    }
+}

@@ -1,0 +1,42 @@
+//! The simulated TMCM-142: binary and ASCII TMCL on a bus of modules, motion that takes time,
+//! parameters and EEPROM from the profile, I/O, program memory.
+//!
+//! Everything here is a pure state machine: bytes and time in, bytes out. [`Bus`] is the
+//! [`crate::sim::Device`] the adapters serve; the modules on it ([`module`]) decode frames and
+//! lines and hand commands to their [`machine`], whose motor ([`motion`], [`ramp`]) is computed
+//! analytically from time, so results are exact and independent of how often anyone looks.
+
+mod ascii;
+mod bus;
+mod control;
+mod control_cmd;
+mod exec;
+mod io;
+mod machine;
+mod module;
+mod motion;
+mod options;
+mod params;
+mod program;
+mod ramp;
+mod state;
+mod vm;
+
+pub use bus::{Bus, BusOptions, LogSink, MotorState};
+pub use motion::{Switch, Switches};
+pub use options::{Backspace, LineEnd, Quirks};
+pub use state::{BusImage, FileStore, MemoryStore, ModuleImage, StateError, StateStore};
+
+/// The shell's built-in simulator: one factory-fresh module at address 1 of `profile`, in-process
+/// on the system clock.
+pub fn in_process(
+    profile: std::sync::Arc<crate::profile::Profile>,
+) -> crate::sim::inprocess::SimLink {
+    let clock = std::sync::Arc::new(crate::sim::clock::SystemClock::new());
+    let name = format!("simulated {} (built in)", profile.module);
+    crate::sim::inprocess::SimLink::new(Box::new(Bus::new(profile, BusOptions::default())), clock)
+        .named(name)
+}
+
+#[cfg(test)]
+mod tests;
