@@ -5,4 +5,5 @@ mod util;
 
 mod asm;
 mod cli;
+mod commission;
 mod sim;

@@ -10,10 +10,10 @@ mod ports;
 pub mod run;
 mod scan;
 pub mod shell;
-mod snapshot;
-mod transcript;
 mod sim;
 mod sim_smd4;
+mod snapshot;
+mod transcript;
 
 use std::io::Write;
 use std::path::PathBuf;

@@ -29,6 +29,7 @@ pub struct ScanArgs {
 /// Runs the scan; exit code 3 when no module answered.
 pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Result<Exit, Failure> {
     interrupt::install();
+    let out = &mut super::snapshot::PipeSafe(out);
     if args.connection.protocol != crate::protocol::Dialect::Tmcl {
         return Err(Failure::new(
             Exit::Refused,
@@ -43,7 +44,8 @@ pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Resul
     let link = args.connection.open(profile, per_reply)?;
     let mut session = TmclSession::open_idle(link, profile.clone(), options, transcript)
         .map_err(|e| Failure::new(e.exit(), e.to_string()))?;
-    let result = scan::scan(&mut session, &addresses, per_reply);
+    let quiet = scan::quiet_time(profile);
+    let result = scan::scan(&mut session, &addresses, per_reply, quiet);
     for notice in session.take_notices() {
         eprintln!("tmclsh: {notice}");
     }

@@ -161,6 +161,26 @@ fn finish(result: Result<(), SessionError>) -> Result<Exit, Failure> {
     }
 }
 
+/// Output that ignores a closed pipe (`| head`): the work goes on, the rest of the report is
+/// dropped, and the exit code stays that of the work.
+pub(super) struct PipeSafe<'a>(pub &'a mut dyn Write);
+
+impl Write for PipeSafe<'_> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        match self.0.write(buf) {
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(buf.len()),
+            other => other,
+        }
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        match self.0.flush() {
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+            other => other,
+        }
+    }
+}
+
 fn confirm_store(plan: &Plan, module: u8) -> Result<bool, SessionError> {
     let n = restore::storable(plan).count();
     eprint!("store {n} parameters to the EEPROM of module {module}? [y/N] ");

@@ -116,7 +116,9 @@ pub fn restore(
     let params = device.params();
     let plan = restore::plan(&snapshot, &params, device);
     if options.dry_run {
-        restore::write_dry_run(&plan, device, options.store, out)?;
+        for line in restore::dry_run(device, &plan, options.store)? {
+            writeln!(out, "{line}")?;
+        }
         restore::write_skipped(&plan, out)?;
         return Ok(Outcome::default());
     }

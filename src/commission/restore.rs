@@ -98,19 +98,39 @@ pub fn plan(snapshot: &Snapshot, params: &[ParamRef], device: &dyn ParamDevice) 
 pub struct Outcome {
     /// Parameters written and read back with the same value.
     pub verified: usize,
-    /// Parameters the module refused or that read back differently: name and what happened.
+    /// Parameters that already had the snapshot's value (not written).
+    pub unchanged: usize,
+    /// Parameters the module (or the profile's range) refused or that read back differently:
+    /// name and what happened.
     pub failed: Vec<(String, String)>,
     /// Parameters stored to EEPROM.
     pub stored: usize,
 }
 
-/// Writes the plan's values, reading each back. A refusal or a mismatch is recorded and the rest
-/// goes on; a lost link, a timeout or Ctrl-C ends the restore.
+/// Whether an error concerns one parameter (the restore goes on) rather than the link.
+fn per_parameter(error: &SessionError) -> bool {
+    matches!(
+        error,
+        SessionError::Device { .. } | SessionError::Refused(_)
+    )
+}
+
+/// Writes the plan's values that differ from the module's, reading each back. A refusal or a
+/// mismatch is recorded and the rest goes on; a lost link, a timeout or Ctrl-C ends the restore.
 pub fn execute(device: &mut dyn ParamDevice, plan: &Plan) -> Result<Outcome, SessionError> {
     let mut outcome = Outcome::default();
     let progress = Progress::new(plan.writes.len(), "writing");
     for (param, value) in &plan.writes {
         progress.step(&param.name);
+        match device.read(param) {
+            Ok(current) if current == *value => {
+                outcome.unchanged += 1;
+                continue;
+            }
+            Ok(_) => {}
+            Err(e) if per_parameter(&e) => {}
+            Err(e) => return Err(e),
+        }
         let checked = device
             .write(param, *value)
             .and_then(|()| device.read(param));
@@ -120,13 +140,34 @@ pub fn execute(device: &mut dyn ParamDevice, plan: &Plan) -> Result<Outcome, Ses
                 param.name.clone(),
                 format!("wrote {value}, reads back {back}"),
             )),
-            Err(e @ SessionError::Device { .. }) => {
-                outcome.failed.push((param.name.clone(), e.to_string()))
-            }
+            Err(e) if per_parameter(&e) => outcome.failed.push((param.name.clone(), e.to_string())),
             Err(e) => return Err(e),
         }
     }
     Ok(outcome)
+}
+
+/// The lines a restore would send (`--dry-run`): reads the module and lists the writes of the
+/// values that differ, then the stores.
+pub fn dry_run(
+    device: &mut dyn ParamDevice,
+    plan: &Plan,
+    store: bool,
+) -> Result<Vec<String>, SessionError> {
+    let mut lines = Vec::new();
+    for (param, value) in &plan.writes {
+        match device.read(param) {
+            Ok(current) if current == *value => continue,
+            Ok(_) => {}
+            Err(e) if per_parameter(&e) => {}
+            Err(e) => return Err(e),
+        }
+        lines.push(device.write_line(param, *value));
+    }
+    if store {
+        lines.extend(storable(plan).map(|p| device.store_line(p)));
+    }
+    Ok(lines)
 }
 
 /// The parameters of the plan that can be stored to EEPROM.
@@ -149,28 +190,8 @@ pub fn store(
         progress.step(&param.name);
         match device.store(param) {
             Ok(()) => outcome.stored += 1,
-            Err(e @ SessionError::Device { .. }) => {
-                outcome.failed.push((param.name.clone(), e.to_string()))
-            }
+            Err(e) if per_parameter(&e) => outcome.failed.push((param.name.clone(), e.to_string())),
             Err(e) => return Err(e),
-        }
-    }
-    Ok(())
-}
-
-/// Prints the lines a restore would send (`--dry-run`).
-pub fn write_dry_run(
-    plan: &Plan,
-    device: &dyn ParamDevice,
-    store: bool,
-    out: &mut dyn Write,
-) -> io::Result<()> {
-    for (param, value) in &plan.writes {
-        writeln!(out, "{}", device.write_line(param, *value))?;
-    }
-    if store {
-        for param in storable(plan) {
-            writeln!(out, "{}", device.store_line(param))?;
         }
     }
     Ok(())
@@ -215,8 +236,8 @@ pub fn write_skipped(plan: &Plan, out: &mut dyn Write) -> io::Result<()> {
 pub fn write_outcome(outcome: &Outcome, out: &mut dyn Write) -> io::Result<()> {
     writeln!(
         out,
-        "restored {} parameters, each verified",
-        outcome.verified
+        "restored {} parameters, each read back and verified; {} already had the snapshot's value",
+        outcome.verified, outcome.unchanged
     )?;
     for (name, what) in &outcome.failed {
         writeln!(out, "FAILED {name}: {what}")?;

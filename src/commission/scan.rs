@@ -1,9 +1,21 @@
-//! Finding the modules on a bus. Addresses 1..26 (A..Z) are tried the way the session reaches
-//! any module — command 139 into ASCII mode, then the echo setting from global parameter 67 — so a
-//! module answers whichever mode it was in; addresses above 26 have no address character and are
-//! tried with a binary frame (command 136, the firmware version). Each address waits at most the
-//! given time per reply; the session puts every module found back in its mode when it closes.
+//! Finding the modules on a bus, in three rounds so binary-mode modules never see a frame out
+//! of step:
+//!
+//! 1. Binary frames only: command 136 type 1 (checksummed, answered by the addressed module
+//!    alone) to every address finds the modules in binary mode, then 136 type 0 reads their
+//!    version string. Modules in ASCII mode take these bytes as lines for other modules.
+//! 2. ASCII: every address 1..26 (A..Z) that did not answer is reached the way the session reaches
+//!    any module — command 139, then the echo setting from global parameter 67 — which finds the
+//!    modules already in ASCII mode; their version comes from 136 in binary mode, there and back.
+//! 3. The echo setting of the binary-mode modules (global parameter 67 over a binary frame), after
+//!    the line has been quiet long enough for their receivers to drop what the ASCII lines left
+//!    in them (the firmware's frame timeout). Skipped when a module in ASCII mode answers to C:
+//!    the frame's bytes 10, 67 ("LF", "C") would start a line for it.
+//!
+//! Each reply is awaited at most the given time; the session puts every module it switched back
+//! in its mode when it closes, and modules only probed with binary frames are never switched.
 
+use std::collections::BTreeMap;
 use std::io::{self, Write};
 use std::time::Duration;
 
@@ -38,38 +50,83 @@ pub struct Report {
     pub per_reply: Duration,
 }
 
-/// Tries every address in `addresses`, waiting at most `per_reply` for each reply. Ctrl-C and a
-/// lost link end the scan; silence or garbage at an address means nobody is there.
+/// Tries every address in `addresses`, waiting at most `per_reply` for each reply; `quiet` is how
+/// long binary-mode receivers need to drop a partial frame. Ctrl-C and a lost link end the scan;
+/// silence or garbage at an address means nobody is there.
 pub fn scan(
     session: &mut TmclSession,
     addresses: &[u8],
     per_reply: Duration,
+    quiet: Duration,
 ) -> Result<Report, SessionError> {
     let original = session.target();
-    let progress = Progress::new(addresses.len(), "scanning");
-    let mut found = Vec::new();
-    let mut probed_binary = false;
-    for &address in addresses {
+    let mut addresses = addresses.to_vec();
+    addresses.sort_unstable();
+    addresses.dedup();
+    let progress = Progress::new(addresses.len(), "scanning (binary)");
+    let mut found: BTreeMap<u8, Found> = BTreeMap::new();
+    for &address in &addresses {
         progress.step(&address.to_string());
-        let module = if address_char(address).is_some() {
-            session.with_timeout(per_reply, |s| probe_ascii(s, address))?
-        } else {
-            probed_binary = true;
-            session.with_timeout(per_reply, |s| probe_binary(s, address))?
-        };
-        found.extend(module);
+        if let Some(module) = session.with_timeout(per_reply, |s| probe_binary(s, address))? {
+            found.insert(address, module);
+        }
     }
-    if probed_binary {
+    // Round 2: the addresses with a character that did not answer binary frames.
+    let candidates: Vec<u8> = addresses
+        .iter()
+        .copied()
+        .filter(|a| !found.contains_key(a) && address_char(*a).is_some())
+        .collect();
+    let in_step = candidates.is_empty();
+    if !in_step {
         session.end_partial_line()?;
+    }
+    drop(progress);
+    let progress = Progress::new(candidates.len(), "scanning (ASCII)");
+    for &address in &candidates {
+        progress.step(&address.to_string());
+        if let Some(module) = session.with_timeout(per_reply, |s| probe_ascii(s, address))? {
+            found.insert(address, module);
+        }
+    }
+    // Round 3: the echo setting of the modules found in binary mode.
+    let in_ascii =
+        |m: &Found| m.mode == WireMode::Ascii || session.module_state(m.address).is_some();
+    let c_in_ascii = found.get(&3).is_some_and(in_ascii);
+    let ascii_modules = found.values().any(in_ascii);
+    let binary: Vec<u8> = found
+        .values()
+        .filter(|m| !in_ascii(m))
+        .map(|m| m.address)
+        .collect();
+    if !binary.is_empty() && !c_in_ascii {
+        if !in_step {
+            session.quiet(quiet)?;
+        }
+        for address in binary {
+            let echo = session.with_timeout(per_reply, |s| read_echo_binary(s, address))?;
+            if let Some(m) = found.get_mut(&address) {
+                m.echo = echo;
+            }
+        }
+        if ascii_modules {
+            session.end_partial_line()?;
+        }
     }
     if session.module_state(original).is_some() && session.target() != original {
         session.set_target(original)?;
     }
     Ok(Report {
-        scanned: addresses.to_vec(),
-        found,
+        scanned: addresses,
+        found: found.into_values().collect(),
         per_reply,
     })
+}
+
+/// How long the line stays quiet before binary frames follow ASCII lines: twice the frame timeout
+/// after which the module's receiver drops a partial frame (best knowledge, in the profile).
+pub fn quiet_time(profile: &crate::profile::Profile) -> Duration {
+    Duration::from_millis(u64::from(profile.sim.frame_timeout_ms) * 2)
 }
 
 /// Whether an error means "nobody (usable) at this address" rather than "stop scanning".
@@ -80,14 +137,42 @@ fn absent(error: &SessionError) -> bool {
     )
 }
 
+/// Round 1: a module in binary mode answers 136 type 1; then its version string.
+fn probe_binary(session: &mut TmclSession, address: u8) -> Result<Option<Found>, SessionError> {
+    if session.module_state(address).is_some() {
+        return Ok(None); // already reached by this session: round 2 reports it
+    }
+    match session.probe_binary(address, Instruction::new(136, 1, 0, 0)) {
+        Ok(x) if x.value().is_some() => {}
+        Ok(_) => return Ok(None),
+        Err(e) if absent(&e) => return Ok(None),
+        Err(e) => return Err(e),
+    }
+    let firmware = match session.probe_binary(address, Instruction::new(136, 0, 0, 0)) {
+        Ok(x) => version_text(&x.answer),
+        Err(e) if absent(&e) => None,
+        Err(e) => return Err(e),
+    };
+    Ok(Some(Found {
+        address,
+        mode: WireMode::Binary,
+        firmware,
+        echo: None,
+    }))
+}
+
+/// Round 2: a module in ASCII mode (or one this session already reached) answers in ASCII.
 fn probe_ascii(session: &mut TmclSession, address: u8) -> Result<Option<Found>, SessionError> {
+    let known = session.found_in(address);
     match session.set_target(address) {
         Ok(()) => {}
         Err(e) if absent(&e) => return Ok(None),
         Err(e) => return Err(e),
     }
+    // It did not answer binary frames, so it was in ASCII mode unless this session put it there.
+    let mode = known.unwrap_or(WireMode::Ascii);
+    session.set_found_in(address, mode);
     let echo = session.module_state(address).map(|(_, echo)| echo);
-    let mode = session.found_in(address).unwrap_or(WireMode::Ascii);
     let version = session.in_binary(address, |s| {
         s.request(address, Instruction::new(136, 0, 0, 0))
     });
@@ -104,24 +189,14 @@ fn probe_ascii(session: &mut TmclSession, address: u8) -> Result<Option<Found>, 
     }))
 }
 
-fn probe_binary(session: &mut TmclSession, address: u8) -> Result<Option<Found>, SessionError> {
-    let firmware = match session.probe_binary(address, Instruction::new(136, 0, 0, 0)) {
-        Ok(x) => version_text(&x.answer),
-        Err(e) if absent(&e) => return Ok(None),
-        Err(e) => return Err(e),
-    };
-    let echo = match session.probe_binary(address, Instruction::new(10, 67, 0, 0)) {
-        Ok(x) if x.ok() => x.value().map(Echo::from_gp67),
-        Ok(_) => None,
-        Err(e) if absent(&e) => None,
-        Err(e) => return Err(e),
-    };
-    Ok(Some(Found {
-        address,
-        mode: WireMode::Binary,
-        firmware,
-        echo,
-    }))
+/// Round 3: global parameter 67 over a binary frame.
+fn read_echo_binary(session: &mut TmclSession, address: u8) -> Result<Option<Echo>, SessionError> {
+    match session.probe_binary(address, Instruction::new(10, 67, 0, 0)) {
+        Ok(x) if x.ok() => Ok(x.value().map(Echo::from_gp67)),
+        Ok(_) => Ok(None),
+        Err(e) if absent(&e) => Ok(None),
+        Err(e) => Err(e),
+    }
 }
 
 fn version_text(answer: &Answer) -> Option<String> {

@@ -141,7 +141,8 @@ fn scan_bus(
     if words.len() > 2 {
         return Err(usage(USAGE));
     }
-    let report = scan::scan(session, &addresses, per_reply)?;
+    let quiet = scan::quiet_time(session.profile());
+    let report = scan::scan(session, &addresses, per_reply, quiet)?;
     scan::write_report(&report, out)?;
     Ok(())
 }

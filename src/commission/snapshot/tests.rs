@@ -254,7 +254,9 @@ fn a_restore_brings_changed_settings_back_and_verifies_each() {
         500,
         "live values are not written"
     );
-    assert_eq!(outcome.verified, plan.writes.len());
+    assert_eq!(outcome.verified, 2, "the two changed settings");
+    assert_eq!(outcome.unchanged, plan.writes.len() - 2);
+    assert_eq!(device.log, ["write max_current 10", "write pid_p 0"]);
     assert!(outcome.failed.is_empty());
 }
 
@@ -264,6 +266,7 @@ fn a_refused_write_and_a_value_that_does_not_stick_are_reported_and_the_rest_goe
     let snapshot = captured(&mut device);
     device.refuse_write.push("max_current".into());
     device.stuck.push("pid_i".into());
+    device.set("max_current", 1);
     device.set("pid_i", 5);
     device.set("pid_d", 6);
     let plan = restore::plan(&snapshot, &device.params, &device);
@@ -280,7 +283,7 @@ fn a_refused_write_and_a_value_that_does_not_stick_are_reported_and_the_rest_goe
         0,
         "writes after a failure still happen"
     );
-    assert_eq!(outcome.verified, plan.writes.len() - 2);
+    assert_eq!(outcome.verified, 1, "pid_d");
 }
 
 #[test]
@@ -298,6 +301,7 @@ fn store_happens_only_when_confirmed_and_only_for_eeprom_parameters() {
     actions::restore(&mut device, &path, options, &mut no, &mut Vec::new()).unwrap();
     assert!(!device.log.iter().any(|l| l.starts_with("store")));
     device.log.clear();
+    device.set("standby_current", 9);
     let mut yes = |_: &restore::Plan| Ok(true);
     let outcome = actions::restore(&mut device, &path, options, &mut yes, &mut Vec::new()).unwrap();
     let stored: Vec<&str> = device
@@ -331,6 +335,8 @@ fn a_dry_run_prints_the_lines_and_sends_nothing() {
     let path = dir.join("s.toml");
     let mut device = FakeDevice::new();
     actions::save(&mut device, &path, &mut Vec::new()).unwrap();
+    device.set("pid_p", 3);
+    device.set("max_current", 4);
     let options = RestoreOptions {
         store: true,
         dry_run: true,
@@ -339,8 +345,16 @@ fn a_dry_run_prints_the_lines_and_sends_nothing() {
     let mut never = |_: &restore::Plan| -> Result<bool, SessionError> { panic!("no prompt") };
     actions::restore(&mut device, &path, options, &mut never, &mut out).unwrap();
     assert!(device.log.is_empty());
+    assert_eq!(device.get("pid_p"), 3);
     let text = String::from_utf8(out).unwrap();
-    let first = text.lines().next().unwrap();
-    assert_eq!(first, "SET unit_conversion_mode 0");
+    let lines: Vec<&str> = text.lines().take(3).collect();
+    assert_eq!(
+        lines,
+        [
+            "SET max_current 8",
+            "SET pid_p 0",
+            "STORE unit_conversion_mode"
+        ]
+    );
     assert!(text.contains("\nSTORE max_current\n"));
 }
