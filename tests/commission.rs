@@ -6,6 +6,7 @@ mod record;
 mod repl;
 mod replay;
 mod scan;
+mod script;
 mod snapshot;
 
 use std::path::Path;

@@ -278,7 +278,7 @@ pub fn to_rhai(steps: &[Step], profile: &Profile, source: &str, wait_ms: u64) ->
                     } else {
                         let _ = writeln!(
                             out,
-                            "send({sent});  // read {value} while it was changing{}",
+                            "send({sent});  // read {value}, not checked (it may have been changing){}",
                             note.replace("  //", ",")
                         );
                     }

@@ -48,9 +48,9 @@ pub fn register<S: ParamDevice + 'static>(engine: &mut Engine, session: &Rc<RefC
                 .map(|d| {
                     let mut map = Map::new();
                     map.insert("name".into(), d.name.clone().into());
-                    map.insert("where".into(), d.place.clone().into());
+                    map.insert("place".into(), d.place.clone().into());
                     map.insert("file".into(), side(&d.left));
-                    map.insert("module".into(), side(&d.right));
+                    map.insert("current".into(), side(&d.right));
                     map.insert("unit".into(), d.unit.clone().into());
                     Dynamic::from_map(map)
                 })
