@@ -5,4 +5,6 @@ mod util;
 
 mod asm;
 mod cli;
+mod repl;
+mod shell;
 mod sim;

@@ -39,6 +39,9 @@ fn open_port(path: &str, baud: u32) -> Result<Box<dyn SerialPort>, LinkError> {
 
 /// The OS error with what usually fixes it.
 fn open_hint(path: &str, error: &serialport::Error) -> String {
+    if error.description.contains("exclusive") {
+        return format!("cannot open serial port {path}: {error}; another program has it open");
+    }
     let hint = match error.kind() {
         serialport::ErrorKind::NoDevice => {
             "; is the adapter plugged in? `tmclsh ports` lists the ports"
