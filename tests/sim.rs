@@ -7,6 +7,7 @@ mod binary;
 mod bus;
 mod faults;
 mod motion;
+mod programs;
 mod pytrinamic;
 mod state;
 
