@@ -6,5 +6,6 @@ mod util;
 mod asm;
 mod cli;
 mod repl;
+mod script;
 mod shell;
 mod sim;
