@@ -5,6 +5,7 @@ mod util;
 
 mod asm;
 mod cli;
+mod program;
 mod repl;
 mod script;
 mod shell;
