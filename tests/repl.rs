@@ -127,3 +127,28 @@ fn helpers_work_and_history_is_kept_in_the_data_directory() {
     let history = std::fs::read_to_string(data.join("tmclsh").join("history")).unwrap();
     assert!(history.contains("136 0"), "{history}");
 }
+
+#[test]
+fn a_lost_link_is_waited_for_and_the_session_carries_on() {
+    let mut sim = crate::sim::Sim::start(&["--listen", "127.0.0.1:0"]);
+    let (mut p, _) = repl(&["--tcp", &sim.first.clone()]);
+    p.exp_string("A> ").unwrap();
+    p.send_line("SAP 1, 0, 321").unwrap();
+    p.exp_string("ok").unwrap();
+    assert!(sim.console("hangup").starts_with("ok"));
+    p.send_line("GAP 1, 0").unwrap();
+    p.exp_string("link lost").unwrap();
+    p.exp_string("waiting for tcp").unwrap();
+    p.exp_string("reconnected").unwrap();
+    p.send_line("GAP 1, 0").unwrap();
+    p.exp_string("actual_position = 321 usteps").unwrap();
+    // History from before the loss is still there: arrow up recalls the last line.
+    p.send("\x1b[A").unwrap();
+    p.flush().unwrap();
+    p.exp_string("GAP 1, 0").unwrap();
+    p.send_control('c').unwrap();
+    p.exp_string("\r\n").unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
