@@ -6,4 +6,8 @@ mod util;
 mod asm;
 mod cli;
 mod commission;
+mod program;
+mod repl;
+mod script;
+mod shell;
 mod sim;

@@ -7,6 +7,7 @@ mod binary;
 mod bus;
 mod faults;
 mod motion;
+mod programs;
 mod pytrinamic;
 mod state;
 
@@ -135,9 +136,13 @@ impl Drop for Sim {
     }
 }
 
+/// Opens a pty like a serial port. Not exclusive: tests run in parallel and spawn processes, and
+/// a child forked between our open and its exec briefly shares our descriptor, and with it an
+/// exclusive lock we have already released.
 pub fn open_serial(path: &str) -> Box<dyn serialport::SerialPort> {
     serialport::new(path, 9600)
         .timeout(Duration::from_millis(50))
+        .exclusive(false)
         .open()
         .unwrap_or_else(|e| panic!("open {path}: {e}"))
 }

@@ -5,12 +5,13 @@
 
 use crate::profile::Profile;
 use crate::protocol::tmcl::commands::{CommandSpec, Field, OperandKind};
+use crate::protocol::tmcl::line::{byte, count_text, word32};
 use crate::protocol::tmcl::validate::{Mode, validate, validate_instruction};
 use crate::protocol::tmcl::{InputError, Instruction, Line, Op, Warning};
 use crate::suggest;
 
 use super::error::{Position, Problem};
-use super::parse::{Expr, Head, Operand, Statement};
+use super::parse::{Head, Operand, Statement};
 use super::symbols::{EvalError, Expect, Symbols};
 
 /// Why a line produced no instruction.
@@ -318,7 +319,7 @@ fn store(
     let result = match field {
         Field::Type => byte(what, value).map(|b| out.type_ = b),
         Field::Motor => byte(what, value).map(|b| out.motor = b),
-        Field::Value => word(what, value, &operand.expr).map(|w| out.value = w),
+        Field::Value => word32(what, value, operand.expr.is_hex_literal()).map(|w| out.value = w),
     };
     result.map_err(|e| {
         let at = Position {
@@ -327,37 +328,4 @@ fn store(
         };
         Refusal::At(at, e.into())
     })
-}
-
-fn byte(what: &str, value: i64) -> Result<u8, InputError> {
-    u8::try_from(value).map_err(|_| InputError::FieldOverflow {
-        what: what.into(),
-        value,
-        lo: 0,
-        hi: 255,
-    })
-}
-
-/// A 32-bit value; a bare hex literal may be written unsigned (`0xFFFFFFFF` is -1).
-fn word(what: &str, value: i64, expr: &Expr) -> Result<i32, InputError> {
-    if let Ok(v) = i32::try_from(value) {
-        return Ok(v);
-    }
-    if expr.is_hex_literal() && (0..=i64::from(u32::MAX)).contains(&value) {
-        return Ok(value as u32 as i32);
-    }
-    Err(InputError::FieldOverflow {
-        what: what.into(),
-        value,
-        lo: i64::from(i32::MIN),
-        hi: i64::from(i32::MAX),
-    })
-}
-
-fn count_text(n: usize) -> String {
-    match n {
-        0 => "no arguments".into(),
-        1 => "1 argument".into(),
-        n => format!("{n} arguments"),
-    }
 }

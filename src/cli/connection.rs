@@ -5,12 +5,14 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use crate::exit::Exit;
+use crate::exit::ExitStatus;
 use crate::link::{Link, SerialLink, TcpLink};
 use crate::profile::Profile;
 use crate::protocol::Dialect;
 use crate::protocol::smd4::PrefixStyle;
-use crate::session::smd4::Smd4Options;
-use crate::session::{SessionOptions, Transcript};
+use crate::session::smd4::{Smd4Options, Smd4Session};
+use crate::session::tmcl::TmclSession;
+use crate::session::{Session, SessionOptions, Transcript};
 
 use super::Failure;
 
@@ -145,4 +147,56 @@ impl ConnectionArgs {
         };
         Ok(link)
     }
+}
+
+/// Everything that says which module to talk to and how: shared by the shell and every
+/// subcommand that opens a session in either dialect.
+#[derive(Debug, Clone, clap::Args)]
+pub struct ModuleArgs {
+    /// Where the module is.
+    #[command(flatten)]
+    pub connection: ConnectionArgs,
+    /// How requests are sent and checked.
+    #[command(flatten)]
+    pub session: SessionArgs,
+    /// SMD4 settings.
+    #[command(flatten)]
+    pub smd4: Smd4Args,
+}
+
+impl ModuleArgs {
+    /// Opens a session in the dialect the flags say.
+    pub fn open(&self, profile: &Arc<Profile>) -> Result<Session, Failure> {
+        let options = self.session.options();
+        let transcript = self.session.transcript()?;
+        let link = self.connection.open(profile, options.timeout)?;
+        match self.connection.protocol {
+            Dialect::Tmcl => {
+                TmclSession::open(link, profile.clone(), options, transcript).map(Session::Tmcl)
+            }
+            Dialect::Smd4 => {
+                Smd4Session::open(link, options, self.smd4.options(), transcript).map(Session::Smd4)
+            }
+        }
+        .map_err(|e| Failure::new(e.exit(), e.to_string()))
+    }
+}
+
+/// Opens a TMCL session (for subcommands that only exist for TMCL modules).
+pub fn open_tmcl(
+    connection: &ConnectionArgs,
+    session: &SessionArgs,
+    profile: &Arc<Profile>,
+) -> Result<TmclSession, Failure> {
+    if connection.protocol != Dialect::Tmcl {
+        return Err(Failure::new(
+            Exit::Refused,
+            "this subcommand works with TMCL modules only",
+        ));
+    }
+    let options = session.options();
+    let transcript = session.transcript()?;
+    let link = connection.open(profile, options.timeout)?;
+    TmclSession::open(link, profile.clone(), options, transcript)
+        .map_err(|e| Failure::new(e.exit(), e.to_string()))
 }

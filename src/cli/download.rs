@@ -16,8 +16,7 @@ use crate::session::interrupt;
 use crate::session::tmcl::TmclSession;
 
 use super::Failure;
-use super::connection::{ConnectionArgs, SessionArgs};
-use super::shell::open_tmcl;
+use super::connection::{ConnectionArgs, SessionArgs, open_tmcl};
 
 /// Arguments of `download`.
 #[derive(Debug, Clone, clap::Args)]

@@ -9,8 +9,7 @@ use crate::script::{self, Limits};
 use crate::session::interrupt;
 
 use super::Failure;
-use super::connection::{ConnectionArgs, SessionArgs, Smd4Args};
-use super::shell::open_session;
+use super::connection::ModuleArgs;
 
 /// Arguments of `run`.
 #[derive(Debug, Clone, clap::Args)]
@@ -18,15 +17,9 @@ pub struct RunArgs {
     /// The Rhai script to run.
     #[arg(value_name = "SCRIPT")]
     pub script: PathBuf,
-    /// Where the module is.
+    /// Which module, and how to talk to it.
     #[command(flatten)]
-    pub connection: ConnectionArgs,
-    /// How requests are sent and checked.
-    #[command(flatten)]
-    pub session: SessionArgs,
-    /// SMD4 settings.
-    #[command(flatten)]
-    pub smd4: Smd4Args,
+    pub module: ModuleArgs,
     /// Operations after which a runaway script is stopped (0: no limit).
     #[arg(long, value_name = "N", default_value_t = Limits::default().max_operations)]
     pub max_operations: u64,
@@ -43,7 +36,7 @@ pub struct RunArgs {
 pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     interrupt::install();
     script::check_file(&args.script).map_err(|r| Failure::new(r.exit, r.message))?;
-    let session = open_session(&args.connection, &args.session, &args.smd4, profile)?;
+    let session = args.module.open(profile)?;
     let limits = Limits {
         max_operations: args.max_operations,
         max_call_depth: args.max_call_depth,

@@ -14,8 +14,7 @@ use crate::session::tmcl::TmclSession;
 use crate::session::{SessionError, interrupt};
 
 use super::Failure;
-use super::connection::{ConnectionArgs, SessionArgs};
-use super::shell::open_tmcl;
+use super::connection::{ConnectionArgs, SessionArgs, open_tmcl};
 
 /// Arguments of `snapshot`.
 #[derive(Debug, Clone, clap::Args)]

@@ -39,6 +39,9 @@ fn open_port(path: &str, baud: u32) -> Result<Box<dyn SerialPort>, LinkError> {
 
 /// The OS error with what usually fixes it.
 fn open_hint(path: &str, error: &serialport::Error) -> String {
+    if error.description.contains("exclusive") {
+        return format!("cannot open serial port {path}: {error}; another program has it open");
+    }
     let hint = match error.kind() {
         serialport::ErrorKind::NoDevice => {
             "; is the adapter plugged in? `tmclsh ports` lists the ports"
@@ -56,8 +59,10 @@ fn open_hint(path: &str, error: &serialport::Error) -> String {
 
 impl Link for SerialLink {
     fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
-        self.port.write_all(bytes).map_err(LinkError::from_io)?;
-        self.port.flush().map_err(LinkError::from_io)
+        // The port writes straight to the kernel; flush() would be tcdrain, which waits until
+        // the bytes have left the UART and so adds a wire time (or, on a pty, a scheduler round
+        // trip) to every command for nothing.
+        self.port.write_all(bytes).map_err(LinkError::from_io)
     }
 
     fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {

@@ -266,3 +266,6 @@ fn strip_position(message: &str) -> String {
         _ => message.to_string(),
     }
 }
+
+#[cfg(test)]
+mod tests;

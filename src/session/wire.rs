@@ -2,7 +2,7 @@
 //! the notices. Every byte goes through here, so every byte reaches the transcript, and every wait
 //! is sliced so Ctrl-C is noticed promptly.
 
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use crate::link::{Link, LinkError};
 
@@ -16,6 +16,8 @@ pub(crate) struct Wire {
     pub rx: Rx,
     pub transcript: Option<Transcript>,
     pub notices: Vec<String>,
+    /// When the last byte was sent, for [`Wire::idle_for`].
+    last_sent: Option<Instant>,
 }
 
 impl Wire {
@@ -25,13 +27,37 @@ impl Wire {
             rx: Rx::default(),
             transcript,
             notices: Vec::new(),
+            last_sent: None,
         }
     }
 
     /// Writes bytes to the link and the transcript.
     pub fn send(&mut self, bytes: &[u8], meaning: &str) -> Result<(), SessionError> {
         self.log(Entry::Sent, bytes, meaning);
-        self.link.send(bytes).map_err(SessionError::from)
+        self.link.send(bytes).map_err(SessionError::from)?;
+        self.last_sent = Some(Instant::now());
+        Ok(())
+    }
+
+    /// Keeps the line idle until `gap` has passed since the last byte sent. Binary receivers on
+    /// a bus find the start of a frame only after such a pause (a UART time-out), so this is
+    /// needed before the first binary frame to a module that has seen other traffic; it is a
+    /// rule of the line, not a guessed reply delay. Ctrl-C interrupts it.
+    pub fn idle_for(&mut self, gap: Duration) -> Result<(), SessionError> {
+        let Some(last) = self.last_sent else {
+            return Ok(());
+        };
+        let until = last + gap;
+        loop {
+            if interrupt::pending() {
+                return Err(SessionError::Interrupted);
+            }
+            let now = Instant::now();
+            if now >= until {
+                return Ok(());
+            }
+            std::thread::sleep((until - now).min(interrupt::SLICE));
+        }
     }
 
     /// Reads what arrives before `deadline` into the receive buffer. `Ok(false)` when the

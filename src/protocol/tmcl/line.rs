@@ -183,7 +183,8 @@ fn instruction(
     Ok(out)
 }
 
-fn count_text(n: usize) -> String {
+/// "no arguments", "1 argument", "3 arguments".
+pub(crate) fn count_text(n: usize) -> String {
     match n {
         0 => "no arguments".into(),
         1 => "1 argument".into(),
@@ -191,7 +192,8 @@ fn count_text(n: usize) -> String {
     }
 }
 
-fn byte(what: &str, value: i64) -> Result<u8, InputError> {
+/// A number for a byte field (type, motor/bank, command number).
+pub(crate) fn byte(what: &str, value: i64) -> Result<u8, InputError> {
     u8::try_from(value).map_err(|_| InputError::FieldOverflow {
         what: what.into(),
         value,
@@ -200,7 +202,8 @@ fn byte(what: &str, value: i64) -> Result<u8, InputError> {
     })
 }
 
-fn word32(what: &str, value: i64, hex: bool) -> Result<i32, InputError> {
+/// A 32-bit value; a number written in hex may use the unsigned range (`0xFFFFFFFF` is -1).
+pub(crate) fn word32(what: &str, value: i64, hex: bool) -> Result<i32, InputError> {
     if let Ok(v) = i32::try_from(value) {
         return Ok(v);
     }

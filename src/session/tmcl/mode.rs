@@ -122,6 +122,10 @@ impl TmclSession {
 
     /// Sends 139 and learns the echo mode (see the module docs).
     pub fn enter_ascii(&mut self, module: u8) -> Result<(), SessionError> {
+        // A module still in binary mode has seen our ASCII traffic to others as frame bytes; it
+        // finds the start of our frame only after the line was idle for its receive time-out.
+        let resync = Duration::from_millis(u64::from(self.profile.sim.frame_timeout_ms) * 11 / 10);
+        self.wire.idle_for(resync)?;
         self.wire.drain()?;
         let frame = CommandFrame {
             address: module,

@@ -16,7 +16,7 @@ fn frame(command: u8, type_: u8, value: i32) -> [u8; 9] {
     .encode()
 }
 
-fn reply(link: &mut SimLink, within: Duration) -> Result<ReplyFrame, LinkError> {
+fn reply(link: &mut dyn Link, within: Duration) -> Result<ReplyFrame, LinkError> {
     let mut got = Vec::new();
     let deadline = Instant::now() + within;
     while got.len() < 9 {
@@ -117,11 +117,14 @@ fn tests_reach_the_bus_typed_or_by_control_commands() {
 
 #[test]
 fn the_builtin_link_answers_on_the_system_clock() {
-    let mut link = crate::sim::tmcl::in_process(crate::profile::Profile::builtin());
-    assert_eq!(link.describe(), "simulated TMCM-142 (built in)");
+    let mut link = crate::sim::builtin_link(
+        &crate::profile::Profile::builtin(),
+        crate::protocol::Dialect::Tmcl,
+    );
+    assert_eq!(link.describe(), "simulated TMCM-142 (built-in)");
     link.send(&frame(6, 4, 0)).unwrap();
     assert_eq!(
-        reply(&mut link, Duration::from_secs(5)).unwrap().value,
+        reply(link.as_mut(), Duration::from_secs(5)).unwrap().value,
         1_000_000
     );
 }

@@ -64,7 +64,6 @@ pub(crate) enum Source {
     /// The serial interface, binary or ASCII (direct mode).
     Direct,
     /// A running program.
-    #[allow(dead_code)] // the program runner comes next
     Program,
 }
 

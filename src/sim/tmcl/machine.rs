@@ -88,8 +88,8 @@ impl Machine {
         self.tick_offset = 0;
         self.event = None;
         self.due_events.clear();
-        if self.params.get(Slot::Global(0, 77)) == 1 {
-            self.vm.start(0);
+        if self.params.get(Slot::Global(0, 77)) == 1 && !self.program.is_empty() {
+            self.vm.start(t, 0);
         }
     }
 
@@ -164,7 +164,7 @@ impl Machine {
         loop {
             let limits = self.limits();
             let axis_next = self.axis.next_event(limits);
-            let vm_next = self.vm.next_time();
+            let vm_next = self.program_due();
             let next = match (axis_next, vm_next) {
                 (Some(a), Some(v)) => a.min(v),
                 (a, v) => match a.or(v) {
@@ -216,7 +216,7 @@ impl Machine {
     pub fn next_output(&self) -> Option<f64> {
         self.event?;
         let arrival = self.axis.arrival();
-        match (arrival, self.vm.next_time()) {
+        match (arrival, self.program_due()) {
             (Some(a), Some(v)) => Some(a.min(v)),
             (a, v) => a.or(v),
         }

@@ -27,16 +27,5 @@ pub use motion::{Switch, Switches};
 pub use options::{Backspace, LineEnd, Quirks};
 pub use state::{BusImage, FileStore, MemoryStore, ModuleImage, StateError, StateStore};
 
-/// The shell's built-in simulator: one factory-fresh module at address 1 of `profile`, in-process
-/// on the system clock.
-pub fn in_process(
-    profile: std::sync::Arc<crate::profile::Profile>,
-) -> crate::sim::inprocess::SimLink {
-    let clock = std::sync::Arc::new(crate::sim::clock::SystemClock::new());
-    let name = format!("simulated {} (built in)", profile.module);
-    crate::sim::inprocess::SimLink::new(Box::new(Bus::new(profile, BusOptions::default())), clock)
-        .named(name)
-}
-
 #[cfg(test)]
 mod tests;

@@ -27,7 +27,6 @@ impl Program {
     }
 
     /// Number of instructions the memory holds.
-    #[allow(dead_code)] // the program runner comes next
     pub fn size(&self) -> usize {
         self.memory.len()
     }
@@ -46,6 +45,11 @@ impl Program {
     pub fn quit_download(&mut self) -> bool {
         self.download = None;
         std::mem::take(&mut self.changed)
+    }
+
+    /// Whether no instruction was ever stored.
+    pub fn is_empty(&self) -> bool {
+        self.used == 0
     }
 
     /// Whether download mode is on (GP 129).

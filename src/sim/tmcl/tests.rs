@@ -5,6 +5,7 @@ mod ascii_mode;
 mod binary;
 mod eeprom;
 mod moves;
+mod programs;
 mod two_modules;
 
 use std::time::Duration;
@@ -103,6 +104,15 @@ impl Sim {
     /// SAP of module 1.
     pub fn sap(&mut self, number: u8, value: i32) {
         self.ok(5, number, 0, value);
+    }
+
+    /// Stores `program` from address 0 (download mode 132 … 133).
+    pub fn download(&mut self, program: &[(u8, u8, u8, i32)]) {
+        self.ok(132, 0, 0, 0);
+        for &(c, t, m, v) in program {
+            assert_eq!(self.frame(1, c, t, m, v).status, Status::Stored);
+        }
+        self.ok(133, 0, 0, 0);
     }
 
     /// Sends an ASCII line (CR appended) and returns all output as text.

@@ -98,10 +98,10 @@ fn bin_replies_and_returns_to_binary_mode() {
 }
 
 #[test]
-fn stop_answers_and_run_needs_a_program_runner() {
+fn run_and_stop_control_the_program() {
     let mut sim = ascii(0x20);
+    assert_eq!(sim.line("ARUN"), "BA 100 0\r");
     assert_eq!(sim.line("ASTOP"), "BA 100 0\r");
-    assert_eq!(sim.line("ARUN"), "BA 6 0\r");
 }
 
 #[test]

@@ -1,0 +1,125 @@
+use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+use crate::link::{Link, LinkError};
+use crate::profile::Profile;
+use crate::session::SessionOptions;
+use crate::sim::clock::ManualClock;
+use crate::sim::inprocess::SimLink;
+use crate::sim::tmcl::{Bus, BusOptions};
+
+use super::*;
+
+/// A link that counts what is sent through it.
+struct Counting {
+    inner: SimLink,
+    sent: Arc<AtomicUsize>,
+}
+
+impl Link for Counting {
+    fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
+        self.sent.fetch_add(1, Ordering::SeqCst);
+        self.inner.send(bytes)
+    }
+    fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
+        self.inner.recv(buf, deadline)
+    }
+    fn discard_input(&mut self) -> Result<(), LinkError> {
+        self.inner.discard_input()
+    }
+    fn describe(&self) -> String {
+        self.inner.describe()
+    }
+}
+
+fn session() -> (TmclSession, Arc<AtomicUsize>) {
+    let profile = Profile::builtin();
+    let bus = Bus::new(profile.clone(), BusOptions::default());
+    let link = SimLink::new(Box::new(bus), Arc::new(ManualClock::new()));
+    let sent = Arc::new(AtomicUsize::new(0));
+    let counting = Counting {
+        inner: link,
+        sent: sent.clone(),
+    };
+    let session =
+        TmclSession::open(Box::new(counting), profile, SessionOptions::default(), None).unwrap();
+    (session, sent)
+}
+
+#[test]
+fn device_functions_never_run_while_compiling_even_at_full_optimisation() {
+    let (session, sent) = session();
+    let shared = Rc::new(RefCell::new(session));
+    let mut engine = base_engine(Limits::default());
+    tmcl::register(&mut engine, &shared);
+    engine.set_optimization_level(OptimizationLevel::Full);
+    let before = sent.load(Ordering::SeqCst);
+    let ast = engine
+        .compile("const X = gap(4, 0); let y = sap(6, 0, 3); if false { mst(0) } X + gap(6, 0)")
+        .unwrap();
+    assert_eq!(
+        sent.load(Ordering::SeqCst),
+        before,
+        "nothing sent while compiling"
+    );
+    let value: rhai::INT = engine.eval_ast(&ast).unwrap();
+    assert_eq!(value, 1_000_003);
+    assert!(
+        sent.load(Ordering::SeqCst) >= before + 3,
+        "the calls run when the script runs"
+    );
+}
+
+#[test]
+fn run_source_gives_the_session_back_and_reports_positions() {
+    let (session, _) = session();
+    let (session, result) = run_source(
+        "t.rhai",
+        "sap(6, 0, 4);\nassert_eq(gap(6, 0), 5);",
+        &[],
+        Session::Tmcl(session),
+        Limits::default(),
+    );
+    let report = result.unwrap_err();
+    assert_eq!(report.exit, Exit::DeviceError);
+    assert_eq!(
+        report.message,
+        "t.rhai:2:1: assert_eq failed: left = 4, right = 5"
+    );
+    let Session::Tmcl(mut session) = session else {
+        panic!("TMCL session back")
+    };
+    assert_eq!(
+        session.execute("GAP 6, 0").unwrap().value(),
+        Some(4),
+        "the session still works"
+    );
+}
+
+#[test]
+fn errors_inside_script_functions_keep_their_exit_code() {
+    let (session, _) = session();
+    let source = "fn check(v) { assert_eq(v, 2); }\ncheck(1);";
+    let (_, result) = run_source(
+        "f.rhai",
+        source,
+        &[],
+        Session::Tmcl(session),
+        Limits::default(),
+    );
+    let report = result.unwrap_err();
+    assert_eq!(report.exit, Exit::DeviceError);
+    assert!(
+        report
+            .message
+            .contains("assert_eq failed: left = 1, right = 2"),
+        "{}",
+        report.message
+    );
+    assert!(
+        report.message.contains("(in function check)"),
+        "{}",
+        report.message
+    );
+}
