@@ -272,3 +272,32 @@ fn a_damaged_snapshot_file_is_refused_before_anything_is_sent() {
     );
     assert!(stderr(&out).contains("valeu"));
 }
+
+#[test]
+fn the_shell_helper_saves_diffs_and_restores() {
+    let sim = Sim::start(&["--pty"]);
+    let dir = tempdir();
+    let file = dir.join("shell.toml");
+    let save = format!(":snapshot save {}", arg(&file));
+    let diff = format!(":snapshot diff {}", arg(&file));
+    let restore = format!(":snapshot restore {}", arg(&file));
+    let store = format!(":snapshot restore {} --store", arg(&file));
+    let out = expect(
+        &with(
+            &["-c", &save, "-c", "SAP pid_i, 0, 33", "-c", &diff],
+            &pty(&sim),
+        ),
+        1,
+    );
+    let text = stdout(&out);
+    assert!(text.starts_with("saved "), "{text}");
+    let table = &text[text.find("\nparameter").expect("a diff table") + 1..];
+    assert_eq!(rows(table), [("pid_i".into(), "0".into(), "33".into())]);
+    expect(&with(&["-c", &restore, "-c", &diff], &pty(&sim)), 0);
+    let refused = expect(&with(&["-c", &store], &pty(&sim)), 2);
+    assert!(
+        stderr(&refused).contains("add --yes"),
+        "{}",
+        stderr(&refused)
+    );
+}
