@@ -22,6 +22,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
     $completions = @(switch ($command) {
         'tmclsh' {
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
+            [CompletionResult]::new('-c', '-c', [CompletionResultType]::ParameterName, 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
@@ -32,7 +33,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Append every byte sent and received, timestamped and decoded, to FILE')
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
-            [CompletionResult]::new('-c', '-c', [CompletionResultType]::ParameterName, 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal')
             [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
             [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
             [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')

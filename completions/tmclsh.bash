@@ -143,13 +143,17 @@ _tmclsh() {
 
     case "${cmd}" in
         tmclsh)
-            opts="-m -c -h -V --profile --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --help --version params ports completions run asm disasm download snapshot scan transcript sim help"
+            opts="-c -m -h -V --profile --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --help --version params ports completions run asm disasm download snapshot scan transcript sim help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
                 --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -c)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -190,10 +194,6 @@ _tmclsh() {
                     return 0
                     ;;
                 --quiet-gap)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                -c)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -19,6 +19,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
     var completions = [
         &'tmclsh'= {
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -c 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal'
             cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
@@ -29,7 +30,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand -c 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_tmclsh_global_optspecs
-    string join \n profile= port= baud= tcp= protocol= m/module= timeout= log= no-validate no-enter stay-ascii address= prefix-comma quiet-gap= c= h/help V/version
+    string join \n profile= c= port= baud= tcp= protocol= m/module= timeout= log= no-validate no-enter stay-ascii address= prefix-comma quiet-gap= h/help V/version
 end
 
 function __fish_tmclsh_needs_command
@@ -25,6 +25,7 @@ function __fish_tmclsh_using_subcommand
 end
 
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -s c -d 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
@@ -35,7 +36,6 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -l timeout -d 'Milliseconds 
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
-complete -c tmclsh -n "__fish_tmclsh_needs_command" -s c -d 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'

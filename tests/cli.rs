@@ -120,3 +120,19 @@ fn committed_completions_match_what_the_binary_generates() {
         );
     }
 }
+
+#[test]
+fn the_readme_usage_block_is_the_real_help() {
+    let out = run(&["-h"]);
+    assert_eq!(code(&out), 0);
+    let readme = std::fs::read_to_string(repo().join("README.md")).unwrap();
+    let block = readme
+        .split("<!-- usage: the output of `tmclsh -h`, checked by the test suite -->\n```text\n")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("README has the usage block");
+    assert!(
+        block == stdout(&out),
+        "README usage block is stale; paste the output of `tmclsh -h`"
+    );
+}

@@ -18,13 +18,13 @@ use super::connection::{ConnectionArgs, ModuleArgs};
 /// Flags of the shell itself.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ShellArgs {
-    /// Which module, and how to talk to it.
-    #[command(flatten)]
-    pub module: ModuleArgs,
     /// Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from
     /// stdin when it is not a terminal.
     #[arg(short = 'c', value_name = "LINE")]
     pub commands: Vec<String>,
+    /// Which module, and how to talk to it.
+    #[command(flatten)]
+    pub module: ModuleArgs,
 }
 
 /// Runs the shell: the REPL on a terminal, otherwise the `-c` lines or stdin lines.
