@@ -45,6 +45,9 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
             cand download 'Store a program (source or program file) in the module, verify it, optionally run it'
+            cand snapshot 'Save the module''s parameters to a TOML file, compare with one, or write one back'
+            cand scan 'Find the modules on the bus, with firmware versions and echo settings'
+            cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
@@ -114,6 +117,120 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
+        &'tmclsh;snapshot'= {
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -h 'Print help'
+            cand --help 'Print help'
+            cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
+            cand diff 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
+            cand restore 'Write FILE''s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'tmclsh;snapshot;save'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;snapshot;diff'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;snapshot;restore'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --store 'Afterwards store the written parameters to EEPROM (STAP/STGP), after a confirmation'
+            cand --yes 'Confirm --store without asking (for scripts)'
+            cand --dry-run 'Only print the lines that would be sent'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;snapshot;help'= {
+            cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
+            cand diff 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
+            cand restore 'Write FILE''s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'tmclsh;snapshot;help;save'= {
+        }
+        &'tmclsh;snapshot;help;diff'= {
+        }
+        &'tmclsh;snapshot;help;restore'= {
+        }
+        &'tmclsh;snapshot;help;help'= {
+        }
+        &'tmclsh;scan'= {
+            cand --addresses 'Addresses to try: numbers 1..255 and letters A..Z, single or as ranges (1-26, A,C,30-40). Addresses above 26 have no ASCII character and are tried with binary frames'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;transcript'= {
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -h 'Print help'
+            cand --help 'Print help'
+            cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'tmclsh;transcript;to-rhai'= {
+            cand -o 'Write the script to FILE instead of stdout'
+            cand --output 'Write the script to FILE instead of stdout'
+            cand --wait 'Milliseconds the script waits for a live value (position, switch) to reach the value the transcript saw'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
+        &'tmclsh;transcript;help'= {
+            cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
+            cand help 'Print this message or the help of the given subcommand(s)'
+        }
+        &'tmclsh;transcript;help;to-rhai'= {
+        }
+        &'tmclsh;transcript;help;help'= {
+        }
         &'tmclsh;sim'= {
             cand --protocol 'The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4)'
             cand --listen 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed'
@@ -159,6 +276,9 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
             cand download 'Store a program (source or program file) in the module, verify it, optionally run it'
+            cand snapshot 'Save the module''s parameters to a TOML file, compare with one, or write one back'
+            cand scan 'Find the modules on the bus, with firmware versions and echo settings'
+            cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
@@ -175,6 +295,24 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;disasm'= {
         }
         &'tmclsh;help;download'= {
+        }
+        &'tmclsh;help;snapshot'= {
+            cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
+            cand diff 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
+            cand restore 'Write FILE''s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+        }
+        &'tmclsh;help;snapshot;save'= {
+        }
+        &'tmclsh;help;snapshot;diff'= {
+        }
+        &'tmclsh;help;snapshot;restore'= {
+        }
+        &'tmclsh;help;scan'= {
+        }
+        &'tmclsh;help;transcript'= {
+            cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
+        }
+        &'tmclsh;help;transcript;to-rhai'= {
         }
         &'tmclsh;help;sim'= {
         }

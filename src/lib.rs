@@ -9,6 +9,7 @@
 
 pub mod asm;
 pub mod cli;
+pub mod commission;
 pub mod exit;
 pub mod link;
 pub mod profile;

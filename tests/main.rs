@@ -5,6 +5,7 @@ mod util;
 
 mod asm;
 mod cli;
+mod commission;
 mod program;
 mod repl;
 mod script;

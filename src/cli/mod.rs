@@ -8,9 +8,12 @@ pub mod download;
 pub(crate) mod params;
 mod ports;
 pub mod run;
+mod scan;
 pub mod shell;
 mod sim;
 mod sim_smd4;
+mod snapshot;
+mod transcript;
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -52,6 +55,12 @@ enum Command {
     Disasm(disasm::DisasmArgs),
     /// Store a program (source or program file) in the module, verify it, optionally run it.
     Download(download::DownloadArgs),
+    /// Save the module's parameters to a TOML file, compare with one, or write one back.
+    Snapshot(snapshot::SnapshotArgs),
+    /// Find the modules on the bus, with firmware versions and echo settings.
+    Scan(scan::ScanArgs),
+    /// Turn a --log transcript into a replayable Rhai script.
+    Transcript(transcript::TranscriptArgs),
     /// Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin.
     Sim(sim::SimArgs),
 }
@@ -110,6 +119,9 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
         Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
         Some(Command::Download(args)) => return download::run(args, &profile, out),
+        Some(Command::Snapshot(args)) => return snapshot::run(args, &profile, out),
+        Some(Command::Scan(args)) => return scan::run(args, &profile, out),
+        Some(Command::Transcript(args)) => return transcript::run(args, &profile, out),
         Some(Command::Sim(args)) => return sim::run(&args, profile, out),
         None => return shell::run(cli.shell, &profile),
     };

@@ -17,6 +17,8 @@ pub(crate) struct ProfileFile {
     pub global_parameter: Vec<ParamRow>,
     pub ascii: Option<AsciiSection>,
     pub simulation: Option<SimulationRow>,
+    #[serde(default)]
+    pub snapshot: super::SnapshotRules,
 }
 
 #[derive(Debug, Deserialize)]

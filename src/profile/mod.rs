@@ -5,6 +5,7 @@
 //! table with the same schema, so a new module needs no new release.
 
 pub(crate) mod load;
+mod snapshot;
 
 use std::path::Path;
 use std::sync::{Arc, OnceLock};
@@ -12,6 +13,8 @@ use std::sync::{Arc, OnceLock};
 use crate::protocol::tmcl::commands::CommandTable;
 use crate::suggest;
 use load::{ParamRow, ProfileFile};
+
+pub use snapshot::{SnapshotRole, SnapshotRules};
 
 /// The built-in profile's source text, kept in the repository as the single source of truth.
 pub const BUILTIN_TOML: &str = include_str!("../../data/tmcm142.toml");
@@ -159,6 +162,8 @@ pub struct Profile {
     pub global: Vec<Param>,
     /// Simulation constants.
     pub sim: SimConstants,
+    /// How parameter snapshots treat each parameter.
+    pub snapshot: SnapshotRules,
 }
 
 /// Why a profile could not be loaded.
@@ -262,6 +267,8 @@ impl Profile {
         global.sort_by_key(|p| (p.bank(), p.number));
         check_unique(&axis)?;
         check_unique(&global)?;
+        file.snapshot
+            .check(&axis.iter().chain(&global).collect::<Vec<_>>())?;
         let sim = file.simulation.as_ref();
         Ok(Profile {
             module: file.meta.module.clone(),
@@ -295,6 +302,7 @@ impl Profile {
                     .unwrap_or(1.0),
                 instruction_us: sim.and_then(|s| s.instruction_us).unwrap_or(100),
             },
+            snapshot: file.snapshot.clone(),
         })
     }
 

@@ -223,14 +223,7 @@ fn complete_helper(rest: &str, start: usize, word: &str, grammar: Grammar) -> Co
     let candidates = match helper.arg {
         ArgKind::File => return Completion::File { start },
         ArgKind::Echo => fixed(&["char", "line", "none"]),
-        ArgKind::Param => names(grammar)
-            .into_iter()
-            .filter(|n| n.to_ascii_lowercase().starts_with(&lower))
-            .map(|n| Candidate {
-                display: n.clone(),
-                replacement: n,
-            })
-            .collect(),
+        ArgKind::Param => name_candidates(grammar, &lower),
         ArgKind::Topic => {
             let mut topics: Vec<&str> = match grammar {
                 Grammar::Tmcl(_) => vec!["params", "exit", "ascii"],
@@ -243,9 +236,30 @@ fn complete_helper(rest: &str, start: usize, word: &str, grammar: Grammar) -> Co
             }
             out
         }
+        ArgKind::Snapshot if first_argument(rest) => fixed(&["save", "diff", "restore"]),
+        ArgKind::Record if !first_argument(rest) => name_candidates(grammar, &lower),
+        ArgKind::Snapshot | ArgKind::Record => return Completion::File { start },
         ArgKind::None | ArgKind::Module | ArgKind::Address => Vec::new(),
     };
     Completion::Words { start, candidates }
+}
+
+/// The names starting with `prefix` (lower case), as candidates.
+fn name_candidates(grammar: Grammar, prefix: &str) -> Vec<Candidate> {
+    names(grammar)
+        .into_iter()
+        .filter(|n| n.to_ascii_lowercase().starts_with(prefix))
+        .map(|n| Candidate {
+            display: n.clone(),
+            replacement: n,
+        })
+        .collect()
+}
+
+/// Whether the cursor is in a helper's first argument (`rest` is the line after the colon).
+fn first_argument(rest: &str) -> bool {
+    let args = rest.split_once(' ').map_or("", |(_, a)| a.trim_start());
+    !args.contains(char::is_whitespace)
 }
 
 /// Parameter identifiers (TMCL) or mnemonics (SMD4), for `:params` completion.

@@ -1,8 +1,9 @@
 //! Rhai scripting: commissioning and test sequences with loops and assertions, run from a shell
 //! or CI (`tmclsh run`) or from the REPL (`:source`), where the exit code is the verdict.
 //!
-//! Scripts reach the module only through the session, cannot touch files, processes or the
-//! network (no module resolver, no I/O functions), and run with capped operations and call depth.
+//! Scripts reach the module only through the session, cannot touch files (except the snapshot and
+//! recording files they name), processes or the network (no module resolver, no I/O functions),
+//! and run with capped operations and call depth.
 //! Device functions are registered as volatile, so Rhai's optimiser never runs them while
 //! compiling.
 
@@ -15,6 +16,7 @@ macro_rules! volatile {
     };
 }
 
+mod commission;
 mod common;
 pub mod failure;
 mod smd4;
@@ -98,7 +100,10 @@ pub fn run_source(
     };
     match session {
         Session::Tmcl(s) => {
-            let (s, result) = script.run(s, TmclSession::annotate, tmcl::register);
+            let (s, result) = script.run(s, TmclSession::annotate, |engine, s| {
+                tmcl::register(engine, s);
+                commission::register(engine, s);
+            });
             (Session::Tmcl(s), result)
         }
         Session::Smd4(s) => {

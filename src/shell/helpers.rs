@@ -20,6 +20,10 @@ pub enum ArgKind {
     Topic,
     /// A program address.
     Address,
+    /// `save`, `diff` or `restore`, then a snapshot file.
+    Snapshot,
+    /// A CSV file, then parameter names.
+    Record,
 }
 
 /// Which dialects have a helper.
@@ -189,6 +193,41 @@ pub const HELPERS: &[Helper] = &[
         Only::Both,
     ),
     helper(
+        "snapshot",
+        ":snapshot save|diff|restore FILE",
+        "save the module's parameters to a TOML file, compare with one, or write one back",
+        ArgKind::Snapshot,
+        Only::Tmcl,
+    ),
+    helper(
+        "scan",
+        ":scan [ADDRESSES] [TIME]",
+        "find the modules on the bus (default 1-26), with firmware and echo",
+        ArgKind::Module,
+        Only::Tmcl,
+    ),
+    helper(
+        "watch",
+        ":watch PARAM[,PARAM…] [INTERVAL]",
+        "live table of parameters; any key stops, Ctrl-C also stops the motor",
+        ArgKind::Param,
+        Only::Tmcl,
+    ),
+    helper(
+        "record",
+        ":record FILE.csv PARAM[,…] [INTERVAL] [DURATION]",
+        "sample parameters with timestamps into a CSV file",
+        ArgKind::Record,
+        Only::Tmcl,
+    ),
+    helper(
+        "plot",
+        ":plot [FILE.csv]",
+        "chart the last recording (or a CSV file) against time",
+        ArgKind::File,
+        Only::Both,
+    ),
+    helper(
         "quit",
         ":quit",
         "leave, putting the modules back in the mode they were found in",
@@ -250,7 +289,7 @@ mod tests {
         assert!(
             find("r", Dialect::Tmcl)
                 .unwrap_err()
-                .contains("ambiguous: :raw, :run, :reset")
+                .contains("ambiguous: :raw, :run, :reset, :record")
         );
         assert_eq!(find("r", Dialect::Smd4).unwrap().name, "raw");
         assert_eq!(

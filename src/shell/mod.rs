@@ -32,6 +32,8 @@ pub struct Shell {
     session: Option<Session>,
     /// Show replies exactly as received (`:raw`).
     pub raw: bool,
+    /// What the commissioning helpers remember (the last recording).
+    pub commission: crate::commission::shell::State,
 }
 
 impl Shell {
@@ -40,6 +42,7 @@ impl Shell {
         Shell {
             session: Some(session),
             raw: false,
+            commission: Default::default(),
         }
     }
 
@@ -109,6 +112,16 @@ impl Shell {
                 writeln!(out, "raw output {}", if self.raw { "on" } else { "off" })?;
             }
             "source" => self.source(arg, out)?,
+            "snapshot" | "scan" | "watch" | "record" | "plot" => {
+                let session = self.session.as_mut().expect("the session is back");
+                crate::commission::shell::helper(
+                    session,
+                    &mut self.commission,
+                    helper.name,
+                    arg,
+                    out,
+                )?
+            }
             "quit" => return Ok(Flow::Quit),
             name => match self.session() {
                 Session::Tmcl(session) => tmcl_helpers::run(session, helper, arg, out)?,

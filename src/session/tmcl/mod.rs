@@ -7,6 +7,7 @@
 mod ascii;
 mod binary;
 mod mode;
+mod probe;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::Arc;
@@ -114,6 +115,18 @@ impl TmclSession {
         options: SessionOptions,
         transcript: Option<Transcript>,
     ) -> Result<Self, SessionError> {
+        let mut session = Self::open_idle(link, profile, options, transcript)?;
+        session.contact(session.target)?;
+        Ok(session)
+    }
+
+    /// Opens a session without contacting any module yet (a bus scan finds them first).
+    pub fn open_idle(
+        link: Box<dyn Link>,
+        profile: Arc<Profile>,
+        options: SessionOptions,
+        transcript: Option<Transcript>,
+    ) -> Result<Self, SessionError> {
         if address_char(options.module).is_none() {
             return Err(SessionError::Usage(format!(
                 "module address {} has no ASCII address character; use 1..26",
@@ -131,7 +144,6 @@ impl TmclSession {
         };
         let opened = format!("session opened on {}", session.wire.link.describe());
         session.wire.note(&opened);
-        session.contact(session.target)?;
         Ok(session)
     }
 

@@ -1,0 +1,233 @@
+//! What differs between a snapshot and a module, or between two snapshots: the settings (not the
+//! live values, which differ from one moment to the next), by name, with units.
+
+use std::io::{self, Write};
+
+use crate::profile::SnapshotRole;
+use crate::session::SessionError;
+
+use super::device::{ParamDevice, ParamRef, Scope};
+use super::progress::Progress;
+use super::snapshot::{Entry, Snapshot};
+
+/// One parameter that differs.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Difference {
+    /// Where it lives.
+    pub scope: Scope,
+    /// Its identifier.
+    pub name: String,
+    /// "axis 6", "global 0/65" (empty when unknown).
+    pub place: String,
+    /// Its unit.
+    pub unit: String,
+    /// The left side's value (the file), or what is missing instead.
+    pub left: Side,
+    /// The right side's value (the module or the second file).
+    pub right: Side,
+}
+
+/// One side of a difference.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Side {
+    /// A value.
+    Value(i64),
+    /// The parameter is not there.
+    Missing,
+    /// It could not be read (the module's answer).
+    Unreadable(String),
+}
+
+impl Side {
+    fn of(entry: Option<&Entry>) -> Side {
+        match entry.map(|e| &e.value) {
+            Some(Ok(v)) => Side::Value(*v),
+            Some(Err(e)) => Side::Unreadable(e.clone()),
+            None => Side::Missing,
+        }
+    }
+
+    fn text(&self) -> String {
+        match self {
+            Side::Value(v) => v.to_string(),
+            Side::Missing => "(absent)".into(),
+            Side::Unreadable(_) => "(unreadable)".into(),
+        }
+    }
+}
+
+/// The result of a comparison.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Comparison {
+    /// How many settings were compared.
+    pub compared: usize,
+    /// Those that differ, in table order.
+    pub differences: Vec<Difference>,
+}
+
+/// Whether a parameter takes part in comparisons: settings do, live and read-only values do not.
+pub fn compared(role: SnapshotRole) -> bool {
+    matches!(role, SnapshotRole::Setting | SnapshotRole::Manual)
+}
+
+/// Compares `file` with the module behind `device`, reading only the settings.
+pub fn with_device(
+    file: &Snapshot,
+    device: &mut dyn ParamDevice,
+) -> Result<Comparison, SessionError> {
+    let params: Vec<ParamRef> = device
+        .params()
+        .into_iter()
+        .filter(|p| p.access.read && compared(p.role))
+        .collect();
+    let progress = Progress::new(params.len(), "comparing");
+    let mut differences = Vec::new();
+    for param in &params {
+        progress.step(&param.name);
+        let module = match device.read(param) {
+            Ok(v) => Side::Value(v),
+            Err(e @ SessionError::Device { .. }) => Side::Unreadable(e.to_string()),
+            Err(e) => return Err(e),
+        };
+        let left = Side::of(file.get(param.scope, &param.name));
+        if left != module {
+            differences.push(difference(param, left, module));
+        }
+    }
+    let known = |e: &Entry| {
+        params
+            .iter()
+            .any(|p| p.scope == e.scope && p.name == e.name)
+    };
+    let all = device.params();
+    for entry in &file.entries {
+        let on_module = all
+            .iter()
+            .any(|p| p.scope == entry.scope && p.name == entry.name);
+        if !known(entry) && !on_module {
+            differences.push(Difference {
+                scope: entry.scope,
+                name: entry.name.clone(),
+                place: String::new(),
+                unit: entry.unit.clone(),
+                left: Side::of(Some(entry)),
+                right: Side::Missing,
+            });
+        }
+    }
+    Ok(Comparison {
+        compared: params.len(),
+        differences,
+    })
+}
+
+/// Compares two snapshot files; `params` (the profile's view) says which entries are settings.
+/// Entries the profile does not know are compared too.
+pub fn between(left: &Snapshot, right: &Snapshot, params: &[ParamRef]) -> Comparison {
+    let is_setting = |scope: Scope, name: &str| {
+        params
+            .iter()
+            .find(|p| p.scope == scope && p.name == name)
+            .is_none_or(|p| compared(p.role))
+    };
+    let mut keys: Vec<(Scope, u32, String)> = Vec::new();
+    for e in left.entries.iter().chain(&right.entries) {
+        let key = (e.scope, e.number, e.name.clone());
+        if is_setting(e.scope, &e.name) && !keys.iter().any(|k| k.0 == key.0 && k.2 == key.2) {
+            keys.push(key);
+        }
+    }
+    keys.sort();
+    let mut differences = Vec::new();
+    for (scope, _, name) in &keys {
+        let (a, b) = (left.get(*scope, name), right.get(*scope, name));
+        let (l, r) = (Side::of(a), Side::of(b));
+        if l != r {
+            let param = params.iter().find(|p| p.scope == *scope && p.name == *name);
+            differences.push(Difference {
+                scope: *scope,
+                name: name.clone(),
+                place: param.map(ParamRef::place).unwrap_or_default(),
+                unit: a.or(b).map(|e| e.unit.clone()).unwrap_or_default(),
+                left: l,
+                right: r,
+            });
+        }
+    }
+    Comparison {
+        compared: keys.len(),
+        differences,
+    }
+}
+
+fn difference(param: &ParamRef, left: Side, right: Side) -> Difference {
+    Difference {
+        scope: param.scope,
+        name: param.name.clone(),
+        place: param.place(),
+        unit: param.unit.clone(),
+        left,
+        right,
+    }
+}
+
+/// "no differences in 57 settings" or "2 of 57 settings differ".
+pub fn summary(comparison: &Comparison) -> String {
+    match comparison.differences.len() {
+        0 => format!("no differences in {} settings", comparison.compared),
+        n => format!("{n} of {} settings differ", comparison.compared),
+    }
+}
+
+/// Prints the differences as a table (nothing when there are none); `labels` name the two sides.
+pub fn write_table(
+    comparison: &Comparison,
+    labels: [&str; 2],
+    out: &mut dyn Write,
+) -> io::Result<()> {
+    if comparison.differences.is_empty() {
+        return Ok(());
+    }
+    let header = [
+        "parameter".to_string(),
+        "where".to_string(),
+        labels[0].to_string(),
+        labels[1].to_string(),
+        "unit".to_string(),
+    ];
+    let rows: Vec<[String; 5]> = comparison
+        .differences
+        .iter()
+        .map(|d| {
+            [
+                d.name.clone(),
+                d.place.clone(),
+                d.left.text(),
+                d.right.text(),
+                d.unit.clone(),
+            ]
+        })
+        .collect();
+    let mut widths = [0usize; 5];
+    for row in std::iter::once(&header).chain(&rows) {
+        for (w, cell) in widths.iter_mut().zip(row) {
+            *w = (*w).max(cell.chars().count());
+        }
+    }
+    for row in std::iter::once(&header).chain(&rows) {
+        let line = format!(
+            "{:<w0$}  {:<w1$}  {:>w2$}  {:>w3$}  {}",
+            row[0],
+            row[1],
+            row[2],
+            row[3],
+            row[4],
+            w0 = widths[0],
+            w1 = widths[1],
+            w2 = widths[2],
+            w3 = widths[3],
+        );
+        writeln!(out, "{}", line.trim_end())?;
+    }
+    Ok(())
+}

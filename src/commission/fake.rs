@@ -1,0 +1,131 @@
+//! An in-memory module for the unit tests of the pure parts: the built-in profile's parameters,
+//! values in a map, refusals where a test asks, and a log of every write and store. The real
+//! session against the simulator is exercised by the integration tests.
+
+use std::collections::BTreeMap;
+
+use crate::profile::Profile;
+use crate::protocol::tmcl::Status;
+use crate::session::SessionError;
+
+use super::device::{ParamDevice, ParamRef, Scope};
+use super::tmcl::param_ref;
+
+pub struct FakeDevice {
+    pub params: Vec<ParamRef>,
+    pub values: BTreeMap<(Scope, String), i64>,
+    /// Parameters whose reads are refused.
+    pub refuse_read: Vec<String>,
+    /// Parameters whose writes are refused.
+    pub refuse_write: Vec<String>,
+    /// Parameters that keep their value whatever is written.
+    pub stuck: Vec<String>,
+    /// "write NAME VALUE" / "store NAME", in order.
+    pub log: Vec<String>,
+}
+
+impl FakeDevice {
+    /// The built-in profile's parameters, all at their defaults (or 0).
+    pub fn new() -> FakeDevice {
+        let profile = Profile::builtin();
+        let mut params = Vec::new();
+        let mut values = BTreeMap::new();
+        for p in &profile.axis {
+            let r = param_ref(&profile, p, Scope::Axis { motor: 0 });
+            values.insert((r.scope, r.name.clone()), p.default.unwrap_or(0));
+            params.push(r);
+        }
+        for p in &profile.global {
+            let r = param_ref(&profile, p, Scope::Global { bank: p.bank() });
+            values.insert((r.scope, r.name.clone()), p.default.unwrap_or(0));
+            params.push(r);
+        }
+        FakeDevice {
+            params,
+            values,
+            refuse_read: Vec::new(),
+            refuse_write: Vec::new(),
+            stuck: Vec::new(),
+            log: Vec::new(),
+        }
+    }
+
+    pub fn param(&self, name: &str) -> ParamRef {
+        self.params.iter().find(|p| p.name == name).unwrap().clone()
+    }
+
+    pub fn set(&mut self, name: &str, value: i64) {
+        let p = self.param(name);
+        self.values.insert((p.scope, p.name), value);
+    }
+
+    pub fn get(&self, name: &str) -> i64 {
+        let p = self.param(name);
+        self.values[&(p.scope, p.name)]
+    }
+
+    fn refused(name: &str) -> SessionError {
+        SessionError::Device {
+            module: "A".into(),
+            sent: name.to_string(),
+            reason: format!("status {}", Status::WrongType),
+        }
+    }
+}
+
+impl ParamDevice for FakeDevice {
+    fn module_name(&self) -> String {
+        "TMCM-142".into()
+    }
+
+    fn address(&self) -> u8 {
+        1
+    }
+
+    fn firmware(&mut self) -> Option<String> {
+        Some("142V9.99".into())
+    }
+
+    fn params(&self) -> Vec<ParamRef> {
+        self.params.clone()
+    }
+
+    fn find(&self, name: &str) -> Result<ParamRef, String> {
+        self.params
+            .iter()
+            .find(|p| p.name == name)
+            .cloned()
+            .ok_or_else(|| format!("unknown parameter '{name}'"))
+    }
+
+    fn read(&mut self, param: &ParamRef) -> Result<i64, SessionError> {
+        if self.refuse_read.contains(&param.name) {
+            return Err(Self::refused(&param.name));
+        }
+        Ok(self.values[&(param.scope, param.name.clone())])
+    }
+
+    fn write(&mut self, param: &ParamRef, value: i64) -> Result<(), SessionError> {
+        if self.refuse_write.contains(&param.name) {
+            return Err(Self::refused(&param.name));
+        }
+        self.log.push(format!("write {} {value}", param.name));
+        if !self.stuck.contains(&param.name) {
+            self.values.insert((param.scope, param.name.clone()), value);
+        }
+        Ok(())
+    }
+
+    fn store(&mut self, param: &ParamRef) -> Result<(), SessionError> {
+        self.log.push(format!("store {}", param.name));
+        Ok(())
+    }
+
+    fn write_line(&self, param: &ParamRef, value: i64) -> String {
+        format!("SET {} {value}", param.name)
+    }
+
+    fn store_line(&self, param: &ParamRef) -> String {
+        format!("STORE {}", param.name)
+    }
+}

@@ -1,0 +1,27 @@
+//! The commissioning toolkit: parameter snapshots (save, diff, restore), bus scans, live watches,
+//! recordings with a terminal chart, and transcripts turned into regression scripts.
+//!
+//! Everything that reads or writes parameters goes through [`ParamDevice`], a small seam each
+//! dialect's session implements (TMCL in [`tmcl`]), so the same tools serve every module type.
+//! Pure parts — the snapshot file, the diff, the restore order, CSV, chart rendering, transcript
+//! parsing and script generation, the scan table — are functions tested without any I/O.
+
+pub mod actions;
+pub mod device;
+pub mod diff;
+pub mod plot;
+pub mod progress;
+pub mod record;
+pub mod replay;
+pub mod restore;
+pub mod scan;
+pub mod shell;
+pub mod snapshot;
+pub mod tmcl;
+pub mod watch;
+
+#[cfg(test)]
+mod fake;
+
+pub use device::{ParamDevice, ParamRef, Scope};
+pub use snapshot::Snapshot;

@@ -1,0 +1,387 @@
+//! Recordings: parameters sampled at a fixed interval, with the time of each sample, written to
+//! CSV as they are taken (a crash loses at most one line) and kept for `:plot`.
+//!
+//! ```text
+//! time_ms,actual_position,actual_speed
+//! 0,0,0
+//! 100,1250,25000
+//! ```
+//!
+//! `time_ms` counts from the first sample; each row's values were read one after the other
+//! starting at that time.
+
+use std::io::{self, Write};
+use std::time::Duration;
+
+use crate::session::{SessionError, interrupt};
+use crate::sim::clock::Clock;
+
+use super::device::{ParamDevice, ParamRef};
+
+/// Sampled values of some parameters over time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Recording {
+    /// The parameter names, one per column.
+    pub columns: Vec<String>,
+    /// The samples, in time order.
+    pub samples: Vec<Sample>,
+}
+
+/// The values of every column at one time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sample {
+    /// Milliseconds since the first sample.
+    pub time_ms: u64,
+    /// One value per column.
+    pub values: Vec<i64>,
+}
+
+/// What to sample, how often, for how long.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// The parameters, one column each.
+    pub params: Vec<ParamRef>,
+    /// Time between the starts of two samples.
+    pub interval: Duration,
+    /// Sampling stops once this much time has passed (`None`: until `stop` says so).
+    pub duration: Option<Duration>,
+}
+
+/// Samples `plan.params` from `device` until the duration has passed or `stop()` returns true,
+/// handing each sample to `sink` as it is taken. Time comes from `clock` (waits are sliced so
+/// Ctrl-C is noticed). A refused read or a lost link ends the recording with the error; the
+/// samples taken so far are in the sink.
+pub fn record(
+    device: &mut dyn ParamDevice,
+    plan: &Plan,
+    clock: &dyn Clock,
+    stop: &mut dyn FnMut() -> bool,
+    sink: &mut dyn FnMut(&Sample) -> io::Result<()>,
+) -> Result<Recording, SessionError> {
+    let columns: Vec<String> = plan.params.iter().map(|p| p.name.clone()).collect();
+    let mut samples = Vec::new();
+    let start = clock.now();
+    let mut due = Duration::ZERO;
+    let interval = plan.interval.max(Duration::from_millis(1));
+    loop {
+        let elapsed = clock.now().saturating_sub(start);
+        if plan.duration.is_some_and(|d| elapsed > d) || stop() {
+            break;
+        }
+        let mut values = Vec::with_capacity(plan.params.len());
+        for param in &plan.params {
+            values.push(device.read(param)?);
+        }
+        let sample = Sample {
+            time_ms: elapsed.as_millis() as u64,
+            values,
+        };
+        sink(&sample)?;
+        samples.push(sample);
+        due += interval;
+        let now = clock.now().saturating_sub(start);
+        if due < now {
+            // Reading took longer than the interval: skip to the next slot of the grid.
+            let slots = now.as_nanos().div_ceil(interval.as_nanos());
+            due = interval * u32::try_from(slots).unwrap_or(u32::MAX);
+        }
+        wait_until(clock, start + due)?;
+    }
+    Ok(Recording { columns, samples })
+}
+
+/// Waits on `clock` until `when`, in slices that notice Ctrl-C.
+fn wait_until(clock: &dyn Clock, when: Duration) -> Result<(), SessionError> {
+    loop {
+        if interrupt::pending() {
+            return Err(SessionError::Interrupted);
+        }
+        let now = clock.now();
+        if now >= when {
+            return Ok(());
+        }
+        clock.wait((when - now).min(interrupt::SLICE));
+    }
+}
+
+/// The CSV header line (without line ending).
+pub fn csv_header(columns: &[String]) -> String {
+    let mut line = String::from("time_ms");
+    for c in columns {
+        line.push(',');
+        line.push_str(c);
+    }
+    line
+}
+
+/// One CSV data line (without line ending).
+pub fn csv_row(sample: &Sample) -> String {
+    let mut line = sample.time_ms.to_string();
+    for v in &sample.values {
+        line.push(',');
+        line.push_str(&v.to_string());
+    }
+    line
+}
+
+impl Recording {
+    /// The whole recording as CSV.
+    pub fn to_csv(&self) -> String {
+        let mut text = csv_header(&self.columns);
+        text.push('\n');
+        for s in &self.samples {
+            text.push_str(&csv_row(s));
+            text.push('\n');
+        }
+        text
+    }
+
+    /// Reads a recording back from CSV (as written by tmclsh: a `time_ms` column, then integers).
+    pub fn from_csv(text: &str) -> Result<Recording, String> {
+        let mut lines = text.lines().filter(|l| !l.trim().is_empty());
+        let header = lines.next().ok_or("the file is empty")?;
+        let mut names = header.split(',').map(str::trim);
+        if names.next() != Some("time_ms") {
+            return Err("the first column is not time_ms".into());
+        }
+        let columns: Vec<String> = names.map(String::from).collect();
+        let mut samples = Vec::new();
+        for (i, line) in lines.enumerate() {
+            let row = i + 2;
+            let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+            if cells.len() != columns.len() + 1 {
+                return Err(format!(
+                    "line {row} has {} values, the header {}",
+                    cells.len(),
+                    columns.len() + 1
+                ));
+            }
+            let number = |cell: &str| {
+                cell.parse::<i64>()
+                    .map_err(|_| format!("line {row}: '{cell}' is not an integer"))
+            };
+            let time_ms = u64::try_from(number(cells[0])?)
+                .map_err(|_| format!("line {row}: time is negative"))?;
+            let values = cells[1..]
+                .iter()
+                .map(|c| number(c))
+                .collect::<Result<_, _>>()?;
+            samples.push(Sample { time_ms, values });
+        }
+        Ok(Recording { columns, samples })
+    }
+
+    /// The (time in seconds, value) points of one column.
+    pub fn series(&self, column: usize) -> Vec<(f64, f64)> {
+        self.samples
+            .iter()
+            .map(|s| (s.time_ms as f64 / 1000.0, s.values[column] as f64))
+            .collect()
+    }
+}
+
+/// A CSV file being written sample by sample.
+pub struct CsvFile {
+    file: std::fs::File,
+}
+
+impl CsvFile {
+    /// Creates (or replaces) the file and writes the header.
+    pub fn create(path: &std::path::Path, columns: &[String]) -> Result<CsvFile, SessionError> {
+        let mut file = std::fs::File::create(path).map_err(|e| {
+            SessionError::Usage(format!("cannot write recording {}: {e}", path.display()))
+        })?;
+        writeln!(file, "{}", csv_header(columns))?;
+        Ok(CsvFile { file })
+    }
+
+    /// Appends one sample.
+    pub fn append(&mut self, sample: &Sample) -> io::Result<()> {
+        writeln!(self.file, "{}", csv_row(sample))
+    }
+}
+
+/// Parses a time for `:record` and `:watch`: `250ms`, `2s`, `1m` (humantime), or a bare number of
+/// milliseconds.
+pub fn parse_duration(text: &str) -> Result<Duration, String> {
+    if let Ok(ms) = text.parse::<u64>() {
+        return Ok(Duration::from_millis(ms));
+    }
+    humantime::parse_duration(text).map_err(|_| {
+        format!("'{text}' is not a time (e.g. 100ms, 2s, or a number of milliseconds)")
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::fake::FakeDevice;
+    use super::*;
+    use crate::sim::clock::ManualClock;
+
+    fn plan(device: &FakeDevice, names: &[&str], interval_ms: u64, duration_ms: u64) -> Plan {
+        Plan {
+            params: names.iter().map(|n| device.param(n)).collect(),
+            interval: Duration::from_millis(interval_ms),
+            duration: Some(Duration::from_millis(duration_ms)),
+        }
+    }
+
+    #[test]
+    fn samples_are_taken_on_the_interval_grid_until_the_duration() {
+        let mut device = FakeDevice::new();
+        device.set("actual_position", 42);
+        let clock = ManualClock::new();
+        let plan = plan(&device, &["actual_position", "actual_speed"], 100, 500);
+        let mut rows = Vec::new();
+        let rec = record(&mut device, &plan, &clock, &mut || false, &mut |s| {
+            rows.push(csv_row(s));
+            Ok(())
+        })
+        .unwrap();
+        let times: Vec<u64> = rec.samples.iter().map(|s| s.time_ms).collect();
+        assert_eq!(times, [0, 100, 200, 300, 400, 500]);
+        assert_eq!(rows[1], "100,42,0");
+        assert_eq!(rec.columns, ["actual_position", "actual_speed"]);
+    }
+
+    /// A device whose reads take time on the manual clock and whose position follows it.
+    struct Moving {
+        inner: FakeDevice,
+        clock: ManualClock,
+        read_cost: Duration,
+    }
+
+    impl ParamDevice for Moving {
+        fn module_name(&self) -> String {
+            self.inner.module_name()
+        }
+        fn address(&self) -> u8 {
+            1
+        }
+        fn firmware(&mut self) -> Option<String> {
+            None
+        }
+        fn params(&self) -> Vec<ParamRef> {
+            self.inner.params()
+        }
+        fn find(&self, name: &str) -> Result<ParamRef, String> {
+            self.inner.find(name)
+        }
+        fn read(&mut self, _: &ParamRef) -> Result<i64, SessionError> {
+            let t = self.clock.now().as_millis() as i64;
+            self.clock.advance(self.read_cost);
+            Ok(t * 10)
+        }
+        fn write(&mut self, p: &ParamRef, v: i64) -> Result<(), SessionError> {
+            self.inner.write(p, v)
+        }
+        fn store(&mut self, p: &ParamRef) -> Result<(), SessionError> {
+            self.inner.store(p)
+        }
+        fn write_line(&self, p: &ParamRef, v: i64) -> String {
+            self.inner.write_line(p, v)
+        }
+        fn store_line(&self, p: &ParamRef) -> String {
+            self.inner.store_line(p)
+        }
+    }
+
+    #[test]
+    fn slow_reads_keep_the_grid_and_skip_the_slots_they_missed() {
+        let clock = ManualClock::new();
+        let inner = FakeDevice::new();
+        let plan = plan(&inner, &["actual_position"], 10, 100);
+        let mut device = Moving {
+            inner,
+            clock: clock.clone(),
+            read_cost: Duration::from_millis(25),
+        };
+        let rec = record(&mut device, &plan, &clock, &mut || false, &mut |_| Ok(())).unwrap();
+        let times: Vec<u64> = rec.samples.iter().map(|s| s.time_ms).collect();
+        assert_eq!(times, [0, 30, 60, 90]);
+        let values: Vec<i64> = rec.samples.iter().map(|s| s.values[0]).collect();
+        assert_eq!(
+            values,
+            [0, 300, 600, 900],
+            "each value is read at its sample time"
+        );
+    }
+
+    #[test]
+    fn a_stop_request_ends_an_open_ended_recording() {
+        let mut device = FakeDevice::new();
+        let clock = ManualClock::new();
+        let mut plan = plan(&device, &["actual_position"], 50, 0);
+        plan.duration = None;
+        let mut calls = 0;
+        let rec = record(
+            &mut device,
+            &plan,
+            &clock,
+            &mut || {
+                calls += 1;
+                calls > 3
+            },
+            &mut |_| Ok(()),
+        )
+        .unwrap();
+        assert_eq!(rec.samples.len(), 3);
+    }
+
+    #[test]
+    fn a_refused_read_ends_the_recording_with_the_error() {
+        let mut device = FakeDevice::new();
+        device.refuse_read.push("actual_speed".into());
+        let clock = ManualClock::new();
+        let plan = plan(&device, &["actual_speed"], 50, 1000);
+        let error = record(&mut device, &plan, &clock, &mut || false, &mut |_| Ok(())).unwrap_err();
+        assert!(matches!(error, SessionError::Device { .. }));
+    }
+
+    #[test]
+    fn csv_round_trips_and_bad_files_are_refused_with_the_line() {
+        let rec = Recording {
+            columns: vec!["a".into(), "b".into()],
+            samples: vec![
+                Sample {
+                    time_ms: 0,
+                    values: vec![1, -2],
+                },
+                Sample {
+                    time_ms: 20,
+                    values: vec![3, 4],
+                },
+            ],
+        };
+        let text = rec.to_csv();
+        assert_eq!(text, "time_ms,a,b\n0,1,-2\n20,3,4\n");
+        assert_eq!(Recording::from_csv(&text).unwrap(), rec);
+        assert!(
+            Recording::from_csv("time_ms,a\n0,1\n5,x\n")
+                .unwrap_err()
+                .contains("line 3: 'x'")
+        );
+        assert!(
+            Recording::from_csv("t,a\n")
+                .unwrap_err()
+                .contains("time_ms")
+        );
+        assert!(
+            Recording::from_csv("time_ms,a\n0\n")
+                .unwrap_err()
+                .contains("line 2 has 1")
+        );
+    }
+
+    #[test]
+    fn times_are_milliseconds_or_humantime() {
+        assert_eq!(parse_duration("250").unwrap(), Duration::from_millis(250));
+        assert_eq!(parse_duration("2s").unwrap(), Duration::from_secs(2));
+        assert_eq!(parse_duration("100ms").unwrap(), Duration::from_millis(100));
+        assert!(
+            parse_duration("soon")
+                .unwrap_err()
+                .contains("'soon' is not a time")
+        );
+    }
+}

@@ -1,0 +1,268 @@
+//! Parameter snapshots: every readable parameter of a module, keyed by name, in a TOML file people
+//! can read, edit and keep under version control.
+//!
+//! ```toml
+//! [module]
+//! name = "TMCM-142"
+//! address = 1
+//! firmware = "142V1.00"
+//! date = "2026-11-22T10:15:02Z"
+//! tool = "tmclsh 0.1.0"
+//!
+//! [axis.0]
+//! max_current = { number = 6, value = 128, unit = "", access = "RWE" }
+//!
+//! [global.2]
+//! user_variable_0 = { number = 0, value = 0, unit = "", access = "RWE" }
+//! ```
+//!
+//! `axis.N` holds motor N's axis parameters, `global.B` bank B's global parameters. A parameter the
+//! module refused to read has `error = "…"` instead of a value.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::Path;
+
+use serde::Deserialize;
+
+use crate::session::SessionError;
+
+use super::device::{ParamDevice, Scope};
+use super::progress::Progress;
+
+/// A module's parameters at one moment.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Snapshot {
+    /// The module type ("TMCM-142").
+    pub module: String,
+    /// The bus address it was read from.
+    pub address: u8,
+    /// The firmware version, where the module told it.
+    pub firmware: Option<String>,
+    /// When it was taken (RFC 3339).
+    pub date: String,
+    /// What took it ("tmclsh 0.1.0").
+    pub tool: String,
+    /// The parameters, in table order.
+    pub entries: Vec<Entry>,
+}
+
+/// One parameter of a snapshot.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Entry {
+    /// Where it lives.
+    pub scope: Scope,
+    /// Its identifier.
+    pub name: String,
+    /// Its number.
+    pub number: u32,
+    /// The value, or why the module would not tell it.
+    pub value: Result<i64, String>,
+    /// Its unit (informative).
+    pub unit: String,
+    /// Its access letters when it was saved (informative).
+    pub access: String,
+}
+
+impl Snapshot {
+    /// Reads every readable parameter of `device`. A parameter the module refuses is recorded with
+    /// its error; a lost link or a timeout ends the capture.
+    pub fn capture(device: &mut dyn ParamDevice) -> Result<Snapshot, SessionError> {
+        let params: Vec<_> = device
+            .params()
+            .into_iter()
+            .filter(|p| p.access.read)
+            .collect();
+        let firmware = device.firmware();
+        let progress = Progress::new(params.len(), "reading");
+        let mut entries = Vec::with_capacity(params.len());
+        for param in &params {
+            progress.step(&param.name);
+            let value = match device.read(param) {
+                Ok(value) => Ok(value),
+                Err(e @ SessionError::Device { .. }) => Err(e.to_string()),
+                Err(e) => return Err(e),
+            };
+            entries.push(Entry {
+                scope: param.scope,
+                name: param.name.clone(),
+                number: param.number,
+                value,
+                unit: param.unit.clone(),
+                access: param.access.letters(),
+            });
+        }
+        Ok(Snapshot {
+            module: device.module_name(),
+            address: device.address(),
+            firmware,
+            date: humantime::format_rfc3339_seconds(std::time::SystemTime::now()).to_string(),
+            tool: format!("tmclsh {}", env!("CARGO_PKG_VERSION")),
+            entries,
+        })
+    }
+
+    /// The entry for `name` in `scope`.
+    pub fn get(&self, scope: Scope, name: &str) -> Option<&Entry> {
+        self.entries
+            .iter()
+            .find(|e| e.scope == scope && e.name == name)
+    }
+
+    /// Entries the module would not read.
+    pub fn unreadable(&self) -> impl Iterator<Item = &Entry> {
+        self.entries.iter().filter(|e| e.value.is_err())
+    }
+
+    /// The file text.
+    pub fn to_toml(&self) -> String {
+        let mut out = String::new();
+        out.push_str(
+            "# tmclsh parameter snapshot: every readable parameter, keyed by name.\n\
+             # `tmclsh snapshot diff FILE` compares it with a module, `tmclsh snapshot restore FILE`\n\
+             # writes the settings back. Values may be edited; number, unit and access are notes.\n\n",
+        );
+        out.push_str("[module]\n");
+        let _ = writeln!(out, "name = {}", quoted(&self.module));
+        let _ = writeln!(out, "address = {}", self.address);
+        if let Some(firmware) = &self.firmware {
+            let _ = writeln!(out, "firmware = {}", quoted(firmware));
+        }
+        let _ = writeln!(out, "date = {}", quoted(&self.date));
+        let _ = writeln!(out, "tool = {}", quoted(&self.tool));
+        let mut section = None;
+        for entry in &self.entries {
+            if section != Some(entry.scope) {
+                let _ = write!(out, "\n[{}]\n", entry.scope.section());
+                section = Some(entry.scope);
+            }
+            let value = match &entry.value {
+                Ok(v) => format!("value = {v}"),
+                Err(e) => format!("error = {}", quoted(e)),
+            };
+            let _ = writeln!(
+                out,
+                "{} = {{ number = {}, {value}, unit = {}, access = {} }}",
+                key(&entry.name),
+                entry.number,
+                quoted(&entry.unit),
+                quoted(&entry.access)
+            );
+        }
+        out
+    }
+
+    /// Parses a snapshot file's text.
+    pub fn from_toml(text: &str) -> Result<Snapshot, String> {
+        let file: File = toml::from_str(text).map_err(|e| e.to_string())?;
+        let mut entries = Vec::new();
+        for (kind, sections) in [("axis", &file.axis), ("global", &file.global)] {
+            for (index, rows) in sections {
+                let n: u8 = index
+                    .parse()
+                    .map_err(|_| format!("[{kind}.{index}]: '{index}' is not a number 0..255"))?;
+                let scope = match kind {
+                    "axis" => Scope::Axis { motor: n },
+                    _ => Scope::Global { bank: n },
+                };
+                for (name, row) in rows {
+                    let value = match (row.value, &row.error) {
+                        (Some(v), _) => Ok(v),
+                        (None, Some(e)) => Err(e.clone()),
+                        (None, None) => {
+                            return Err(format!("[{kind}.{index}] {name}: no value"));
+                        }
+                    };
+                    entries.push(Entry {
+                        scope,
+                        name: name.clone(),
+                        number: row.number.unwrap_or(u32::MAX),
+                        value,
+                        unit: row.unit.clone(),
+                        access: row.access.clone(),
+                    });
+                }
+            }
+        }
+        entries.sort_by(|a, b| (a.scope, a.number, &a.name).cmp(&(b.scope, b.number, &b.name)));
+        Ok(Snapshot {
+            module: file.module.name,
+            address: file.module.address,
+            firmware: file.module.firmware,
+            date: file.module.date,
+            tool: file.module.tool,
+            entries,
+        })
+    }
+
+    /// Reads a snapshot file; errors are usage errors naming the file.
+    pub fn load(path: &Path) -> Result<Snapshot, SessionError> {
+        let text = std::fs::read_to_string(path).map_err(|e| {
+            SessionError::Usage(format!("cannot read snapshot {}: {e}", path.display()))
+        })?;
+        Snapshot::from_toml(&text).map_err(|e| {
+            SessionError::Usage(format!(
+                "{} is not a tmclsh snapshot: {}",
+                path.display(),
+                e.trim_end()
+            ))
+        })
+    }
+
+    /// Writes the snapshot to `path` (replacing it).
+    pub fn save(&self, path: &Path) -> Result<(), SessionError> {
+        std::fs::write(path, self.to_toml()).map_err(|e| {
+            SessionError::Usage(format!("cannot write snapshot {}: {e}", path.display()))
+        })
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct File {
+    module: ModuleRow,
+    #[serde(default)]
+    axis: BTreeMap<String, BTreeMap<String, Row>>,
+    #[serde(default)]
+    global: BTreeMap<String, BTreeMap<String, Row>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ModuleRow {
+    name: String,
+    address: u8,
+    firmware: Option<String>,
+    #[serde(default)]
+    date: String,
+    #[serde(default)]
+    tool: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Row {
+    number: Option<u32>,
+    value: Option<i64>,
+    error: Option<String>,
+    #[serde(default)]
+    unit: String,
+    #[serde(default)]
+    access: String,
+}
+
+fn quoted(text: &str) -> String {
+    toml::Value::String(text.to_string()).to_string()
+}
+
+/// A bare key when the name allows one, else a quoted key.
+fn key(name: &str) -> String {
+    let bare = !name.is_empty()
+        && name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-');
+    if bare { name.to_string() } else { quoted(name) }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,360 @@
+//! Snapshots, diffs and restores against the in-memory module.
+
+use super::super::actions::{self, RestoreOptions};
+use super::super::diff::{self, Side};
+use super::super::fake::FakeDevice;
+use super::super::restore::{self, Reason};
+use super::*;
+
+fn captured(device: &mut FakeDevice) -> Snapshot {
+    Snapshot::capture(device).unwrap()
+}
+
+#[test]
+fn a_snapshot_round_trips_through_its_file_text() {
+    let mut device = FakeDevice::new();
+    device.set("max_current", 100);
+    device.set("user_variable_7", -12345);
+    device.refuse_read.push("pid_error".into());
+    let snapshot = captured(&mut device);
+    let text = snapshot.to_toml();
+    assert!(text.contains("\n[axis.0]\n"), "{text}");
+    assert!(text.contains("\n[global.2]\n"));
+    assert!(
+        text.contains("max_current = { number = 6, value = 100, unit = "),
+        "{text}"
+    );
+    assert!(text.contains("firmware = \"142V9.99\""));
+    assert!(text.contains("pid_error = { number = 38, error = \"module A refused"));
+    let back = Snapshot::from_toml(&text).unwrap();
+    assert_eq!(back, snapshot);
+}
+
+#[test]
+fn only_readable_parameters_are_saved_with_name_number_and_unit() {
+    let mut device = FakeDevice::new();
+    let snapshot = captured(&mut device);
+    let readable = device.params.iter().filter(|p| p.access.read).count();
+    assert_eq!(snapshot.entries.len(), readable);
+    let e = snapshot
+        .get(Scope::Axis { motor: 0 }, "actual_position")
+        .unwrap();
+    assert_eq!((e.number, e.unit.as_str()), (1, "usteps"));
+    assert_eq!(snapshot.module, "TMCM-142");
+    assert_eq!(snapshot.address, 1);
+}
+
+#[test]
+fn a_file_with_a_misspelt_field_or_section_is_refused_with_the_reason() {
+    let bad_field =
+        "[module]\nname = \"X\"\naddress = 1\n[axis.0]\na = { number = 1, valeu = 3 }\n";
+    assert!(
+        Snapshot::from_toml(bad_field)
+            .unwrap_err()
+            .contains("valeu")
+    );
+    let bad_section = "[module]\nname = \"X\"\naddress = 1\n[axes.0]\n";
+    assert!(
+        Snapshot::from_toml(bad_section)
+            .unwrap_err()
+            .contains("axes")
+    );
+    let bad_motor = "[module]\nname = \"X\"\naddress = 1\n[axis.x]\n";
+    assert!(
+        Snapshot::from_toml(bad_motor)
+            .unwrap_err()
+            .contains("'x' is not a number")
+    );
+    let no_value = "[module]\nname = \"X\"\naddress = 1\n[axis.0]\na = { number = 1 }\n";
+    assert!(
+        Snapshot::from_toml(no_value)
+            .unwrap_err()
+            .contains("a: no value")
+    );
+}
+
+#[test]
+fn the_diff_with_a_module_shows_exactly_the_changed_settings() {
+    let mut device = FakeDevice::new();
+    let file = captured(&mut device);
+    device.set("max_current", 3);
+    device.set("user_variable_55", 9);
+    device.set("actual_position", 777); // live: not a setting
+    let comparison = diff::with_device(&file, &mut device).unwrap();
+    let changed: Vec<(&str, &Side, &Side)> = comparison
+        .differences
+        .iter()
+        .map(|d| (d.name.as_str(), &d.left, &d.right))
+        .collect();
+    let before = |name| {
+        file.get(device.param(name).scope, name)
+            .unwrap()
+            .value
+            .clone()
+            .unwrap()
+    };
+    assert_eq!(
+        changed,
+        [
+            (
+                "max_current",
+                &Side::Value(before("max_current")),
+                &Side::Value(3)
+            ),
+            (
+                "user_variable_55",
+                &Side::Value(before("user_variable_55")),
+                &Side::Value(9)
+            ),
+        ]
+    );
+    let settings = device
+        .params
+        .iter()
+        .filter(|p| p.access.read && diff::compared(p.role))
+        .count();
+    assert_eq!(comparison.compared, settings);
+}
+
+#[test]
+fn the_diff_report_names_units_and_places_and_exits_one() {
+    let dir = std::env::temp_dir().join(format!("tmclsh-diff-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("s.toml");
+    let mut device = FakeDevice::new();
+    actions::save(&mut device, &path, &mut Vec::new()).unwrap();
+    let same = actions::diff(&mut device, &path, &mut Vec::new());
+    assert!(same.is_ok());
+    device.set("max_positioning_speed", 1234);
+    let mut out = Vec::new();
+    let error = actions::diff(&mut device, &path, &mut out).unwrap_err();
+    assert_eq!(
+        crate::exit::ExitStatus::exit(&error),
+        crate::exit::Exit::DeviceError
+    );
+    assert!(error.to_string().starts_with("1 of "), "{error}");
+    let text = String::from_utf8(out).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 2, "{text}");
+    assert!(lines[0].starts_with("parameter") && lines[0].contains("module 1"));
+    let row: Vec<&str> = lines[1].split_whitespace().collect();
+    assert_eq!(row[0], "max_positioning_speed");
+    assert_eq!(&row[1..3], ["axis", "4"]);
+    assert_eq!(row[4], "1234");
+    assert_eq!(row[5], "usteps/t");
+}
+
+#[test]
+fn two_files_are_compared_by_name_including_entries_only_one_has() {
+    let mut device = FakeDevice::new();
+    let left = captured(&mut device);
+    let mut right = left.clone();
+    let i = right
+        .entries
+        .iter()
+        .position(|e| e.name == "max_current")
+        .unwrap();
+    right.entries[i].value = Ok(1);
+    right.entries.retain(|e| e.name != "standby_current");
+    right.entries.push(Entry {
+        scope: Scope::Global { bank: 9 },
+        name: "mystery".into(),
+        number: 1,
+        value: Ok(5),
+        unit: String::new(),
+        access: "RW".into(),
+    });
+    let comparison = diff::between(&left, &right, &device.params);
+    let names: Vec<(&str, &Side)> = comparison
+        .differences
+        .iter()
+        .map(|d| (d.name.as_str(), &d.right))
+        .collect();
+    assert_eq!(
+        names,
+        [
+            ("max_current", &Side::Value(1)),
+            ("standby_current", &Side::Missing),
+            ("mystery", &Side::Value(5)),
+        ]
+    );
+}
+
+#[test]
+fn restore_writes_unit_mode_and_limits_first_then_table_order() {
+    let mut device = FakeDevice::new();
+    let snapshot = captured(&mut device);
+    let plan = restore::plan(&snapshot, &device.params, &device);
+    let order: Vec<&str> = plan.writes.iter().map(|(p, _)| p.name.as_str()).collect();
+    assert_eq!(
+        &order[..5],
+        [
+            "unit_conversion_mode",
+            "max_positioning_speed",
+            "max_acceleration",
+            "max_current",
+            "standby_current"
+        ]
+    );
+    let numbers: Vec<u32> = plan.writes[4..]
+        .iter()
+        .filter(|(p, _)| matches!(p.scope, Scope::Axis { .. }))
+        .map(|(p, _)| p.number)
+        .collect();
+    assert!(numbers.windows(2).all(|w| w[0] < w[1]), "{numbers:?}");
+    assert!(order.iter().all(|n| device.param(n).access.write));
+}
+
+#[test]
+fn restore_skips_read_only_live_and_link_settings_and_lists_them() {
+    let mut device = FakeDevice::new();
+    let snapshot = captured(&mut device);
+    let plan = restore::plan(&snapshot, &device.params, &device);
+    let reason = |name: &str| {
+        plan.skipped
+            .iter()
+            .find(|s| s.name == name)
+            .map(|s| s.reason)
+    };
+    assert_eq!(reason("target_position_reached"), Some(Reason::ReadOnly));
+    assert_eq!(reason("actual_position"), Some(Reason::Live));
+    assert_eq!(reason("serial_address"), Some(Reason::Manual));
+    assert_eq!(reason("max_current"), None);
+    let mut out = Vec::new();
+    restore::write_skipped(&plan, &mut out).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(text.contains("(read-only): "), "{text}");
+    assert!(text.contains("target_position_reached"));
+    assert!(text.contains("by hand: SET serial_address 1"), "{text}");
+    assert!(!plan.writes.iter().any(|(p, _)| p.name == "serial_address"));
+}
+
+#[test]
+fn a_restore_brings_changed_settings_back_and_verifies_each() {
+    let mut device = FakeDevice::new();
+    device.set("max_current", 10);
+    let snapshot = captured(&mut device);
+    device.set("max_current", 2);
+    device.set("pid_p", 77);
+    device.set("actual_position", 500);
+    let plan = restore::plan(&snapshot, &device.params, &device);
+    let outcome = restore::execute(&mut device, &plan).unwrap();
+    assert_eq!(device.get("max_current"), 10);
+    assert_eq!(
+        device.get("pid_p"),
+        snapshot
+            .get(Scope::Axis { motor: 0 }, "pid_p")
+            .unwrap()
+            .value
+            .clone()
+            .unwrap()
+    );
+    assert_eq!(
+        device.get("actual_position"),
+        500,
+        "live values are not written"
+    );
+    assert_eq!(outcome.verified, 2, "the two changed settings");
+    assert_eq!(outcome.unchanged, plan.writes.len() - 2);
+    assert_eq!(device.log, ["write max_current 10", "write pid_p 0"]);
+    assert!(outcome.failed.is_empty());
+}
+
+#[test]
+fn a_refused_write_and_a_value_that_does_not_stick_are_reported_and_the_rest_goes_on() {
+    let mut device = FakeDevice::new();
+    let snapshot = captured(&mut device);
+    device.refuse_write.push("max_current".into());
+    device.stuck.push("pid_i".into());
+    device.set("max_current", 1);
+    device.set("pid_i", 5);
+    device.set("pid_d", 6);
+    let plan = restore::plan(&snapshot, &device.params, &device);
+    let outcome = restore::execute(&mut device, &plan).unwrap();
+    let failed: Vec<&str> = outcome.failed.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(failed, ["max_current", "pid_i"]);
+    let pid_i = &outcome.failed[1].1;
+    assert!(
+        pid_i.starts_with("wrote ") && pid_i.ends_with("reads back 5"),
+        "{pid_i}"
+    );
+    assert_eq!(
+        device.get("pid_d"),
+        0,
+        "writes after a failure still happen"
+    );
+    assert_eq!(outcome.verified, 1, "pid_d");
+}
+
+#[test]
+fn store_happens_only_when_confirmed_and_only_for_eeprom_parameters() {
+    let dir = std::env::temp_dir().join(format!("tmclsh-store-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("s.toml");
+    let mut device = FakeDevice::new();
+    actions::save(&mut device, &path, &mut Vec::new()).unwrap();
+    let options = RestoreOptions {
+        store: true,
+        dry_run: false,
+    };
+    let mut no = |_: &restore::Plan| Ok(false);
+    actions::restore(&mut device, &path, options, &mut no, &mut Vec::new()).unwrap();
+    assert!(!device.log.iter().any(|l| l.starts_with("store")));
+    device.log.clear();
+    device.set("standby_current", 9);
+    let mut yes = |_: &restore::Plan| Ok(true);
+    let outcome = actions::restore(&mut device, &path, options, &mut yes, &mut Vec::new()).unwrap();
+    let stored: Vec<&str> = device
+        .log
+        .iter()
+        .filter_map(|l| l.strip_prefix("store "))
+        .collect();
+    assert_eq!(outcome.stored, stored.len());
+    assert!(stored.contains(&"max_current"));
+    assert!(
+        !stored.contains(&"stop_deceleration"),
+        "RW without E is not stored"
+    );
+    let last_write = device
+        .log
+        .iter()
+        .rposition(|l| l.starts_with("write"))
+        .unwrap();
+    let first_store = device
+        .log
+        .iter()
+        .position(|l| l.starts_with("store"))
+        .unwrap();
+    assert!(last_write < first_store, "stores come after every write");
+}
+
+#[test]
+fn a_dry_run_prints_the_lines_and_sends_nothing() {
+    let dir = std::env::temp_dir().join(format!("tmclsh-dry-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("s.toml");
+    let mut device = FakeDevice::new();
+    actions::save(&mut device, &path, &mut Vec::new()).unwrap();
+    device.set("pid_p", 3);
+    device.set("max_current", 4);
+    let options = RestoreOptions {
+        store: true,
+        dry_run: true,
+    };
+    let mut out = Vec::new();
+    let mut never = |_: &restore::Plan| -> Result<bool, SessionError> { panic!("no prompt") };
+    actions::restore(&mut device, &path, options, &mut never, &mut out).unwrap();
+    assert!(device.log.is_empty());
+    assert_eq!(device.get("pid_p"), 3);
+    let text = String::from_utf8(out).unwrap();
+    let lines: Vec<&str> = text.lines().take(3).collect();
+    assert_eq!(
+        lines,
+        [
+            "SET max_current 8",
+            "SET pid_p 0",
+            "STORE unit_conversion_mode"
+        ]
+    );
+    assert!(text.contains("\nSTORE max_current\n"));
+}

@@ -1,0 +1,136 @@
+//! The TMCL session as a [`ParamDevice`]: GAP/SAP/STAP for axis parameters, GGP/SGP/STGP for
+//! global ones, the firmware version from command 136 (binary direct mode, there and back).
+
+use crate::profile::{Param, Profile};
+use crate::protocol::tmcl::Instruction;
+use crate::protocol::tmcl::line::Op;
+use crate::session::SessionError;
+use crate::session::tmcl::{Answer, TmclSession};
+
+use super::device::{ParamDevice, ParamRef, Scope};
+
+impl ParamDevice for TmclSession {
+    fn module_name(&self) -> String {
+        self.profile().module.clone()
+    }
+
+    fn address(&self) -> u8 {
+        self.target()
+    }
+
+    fn firmware(&mut self) -> Option<String> {
+        let target = self.target();
+        let exchange = self
+            .in_binary(target, |s| {
+                s.request(target, Instruction::new(136, 0, 0, 0))
+            })
+            .ok()?;
+        match exchange.answer {
+            Answer::Version(text) if !text.trim().is_empty() => Some(text.trim().to_string()),
+            _ => None,
+        }
+    }
+
+    fn params(&self) -> Vec<ParamRef> {
+        profile_params(self.profile())
+    }
+
+    fn find(&self, name: &str) -> Result<ParamRef, String> {
+        let profile = self.profile();
+        match (profile.find_axis(name), profile.find_global(name)) {
+            (Ok(p), _) => Ok(param_ref(profile, p, Scope::Axis { motor: 0 })),
+            (_, Ok(p)) => Ok(param_ref(profile, p, Scope::Global { bank: p.bank() })),
+            (Err(axis), Err(_)) => {
+                let all = profile.axis.iter().chain(&profile.global);
+                let nearest = crate::suggest::nearest(name, all.map(|p| p.ident.as_str()));
+                Err(match axis {
+                    crate::profile::LookupError::Ambiguous { .. } => axis.to_string(),
+                    _ => format!(
+                        "unknown parameter '{name}'{}; :params lists them",
+                        crate::suggest::did_you_mean(&nearest)
+                    ),
+                })
+            }
+        }
+    }
+
+    fn read(&mut self, param: &ParamRef) -> Result<i64, SessionError> {
+        let instruction = instruction(param, [6, 10], 0);
+        let exchange = self.request(self.target(), instruction)?.checked()?;
+        exchange
+            .value()
+            .map(i64::from)
+            .ok_or_else(|| SessionError::Link(format!("no value in the reply '{}'", exchange.raw)))
+    }
+
+    fn write(&mut self, param: &ParamRef, value: i64) -> Result<(), SessionError> {
+        let value = word(param, value)?;
+        let instruction = instruction(param, [5, 9], value);
+        self.request(self.target(), instruction)?.checked()?;
+        Ok(())
+    }
+
+    fn store(&mut self, param: &ParamRef) -> Result<(), SessionError> {
+        let instruction = instruction(param, [7, 11], 0);
+        self.request(self.target(), instruction)?.checked()?;
+        Ok(())
+    }
+
+    fn write_line(&self, param: &ParamRef, value: i64) -> String {
+        let value = i32::try_from(value).unwrap_or(i32::MAX);
+        let op = Op::Command(instruction(param, [5, 9], value));
+        self.format(self.target(), op)
+    }
+
+    fn store_line(&self, param: &ParamRef) -> String {
+        let op = Op::Command(instruction(param, [7, 11], 0));
+        self.format(self.target(), op)
+    }
+}
+
+/// Every parameter of `profile` as the commissioning tools see it: the axis parameters of each
+/// motor, then the global parameters by bank.
+pub fn profile_params(profile: &Profile) -> Vec<ParamRef> {
+    let axes = (0..profile.axes).flat_map(|motor| {
+        profile
+            .axis
+            .iter()
+            .map(move |p| param_ref(profile, p, Scope::Axis { motor }))
+    });
+    let globals = profile
+        .global
+        .iter()
+        .map(|p| param_ref(profile, p, Scope::Global { bank: p.bank() }));
+    axes.chain(globals).collect()
+}
+
+/// The commissioning view of a profile parameter.
+pub(super) fn param_ref(profile: &Profile, p: &Param, scope: Scope) -> ParamRef {
+    ParamRef {
+        scope,
+        name: p.ident.clone(),
+        number: p.number.into(),
+        unit: p.unit.clone(),
+        access: p.access,
+        role: profile.snapshot.role(p),
+        rank: profile.snapshot.rank(&p.ident),
+    }
+}
+
+/// The instruction for `param`: `commands[0]` for axis parameters, `commands[1]` for global ones.
+fn instruction(param: &ParamRef, commands: [u8; 2], value: i32) -> Instruction {
+    let number = u8::try_from(param.number).unwrap_or(u8::MAX);
+    match param.scope {
+        Scope::Axis { motor } => Instruction::new(commands[0], number, motor, value),
+        Scope::Global { bank } => Instruction::new(commands[1], number, bank, value),
+    }
+}
+
+fn word(param: &ParamRef, value: i64) -> Result<i32, SessionError> {
+    i32::try_from(value).map_err(|_| {
+        SessionError::Usage(format!(
+            "{} = {value} does not fit in a 32-bit TMCL value",
+            param.name
+        ))
+    })
+}

@@ -1,0 +1,249 @@
+//! `:watch`: a table of parameters redrawn in place at an interval while the user keeps control —
+//! any key stops it, Ctrl-C stops it and the motor (the REPL's usual Ctrl-C handling).
+//!
+//! The loop talks to a [`Screen`]; [`TerminalScreen`] is the crossterm one, which puts the
+//! terminal in raw mode (so a key arrives without Enter and Ctrl-C arrives as a key) and restores
+//! it on every way out, panics included, through its `Drop`.
+
+use std::io::{self, Write};
+use std::time::{Duration, Instant};
+
+use crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers};
+use crossterm::{cursor, queue, terminal};
+
+use crate::session::{SessionError, interrupt};
+
+use super::device::{ParamDevice, ParamRef};
+
+/// What a key press means to a watch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Key {
+    /// Stop watching.
+    Stop,
+    /// Ctrl-C: stop watching and stop the motor.
+    Interrupt,
+}
+
+/// Where a watch draws and listens.
+pub trait Screen {
+    /// Replaces the previous frame with `lines`.
+    fn draw(&mut self, lines: &[String]) -> io::Result<()>;
+
+    /// Waits up to `timeout` for a key.
+    fn key(&mut self, timeout: Duration) -> io::Result<Option<Key>>;
+}
+
+/// Shows `params` of `device` every `interval` until a key; returns how many frames were drawn.
+/// Ctrl-C (as a key, or the process flag) is [`SessionError::Interrupted`]; a parameter the module
+/// refuses shows its error in the table; a lost link ends the watch.
+pub fn watch(
+    device: &mut dyn ParamDevice,
+    params: &[ParamRef],
+    interval: Duration,
+    screen: &mut dyn Screen,
+) -> Result<usize, SessionError> {
+    let start = Instant::now();
+    let mut frames = 0;
+    loop {
+        if interrupt::pending() {
+            return Err(SessionError::Interrupted);
+        }
+        let mut values = Vec::with_capacity(params.len());
+        for param in params {
+            values.push(match device.read(param) {
+                Ok(v) => Ok(v),
+                Err(e @ SessionError::Device { .. }) => Err(e.to_string()),
+                Err(e) => return Err(e),
+            });
+        }
+        let header = format!(
+            "module {} every {} ms, {:.1} s — any key stops, Ctrl-C stops the motor",
+            device.address(),
+            interval.as_millis(),
+            start.elapsed().as_secs_f64()
+        );
+        screen.draw(&render(&header, params, &values))?;
+        frames += 1;
+        match screen.key(interval)? {
+            Some(Key::Stop) => return Ok(frames),
+            Some(Key::Interrupt) => return Err(SessionError::Interrupted),
+            None => {}
+        }
+    }
+}
+
+/// One frame: the header, then a row per parameter (name, value, unit).
+pub fn render(header: &str, params: &[ParamRef], values: &[Result<i64, String>]) -> Vec<String> {
+    let name_width = params
+        .iter()
+        .map(|p| p.name.len())
+        .chain(["parameter".len()])
+        .max()
+        .unwrap_or(9);
+    let shown: Vec<String> = values
+        .iter()
+        .map(|v| match v {
+            Ok(v) => v.to_string(),
+            Err(_) => "error".into(),
+        })
+        .collect();
+    let value_width = shown.iter().map(String::len).chain([5]).max().unwrap_or(5);
+    let mut lines = vec![
+        header.to_string(),
+        format!(
+            "{:<name_width$}  {:>value_width$}  unit",
+            "parameter", "value"
+        ),
+    ];
+    for ((param, value), original) in params.iter().zip(&shown).zip(values) {
+        let tail = match original {
+            Err(e) => e.clone(),
+            Ok(_) => param.unit.clone(),
+        };
+        let line = format!("{:<name_width$}  {value:>value_width$}  {tail}", param.name);
+        lines.push(line.trim_end().to_string());
+    }
+    lines
+}
+
+/// The terminal as a [`Screen`]: raw mode and a hidden cursor while it lives.
+pub struct TerminalScreen<'a> {
+    out: &'a mut dyn Write,
+    drawn: u16,
+}
+
+impl<'a> TerminalScreen<'a> {
+    /// Takes over the terminal (raw mode, hidden cursor) until dropped.
+    pub fn new(out: &'a mut dyn Write) -> io::Result<TerminalScreen<'a>> {
+        terminal::enable_raw_mode()?;
+        let mut screen = TerminalScreen { out, drawn: 0 };
+        queue!(&mut screen.out, cursor::Hide)?;
+        Ok(screen)
+    }
+}
+
+impl Screen for TerminalScreen<'_> {
+    fn draw(&mut self, lines: &[String]) -> io::Result<()> {
+        if self.drawn > 0 {
+            queue!(&mut self.out, cursor::MoveToPreviousLine(self.drawn))?;
+        }
+        queue!(
+            &mut self.out,
+            cursor::MoveToColumn(0),
+            terminal::Clear(terminal::ClearType::FromCursorDown)
+        )?;
+        for line in lines {
+            // Raw mode: a line feed does not return the carriage.
+            write!(self.out, "{line}\r\n")?;
+        }
+        self.drawn = lines.len() as u16;
+        self.out.flush()
+    }
+
+    fn key(&mut self, timeout: Duration) -> io::Result<Option<Key>> {
+        let deadline = Instant::now() + timeout;
+        loop {
+            let left = deadline.saturating_duration_since(Instant::now());
+            if !event::poll(left.min(interrupt::SLICE))? {
+                if interrupt::pending() {
+                    return Ok(Some(Key::Interrupt));
+                }
+                if left.is_zero() {
+                    return Ok(None);
+                }
+                continue;
+            }
+            if let Event::Key(key) = event::read()? {
+                if key.kind != KeyEventKind::Press {
+                    continue;
+                }
+                let ctrl_c =
+                    key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL);
+                return Ok(Some(if ctrl_c { Key::Interrupt } else { Key::Stop }));
+            }
+        }
+    }
+}
+
+impl Drop for TerminalScreen<'_> {
+    fn drop(&mut self) {
+        let _ = queue!(&mut self.out, cursor::Show);
+        let _ = self.out.flush();
+        let _ = terminal::disable_raw_mode();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::fake::FakeDevice;
+    use super::*;
+
+    /// A screen that keeps the frames and presses `key` after `frames` frames.
+    struct Scripted {
+        frames: Vec<Vec<String>>,
+        after: usize,
+        key: Key,
+    }
+
+    impl Screen for Scripted {
+        fn draw(&mut self, lines: &[String]) -> io::Result<()> {
+            self.frames.push(lines.to_vec());
+            Ok(())
+        }
+        fn key(&mut self, _: Duration) -> io::Result<Option<Key>> {
+            Ok((self.frames.len() >= self.after).then_some(self.key))
+        }
+    }
+
+    #[test]
+    fn the_table_is_redrawn_until_a_key_and_shows_names_values_units() {
+        let mut device = FakeDevice::new();
+        device.set("actual_position", 1500);
+        device.refuse_read.push("actual_speed".into());
+        let params = vec![
+            device.param("actual_position"),
+            device.param("actual_speed"),
+        ];
+        let mut screen = Scripted {
+            frames: Vec::new(),
+            after: 3,
+            key: Key::Stop,
+        };
+        let frames = watch(&mut device, &params, Duration::from_millis(10), &mut screen).unwrap();
+        assert_eq!(frames, 3);
+        assert_eq!(screen.frames.len(), 3);
+        let frame = &screen.frames[2];
+        assert!(frame[0].starts_with("module 1 every 10 ms"));
+        let row: Vec<&str> = frame[2].split_whitespace().collect();
+        assert_eq!(row, ["actual_position", "1500", "usteps"]);
+        assert!(
+            frame[3].starts_with("actual_speed") && frame[3].contains("error  module A refused")
+        );
+    }
+
+    #[test]
+    fn ctrl_c_as_a_key_ends_the_watch_as_an_interrupt() {
+        let mut device = FakeDevice::new();
+        let params = vec![device.param("actual_position")];
+        let mut screen = Scripted {
+            frames: Vec::new(),
+            after: 1,
+            key: Key::Interrupt,
+        };
+        let result = watch(&mut device, &params, Duration::from_millis(10), &mut screen);
+        assert!(matches!(result, Err(SessionError::Interrupted)));
+    }
+
+    #[test]
+    fn rows_are_aligned_whatever_the_value_widths() {
+        let device = FakeDevice::new();
+        let params = vec![device.param("max_current"), device.param("actual_position")];
+        let lines = render("h", &params, &[Ok(5), Ok(-1234567)]);
+        let end_of = |line: &str, value: &str| line.find(value).unwrap() + value.len();
+        assert_eq!(end_of(&lines[2], " 5"), end_of(&lines[3], "-1234567"));
+        assert_eq!(
+            lines[1].find("value").unwrap() + 5,
+            end_of(&lines[3], "-1234567")
+        );
+    }
+}

@@ -1,0 +1,162 @@
+//! `:watch` in the real REPL on a pseudo-terminal: it redraws until a key, gives the prompt back
+//! with the terminal restored, and Ctrl-C stops the motor.
+
+use std::fs::File;
+use std::io::{Read, Write};
+use std::os::fd::{AsFd, OwnedFd};
+use std::process::{Child, Command, Stdio};
+use std::time::Instant;
+
+use nix::poll::{PollFd, PollFlags, PollTimeout, poll};
+use nix::sys::termios::{LocalFlags, tcgetattr};
+
+use crate::sim::{PATIENCE, Sim};
+use crate::util::{bin, tempdir};
+
+/// `tmclsh` running on the slave side of a pseudo-terminal.
+struct Terminal {
+    master: File,
+    child: Child,
+    seen: String,
+}
+
+impl Terminal {
+    fn spawn(args: &[&str]) -> Terminal {
+        let pty = nix::pty::openpty(None, None).expect("a pseudo-terminal");
+        let slave: OwnedFd = pty.slave;
+        let home = tempdir();
+        let child = Command::new(bin())
+            .args(args)
+            .stdin(Stdio::from(slave.try_clone().unwrap()))
+            .stdout(Stdio::from(slave.try_clone().unwrap()))
+            .stderr(Stdio::from(slave))
+            .env("TERM", "xterm")
+            .env("HOME", &home)
+            .env("XDG_DATA_HOME", &home)
+            .env("NO_COLOR", "1")
+            .spawn()
+            .expect("tmclsh starts");
+        Terminal {
+            master: File::from(pty.master),
+            child,
+            seen: String::new(),
+        }
+    }
+
+    fn send(&mut self, text: &str) {
+        self.master.write_all(text.as_bytes()).unwrap();
+        self.master.flush().unwrap();
+    }
+
+    /// Reads until the output since the last call contains `needle` (answering cursor-position
+    /// queries as a terminal would); returns that output.
+    fn until(&mut self, needle: &str) -> String {
+        let deadline = Instant::now() + PATIENCE;
+        let start = self.seen.len();
+        while !self.seen[start..].contains(needle) {
+            assert!(
+                Instant::now() < deadline,
+                "waited for {needle:?}; the terminal shows {:?}",
+                &self.seen[start..]
+            );
+            let mut fds = [PollFd::new(self.master.as_fd(), PollFlags::POLLIN)];
+            if poll(&mut fds, PollTimeout::from(50u16)).unwrap() == 0 {
+                continue;
+            }
+            let mut buf = [0u8; 4096];
+            // EIO means the child closed the terminal.
+            let n: usize = self.master.read(&mut buf).unwrap_or_default();
+            assert!(
+                n > 0,
+                "tmclsh closed the terminal; it showed {:?}",
+                &self.seen[start..]
+            );
+            let text = String::from_utf8_lossy(&buf[..n]).into_owned();
+            if text.contains("\x1b[6n") {
+                self.send("\x1b[1;1R");
+            }
+            self.seen.push_str(&text);
+        }
+        self.seen[start..].to_string()
+    }
+
+    /// Waits for the exit code.
+    fn exit_code(&mut self) -> i32 {
+        let deadline = Instant::now() + PATIENCE;
+        loop {
+            if let Some(status) = self.child.try_wait().unwrap() {
+                return status.code().expect("exited normally");
+            }
+            assert!(Instant::now() < deadline, "tmclsh did not exit");
+            // Keep the terminal drained so the child never blocks on a full buffer.
+            let mut fds = [PollFd::new(self.master.as_fd(), PollFlags::POLLIN)];
+            if poll(&mut fds, PollTimeout::from(50u16)).unwrap_or(0) > 0 {
+                let mut buf = [0u8; 4096];
+                let _ = self.master.read(&mut buf);
+            }
+        }
+    }
+
+    /// Whether the terminal is back in line mode with echo (not left raw).
+    fn cooked(&self) -> bool {
+        let modes = tcgetattr(self.master.as_fd()).unwrap();
+        modes
+            .local_flags
+            .contains(LocalFlags::ICANON | LocalFlags::ECHO)
+    }
+}
+
+impl Drop for Terminal {
+    fn drop(&mut self) {
+        // Our own child, by its handle.
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+#[test]
+fn watch_redraws_until_a_key_and_restores_the_terminal() {
+    let sim = Sim::start(&["--listen", "127.0.0.1:0"]);
+    let mut term = Terminal::spawn(&["--tcp", &sim.first]);
+    term.until("A> ");
+    term.send(":watch actual_position,max_current 50ms\r");
+    let first = term.until("any key stops");
+    assert!(first.contains("actual_position"), "{first}");
+    let redrawn = term.until("any key stops");
+    let redrawn = redrawn + term.until("max_current").as_str();
+    assert!(redrawn.contains("\x1b["), "redrawn in place: {redrawn:?}");
+    assert!(redrawn.contains("any key stops"));
+    term.send("q");
+    term.until("A> ");
+    term.send("GAP max_current, 0\r");
+    let reply = term.until("max_current = ");
+    assert!(reply.contains("max_current = 8"), "{reply:?}");
+    term.send(":quit\r");
+    assert_eq!(term.exit_code(), 0);
+    assert!(term.cooked(), "the terminal is back in line mode with echo");
+}
+
+#[test]
+fn ctrl_c_in_a_watch_stops_the_motor() {
+    let sim = Sim::start(&["--listen", "127.0.0.1:0"]);
+    let mut term = Terminal::spawn(&["--tcp", &sim.first]);
+    term.until("A> ");
+    term.send("ROR 0, 50000\r");
+    term.until("ok, value 50000");
+    term.send(":watch actual_speed\r");
+    term.until("any key stops");
+    term.send("\x03");
+    term.until("stopped motor 0");
+    term.send("GAP target_speed, 0\r");
+    let reply = term.until("target_speed = ");
+    assert!(reply.contains("target_speed = 0"), "{reply:?}");
+    term.send(":quit\r");
+    assert_eq!(term.exit_code(), 0);
+    assert!(term.cooked());
+}
+
+#[test]
+fn watch_without_a_terminal_points_to_record() {
+    let out = super::expect(&["-c", ":watch actual_position"], 2);
+    assert!(crate::util::stderr(&out).contains(":watch needs a terminal"));
+}

@@ -1,0 +1,170 @@
+//! Bus scans against a simulated bus with modules at 1, 2 and 4 (a gap at 3), and one at 40 that
+//! has no ASCII address character.
+
+use tmclsh::protocol::tmcl::Status;
+
+use super::expect;
+use crate::sim::Sim;
+use crate::util::{stderr, stdout};
+
+/// The table rows as words, without the header and the summary.
+fn table(text: &str) -> Vec<Vec<String>> {
+    let lines: Vec<&str> = text.lines().collect();
+    lines[1..lines.len() - 1]
+        .iter()
+        .map(|l| l.split_whitespace().map(String::from).collect())
+        .collect()
+}
+
+#[test]
+fn a_bus_with_three_modules_and_a_gap() {
+    let sim = Sim::start(&["--listen", "127.0.0.1:0", "--modules", "1,2,4,40"]);
+    {
+        let mut port = sim.tcp();
+        assert_eq!(
+            port.transact(2, 9, 67, 0, 0x20).status,
+            Status::Ok,
+            "B: no echo"
+        );
+        assert_eq!(
+            port.transact(4, 9, 67, 0, 0x10).status,
+            Status::Ok,
+            "D: line echo"
+        );
+    }
+    let out = expect(
+        &[
+            "scan",
+            "--tcp",
+            &sim.first,
+            "--timeout",
+            "200",
+            "--addresses",
+            "1-5",
+        ],
+        0,
+    );
+    let text = stdout(&out);
+    assert_eq!(
+        table(&text),
+        [
+            ["1", "A", "binary", "142V1.06", "char"],
+            ["2", "B", "binary", "142V1.06", "none"],
+            ["4", "D", "binary", "142V1.06", "line"],
+        ],
+        "{text}"
+    );
+    assert_eq!(
+        text.lines().last().unwrap(),
+        "3 modules answered at 1-5 (at most 200 ms per reply)"
+    );
+    assert!(
+        text.lines()
+            .next()
+            .unwrap()
+            .starts_with("address  char  found in")
+    );
+
+    // Everything was left in binary mode, as found.
+    let mut port = sim.tcp();
+    for address in [1, 2, 4] {
+        let reply = port.transact(address, 6, 4, 0, 0);
+        assert_eq!((reply.module, reply.status), (address, Status::Ok));
+    }
+}
+
+#[test]
+fn addresses_without_a_character_are_probed_in_binary() {
+    let sim = Sim::start(&["--listen", "127.0.0.1:0", "--modules", "1,40"]);
+    let out = expect(
+        &[
+            "scan",
+            "--tcp",
+            &sim.first,
+            "--timeout",
+            "200",
+            "--addresses",
+            "1,39-41",
+        ],
+        0,
+    );
+    assert_eq!(
+        table(&stdout(&out)),
+        [
+            ["1", "A", "binary", "142V1.06", "char"],
+            ["40", "-", "binary", "142V1.06", "char"],
+        ]
+    );
+    let mut port = sim.tcp();
+    assert_eq!(port.transact(1, 6, 4, 0, 0).status, Status::Ok);
+    assert_eq!(port.transact(40, 6, 4, 0, 0).status, Status::Ok);
+}
+
+#[test]
+fn a_module_found_in_ascii_mode_is_left_in_it_and_the_repl_scans_too() {
+    let sim = Sim::start(&["--pty", "--modules", "1,3"]);
+    {
+        let mut port = sim.pty();
+        assert_eq!(port.transact(3, 9, 67, 0, 0x21).status, Status::Ok);
+        assert_eq!(port.transact(3, 139, 0, 0, 0).status, Status::Ok);
+    }
+    let out = expect(
+        &[
+            "--port",
+            &sim.first,
+            "--timeout",
+            "200",
+            "-c",
+            ":scan 1-3",
+            "-c",
+            "GAP 4, 0",
+        ],
+        0,
+    );
+    let text = stdout(&out);
+    assert_eq!(
+        table(&text.lines().take(4).collect::<Vec<_>>().join("\n")),
+        [
+            ["1", "A", "binary", "142V1.06", "char"],
+            ["3", "C", "ASCII", "142V1.06", "none"],
+        ],
+        "{text}"
+    );
+    assert_eq!(
+        text.lines().nth(4),
+        Some("BA 100 1000000"),
+        "the target is A again"
+    );
+    let mut port = sim.pty();
+    port.send(b"CGAP 4, 0\r");
+    assert_eq!(
+        port.read_line(),
+        "BC 100 1000000\r",
+        "C still in ASCII mode"
+    );
+}
+
+#[test]
+fn an_empty_range_exits_3_with_a_summary() {
+    let sim = Sim::start(&["--listen", "127.0.0.1:0", "--modules", "1"]);
+    let out = expect(
+        &[
+            "scan",
+            "--tcp",
+            &sim.first,
+            "--timeout",
+            "100",
+            "--addresses",
+            "5-6",
+        ],
+        3,
+    );
+    assert!(stdout(&out).is_empty());
+    assert!(
+        stderr(&out).contains("no module answered at 5-6 (at most 100 ms per reply)"),
+        "{}",
+        stderr(&out)
+    );
+    let bad = expect(&["scan", "--addresses", "0-3"], 2);
+    assert!(stderr(&bad).contains("'0' is not a bus address"));
+}
