@@ -419,3 +419,32 @@ fn the_built_in_simulator_needs_no_port() {
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(lines(&out), ["BA 100 1000000", "BA 100 1000"]);
 }
+
+#[test]
+fn a_paced_line_delivers_echoes_byte_by_byte_without_noise() {
+    let sim = Sim::start(&["--pty", "--baud", "38400"]);
+    for echo in ["char", "line", "none"] {
+        let out = on(
+            &sim,
+            &[
+                "-c",
+                &format!(":echo {echo}"),
+                "-c",
+                "GAP 4, 0",
+                "-c",
+                "GAP 4, 0",
+            ],
+        );
+        assert_eq!(code(&out), 0, "{echo}: {}", stderr(&out));
+        assert_eq!(
+            lines(&out)[1..],
+            ["BA 100 1000000", "BA 100 1000000"],
+            "{echo}"
+        );
+        assert!(
+            stderr(&out).is_empty(),
+            "{echo}: an echo arriving in pieces is no noise: {}",
+            stderr(&out)
+        );
+    }
+}

@@ -113,3 +113,18 @@ fn schema_errors_are_reported() {
         "{e}"
     );
 }
+
+#[test]
+fn every_power_up_value_lies_in_its_range() {
+    let p = Profile::builtin();
+    for param in p.axis.iter().chain(&p.global) {
+        let value = param.default.unwrap_or(0);
+        assert!(
+            param.accepts(value),
+            "{} ({}) powers up at {value}, outside {}: give it a default in data/tmcm142.toml",
+            param.ident,
+            param.number,
+            param.range_text()
+        );
+    }
+}

@@ -11,6 +11,15 @@ use super::super::SessionError;
 use super::super::transcript::{Entry, escape_into};
 use super::{Answer, Exchange, TmclSession};
 
+/// How far scanning for one reply has got, across reads.
+#[derive(Debug, Default)]
+struct ScanState {
+    /// Where the echo ended, once it has been seen: scanning resumes there.
+    echo_end: Option<usize>,
+    /// Lines up to here have been reported already.
+    reported: usize,
+}
+
 /// What scanning the receive buffer found.
 enum Scan {
     /// The reply, and how many bytes of the buffer belong to this exchange.
@@ -52,16 +61,9 @@ impl TmclSession {
             .modules
             .get(&module)
             .is_some_and(|m| m.echo_known && m.echo != super::Echo::None);
-        let mut echo_seen = false;
-        let mut scanned = 0;
+        let mut state = ScanState::default();
         loop {
-            match self.scan(
-                text.as_bytes(),
-                c,
-                echo_required,
-                &mut echo_seen,
-                &mut scanned,
-            )? {
+            match self.scan(text.as_bytes(), c, echo_required, &mut state)? {
                 Scan::Reply(reply, raw, used) => {
                     let bytes = self.wire.rx.take(used);
                     let meaning = format!("{c}: {}, value {}", reply.status, reply.value);
@@ -80,23 +82,22 @@ impl TmclSession {
                 Scan::More => {}
             }
             if !self.wire.fill(deadline)? {
-                return Err(self.timed_out(c, timeout, echo_seen));
+                return Err(self.timed_out(c, timeout, state.echo_end.is_some()));
             }
         }
     }
 
-    /// Looks for this exchange's reply in the receive buffer. Lines that are not it are reported
-    /// once (`scanned` remembers how far reporting got).
+    /// Looks for this exchange's reply in the receive buffer, resuming after the echo once it has
+    /// been seen. Lines that are not the reply are reported once.
     fn scan(
         &mut self,
         sent: &[u8],
         module: char,
         echo_required: bool,
-        echo_seen: &mut bool,
-        scanned: &mut usize,
+        state: &mut ScanState,
     ) -> Result<Scan, SessionError> {
         let buf = self.wire.rx.bytes();
-        let mut pos = 0;
+        let mut pos = state.echo_end.unwrap_or(0);
         loop {
             while pos < buf.len() && matches!(buf[pos], b'\r' | b'\n' | 0) {
                 pos += 1;
@@ -105,10 +106,10 @@ impl TmclSession {
             if rest.is_empty() {
                 return Ok(Scan::More);
             }
-            if !*echo_seen {
+            if state.echo_end.is_none() {
                 if rest.starts_with(sent) {
-                    *echo_seen = true;
                     pos += sent.len();
+                    state.echo_end = Some(pos);
                     continue;
                 }
                 if sent.starts_with(rest) {
@@ -121,9 +122,10 @@ impl TmclSession {
             let line = &rest[..end];
             let line_end = pos + end + 1;
             let text = String::from_utf8_lossy(line).into_owned();
-            let report = line_end > *scanned;
+            let report = line_end > state.reported;
+            let echo_seen = state.echo_end.is_some();
             match parse_reply(&text) {
-                Some(reply) if reply.module == module && (*echo_seen || !echo_required) => {
+                Some(reply) if reply.module == module && (echo_seen || !echo_required) => {
                     return Ok(Scan::Reply(reply, text, line_end));
                 }
                 Some(reply) if reply.module == module => {
@@ -141,7 +143,7 @@ impl TmclSession {
                         ));
                     }
                 }
-                None if !*echo_seen && looks_like_echo(line, sent) => {
+                None if !echo_seen && looks_like_echo(line, sent) => {
                     let sent_text = String::from_utf8_lossy(sent).into_owned();
                     self.wire.rx.take(line_end);
                     return Err(SessionError::Link(format!(
@@ -159,7 +161,7 @@ impl TmclSession {
                     }
                 }
             }
-            *scanned = (*scanned).max(line_end);
+            state.reported = state.reported.max(line_end);
             pos = line_end;
         }
     }
