@@ -162,7 +162,7 @@ fn rate(text: &str) -> Result<f64, String> {
 /// The simulated modules on the bus.
 fn device(args: &SimArgs, profile: Arc<Profile>) -> Result<Box<dyn Device>, Failure> {
     if args.protocol == Dialect::Smd4 {
-        return Ok(args.smd4.device(args.state.as_deref()));
+        return Ok(args.smd4.device(args.state.as_deref(), args.verbose));
     }
     let mut seen = Vec::new();
     for &address in &args.modules {

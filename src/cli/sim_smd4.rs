@@ -73,8 +73,13 @@ impl Smd4SimArgs {
         }
     }
 
-    /// The simulated drive.
-    pub fn device(&self, state: Option<&Path>) -> Box<dyn Device> {
-        Box::new(Smd4Sim::new(self.options(state)))
+    /// The simulated drive; `verbose` logs its traffic to stderr.
+    pub fn device(&self, state: Option<&Path>, verbose: bool) -> Box<dyn Device> {
+        let sim = Smd4Sim::new(self.options(state));
+        if verbose {
+            Box::new(sim.with_log(Box::new(|line: &str| eprintln!("sim {line}"))))
+        } else {
+            Box::new(sim)
+        }
     }
 }

@@ -11,12 +11,24 @@ use super::inprocess::SharedDevice;
 /// The console commands, for `--help` and `help`.
 pub const HELP: &str = "\
 Console commands (one per line on stdin; each is answered by one line, `ok ...` or `error: ...`):
+ TMCL module bus (--protocol tmcl):
   input PORT 0|1                     set a digital input (GIO bank 0)
   analog PORT VALUE                  set an analog input (GIO bank 1, 0..1023)
   switch left|right|home POS|off     move a virtual switch (physical microsteps) or disconnect it
   output PORT                        show an output (SIO bank 2)
   motor                              show position, target, velocity, target reached
   @N COMMAND                         any of the above for the module with factory address N
+ SMD4 drive (--protocol smd4):
+  limit pos|neg 0|1                  set the level of a limit input (active after LIMIT:POL+/-)
+  exten 0|1                          set the external enable input
+  joystick 0|1                       plug a joystick in or out
+  fault BIT|NAME                     latch an EFLAGS bit (e.g. 2 or TempOver); the motor stops
+  flash-failure on|off               make STORE fail with -5 (worn-out flash) or work again
+  power-cycle                        restart from the stored configuration
+  motor                              show position, velocity, standby, target velocity reached
+  flags                              show SFLAGS, EFLAGS and whether addressing mode is on
+  setting MNEMONIC                   show a working setting (e.g. COMS:SERIAL:SLAVEADDR)
+ Both:
   drop RATE | corrupt RATE           drop or corrupt replies from now on (RATE 0..1)
   delay RATE MS                      hold replies back by MS milliseconds
   silent on|off                      stop or resume answering (commands still execute)
