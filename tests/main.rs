@@ -6,3 +6,4 @@ mod util;
 mod asm;
 mod cli;
 mod sim;
+mod smd4;
