@@ -9,6 +9,8 @@ mod lines;
 mod motion;
 mod multiline;
 mod quirks;
+#[cfg(unix)]
+mod repl;
 mod scripts;
 
 use std::io::Write;
@@ -219,9 +221,21 @@ pub struct Streaming {
 impl Streaming {
     /// Starts the shell on `drive` with `args`, stdin a pipe.
     pub fn start(drive: &Drive, args: &[&str]) -> Streaming {
+        let mut all = drive.connection();
+        all.extend(args.iter().map(|a| a.to_string()));
+        Streaming::spawn(&all)
+    }
+
+    /// Starts `tmclsh run SCRIPT` on `drive`.
+    pub fn script(drive: &Drive, script: &Path) -> Streaming {
+        let mut all = vec!["run".to_string(), script.display().to_string()];
+        all.extend(drive.connection());
+        Streaming::spawn(&all)
+    }
+
+    fn spawn(args: &[String]) -> Streaming {
         use std::io::{BufRead, BufReader, Read};
         let mut child = Command::new(bin())
-            .args(drive.connection())
             .args(args)
             .env("NO_COLOR", "1")
             .stdin(Stdio::piped())

@@ -117,3 +117,29 @@ fn a_failing_script_while_the_motor_runs_stops_it() {
         comes_to_rest(&mut drive);
     }
 }
+
+#[cfg(unix)]
+#[test]
+fn ctrl_c_in_a_script_while_the_motor_runs_stops_it() {
+    let dir = crate::util::tempdir();
+    let script = dir.join("wait.rhai");
+    std::fs::write(
+        &script,
+        "send(\"MOTOR:RUNV,-\");\nprint(\"running\");\nwait_standby(600000);\n",
+    )
+    .unwrap();
+    let mut drive = Drive::start(Via::Tcp, &["--manual-clock"]);
+    let mut client = Streaming::script(&drive, &script);
+    assert_eq!(client.line(), "running");
+    drive.console("advance 5s");
+    assert_eq!(drive.motor().velocity, -vmax());
+    client.interrupt();
+    let (code, err) = client.exit();
+    assert_eq!(code, 130, "{err}");
+    assert!(
+        err.contains(&format!("{}:3:1: interrupted", script.display())),
+        "{err}"
+    );
+    assert!(err.contains("(MOTOR:STOP)"), "{err}");
+    comes_to_rest(&mut drive);
+}
