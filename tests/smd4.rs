@@ -5,6 +5,7 @@
 //! as the answer to compare with.
 
 mod addressing;
+mod console;
 mod lines;
 mod motion;
 mod multiline;

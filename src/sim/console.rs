@@ -87,7 +87,7 @@ impl Console {
         match words.as_slice() {
             [] => Answer::Ok(String::new()),
             ["quit" | "exit"] => Answer::Quit,
-            ["help"] => Answer::Ok(HELP.replace('\n', "\n   ")),
+            ["help"] => Answer::Ok(summary()),
             ["time"] => Answer::Ok(format!("{:.6} s", self.clock.now().as_secs_f64())),
             ["advance", amount] => match (&self.manual, parse_duration(amount)) {
                 (None, _) => Answer::Error("advance needs --manual-clock".into()),
@@ -108,6 +108,25 @@ impl Console {
             }
         }
     }
+}
+
+/// The answer to `help`: the command names on one line (the console answers every command with
+/// one line; `tmclsh sim --help` describes them).
+fn summary() -> String {
+    let mut names: Vec<&str> = Vec::new();
+    for line in HELP.lines().filter(|l| l.starts_with("  ")) {
+        let syntax = line.trim().split("  ").next().unwrap_or_default();
+        for form in syntax.split(" | ") {
+            let name = form.split_whitespace().next().unwrap_or_default();
+            if !name.is_empty() && !names.contains(&name) {
+                names.push(name);
+            }
+        }
+    }
+    format!(
+        "commands: {} (tmclsh sim --help describes them)",
+        names.join(" ")
+    )
 }
 
 /// `2s`, `250ms`, `10us`, `1.5` (seconds); decimal digits are taken exactly, to the
@@ -206,6 +225,22 @@ mod tests {
                 .line()
                 .starts_with("error: unknown command 'fly'")
         );
+        let help = console.run("help").line();
+        assert!(!help.contains('\n'), "one line: {help}");
+        for name in [
+            "input",
+            "@N",
+            "limit",
+            "flash-failure",
+            "drop",
+            "corrupt",
+            "quit",
+        ] {
+            assert!(
+                help.split_whitespace().any(|w| w == name),
+                "{name} in {help}"
+            );
+        }
         assert_eq!(console.run("quit"), Answer::Quit);
         assert_eq!(console.run("").line(), "ok");
     }
