@@ -1,5 +1,6 @@
 //! The SMD4 device functions of scripts: `send` returns the data items as strings (throwing on
-//! an error code), `reply` the whole reply as a map (with the items also decoded, `values`),
+//! an error code), `reply` the whole reply as a map (with the items also decoded, `values`, and
+//! the following lines of a multi-line reply, `lines`),
 //! `flags()`, `wait_standby(timeout_ms)`, `target(address)`, and `parse_number(item)`, which reads
 //! a number in every spelling drives use (`1.0000E+03`, `1.0000+03`, `1000.00`, `0x0888`). Ctrl-C or a failure while the motor runs sends MOTOR:STOP (the session
 //! tracks what the script set moving).
@@ -119,6 +120,10 @@ fn reply_map(exchange: &Smd4Exchange) -> Map {
         .map(|r| r.data.iter().map(value).collect())
         .unwrap_or_default();
     map.insert("values".into(), values.into());
+    let lines: Array = response
+        .map(|r| r.lines.iter().cloned().map(Dynamic::from).collect())
+        .unwrap_or_default();
+    map.insert("lines".into(), lines.into());
     let error = response
         .and_then(|r| r.error.as_ref())
         .map_or(Dynamic::UNIT, |e| INT::from(e.code.code()).into());

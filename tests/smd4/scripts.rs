@@ -30,6 +30,10 @@ assert_eq(r.data, ["2.0000E+03", "2.0000E+03"]);
 assert_eq(r.values, [2000.0, 2000.0]);
 assert_eq(r.error, ());
 assert_eq(r.raw, "0x0888,0x0000,2.0000E+03,2.0000E+03");
+// the lines after the first of a multi-line reply
+let listing = reply("SYS:FLAGSV").lines;
+assert_eq(listing.len(), 34);
+assert_eq(listing[8], "[X]Standby");
 send("MOTOR:ESTOP");
 let e = reply("MOTOR:RUNV,+");
 assert_eq(e.error, -7);
