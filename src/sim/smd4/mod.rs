@@ -380,7 +380,7 @@ impl Smd4Sim {
             }
             _ => {
                 let reply = self.failure(t, None, crate::protocol::smd4::ErrorCode::PacketError);
-                self.send(t, reply);
+                self.emit(t, reply);
                 return;
             }
         };
@@ -397,13 +397,14 @@ impl Smd4Sim {
         let outcome = self.execute(t, &request);
         if answer {
             let reply = self.render(t, address, outcome);
-            self.send(t, reply);
+            self.emit(t, reply);
         } else {
             self.log(t, || "executed without reply (broadcast)".into());
         }
     }
 
-    fn send(&mut self, t: f64, reply: Vec<u8>) {
+    /// Queues a reply for the host (and logs it).
+    fn emit(&mut self, t: f64, reply: Vec<u8>) {
         if !reply.is_empty() {
             self.log(t, || {
                 format!("-> {:?}", String::from_utf8_lossy(&reply).trim_end())
