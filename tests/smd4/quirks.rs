@@ -296,3 +296,40 @@ fn a_prefix_form_the_drive_does_not_understand_is_a_packet_error() {
         );
     }
 }
+
+#[test]
+fn wait_time_reported_in_milliseconds() {
+    let drive = Drive::start(Via::Pty, &["--tzw-reply-ms"]);
+    let out = drive.run(&["-c", "MOTOR:TZW,0.5", "-c", "MOTOR:TZW"]);
+    assert_exit(&out, 0);
+    let ms = format!("0x0888,0x0000,{}", scientific(500.0));
+    assert_eq!(lines(&out), [ms.clone(), ms]);
+}
+
+#[test]
+fn real_values_on_a_frequency_grid() {
+    let grid: f64 = 12e6 / 16_777_216.0 / 256.0;
+    let real = (10.0 / grid).round() * grid;
+    let drive = Drive::start(Via::Tcp, &["--real-value-grid", &grid.to_string()]);
+    let out = drive.run(&["-c", "MOTOR:VSTOP,10"]);
+    assert_exit(&out, 0);
+    assert_eq!(
+        lines(&out),
+        [format!(
+            "0x0888,0x0000,{},{}",
+            scientific(10.0),
+            scientific(real)
+        )]
+    );
+    let script = crate::util::tempdir().join("real.rhai");
+    std::fs::write(
+        &script,
+        "let r = reply(\"MOTOR:VSTOP\");\n\
+         assert_eq(r.values[0], 10.0);\n\
+         assert_near(r.values[1], parse_float(args[0]), 0.00005);\n\
+         assert(r.values[1] != r.values[0], \"the real value differs\");\n",
+    )
+    .unwrap();
+    let real = real.to_string();
+    assert_exit(&drive.script(&script, &["--", &real]), 0);
+}
