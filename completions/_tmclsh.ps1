@@ -280,6 +280,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--float-decimals', '--float-decimals', [CompletionResultType]::ParameterName, 'Decimals of FLOAT replies: 4 (every example) or 5 (the type table)')
             [CompletionResult]::new('--error-spelling', '--error-spelling', [CompletionResultType]::ParameterName, 'Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic) or bare (-103)')
             [CompletionResult]::new('--prefix-only', '--prefix-only', [CompletionResultType]::ParameterName, 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)')
+            [CompletionResult]::new('--real-value-grid', '--real-value-grid', [CompletionResultType]::ParameterName, 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value')
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
             [CompletionResult]::new('--pty', '--pty', [CompletionResultType]::ParameterName, 'Serve on a new pseudo-terminal (the default); its path is the first line printed')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Log every frame and line received and sent, decoded, to stderr')
@@ -291,6 +292,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--no-current-rounding', '--no-current-rounding', [CompletionResultType]::ParameterName, 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)')
             [CompletionResult]::new('--no-reply-prefix', '--no-reply-prefix', [CompletionResultType]::ParameterName, 'Send replies to addressed packets without the @N, prefix')
             [CompletionResult]::new('--scientific-positions', '--scientific-positions', [CompletionResultType]::ParameterName, 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)')
+            [CompletionResult]::new('--tzw-reply-ms', '--tzw-reply-ms', [CompletionResultType]::ParameterName, 'Report MOTOR:TZW in milliseconds, as its example does (its argument is in seconds)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break

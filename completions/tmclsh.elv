@@ -254,6 +254,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --float-decimals 'Decimals of FLOAT replies: 4 (every example) or 5 (the type table)'
             cand --error-spelling 'Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic) or bare (-103)'
             cand --prefix-only 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)'
+            cand --real-value-grid 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
             cand --pty 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
             cand -v 'Log every frame and line received and sent, decoded, to stderr'
@@ -265,6 +266,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --no-current-rounding 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)'
             cand --no-reply-prefix 'Send replies to addressed packets without the @N, prefix'
             cand --scientific-positions 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)'
+            cand --tzw-reply-ms 'Report MOTOR:TZW in milliseconds, as its example does (its argument is in seconds)'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }

@@ -201,6 +201,7 @@ comma\t''
 bare\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l prefix-only -d 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)' -r -f -a "attached\t''
 comma\t''"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l real-value-grid -d 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l pty -d 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s v -l verbose -d 'Log every frame and line received and sent, decoded, to stderr'
@@ -211,6 +212,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l float-missing-e -d
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-current-rounding -d 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-prefix -d 'Send replies to addressed packets without the @N, prefix'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l scientific-positions -d 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l tzw-reply-ms -d 'Report MOTOR:TZW in milliseconds, as its example does (its argument is in seconds)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim help" -f -a "ports" -d 'List the serial ports of this machine'

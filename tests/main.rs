@@ -11,3 +11,4 @@ mod repl;
 mod script;
 mod shell;
 mod sim;
+mod smd4;

@@ -162,7 +162,13 @@ fn rate(text: &str) -> Result<f64, String> {
 /// The simulated modules on the bus.
 fn device(args: &SimArgs, profile: Arc<Profile>) -> Result<Box<dyn Device>, Failure> {
     if args.protocol == Dialect::Smd4 {
-        return Ok(args.smd4.device(args.state.as_deref()));
+        if let Some(flag) = tmcl_only_flag(args) {
+            return Err(Failure::new(
+                Exit::Refused,
+                format!("{flag} applies to the simulated TMCM-142 (--protocol tmcl) only"),
+            ));
+        }
+        return Ok(args.smd4.device(args.state.as_deref(), args.verbose));
     }
     let mut seen = Vec::new();
     for &address in &args.modules {
@@ -201,6 +207,20 @@ fn device(args: &SimArgs, profile: Arc<Profile>) -> Result<Box<dyn Device>, Fail
         log,
     };
     Ok(Box::new(Bus::new(profile, options)))
+}
+
+/// The first flag given that only the TMCL bus understands (the SMD4 would silently ignore it).
+fn tmcl_only_flag(args: &SimArgs) -> Option<&'static str> {
+    [
+        (args.modules != [1], "--modules"),
+        (args.left_switch.is_some(), "--left-switch"),
+        (args.right_switch.is_some(), "--right-switch"),
+        (args.home_switch.is_some(), "--home-switch"),
+        (args.no_reply_to_139, "--no-reply-to-139"),
+        (args.no_reply_to_bin, "--no-reply-to-bin"),
+    ]
+    .into_iter()
+    .find_map(|(given, flag)| given.then_some(flag))
 }
 
 /// Faults and line pacing around any simulated device (faults inside, so replies are judged

@@ -36,6 +36,21 @@ pub struct Smd4SimArgs {
     /// Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00).
     #[arg(long)]
     pub scientific_positions: bool,
+    /// Report MOTOR:TZW in milliseconds, as its example does (its argument is in seconds).
+    #[arg(long)]
+    pub tzw_reply_ms: bool,
+    /// Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s
+    /// (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the
+    /// VSTOP example). Without it the real value echoes the user value.
+    #[arg(long, value_name = "STEP", value_parser = positive)]
+    pub real_value_grid: Option<f64>,
+}
+
+fn positive(text: &str) -> Result<f64, String> {
+    text.parse::<f64>()
+        .ok()
+        .filter(|x| x.is_finite() && *x > 0.0)
+        .ok_or_else(|| format!("'{text}' is not a positive number"))
 }
 
 impl Smd4SimArgs {
@@ -68,13 +83,19 @@ impl Smd4SimArgs {
             } else {
                 PositionFormat::Fixed
             },
+            tzw_reply_ms: self.tzw_reply_ms,
+            real_value_grid: self.real_value_grid,
             state_file: state.map(Path::to_path_buf),
-            ..Smd4Options::default()
         }
     }
 
-    /// The simulated drive.
-    pub fn device(&self, state: Option<&Path>) -> Box<dyn Device> {
-        Box::new(Smd4Sim::new(self.options(state)))
+    /// The simulated drive; `verbose` logs its traffic to stderr.
+    pub fn device(&self, state: Option<&Path>, verbose: bool) -> Box<dyn Device> {
+        let sim = Smd4Sim::new(self.options(state));
+        if verbose {
+            Box::new(sim.with_log(Box::new(|line: &str| eprintln!("sim {line}"))))
+        } else {
+            Box::new(sim)
+        }
     }
 }

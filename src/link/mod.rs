@@ -26,10 +26,14 @@ pub enum LinkError {
 }
 
 impl LinkError {
-    /// Classifies an I/O error: time-outs stay time-outs, everything else means the link is gone.
+    /// Classifies an I/O error: time-outs stay time-outs, and so does a wait cut short by a
+    /// signal (Ctrl-C: the caller checks the interrupt flag and its deadline, then waits again);
+    /// everything else means the link is gone.
     pub fn from_io(error: io::Error) -> LinkError {
         match error.kind() {
-            io::ErrorKind::TimedOut | io::ErrorKind::WouldBlock => LinkError::Timeout,
+            io::ErrorKind::TimedOut | io::ErrorKind::WouldBlock | io::ErrorKind::Interrupted => {
+                LinkError::Timeout
+            }
             _ => LinkError::Lost(error.to_string()),
         }
     }
@@ -62,5 +66,30 @@ pub trait Link: Send {
     /// Seconds per byte on the wire, where the link knows it (serial: 10 bits per byte).
     fn byte_time(&self) -> Option<std::time::Duration> {
         None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::io;
+
+    use super::LinkError;
+
+    #[test]
+    fn a_signal_during_a_wait_is_not_a_lost_link() {
+        let kind = |k: io::ErrorKind| LinkError::from_io(io::Error::from(k));
+        assert!(matches!(
+            kind(io::ErrorKind::Interrupted),
+            LinkError::Timeout
+        ));
+        assert!(matches!(
+            kind(io::ErrorKind::WouldBlock),
+            LinkError::Timeout
+        ));
+        assert!(matches!(kind(io::ErrorKind::TimedOut), LinkError::Timeout));
+        assert!(matches!(
+            kind(io::ErrorKind::ConnectionReset),
+            LinkError::Lost(_)
+        ));
     }
 }

@@ -81,6 +81,7 @@ impl Link for TcpLink {
                 }
                 Ok(_) => continue,
                 Err(e) if e.kind() == std::io::ErrorKind::WouldBlock => break Ok(()),
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
                 Err(e) => break Err(LinkError::from_io(e)),
             }
         };

@@ -41,6 +41,19 @@ pub fn register(engine: &mut Engine, log_sink: impl Fn(&str) + 'static) {
     });
     volatile!(
         engine,
+        "assert_eq",
+        |a: Dynamic, b: Dynamic, message: &str| {
+            check(equal(&a, &b), || {
+                format!(
+                    "assert_eq failed: {message}: left = {}, right = {}",
+                    show(&a),
+                    show(&b)
+                )
+            })
+        }
+    );
+    volatile!(
+        engine,
         "assert_near",
         |a: Dynamic, b: Dynamic, tolerance: Dynamic| {
             let (x, y, t) = (number(&a)?, number(&b)?, number(&tolerance)?);

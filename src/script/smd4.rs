@@ -1,6 +1,8 @@
 //! The SMD4 device functions of scripts: `send` returns the data items as strings (throwing on
-//! an error code), `reply` the whole reply as a map, `flags()`, `wait_standby(timeout_ms)`,
-//! `target(address)`. Ctrl-C or a failure while the motor runs sends MOTOR:STOP (the session
+//! an error code), `reply` the whole reply as a map (with the items also decoded, `values`, and
+//! the following lines of a multi-line reply, `lines`),
+//! `flags()`, `wait_standby(timeout_ms)`, `target(address)`, and `parse_number(item)`, which reads
+//! a number in every spelling drives use (`1.0000E+03`, `1.0000+03`, `1000.00`, `0x0888`). Ctrl-C or a failure while the motor runs sends MOTOR:STOP (the session
 //! tracks what the script set moving).
 
 use std::cell::RefCell;
@@ -8,11 +10,11 @@ use std::rc::Rc;
 
 use rhai::{Array, Dynamic, Engine, INT, Map};
 
-use crate::protocol::smd4::{MAX_ADDRESS, Response};
+use crate::protocol::smd4::{DataItem, MAX_ADDRESS, Response, Value, items};
 use crate::session::smd4::{Smd4Exchange, Smd4Session};
 
 use super::common::duration;
-use super::failure::{Fallible, device, refused};
+use super::failure::{Fallible, device, refused, runtime};
 use super::waiting;
 
 /// The session a script talks through.
@@ -66,6 +68,15 @@ pub fn register(engine: &mut Engine, session: &Shared) {
             || Ok(read_flags(&s)?.sflags.standby()),
         )
     });
+    volatile!(
+        engine,
+        "parse_number",
+        |item: &str| -> Fallible<rhai::FLOAT> {
+            items::guess(item.trim())
+                .as_f64()
+                .ok_or_else(|| runtime(format!("'{item}' is not a number")))
+        }
+    );
     let s = session.clone();
     volatile!(engine, "target", move |address: INT| -> Fallible<()> {
         let address = u32::try_from(address)
@@ -105,6 +116,14 @@ fn reply_map(exchange: &Smd4Exchange) -> Map {
         .map(|r| r.data_strings().into_iter().map(Dynamic::from).collect())
         .unwrap_or_default();
     map.insert("data".into(), data.into());
+    let values: Array = response
+        .map(|r| r.data.iter().map(value).collect())
+        .unwrap_or_default();
+    map.insert("values".into(), values.into());
+    let lines: Array = response
+        .map(|r| r.lines.iter().cloned().map(Dynamic::from).collect())
+        .unwrap_or_default();
+    map.insert("lines".into(), lines.into());
     let error = response
         .and_then(|r| r.error.as_ref())
         .map_or(Dynamic::UNIT, |e| INT::from(e.code.code()).into());
@@ -112,4 +131,17 @@ fn reply_map(exchange: &Smd4Exchange) -> Map {
     map.insert("ok".into(), exchange.ok().into());
     map.insert("raw".into(), exchange.raw().into());
     map
+}
+
+/// A data item as its decoded value: numbers as numbers (`1.0000+03` is 1000.0), `0`/`1` of BOOL
+/// items as booleans, named values (`1 (Remote)`) as their number, anything else as received.
+fn value(item: &DataItem) -> Dynamic {
+    match &item.value {
+        Value::Int(i) => Dynamic::from(*i as INT),
+        Value::Uint(u) => INT::try_from(*u).map_or_else(|_| item.raw.clone().into(), Dynamic::from),
+        Value::Float(f) => Dynamic::from(*f as rhai::FLOAT),
+        Value::Bool(b) => Dynamic::from(*b),
+        Value::Named { number, .. } => Dynamic::from(*number as INT),
+        _ => item.raw.clone().into(),
+    }
 }

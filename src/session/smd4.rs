@@ -248,7 +248,7 @@ impl Smd4Session {
                 return Err(SessionError::Timeout {
                     module,
                     timeout: self.options.timeout,
-                    hint: timeout_hint(&partial),
+                    hint: timeout_hint(&partial, request.address, self.smd4.prefix),
                 });
             }
         }
@@ -326,12 +326,29 @@ fn foreign(reply: &Response, request: &Request) -> bool {
     matches!((reply.address, request.address), (Some(got), Some(wanted)) if got != wanted)
 }
 
-fn timeout_hint(partial: &[u8]) -> String {
-    if partial.is_empty() {
-        " (check the port, the baud rate and --address)".to_string()
-    } else {
+/// What may be wrong when nothing came back. A drive in addressing mode ignores packets silently,
+/// so the likely causes differ with and without a prefix.
+fn timeout_hint(partial: &[u8], address: Option<u32>, prefix: PrefixStyle) -> String {
+    if !partial.is_empty() {
         let mut shown = String::new();
         escape_into(partial, &mut shown);
-        format!(" (received only {shown})")
+        return format!(" (received only {shown})");
+    }
+    match address {
+        None => " (check the port and the baud rate; a drive that has seen an @N packet since it \
+                 powered up is in addressing mode and silently ignores packets without a prefix: \
+                 use --address N)"
+            .to_string(),
+        Some(a) => {
+            let other = match prefix {
+                PrefixStyle::Attached => "with --prefix-comma",
+                PrefixStyle::Comma => "without --prefix-comma",
+            };
+            format!(
+                " (check the port, the baud rate and that the drive's COMS:SERIAL:SLAVEADDR is \
+                 {a}; a drive that does not understand this prefix form ignores the packet: try \
+                 {other})"
+            )
+        }
     }
 }

@@ -110,8 +110,18 @@ pub fn write_help(topic: &str, session: &Session, out: &mut dyn Write) -> io::Re
             if let Ok(h) = helpers::find(word, dialect) {
                 writeln!(out, "{:<30} {}", h.usage, h.summary)
             } else if let Some(spec) = s.spec().commands.get(word) {
-                writeln!(out, "{}", hints::usage(spec))?;
-                writeln!(out, "  {}", hints::hint(spec))
+                let usage = hints::usage(spec);
+                let hint = hints::hint(spec);
+                writeln!(out, "{usage}")?;
+                writeln!(
+                    out,
+                    "  {}",
+                    hint.strip_prefix(&usage).unwrap_or(&hint).trim_start()
+                )?;
+                if spec.uncertain && !spec.uncertain_reason.is_empty() {
+                    writeln!(out, "  uncertain: {}", spec.uncertain_reason)?;
+                }
+                Ok(())
             } else {
                 writeln!(out, "no help on '{topic}'; :help lists topics")
             }

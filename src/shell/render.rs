@@ -1,6 +1,7 @@
 //! Replies decoded for people: status meaning, value, parameter name and unit.
 
 use crate::profile::Profile;
+use crate::protocol::smd4::commands::trim_number;
 use crate::protocol::smd4::{Smd4Spec, Value};
 use crate::protocol::tmcl::commands::{Field, OperandKind, ParamUse};
 use crate::protocol::tmcl::line::Op;
@@ -61,6 +62,7 @@ pub fn decode_smd4(exchange: &Smd4Exchange, spec: &Smd4Spec) -> Decoded {
         .map(|u| format!(" {u}"))
         .unwrap_or_default();
     let mut text = if let Some((user, real)) = response.user_real() {
+        let (user, real) = (trim_number(user), trim_number(real));
         format!("{user}{unit} requested, {real}{unit} real")
     } else if response.data.is_empty() {
         "ok".to_string()
@@ -70,19 +72,20 @@ pub fn decode_smd4(exchange: &Smd4Exchange, spec: &Smd4Spec) -> Decoded {
             .iter()
             .map(|d| match &d.value {
                 Value::Named { number, name } => format!("{number} ({name})"),
+                // 5.0516E-01, 5.0516-01 and 0.50516 alike read 0.50516.
+                Value::Float(x) => trim_number(*x),
                 _ => d.raw.clone(),
             })
             .collect();
         format!("{}{unit}", items.join(", "))
     };
+    // The flags belong to the first line; a listing follows as sent.
+    text = format!("{text} {flags}");
     for line in &response.lines {
         text.push('\n');
         text.push_str(line);
     }
-    Decoded {
-        text: format!("{text} {flags}"),
-        ok: true,
-    }
+    Decoded { text, ok: true }
 }
 
 /// Decodes an exchange using the profile's names and units.

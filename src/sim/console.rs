@@ -11,12 +11,24 @@ use super::inprocess::SharedDevice;
 /// The console commands, for `--help` and `help`.
 pub const HELP: &str = "\
 Console commands (one per line on stdin; each is answered by one line, `ok ...` or `error: ...`):
+ TMCL module bus (--protocol tmcl):
   input PORT 0|1                     set a digital input (GIO bank 0)
   analog PORT VALUE                  set an analog input (GIO bank 1, 0..1023)
   switch left|right|home POS|off     move a virtual switch (physical microsteps) or disconnect it
   output PORT                        show an output (SIO bank 2)
   motor                              show position, target, velocity, target reached
   @N COMMAND                         any of the above for the module with factory address N
+ SMD4 drive (--protocol smd4):
+  limit pos|neg 0|1                  set the level of a limit input (active after LIMIT:POL+/-)
+  exten 0|1                          set the external enable input
+  joystick 0|1                       plug a joystick in or out
+  fault BIT|NAME                     latch an EFLAGS bit (e.g. 2 or TempOver); the motor stops
+  flash-failure on|off               make STORE fail with -5 (worn-out flash) or work again
+  power-cycle                        restart from the stored configuration
+  motor                              show position, velocity, standby, target velocity reached
+  flags                              show SFLAGS, EFLAGS and whether addressing mode is on
+  setting MNEMONIC                   show a working setting (e.g. COMS:SERIAL:SLAVEADDR)
+ Both:
   drop RATE | corrupt RATE           drop or corrupt replies from now on (RATE 0..1)
   delay RATE MS                      hold replies back by MS milliseconds
   silent on|off                      stop or resume answering (commands still execute)
@@ -75,7 +87,7 @@ impl Console {
         match words.as_slice() {
             [] => Answer::Ok(String::new()),
             ["quit" | "exit"] => Answer::Quit,
-            ["help"] => Answer::Ok(HELP.replace('\n', "\n   ")),
+            ["help"] => Answer::Ok(summary()),
             ["time"] => Answer::Ok(format!("{:.6} s", self.clock.now().as_secs_f64())),
             ["advance", amount] => match (&self.manual, parse_duration(amount)) {
                 (None, _) => Answer::Error("advance needs --manual-clock".into()),
@@ -96,6 +108,25 @@ impl Console {
             }
         }
     }
+}
+
+/// The answer to `help`: the command names on one line (the console answers every command with
+/// one line; `tmclsh sim --help` describes them).
+fn summary() -> String {
+    let mut names: Vec<&str> = Vec::new();
+    for line in HELP.lines().filter(|l| l.starts_with("  ")) {
+        let syntax = line.trim().split("  ").next().unwrap_or_default();
+        for form in syntax.split(" | ") {
+            let name = form.split_whitespace().next().unwrap_or_default();
+            if !name.is_empty() && !names.contains(&name) {
+                names.push(name);
+            }
+        }
+    }
+    format!(
+        "commands: {} (tmclsh sim --help describes them)",
+        names.join(" ")
+    )
 }
 
 /// `2s`, `250ms`, `10us`, `1.5` (seconds); decimal digits are taken exactly, to the
@@ -194,6 +225,22 @@ mod tests {
                 .line()
                 .starts_with("error: unknown command 'fly'")
         );
+        let help = console.run("help").line();
+        assert!(!help.contains('\n'), "one line: {help}");
+        for name in [
+            "input",
+            "@N",
+            "limit",
+            "flash-failure",
+            "drop",
+            "corrupt",
+            "quit",
+        ] {
+            assert!(
+                help.split_whitespace().any(|w| w == name),
+                "{name} in {help}"
+            );
+        }
         assert_eq!(console.run("quit"), Answer::Quit);
         assert_eq!(console.run("").line(), "ok");
     }

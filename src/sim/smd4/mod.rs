@@ -14,6 +14,7 @@
 //! else — other addresses, packets without prefix, malformed packets — is ignored silently.
 
 pub mod config;
+mod control;
 mod exec;
 pub mod motion;
 pub mod options;
@@ -30,6 +31,9 @@ pub use config::{ConfigStore, FileStore, MemoryStore, Setting, Settings};
 pub use motion::Snapshot;
 use motion::{Goal, Motion, Profile};
 pub use options::{PositionFormat, PrefixAcceptance, Smd4Options};
+
+/// A sink for log lines (`tmclsh sim --verbose`): lines received, replies sent, lines ignored.
+pub type LogSink = Box<dyn FnMut(&str) + Send>;
 
 /// Longest line accepted; longer ones are malformed packets (the document gives no limit).
 pub const MAX_LINE: usize = 1024;
@@ -93,6 +97,7 @@ pub struct Smd4Sim {
     bake_started: Option<f64>,
     bake_elapsed: f64,
     flash_fails: bool,
+    log: Option<LogSink>,
 }
 
 impl Smd4Sim {
@@ -145,9 +150,22 @@ impl Smd4Sim {
             bake_started: None,
             bake_elapsed: 0.0,
             flash_fails: false,
+            log: None,
         };
         sim.power_up(0.0);
         sim
+    }
+
+    /// Logs traffic to `log` (lines received, replies sent, lines ignored and why).
+    pub fn with_log(mut self, log: LogSink) -> Smd4Sim {
+        self.log = Some(log);
+        self
+    }
+
+    fn log(&mut self, t: f64, line: impl FnOnce() -> String) {
+        if let Some(log) = self.log.as_mut() {
+            log(&format!("{t:12.6} smd4 {}", line()));
+        }
     }
 
     /// Power cycle at `now`: settings from the stored set, counters zero, errors cleared (the
@@ -335,11 +353,13 @@ impl Smd4Sim {
 
     /// Handles one received line at time `t`.
     fn line(&mut self, t: f64, line: &[u8]) {
+        let text = String::from_utf8_lossy(line).into_owned();
+        self.log(t, || format!("<- {text:?}"));
         if self.silent {
+            self.log(t, || "ignored: programming mode (SYS:PROG)".into());
             return;
         }
         self.update(t);
-        let text = String::from_utf8_lossy(line);
         let parsed = if line.len() > MAX_LINE {
             None
         } else {
@@ -352,10 +372,15 @@ impl Smd4Sim {
                 (request, address)
             }
             Some((request, None)) if !self.addressed => (request, None),
-            _ if self.addressed => return,
+            _ if self.addressed => {
+                self.log(t, || {
+                    "ignored: addressing mode answers only well-formed @own packets".into()
+                });
+                return;
+            }
             _ => {
                 let reply = self.failure(t, None, crate::protocol::smd4::ErrorCode::PacketError);
-                self.output.extend(reply);
+                self.emit(t, reply);
                 return;
             }
         };
@@ -364,13 +389,28 @@ impl Smd4Sim {
             None => true,
             Some(0) => false,
             Some(a) if a == own => true,
-            Some(_) => return,
+            Some(a) => {
+                self.log(t, || format!("ignored: for drive @{a}, this is @{own}"));
+                return;
+            }
         };
         let outcome = self.execute(t, &request);
         if answer {
             let reply = self.render(t, address, outcome);
-            self.output.extend(reply);
+            self.emit(t, reply);
+        } else {
+            self.log(t, || "executed without reply (broadcast)".into());
         }
+    }
+
+    /// Queues a reply for the host (and logs it).
+    fn emit(&mut self, t: f64, reply: Vec<u8>) {
+        if !reply.is_empty() {
+            self.log(t, || {
+                format!("-> {:?}", String::from_utf8_lossy(&reply).trim_end())
+            });
+        }
+        self.output.extend(reply);
     }
 }
 
@@ -399,5 +439,9 @@ impl Device for Smd4Sim {
 
     fn next_due(&self, now: Duration) -> Option<Duration> {
         (!self.output.is_empty()).then_some(now)
+    }
+
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+        control::run(self, now, command)
     }
 }
