@@ -60,6 +60,10 @@ pub fn run(shell: &mut Shell, mut lines: Lines, out: &mut dyn Write, err: &mut d
     let mut number = 0;
     let exit = loop {
         let line = match lines.next() {
+            // Ctrl-C at the very moment the input ended still counts as Ctrl-C.
+            None if interrupt::pending() => {
+                break fail(shell, &SessionError::Interrupted, err, None);
+            }
             None => break Exit::Success,
             Some(Ok(line)) => line,
             Some(Err(e)) => break fail(shell, &e, err, None),
