@@ -6,6 +6,8 @@ mod util;
 mod asm;
 mod cli;
 mod commission;
+#[cfg(feature = "hardware")]
+mod hardware;
 mod program;
 mod repl;
 mod script;
