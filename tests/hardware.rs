@@ -4,6 +4,9 @@
 
 use crate::util::{code, run, stderr, stdout};
 
+/// One module, one port: the tests take turns.
+static PORT: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 fn port() -> (String, String) {
     let port = std::env::var("TMCLSH_TEST_PORT")
         .expect("set TMCLSH_TEST_PORT to the module's serial port");
@@ -13,6 +16,7 @@ fn port() -> (String, String) {
 
 #[test]
 fn reads_parameters_and_the_firmware_version() {
+    let _turn = PORT.lock().unwrap_or_else(|e| e.into_inner());
     let (port, baud) = port();
     let out = run(&[
         "--port",
@@ -38,6 +42,7 @@ fn reads_parameters_and_the_firmware_version() {
 
 #[test]
 fn a_snapshot_can_be_saved() {
+    let _turn = PORT.lock().unwrap_or_else(|e| e.into_inner());
     let (port, baud) = port();
     let file = crate::util::tempdir().join("module.toml");
     let out = run(&[
