@@ -19,6 +19,16 @@ enum Scan {
     More,
 }
 
+/// How far one exchange has got through the receive buffer. Bytes before `start` have been
+/// dealt with (the echo, lines already reported), so a later scan neither reports them again nor
+/// reads them anew once the echo has been seen: a stale reply that came before the echo stays
+/// ignored when the echo arrives in a later read.
+#[derive(Default)]
+struct Progress {
+    echo_seen: bool,
+    start: usize,
+}
+
 impl TmclSession {
     /// Sends `text` to `module` and waits up to the session timeout for its reply.
     pub(super) fn ascii_request(
@@ -52,16 +62,9 @@ impl TmclSession {
             .modules
             .get(&module)
             .is_some_and(|m| m.echo_known && m.echo != super::Echo::None);
-        let mut echo_seen = false;
-        let mut scanned = 0;
+        let mut progress = Progress::default();
         loop {
-            match self.scan(
-                text.as_bytes(),
-                c,
-                echo_required,
-                &mut echo_seen,
-                &mut scanned,
-            )? {
+            match self.scan(text.as_bytes(), c, echo_required, &mut progress)? {
                 Scan::Reply(reply, raw, used) => {
                     let bytes = self.wire.rx.take(used);
                     let meaning = format!("{c}: {}, value {}", reply.status, reply.value);
@@ -80,24 +83,24 @@ impl TmclSession {
                 Scan::More => {}
             }
             if !self.wire.fill(deadline)? {
-                return Err(self.timed_out(c, timeout, echo_seen));
+                return Err(self.timed_out(c, timeout, progress.echo_seen));
             }
         }
     }
 
-    /// Looks for this exchange's reply in the receive buffer. Lines that are not it are reported
-    /// once (`scanned` remembers how far reporting got).
+    /// Looks for this exchange's reply in the receive buffer, from where the last scan stopped.
+    /// Lines that are not it are reported once.
     fn scan(
         &mut self,
         sent: &[u8],
         module: char,
         echo_required: bool,
-        echo_seen: &mut bool,
-        scanned: &mut usize,
+        progress: &mut Progress,
     ) -> Result<Scan, SessionError> {
         let buf = self.wire.rx.bytes();
-        let mut pos = 0;
+        let mut pos = progress.start;
         loop {
+            progress.start = pos;
             while pos < buf.len() && matches!(buf[pos], b'\r' | b'\n' | 0) {
                 pos += 1;
             }
@@ -105,9 +108,9 @@ impl TmclSession {
             if rest.is_empty() {
                 return Ok(Scan::More);
             }
-            if !*echo_seen {
+            if !progress.echo_seen {
                 if rest.starts_with(sent) {
-                    *echo_seen = true;
+                    progress.echo_seen = true;
                     pos += sent.len();
                     continue;
                 }
@@ -121,27 +124,22 @@ impl TmclSession {
             let line = &rest[..end];
             let line_end = pos + end + 1;
             let text = String::from_utf8_lossy(line).into_owned();
-            let report = line_end > *scanned;
             match parse_reply(&text) {
-                Some(reply) if reply.module == module && (*echo_seen || !echo_required) => {
+                Some(reply) if reply.module == module && (progress.echo_seen || !echo_required) => {
                     return Ok(Scan::Reply(reply, text, line_end));
                 }
                 Some(reply) if reply.module == module => {
-                    if report {
-                        self.wire.notices.push(format!(
-                            "ignored a reply that came before the echo (stale?): {text}"
-                        ));
-                    }
+                    self.wire.notices.push(format!(
+                        "ignored a reply that came before the echo (stale?): {text}"
+                    ));
                 }
                 Some(reply) => {
-                    if report {
-                        self.wire.notices.push(format!(
-                            "ignored a reply from module {} while waiting for module {module}: {text}",
-                            reply.module
-                        ));
-                    }
+                    self.wire.notices.push(format!(
+                        "ignored a reply from module {} while waiting for module {module}: {text}",
+                        reply.module
+                    ));
                 }
-                None if !*echo_seen && looks_like_echo(line, sent) => {
+                None if !progress.echo_seen && looks_like_echo(line, sent) => {
                     let sent_text = String::from_utf8_lossy(sent).into_owned();
                     self.wire.rx.take(line_end);
                     return Err(SessionError::Link(format!(
@@ -150,16 +148,13 @@ impl TmclSession {
                     )));
                 }
                 None => {
-                    if report {
-                        let mut shown = String::new();
-                        escape_into(line, &mut shown);
-                        self.wire
-                            .notices
-                            .push(format!("ignored unexpected data from the line: {shown}"));
-                    }
+                    let mut shown = String::new();
+                    escape_into(line, &mut shown);
+                    self.wire
+                        .notices
+                        .push(format!("ignored unexpected data from the line: {shown}"));
                 }
             }
-            *scanned = (*scanned).max(line_end);
             pos = line_end;
         }
     }
