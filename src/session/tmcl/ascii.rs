@@ -53,7 +53,7 @@ impl TmclSession {
         let mut line = Vec::with_capacity(text.len() + 1);
         line.extend_from_slice(text.as_bytes());
         line.push(b'\r');
-        self.wire.send(&line, &format!("to module {c}"))?;
+        self.wire.send(&line, format_args!("to module {c}"))?;
         let timeout = wait
             .unwrap_or(self.options.timeout)
             .min(self.options.timeout);
@@ -66,9 +66,10 @@ impl TmclSession {
         loop {
             match self.scan(text.as_bytes(), c, echo_required, &mut progress)? {
                 Scan::Reply(reply, raw, used) => {
-                    let bytes = self.wire.rx.take(used);
-                    let meaning = format!("{c}: {}, value {}", reply.status, reply.value);
-                    self.wire.log(Entry::Received, &bytes, &meaning);
+                    self.wire.log_received(
+                        used,
+                        format_args!("{c}: {}, value {}", reply.status, reply.value),
+                    );
                     return Ok(Exchange {
                         module,
                         sent: text.to_string(),
