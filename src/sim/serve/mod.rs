@@ -34,12 +34,31 @@ impl Waker {
 
 /// The receiving end of a [`Waker`], owned by the server.
 #[derive(Debug)]
-pub struct WakeReceiver(UnixStream);
+pub struct WakeReceiver {
+    stream: UnixStream,
+    /// False once every [`Waker`] is gone (the console ended with its input): the socket then
+    /// reads as ready for ever and must not be polled any more, or the server would spin.
+    open: bool,
+}
 
 impl WakeReceiver {
     fn drain(&mut self) {
         let mut buf = [0u8; 64];
-        while matches!(self.0.read(&mut buf), Ok(n) if n > 0) {}
+        loop {
+            match self.stream.read(&mut buf) {
+                Ok(0) => {
+                    self.open = false;
+                    break;
+                }
+                Ok(_) => {}
+                Err(_) => break,
+            }
+        }
+    }
+
+    /// The descriptor to wait on, while a waker may still write to it.
+    fn fd(&self) -> Option<BorrowedFd<'_>> {
+        self.open.then(|| self.stream.as_fd())
     }
 }
 
@@ -48,7 +67,13 @@ pub fn wake_pair() -> io::Result<(Waker, WakeReceiver)> {
     let (tx, rx) = UnixStream::pair()?;
     tx.set_nonblocking(true)?;
     rx.set_nonblocking(true)?;
-    Ok((Waker(Arc::new(tx)), WakeReceiver(rx)))
+    Ok((
+        Waker(Arc::new(tx)),
+        WakeReceiver {
+            stream: rx,
+            open: true,
+        },
+    ))
 }
 
 /// Why serving one connection ended.
@@ -135,13 +160,23 @@ impl Server {
                 timeout = Some(Duration::from_millis(1));
             }
             let (port_ready, wake_ready, extra_ready) = {
-                let wake = self.wake.0.as_fd();
+                // The port first, then the waker and the extra descriptor where there are any.
+                let others = [self.wake.fd(), extra];
+                let unused = || PollFd::new(port.as_fd(), PollFlags::empty());
                 let mut fds = [
                     PollFd::new(port.as_fd(), PollFlags::POLLIN),
-                    PollFd::new(wake, PollFlags::POLLIN),
-                    PollFd::new(extra.unwrap_or(wake), PollFlags::POLLIN),
+                    unused(),
+                    unused(),
                 ];
-                let used = if extra.is_some() { 3 } else { 2 };
+                let mut at = [None; 2];
+                let mut used = 1;
+                for (slot, fd) in others.into_iter().enumerate() {
+                    if let Some(fd) = fd {
+                        fds[used] = PollFd::new(fd, PollFlags::POLLIN);
+                        at[slot] = Some(used);
+                        used += 1;
+                    }
+                }
                 match wait(&mut fds[..used], timeout) {
                     Ok(_) => {}
                     Err(Errno::EINTR) => continue,
@@ -152,11 +187,8 @@ impl Server {
                         r.intersects(PollFlags::POLLIN | PollFlags::POLLHUP | PollFlags::POLLERR)
                     })
                 };
-                (
-                    ready(&fds[0]),
-                    ready(&fds[1]),
-                    extra.is_some() && ready(&fds[2]),
-                )
+                let ready_at = |i: Option<usize>| i.is_some_and(|i| ready(&fds[i]));
+                (ready(&fds[0]), ready_at(at[0]), ready_at(at[1]))
             };
             if wake_ready {
                 self.wake.drain();
@@ -208,4 +240,27 @@ fn wait(fds: &mut [PollFd], timeout: Option<Duration>) -> nix::Result<nix::libc:
 fn precise_timers() {
     #[cfg(any(target_os = "linux", target_os = "android"))]
     let _ = nix::sys::prctl::set_timerslack(1);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_waker_is_polled_until_every_waker_is_gone() {
+        let (waker, mut receiver) = wake_pair().unwrap();
+        let second = waker.clone();
+        waker.wake();
+        receiver.drain();
+        assert!(receiver.fd().is_some(), "a wake-up is not the end");
+        drop(waker);
+        receiver.drain();
+        assert!(receiver.fd().is_some(), "a clone can still wake the server");
+        drop(second);
+        receiver.drain();
+        assert!(
+            receiver.fd().is_none(),
+            "a closed waker reads as ready for ever; polling it would spin"
+        );
+    }
 }
