@@ -174,9 +174,12 @@ fn notes(rows: &[Row]) -> String {
              (nanosecond ppoll timeouts, timer slack 1 ns) and tmclsh sends the next request as \
              soon as it has read the reply's last byte, so each transaction loses what it takes \
              the last byte to reach the client after its wire time and the next request to reach \
-             the simulator: the timer lateness row (the simulator's wake-up for that byte), the \
-             pty floor (the trip there and back) and tmclsh's own turn-around (row 2's CPU), plus \
-             any wait for a CPU while other work runs (load average above). At 115200 baud a \
+             the simulator: the simulator's timed wake-up for that byte (timer lateness row), \
+             the trip through the pty to tmclsh, tmclsh's turn-around (row 2's CPU) and the trip \
+             back, each trip a kernel worker and a process to wake. Between the bytes of a paced \
+             line the CPUs fall idle, and on this virtual machine waking an idle CPU costs about \
+             what the timer lateness row shows, several times per transaction; any wait for a \
+             CPU while other work runs (load average above) comes on top. At 115200 baud a \
              transaction lasts 1.6–2.5 ms, so 97 % leaves 50–75 µs for all of that; at 9600 baud \
              ten times as much.\n",
         );
