@@ -10,7 +10,7 @@ use std::time::Instant;
 
 use nix::sys::termios::{SetArg, cfmakeraw, tcgetattr, tcsetattr};
 
-use crate::proc::{Finished, Sim, median, repo_file, run, tmclsh};
+use crate::proc::{Finished, Sim, median, repo_file, run, runs, tmclsh};
 use crate::report::Row;
 
 /// How the rows are run.
@@ -100,8 +100,9 @@ pub fn measure(plan: &Plan) -> Vec<Row> {
     let floor = median(&floor) * 1e6;
     let (us, cpu) = ours.us();
     let name = format!(
-        "2. Host overhead, unpaced pty (N = {}, median of {})",
-        plan.n, plan.reps
+        "2. Host overhead, unpaced pty (N = {}, {})",
+        plan.n,
+        runs(plan.reps)
     );
     let measured = format!("{us:.1} µs/tx (CPU {cpu:.1} µs)");
     let mut rows = Vec::new();
@@ -112,15 +113,15 @@ pub fn measure(plan: &Plan) -> Vec<Row> {
             name,
             measured,
             reference: format!("pyserial read_until loop {plain:.1} µs/tx (CPU {plain_cpu:.1} µs)"),
-            ratio: format!("{:.1}× its rate", plain / us),
+            ratio: format!("{:.1}× the peer's rate", plain / us),
             target: "≤ 50 µs, ≥ 3×".into(),
             met: Some(us <= 50.0 && plain / us >= 3.0),
         });
         rows.push(Row {
-            name: "   the same against a tuned pyserial loop (reads what has arrived)".into(),
+            name: "↳ the same against a tuned pyserial loop (reads what has arrived)".into(),
             measured: format!("{us:.1} µs/tx"),
             reference: format!("tuned pyserial loop {tuned:.1} µs/tx (CPU {tuned_cpu:.1} µs)"),
-            ratio: format!("{:.1}× its rate", tuned / us),
+            ratio: format!("{:.1}× the peer's rate", tuned / us),
             target: "—".into(),
             met: None,
         });
@@ -136,8 +137,8 @@ pub fn measure(plan: &Plan) -> Vec<Row> {
     }
     rows.push(Row {
         name: format!(
-            "   pty round-trip floor: 10 bytes out, 19 back, no program (median of {})",
-            plan.reps
+            "↳ pty round-trip floor: 10 bytes out, 19 back, no program ({})",
+            runs(plan.reps)
         ),
         measured: format!("{floor:.1} µs/round trip"),
         reference: "—".into(),
@@ -148,10 +149,7 @@ pub fn measure(plan: &Plan) -> Vec<Row> {
     let log_us = median(&logged) * 1e6;
     let extra = (log_us / us - 1.0) * 100.0;
     rows.push(Row {
-        name: format!(
-            "6. Transcript cost: row 2 with --log (median of {})",
-            plan.reps
-        ),
+        name: format!("6. Transcript cost: row 2 with --log ({})", runs(plan.reps)),
         measured: format!("{log_us:.1} µs/tx"),
         reference: format!("without --log {us:.1} µs/tx"),
         ratio: format!("{extra:+.1} %"),

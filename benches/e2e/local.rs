@@ -23,7 +23,10 @@ pub fn in_process(n: u32, reps: usize) -> Row {
     let seconds: Vec<f64> = (0..reps).map(|_| gap_loop(n, None).number(0)).collect();
     let per_second = f64::from(n) / median(&seconds);
     Row {
-        name: format!("3. In-process: gap() in a script loop (N = {n}, median of {reps})"),
+        name: format!(
+            "3. In-process: gap() in a script loop (N = {n}, {})",
+            crate::proc::runs(reps)
+        ),
         measured: format!(
             "{} tx/s ({:.2} µs/tx)",
             thousands(per_second),
@@ -56,7 +59,10 @@ pub fn start_up(runs: usize, python: bool) -> Row {
         }
     }
     let ours = median(&ours);
-    let name = format!("4. Start-up: tmclsh -c \"GAP 1, 0\", whole process (median of {runs})");
+    let name = format!(
+        "4. Start-up: tmclsh -c \"GAP 1, 0\", whole process ({})",
+        crate::proc::runs(runs)
+    );
     let (reference, ratio) = if python {
         let theirs = median(&theirs);
         (

@@ -187,3 +187,11 @@ pub fn median(values: &[f64]) -> f64 {
         (sorted[mid - 1] + sorted[mid]) / 2.0
     }
 }
+
+/// "1 run" or "median of 5 runs", for the row names.
+pub fn runs(reps: usize) -> String {
+    match reps {
+        1 => "1 run".into(),
+        n => format!("median of {n} runs"),
+    }
+}

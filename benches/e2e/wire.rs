@@ -77,8 +77,10 @@ pub fn measure(lines: &[Line]) -> Vec<Row> {
             let efficiency = limit / measured * 100.0;
             rows.push(Row {
                 name: format!(
-                    "1. Wire efficiency, {} baud, {mode} (N = {}, median of {})",
-                    line.baud, line.n, line.reps
+                    "1. Wire efficiency, {} baud, {mode} (N = {}, {})",
+                    line.baud,
+                    line.n,
+                    crate::proc::runs(line.reps)
                 ),
                 measured: format!("{:.3} ms/tx", measured * 1e3),
                 reference: format!("limit {:.3} ms/tx ({bytes} byte times)", limit * 1e3),
@@ -90,8 +92,7 @@ pub fn measure(lines: &[Line]) -> Vec<Row> {
     }
     let late = timer_lateness(2000) * 1e6;
     rows.push(Row {
-        name: "   timer wake-up lateness: ppoll for one byte time at 115200 baud, slack 1 ns"
-            .into(),
+        name: "↳ timer wake-up lateness: ppoll for one byte time at 115200 baud, slack 1 ns".into(),
         measured: format!("{late:.1} µs (median of 2000)"),
         reference: "—".into(),
         ratio: "—".into(),
