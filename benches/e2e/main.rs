@@ -57,7 +57,7 @@ impl Plan {
                 },
             ],
             host_n: 10_000,
-            host_reps: 5,
+            host_reps: 7,
             in_process_n: 100_000,
             in_process_reps: 5,
             start_up_runs: 51,

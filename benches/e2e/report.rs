@@ -133,8 +133,9 @@ const METHOD: &str = "
 
 All rows use the release binary cargo builds for the benchmark. Transactions are `GAP 1, 0`
 (`gap(1, 0)` in `benches/e2e/gap_loop.rhai`), timed inside the script around the loop, so process
-start-up and entering ASCII mode are not counted; medians over repetitions, which alternate
-between the programs compared so that a busy moment of the machine hits each of them.
+start-up and entering ASCII mode are not counted. Times are medians over repetitions; the
+programs compared run in turns within each repetition, and ratios are the median of the ratios
+within the repetitions, so that a busy (or idle) spell of the machine hits both sides alike.
 
 1. **Wire efficiency**: `tmclsh run` against `tmclsh sim --pty --baud B`, echo mode set with
    `sgp(67, 0, …)`. The limit of one transaction is the bytes that must pass one after the other
@@ -156,7 +157,8 @@ between the programs compared so that a busy moment of the machine hits each of 
    `python3 -c \"import serial\"`, the least a Python tool must do; runs alternate.
 5. **Memory**: peak resident set size (wait4 `ru_maxrss`) of the loop with `--log` at N and at
    N/10; flat means under 5 % growth.
-6. **Transcript cost**: row 2 with `--log FILE`, alternating with row 2's runs.
+6. **Transcript cost**: row 2 with `--log FILE`, run right before or after (in turns) each of
+   row 2's runs; CPU as in row 2.
 ";
 
 /// What the reader should know about targets that were missed.
@@ -191,9 +193,11 @@ fn notes(rows: &[Row]) -> String {
              kernel moving the bytes through the pty and waking the two processes (a kernel \
              worker and a process on each side); tmclsh and the simulator add the difference \
              shown there, and the CPU column is what tmclsh itself spends, mostly in its four \
-             system calls per transaction. The same floor is in the pyserial loop's time, so the \
-             ratio cannot exceed the peer's time divided by the floor, however little tmclsh \
-             spends.\n",
+             system calls per transaction. The floor depends on whether the CPUs were idle: on \
+             this virtual machine a wake-up from idle costs about what the timer lateness row \
+             shows, so an otherwise idle machine has a higher floor than a busy one. The same \
+             floor is in the pyserial loop's time, so the ratio cannot exceed the peer's time \
+             divided by the floor, however little tmclsh spends.\n",
         );
     }
     if missed("6.") {
