@@ -145,12 +145,14 @@ within the repetitions, so that a busy (or idle) spell of the machine hits both 
    request), character echo `R + 1 + P` (each character is echoed while the next is on its way in;
    only the echo of the final CR follows the request). Efficiency = limit / measured.
 2. **Host overhead**: the same loop over a pty to `tmclsh sim --pty` without pacing, against
-   `benches/peers/pyserial_loop.py` doing the same transactions on the same simulator (it enters
-   ASCII mode with command 139, reads the echo and the reply lines with whatever has arrived, not
-   byte by byte, and checks status and value). CPU per transaction: tmclsh's user + system time
-   (wait4) of the loop minus a run without transactions; the peer's `time.process_time()` over
-   its loop. The floor row is a bare pty round trip (two threads, 10 bytes one way, 19 back): what
-   the kernel costs before any program does anything.
+   `benches/peers/pyserial_loop.py` doing the same transactions on the same simulator: it enters
+   ASCII mode with command 139, reads the echo and the reply line and checks status and value,
+   reading each line with `read_until(b\"\\r\")` as pyserial's documentation shows (the peer of the
+   target) and, in the row below, tuned to read whatever has arrived (`in_waiting`). CPU per
+   transaction: tmclsh's user + system time (wait4) of the loop minus a run without
+   transactions; the peer's `time.process_time()` over its loop. The floor row is a bare pty
+   round trip (two threads, 10 bytes one way, 19 back): what the kernel costs before any program
+   does anything.
 3. **In-process**: the same script on the built-in simulator (no OS I/O): parse, Rhai, session
    and simulator.
 4. **Start-up**: `tmclsh -c \"GAP 1, 0\"` on the built-in simulator, spawn to exit, against
