@@ -20,6 +20,11 @@ impl Rx {
         self.buf.drain(..n.min(self.buf.len())).collect()
     }
 
+    /// Drops the first `n` bytes, keeping the buffer's capacity.
+    pub fn consume(&mut self, n: usize) {
+        self.buf.drain(..n.min(self.buf.len()));
+    }
+
     pub fn clear(&mut self) -> Vec<u8> {
         std::mem::take(&mut self.buf)
     }

@@ -181,7 +181,7 @@ impl Smd4Session {
         self.wire.drain()?;
         self.wire.send(
             &request.wire(self.smd4.prefix),
-            &format!("to {}", drive_name(request.address)),
+            format_args!("to {}", drive_name(request.address)),
         )?;
         let silent = request.is_broadcast() || spec.is_some_and(|s| s.no_response);
         let response = if silent {

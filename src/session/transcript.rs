@@ -7,6 +7,7 @@
 //! 2026-11-22T10:15:02.123Z rx "AGAP 1, 0\rBA 100 -5000\r" ; A: 100 (successfully executed), value -5000
 //! ```
 
+use std::fmt::{Display, Write as _};
 use std::fs::{File, OpenOptions};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -58,20 +59,23 @@ impl Transcript {
     }
 
     /// Records bytes or a note with its meaning. Write errors are returned, not hidden.
-    pub fn record(&mut self, entry: Entry, bytes: &[u8], meaning: &str) -> io::Result<()> {
+    pub fn record(&mut self, entry: Entry, bytes: &[u8], meaning: impl Display) -> io::Result<()> {
         self.line.clear();
-        self.line
-            .push_str(&humantime::format_rfc3339_millis(SystemTime::now()).to_string());
-        self.line.push(' ');
-        self.line.push_str(entry.tag());
-        self.line.push(' ');
+        // Writing into a String cannot fail.
+        let _ = write!(
+            self.line,
+            "{} {} ",
+            humantime::format_rfc3339_millis(SystemTime::now()),
+            entry.tag()
+        );
         if entry == Entry::Note {
-            self.line.push_str(meaning);
+            let _ = write!(self.line, "{meaning}");
         } else {
             escape_into(bytes, &mut self.line);
-            if !meaning.is_empty() {
-                self.line.push_str(" ; ");
-                self.line.push_str(meaning);
+            let before = self.line.len();
+            let _ = write!(self.line, " ; {meaning}");
+            if self.line.len() == before + 3 {
+                self.line.truncate(before); // no meaning
             }
         }
         self.line.push('\n');

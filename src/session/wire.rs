@@ -2,6 +2,7 @@
 //! the notices. Every byte goes through here, so every byte reaches the transcript, and every wait
 //! is sliced so Ctrl-C is noticed promptly.
 
+use std::fmt::Display;
 use std::time::{Duration, Instant};
 
 use crate::link::{Link, LinkError};
@@ -31,8 +32,9 @@ impl Wire {
         }
     }
 
-    /// Writes bytes to the link and the transcript.
-    pub fn send(&mut self, bytes: &[u8], meaning: &str) -> Result<(), SessionError> {
+    /// Writes bytes to the link and the transcript. The meaning is formatted only when a
+    /// transcript is being written (pass `format_args!`), so it costs nothing otherwise.
+    pub fn send(&mut self, bytes: &[u8], meaning: impl Display) -> Result<(), SessionError> {
         self.log(Entry::Sent, bytes, meaning);
         self.link.send(bytes).map_err(SessionError::from)?;
         self.last_sent = Some(Instant::now());
@@ -95,16 +97,23 @@ impl Wire {
                 Err(e) => return Err(e.into()),
             }
         }
-        let stale = self.rx.clear();
-        let meaningful = stale.iter().any(|b| !matches!(b, b'\r' | b'\n' | 0));
-        if meaningful {
-            self.log(
-                Entry::Received,
-                &stale,
-                "arrived outside any exchange, discarded",
-            );
+        let stale = self.rx.bytes();
+        if stale.iter().any(|b| !matches!(b, b'\r' | b'\n' | 0)) {
+            self.log_received(stale.len(), "arrived outside any exchange, discarded");
         }
+        self.rx.consume(self.rx.len());
         Ok(())
+    }
+
+    /// Records the first `n` bytes of the receive buffer as received and removes them.
+    pub fn log_received(&mut self, n: usize, meaning: impl Display) {
+        if let Some(t) = &mut self.transcript {
+            let n = n.min(self.rx.len());
+            if let Err(e) = t.record(Entry::Received, &self.rx.bytes()[..n], meaning) {
+                self.close_transcript(&e);
+            }
+        }
+        self.rx.consume(n);
     }
 
     /// A remark in the transcript.
@@ -113,14 +122,21 @@ impl Wire {
     }
 
     /// Records bytes or a note; a transcript that cannot be written is closed with a notice.
-    pub fn log(&mut self, entry: Entry, bytes: &[u8], meaning: &str) {
+    pub fn log(&mut self, entry: Entry, bytes: &[u8], meaning: impl Display) {
         if let Some(t) = &mut self.transcript {
             if let Err(e) = t.record(entry, bytes, meaning) {
-                let path = t.path().display().to_string();
-                self.transcript = None;
-                self.notices
-                    .push(format!("stopped writing the transcript {path}: {e}"));
+                self.close_transcript(&e);
             }
+        }
+    }
+
+    /// Stops writing a transcript that failed, with a notice.
+    fn close_transcript(&mut self, error: &std::io::Error) {
+        if let Some(t) = self.transcript.take() {
+            self.notices.push(format!(
+                "stopped writing the transcript {}: {error}",
+                t.path().display()
+            ));
         }
     }
 }

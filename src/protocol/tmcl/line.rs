@@ -4,7 +4,7 @@
 use crate::profile::Profile;
 use crate::suggest;
 
-use super::commands::{AsciiWord, CommandSpec, Field, OperandKind};
+use super::commands::{AsciiWord, CommandSpec, Field, Operand, OperandKind};
 use super::error::InputError;
 use super::instruction::Instruction;
 use super::syntax::{Arg, RawLine, Word, parse_line};
@@ -221,35 +221,57 @@ pub(crate) fn word32(what: &str, value: i64, hex: bool) -> Result<i32, InputErro
 /// The canonical form of an instruction, without address: `GAP 1, 0`, `MVP ABS, 0, 1000`,
 /// `136 1` for control functions. Trailing optional operands that are 0 are left out.
 pub fn format_instruction(instruction: &Instruction, profile: &Profile) -> String {
+    let mut out = String::with_capacity(24);
+    write_instruction(&mut out, instruction, profile);
+    out
+}
+
+/// One operand as it is written: a keyword of the command or a number.
+enum Written<'a> {
+    Keyword(&'a str),
+    Number(i64),
+}
+
+/// Appends the canonical form of `instruction` to `out` (one buffer, no intermediate strings:
+/// every command a script sends is formatted here).
+fn write_instruction(out: &mut String, instruction: &Instruction, profile: &Profile) {
+    use std::fmt::Write as _;
+    // Writing into a String cannot fail.
     let Some(spec) = profile.commands.by_number(instruction.command) else {
-        return format!(
+        let _ = write!(
+            out,
             "{} {}, {}, {}",
             instruction.command, instruction.type_, instruction.motor, instruction.value
         );
+        return;
     };
-    let mut parts: Vec<String> = spec
-        .operands
-        .iter()
-        .map(|operand| match operand.kind.field() {
-            Field::Type => match spec.keyword_for(instruction.type_) {
-                Some(k) if operand.kind == OperandKind::Keyword => k.name.clone(),
-                _ => instruction.type_.to_string(),
-            },
-            Field::Motor => instruction.motor.to_string(),
-            Field::Value => instruction.value.to_string(),
-        })
-        .collect();
-    while let Some(last) = spec.operands.get(parts.len().wrapping_sub(1)) {
-        if last.optional && parts.last().is_some_and(|p| p == "0") {
-            parts.pop();
+    let written = |operand: &Operand| match operand.kind.field() {
+        Field::Type => match spec.keyword_for(instruction.type_) {
+            Some(k) if operand.kind == OperandKind::Keyword => Written::Keyword(&k.name),
+            _ => Written::Number(instruction.type_.into()),
+        },
+        Field::Motor => Written::Number(instruction.motor.into()),
+        Field::Value => Written::Number(instruction.value.into()),
+    };
+    let mut count = spec.operands.len();
+    while let Some(last) = count.checked_sub(1).map(|i| &spec.operands[i]) {
+        if last.optional && matches!(written(last), Written::Number(0)) {
+            count -= 1;
         } else {
             break;
         }
     }
-    if parts.is_empty() {
-        spec.display_name()
+    if spec.mnemonic.is_empty() {
+        let _ = write!(out, "{}", spec.number);
     } else {
-        format!("{} {}", spec.display_name(), parts.join(", "))
+        out.push_str(&spec.mnemonic);
+    }
+    for (i, operand) in spec.operands[..count].iter().enumerate() {
+        out.push_str(if i == 0 { " " } else { ", " });
+        let _ = match written(operand) {
+            Written::Keyword(k) => write!(out, "{k}"),
+            Written::Number(n) => write!(out, "{n}"),
+        };
     }
 }
 
@@ -257,12 +279,13 @@ pub fn format_instruction(instruction: &Instruction, profile: &Profile) -> Strin
 /// command (`AGAP 1, 0`, `ABIN`).
 pub fn format_line(line: &Line, target: u8, profile: &Profile) -> String {
     let address = address_char(line.address.unwrap_or(target)).unwrap_or('?');
+    let mut out = String::with_capacity(24);
+    out.push(address);
     match line.op {
-        Op::Command(instruction) => {
-            format!("{address}{}", format_instruction(&instruction, profile))
-        }
-        Op::Ascii(word) => format!("{address}{}", word.as_str()),
+        Op::Command(instruction) => write_instruction(&mut out, &instruction, profile),
+        Op::Ascii(word) => out.push_str(word.as_str()),
     }
+    out
 }
 
 /// A parsed line that does not resolve, in canonical spelling (for `--no-validate`).

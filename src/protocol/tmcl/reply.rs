@@ -23,7 +23,15 @@ pub struct AsciiReply {
 impl AsciiReply {
     /// The reply as the module sends it, without line ending.
     pub fn format(&self) -> String {
-        format!(
+        self.to_string()
+    }
+}
+
+/// The reply as the module sends it (`BA 100 -5000`), without line ending.
+impl std::fmt::Display for AsciiReply {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
             "{}{} {} {}",
             self.host,
             self.module,

@@ -11,21 +11,22 @@ use super::super::SessionError;
 use super::super::transcript::{Entry, escape_into};
 use super::{Answer, Exchange, TmclSession};
 
-/// How far scanning for one reply has got, across reads.
-#[derive(Debug, Default)]
-struct ScanState {
-    /// Where the echo ended, once it has been seen: scanning resumes there.
-    echo_end: Option<usize>,
-    /// Lines up to here have been reported already.
-    reported: usize,
-}
-
 /// What scanning the receive buffer found.
 enum Scan {
     /// The reply, and how many bytes of the buffer belong to this exchange.
     Reply(AsciiReply, String, usize),
     /// Wait for more bytes.
     More,
+}
+
+/// How far one exchange has got through the receive buffer. Bytes before `start` have been
+/// dealt with (the echo, lines already reported), so a later scan neither reports them again nor
+/// reads them anew once the echo has been seen: a stale reply that came before the echo stays
+/// ignored when the echo arrives in a later read.
+#[derive(Default)]
+struct Progress {
+    echo_seen: bool,
+    start: usize,
 }
 
 impl TmclSession {
@@ -52,7 +53,7 @@ impl TmclSession {
         let mut line = Vec::with_capacity(text.len() + 1);
         line.extend_from_slice(text.as_bytes());
         line.push(b'\r');
-        self.wire.send(&line, &format!("to module {c}"))?;
+        self.wire.send(&line, format_args!("to module {c}"))?;
         let timeout = wait
             .unwrap_or(self.options.timeout)
             .min(self.options.timeout);
@@ -61,13 +62,14 @@ impl TmclSession {
             .modules
             .get(&module)
             .is_some_and(|m| m.echo_known && m.echo != super::Echo::None);
-        let mut state = ScanState::default();
+        let mut progress = Progress::default();
         loop {
-            match self.scan(text.as_bytes(), c, echo_required, &mut state)? {
+            match self.scan(text.as_bytes(), c, echo_required, &mut progress)? {
                 Scan::Reply(reply, raw, used) => {
-                    let bytes = self.wire.rx.take(used);
-                    let meaning = format!("{c}: {}, value {}", reply.status, reply.value);
-                    self.wire.log(Entry::Received, &bytes, &meaning);
+                    self.wire.log_received(
+                        used,
+                        format_args!("{c}: {}, value {}", reply.status, reply.value),
+                    );
                     return Ok(Exchange {
                         module,
                         sent: text.to_string(),
@@ -82,23 +84,24 @@ impl TmclSession {
                 Scan::More => {}
             }
             if !self.wire.fill(deadline)? {
-                return Err(self.timed_out(c, timeout, state.echo_end.is_some()));
+                return Err(self.timed_out(c, timeout, progress.echo_seen));
             }
         }
     }
 
-    /// Looks for this exchange's reply in the receive buffer, resuming after the echo once it has
-    /// been seen. Lines that are not the reply are reported once.
+    /// Looks for this exchange's reply in the receive buffer, from where the last scan stopped.
+    /// Lines that are not it are reported once.
     fn scan(
         &mut self,
         sent: &[u8],
         module: char,
         echo_required: bool,
-        state: &mut ScanState,
+        progress: &mut Progress,
     ) -> Result<Scan, SessionError> {
         let buf = self.wire.rx.bytes();
-        let mut pos = state.echo_end.unwrap_or(0);
+        let mut pos = progress.start;
         loop {
+            progress.start = pos;
             while pos < buf.len() && matches!(buf[pos], b'\r' | b'\n' | 0) {
                 pos += 1;
             }
@@ -106,10 +109,10 @@ impl TmclSession {
             if rest.is_empty() {
                 return Ok(Scan::More);
             }
-            if state.echo_end.is_none() {
+            if !progress.echo_seen {
                 if rest.starts_with(sent) {
+                    progress.echo_seen = true;
                     pos += sent.len();
-                    state.echo_end = Some(pos);
                     continue;
                 }
                 if sent.starts_with(rest) {
@@ -122,28 +125,22 @@ impl TmclSession {
             let line = &rest[..end];
             let line_end = pos + end + 1;
             let text = String::from_utf8_lossy(line).into_owned();
-            let report = line_end > state.reported;
-            let echo_seen = state.echo_end.is_some();
             match parse_reply(&text) {
-                Some(reply) if reply.module == module && (echo_seen || !echo_required) => {
+                Some(reply) if reply.module == module && (progress.echo_seen || !echo_required) => {
                     return Ok(Scan::Reply(reply, text, line_end));
                 }
                 Some(reply) if reply.module == module => {
-                    if report {
-                        self.wire.notices.push(format!(
-                            "ignored a reply that came before the echo (stale?): {text}"
-                        ));
-                    }
+                    self.wire.notices.push(format!(
+                        "ignored a reply that came before the echo (stale?): {text}"
+                    ));
                 }
                 Some(reply) => {
-                    if report {
-                        self.wire.notices.push(format!(
-                            "ignored a reply from module {} while waiting for module {module}: {text}",
-                            reply.module
-                        ));
-                    }
+                    self.wire.notices.push(format!(
+                        "ignored a reply from module {} while waiting for module {module}: {text}",
+                        reply.module
+                    ));
                 }
-                None if !echo_seen && looks_like_echo(line, sent) => {
+                None if !progress.echo_seen && looks_like_echo(line, sent) => {
                     let sent_text = String::from_utf8_lossy(sent).into_owned();
                     self.wire.rx.take(line_end);
                     return Err(SessionError::Link(format!(
@@ -152,16 +149,13 @@ impl TmclSession {
                     )));
                 }
                 None => {
-                    if report {
-                        let mut shown = String::new();
-                        escape_into(line, &mut shown);
-                        self.wire
-                            .notices
-                            .push(format!("ignored unexpected data from the line: {shown}"));
-                    }
+                    let mut shown = String::new();
+                    escape_into(line, &mut shown);
+                    self.wire
+                        .notices
+                        .push(format!("ignored unexpected data from the line: {shown}"));
                 }
             }
-            state.reported = state.reported.max(line_end);
             pos = line_end;
         }
     }

@@ -28,7 +28,7 @@ impl TmclSession {
         }
         .encode();
         self.wire
-            .send(&frame, &format!("{sent} to module {module} (binary)"))?;
+            .send(&frame, format_args!("{sent} to module {module} (binary)"))?;
         let exchange = |answer, raw| Exchange {
             module,
             sent: sent.clone(),
@@ -48,7 +48,7 @@ impl TmclSession {
                 if instruction.command == 136 && instruction.type_ == 0 {
                     let (_, text) = decode_version_string(&raw);
                     self.wire
-                        .log(Entry::Received, &bytes, &format!("version {text}"));
+                        .log(Entry::Received, &bytes, format_args!("version {text}"));
                     return Ok(exchange(Answer::Version(text.clone()), text));
                 }
                 let reply = match ReplyFrame::decode(&raw) {
@@ -61,11 +61,14 @@ impl TmclSession {
                         )));
                     }
                 };
-                let meaning = format!(
-                    "from module {}: {}, value {}",
-                    reply.module, reply.status, reply.value
+                self.wire.log(
+                    Entry::Received,
+                    &bytes,
+                    format_args!(
+                        "from module {}: {}, value {}",
+                        reply.module, reply.status, reply.value
+                    ),
                 );
-                self.wire.log(Entry::Received, &bytes, &meaning);
                 if reply.command == 138 && reply.status == Status::PositionReachedEvent {
                     self.wire.notices.push(format!(
                         "module {}: target position reached (event)",

@@ -134,7 +134,7 @@ impl TmclSession {
         let bytes = frame.encode();
         self.wire.send(
             &bytes,
-            &format!("enter ASCII mode (139) to module {module}"),
+            format_args!("enter ASCII mode (139) to module {module}"),
         )?;
         let found_binary = self.optional_binary_reply(module)?;
         self.wire.send(
@@ -179,7 +179,7 @@ impl TmclSession {
                 self.wire.log(
                     Entry::Received,
                     &bytes,
-                    &format!("binary reply to 139: status {}", reply.status),
+                    format_args!("binary reply to 139: status {}", reply.status),
                 );
                 Ok(true)
             }

@@ -26,6 +26,10 @@ struct Quirks {
     echo_noise: bool,
     garbage_before_reply: &'static [u8],
     foreign_reply_first: bool,
+    /// Sent before the echo: a reply that arrived late from an earlier exchange.
+    stale_before_echo: &'static [u8],
+    /// The link hands over one byte per read, as a slow serial line does.
+    trickle: bool,
 }
 
 impl Default for Quirks {
@@ -40,6 +44,8 @@ impl Default for Quirks {
             echo_noise: false,
             garbage_before_reply: b"",
             foreign_reply_first: false,
+            stale_before_echo: b"",
+            trickle: false,
         }
     }
 }
@@ -113,6 +119,7 @@ impl FakeModule {
         if !text.starts_with('A') {
             return; // not addressed to us (or garbage)
         }
+        self.emit(self.quirks.stale_before_echo);
         let echo = Echo::from_gp67(self.quirks.gp67);
         if echo != Echo::None {
             let mut shown = text.clone().into_bytes();
@@ -177,7 +184,10 @@ impl Link for FakeLink {
             std::thread::sleep(deadline.saturating_duration_since(Instant::now()));
             return Err(LinkError::Timeout);
         }
-        let n = buf.len().min(wire.out.len());
+        let mut n = buf.len().min(wire.out.len());
+        if self.module.quirks.trickle {
+            n = n.min(1);
+        }
         for slot in buf.iter_mut().take(n) {
             *slot = wire.out.pop_front().unwrap();
         }
@@ -286,6 +296,38 @@ fn every_echo_mode_with_every_line_ending() {
             }
         }
     }
+}
+
+#[test]
+fn a_reply_arriving_byte_by_byte_is_read_without_noise_in_every_echo_mode() {
+    for gp67 in [0x00, 0x10, 0x20] {
+        let (mut s, _) = open(Quirks {
+            gp67,
+            trickle: true,
+            ..Quirks::default()
+        });
+        for round in 0..3 {
+            assert!(s.execute(&format!("SAP 1, 0, {round}")).unwrap().ok());
+            assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(round));
+        }
+        assert_eq!(s.take_notices(), Vec::<String>::new(), "gp67={gp67:#x}");
+    }
+}
+
+#[test]
+fn a_stale_reply_before_a_slow_echo_is_not_taken_for_the_answer() {
+    let (mut s, _) = open(Quirks {
+        stale_before_echo: b"BA 100 7\r",
+        trickle: true,
+        ..Quirks::default()
+    });
+    s.take_notices();
+    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    let notices = s.take_notices();
+    assert!(
+        notices.len() == 1 && notices[0].contains("before the echo"),
+        "{notices:?}"
+    );
 }
 
 #[test]

@@ -12,7 +12,9 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use nix::errno::Errno;
-use nix::poll::{PollFd, PollFlags, PollTimeout, poll};
+use nix::poll::{PollFd, PollFlags};
+#[cfg(not(any(target_os = "linux", target_os = "android")))]
+use nix::poll::{PollTimeout, poll};
 
 use super::Device;
 use super::clock::Clock;
@@ -32,12 +34,31 @@ impl Waker {
 
 /// The receiving end of a [`Waker`], owned by the server.
 #[derive(Debug)]
-pub struct WakeReceiver(UnixStream);
+pub struct WakeReceiver {
+    stream: UnixStream,
+    /// False once every [`Waker`] is gone (the console ended with its input): the socket then
+    /// reads as ready for ever and must not be polled any more, or the server would spin.
+    open: bool,
+}
 
 impl WakeReceiver {
     fn drain(&mut self) {
         let mut buf = [0u8; 64];
-        while matches!(self.0.read(&mut buf), Ok(n) if n > 0) {}
+        loop {
+            match self.stream.read(&mut buf) {
+                Ok(0) => {
+                    self.open = false;
+                    break;
+                }
+                Ok(_) => {}
+                Err(_) => break,
+            }
+        }
+    }
+
+    /// The descriptor to wait on, while a waker may still write to it.
+    fn fd(&self) -> Option<BorrowedFd<'_>> {
+        self.open.then(|| self.stream.as_fd())
     }
 }
 
@@ -46,7 +67,13 @@ pub fn wake_pair() -> io::Result<(Waker, WakeReceiver)> {
     let (tx, rx) = UnixStream::pair()?;
     tx.set_nonblocking(true)?;
     rx.set_nonblocking(true)?;
-    Ok((Waker(Arc::new(tx)), WakeReceiver(rx)))
+    Ok((
+        Waker(Arc::new(tx)),
+        WakeReceiver {
+            stream: rx,
+            open: true,
+        },
+    ))
 }
 
 /// Why serving one connection ended.
@@ -105,6 +132,7 @@ impl Server {
 
     /// Moves bytes between `port` and the device until the connection ends.
     fn pump(&mut self, port: &mut dyn Port, extra: Option<BorrowedFd>) -> io::Result<End> {
+        precise_timers();
         let mut out = Vec::new();
         let mut buf = [0u8; 4096];
         loop {
@@ -132,14 +160,24 @@ impl Server {
                 timeout = Some(Duration::from_millis(1));
             }
             let (port_ready, wake_ready, extra_ready) = {
-                let mut fds = vec![
+                // The port first, then the waker and the extra descriptor where there are any.
+                let others = [self.wake.fd(), extra];
+                let unused = || PollFd::new(port.as_fd(), PollFlags::empty());
+                let mut fds = [
                     PollFd::new(port.as_fd(), PollFlags::POLLIN),
-                    PollFd::new(self.wake.0.as_fd(), PollFlags::POLLIN),
+                    unused(),
+                    unused(),
                 ];
-                if let Some(fd) = extra {
-                    fds.push(PollFd::new(fd, PollFlags::POLLIN));
+                let mut at = [None; 2];
+                let mut used = 1;
+                for (slot, fd) in others.into_iter().enumerate() {
+                    if let Some(fd) = fd {
+                        fds[used] = PollFd::new(fd, PollFlags::POLLIN);
+                        at[slot] = Some(used);
+                        used += 1;
+                    }
                 }
-                match poll(&mut fds, poll_timeout(timeout)) {
+                match wait(&mut fds[..used], timeout) {
                     Ok(_) => {}
                     Err(Errno::EINTR) => continue,
                     Err(e) => return Err(e.into()),
@@ -149,11 +187,8 @@ impl Server {
                         r.intersects(PollFlags::POLLIN | PollFlags::POLLHUP | PollFlags::POLLERR)
                     })
                 };
-                (
-                    ready(&fds[0]),
-                    ready(&fds[1]),
-                    fds.get(2).is_some_and(ready),
-                )
+                let ready_at = |i: Option<usize>| i.is_some_and(|i| ready(&fds[i]));
+                (ready(&fds[0]), ready_at(at[0]), ready_at(at[1]))
             };
             if wake_ready {
                 self.wake.drain();
@@ -177,13 +212,55 @@ impl Server {
     }
 }
 
-/// A poll timeout in whole milliseconds, rounded up so the server never wakes too early.
-fn poll_timeout(timeout: Option<Duration>) -> PollTimeout {
-    match timeout {
+/// Waits until a descriptor is ready or `timeout` has passed. Where the system has ppoll(2) the
+/// timeout is kept to the nanosecond: a paced line at 115200 baud has a byte every 87 µs, and a
+/// wait rounded up to whole milliseconds would deliver each byte up to a millisecond late.
+#[cfg(any(target_os = "linux", target_os = "android"))]
+fn wait(fds: &mut [PollFd], timeout: Option<Duration>) -> nix::Result<nix::libc::c_int> {
+    nix::poll::ppoll(fds, timeout.map(nix::sys::time::TimeSpec::from), None)
+}
+
+/// Waits until a descriptor is ready or `timeout` has passed (rounded up to whole milliseconds,
+/// so the server never wakes too early).
+#[cfg(not(any(target_os = "linux", target_os = "android")))]
+fn wait(fds: &mut [PollFd], timeout: Option<Duration>) -> nix::Result<nix::libc::c_int> {
+    let timeout = match timeout {
         None => PollTimeout::NONE,
         Some(d) => {
             let ms = d.as_nanos().div_ceil(1_000_000).min(i32::MAX as u128) as i32;
             PollTimeout::try_from(ms).unwrap_or(PollTimeout::MAX)
         }
+    };
+    poll(fds, timeout)
+}
+
+/// Asks the kernel to wake this thread at its timers' exact times. The default timer slack of
+/// a Linux thread (50 µs) lets a wake-up come that much late, which at 115200 baud is more than
+/// half a byte on the simulated line.
+fn precise_timers() {
+    #[cfg(any(target_os = "linux", target_os = "android"))]
+    let _ = nix::sys::prctl::set_timerslack(1);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_waker_is_polled_until_every_waker_is_gone() {
+        let (waker, mut receiver) = wake_pair().unwrap();
+        let second = waker.clone();
+        waker.wake();
+        receiver.drain();
+        assert!(receiver.fd().is_some(), "a wake-up is not the end");
+        drop(waker);
+        receiver.drain();
+        assert!(receiver.fd().is_some(), "a clone can still wake the server");
+        drop(second);
+        receiver.drain();
+        assert!(
+            receiver.fd().is_none(),
+            "a closed waker reads as ready for ever; polling it would spin"
+        );
     }
 }

@@ -2,6 +2,8 @@
 //! mode, and the replies to both. Lines are read with tmclsh's own command grammar, so client
 //! and simulator agree on one syntax.
 
+use std::io::Write as _;
+
 use crate::protocol::tmcl::frame::{ChecksumError, encode_version_string, hex};
 use crate::protocol::tmcl::line::{address_char, resolve};
 use crate::protocol::tmcl::syntax::parse_line;
@@ -241,10 +243,10 @@ impl Module {
             module: address_char(self.machine.address()).unwrap_or('@'),
             status,
             value,
-        }
-        .format();
-        sink.log(|| format!("module {} -> {reply:?}", self.machine.slot));
-        sink.out.extend_from_slice(reply.as_bytes());
+        };
+        sink.log(|| format!("module {} -> {:?}", self.machine.slot, reply.format()));
+        // Straight into the output: writing to a Vec cannot fail.
+        let _ = write!(sink.out, "{reply}");
         sink.out.extend_from_slice(sink.quirks.reply_end.bytes());
     }
 

@@ -1,0 +1,151 @@
+//! `cargo bench --bench e2e`: every row of the benchmark measured side by side in one run, printed
+//! as one table and written to `BENCHMARKS.md` with the machine, the method and the date.
+//!
+//! `cargo bench --bench e2e -- --quick` runs fewer transactions and repetitions and only prints:
+//! for trying a change, not for publishing. Linux only: it uses ptys, wait4 and /proc.
+
+#[cfg(target_os = "linux")]
+#[path = "../pure/cases.rs"]
+mod cases;
+#[cfg(target_os = "linux")]
+mod host;
+#[cfg(target_os = "linux")]
+mod local;
+#[cfg(target_os = "linux")]
+mod machine;
+#[cfg(target_os = "linux")]
+mod proc;
+#[cfg(target_os = "linux")]
+mod report;
+#[cfg(target_os = "linux")]
+mod wire;
+
+#[cfg(target_os = "linux")]
+use std::path::PathBuf;
+#[cfg(target_os = "linux")]
+use std::time::SystemTime;
+
+#[cfg(target_os = "linux")]
+const COMMAND: &str = "cargo bench --bench e2e";
+
+/// How much of everything a run does.
+#[cfg(target_os = "linux")]
+struct Plan {
+    wire: Vec<wire::Line>,
+    host_n: u32,
+    host_reps: usize,
+    in_process_n: u32,
+    in_process_reps: usize,
+    start_up_runs: usize,
+    memory_n: u32,
+}
+
+#[cfg(target_os = "linux")]
+impl Plan {
+    fn full() -> Plan {
+        Plan {
+            wire: vec![
+                wire::Line {
+                    baud: 9600,
+                    n: 1000,
+                    reps: 1,
+                },
+                wire::Line {
+                    baud: 115_200,
+                    n: 1000,
+                    reps: 5,
+                },
+            ],
+            host_n: 10_000,
+            host_reps: 7,
+            in_process_n: 100_000,
+            in_process_reps: 5,
+            start_up_runs: 51,
+            memory_n: 100_000,
+        }
+    }
+
+    fn quick() -> Plan {
+        Plan {
+            wire: vec![
+                wire::Line {
+                    baud: 9600,
+                    n: 20,
+                    reps: 1,
+                },
+                wire::Line {
+                    baud: 115_200,
+                    n: 200,
+                    reps: 1,
+                },
+            ],
+            host_n: 2000,
+            host_reps: 1,
+            in_process_n: 20_000,
+            in_process_reps: 1,
+            start_up_runs: 11,
+            memory_n: 100_000,
+        }
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+fn main() {
+    eprintln!("the end-to-end benchmark runs on Linux only (ptys, wait4, /proc)");
+}
+
+#[cfg(target_os = "linux")]
+fn main() {
+    // cargo passes `--bench`; anything else but `--quick` is ignored.
+    let quick = std::env::args().any(|a| a == "--quick");
+    let plan = if quick { Plan::quick() } else { Plan::full() };
+    let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("e2e");
+    std::fs::create_dir_all(&scratch).expect("scratch directory");
+    let machine = machine::Machine::probe();
+    let python = machine.python.is_some();
+    let load_before = machine::load();
+
+    let step = |what: &str| eprintln!("e2e: {what}");
+    step("pure parts");
+    let pure = cases::run();
+    step("in-process, start-up, memory");
+    let in_process = local::in_process(plan.in_process_n, plan.in_process_reps);
+    let start_up = local::start_up(plan.start_up_runs, python);
+    let memory = local::memory(plan.memory_n, &scratch);
+    step("host overhead and transcript cost over an unpaced pty");
+    let mut host = host::measure(&host::Plan {
+        n: plan.host_n,
+        reps: plan.host_reps,
+        python,
+        scratch: scratch.clone(),
+    });
+    step("wire efficiency over paced ptys (the 9600 baud runs take a while)");
+    let mut rows = wire::measure(&plan.wire);
+    let transcript = host.pop().expect("the transcript row");
+    rows.append(&mut host);
+    rows.extend([in_process, start_up, memory, transcript]);
+    let load_after = machine::load();
+
+    println!("{}", report::text(&rows));
+    println!("{:<66} {:>12}", "pure part", "ns/op");
+    for case in &pure {
+        println!("{:<66} {:>12.1}", case.name, case.ns);
+    }
+    println!("load average before / after: {load_before} / {load_after}");
+    if quick {
+        eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
+        return;
+    }
+    let markdown = report::markdown(&report::Run {
+        date: humantime::format_rfc3339_seconds(SystemTime::now()).to_string(),
+        command: COMMAND,
+        machine: &machine,
+        load_before,
+        load_after,
+        rows: &rows,
+        pure: &pure,
+    });
+    let path = proc::repo_file("BENCHMARKS.md");
+    std::fs::write(&path, markdown).expect("write BENCHMARKS.md");
+    eprintln!("e2e: wrote {}", path.display());
+}
