@@ -392,6 +392,26 @@ mod tests {
     }
 
     #[test]
+    fn real_numbers_and_text_round_trip_and_only_numbers_are_charted() {
+        let rec = Recording {
+            columns: vec!["MOTOR:PACT".into(), "SYS:FLAGS".into()],
+            samples: vec![Sample {
+                time_ms: 0,
+                values: vec![1000.0.into(), ParamValue::Text("0x0808 0x0000".into())],
+            }],
+        };
+        let text = rec.to_csv();
+        assert_eq!(
+            text,
+            "time_ms,MOTOR:PACT,SYS:FLAGS\n0,1000.0,0x0808 0x0000\n"
+        );
+        let back = Recording::from_csv(&text).unwrap();
+        assert_eq!(back, rec);
+        assert!(back.numeric(0) && !back.numeric(1));
+        assert_eq!(back.series(1), []);
+    }
+
+    #[test]
     fn times_are_milliseconds_or_humantime() {
         assert_eq!(parse_duration("250").unwrap(), Duration::from_millis(250));
         assert_eq!(parse_duration("2s").unwrap(), Duration::from_secs(2));
