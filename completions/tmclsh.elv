@@ -123,7 +123,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help'
             cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
             cand diff 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
-            cand restore 'Write FILE''s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+            cand restore 'Write FILE''s settings back (unit mode and limits first; SMD4: resolution, currents and frequencies first, the mode last, only while the motor stands still), verifying each by reading it back; read-only, live and link settings are skipped and listed'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;snapshot;save'= {
@@ -135,10 +135,13 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
@@ -151,10 +154,13 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
@@ -167,20 +173,23 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
-            cand --store 'Afterwards store the written parameters to EEPROM (STAP/STGP), after a confirmation'
+            cand --store 'Afterwards make the written parameters permanent, after a confirmation: EEPROM (STAP/STGP) on TMCL modules; STORE on an SMD4, which saves its whole working configuration'
             cand --yes 'Confirm --store without asking (for scripts)'
             cand --dry-run 'Only print the lines that would be sent'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;snapshot;help'= {
             cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
             cand diff 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
-            cand restore 'Write FILE''s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+            cand restore 'Write FILE''s settings back (unit mode and limits first; SMD4: resolution, currents and frequencies first, the mode last, only while the motor stands still), verifying each by reading it back; read-only, live and link settings are skipped and listed'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;snapshot;help;save'= {
@@ -192,7 +201,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;snapshot;help;help'= {
         }
         &'tmclsh;scan'= {
-            cand --addresses 'Addresses to try: numbers 1..255 and letters A..Z, single or as ranges (1-26, A,C,30-40). Addresses above 26 have no ASCII character and are tried with binary frames'
+            cand --addresses 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each (an empty bus takes 247 times --timeout)'
             cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
@@ -201,10 +210,13 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
@@ -301,7 +313,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;snapshot'= {
             cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
             cand diff 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
-            cand restore 'Write FILE''s settings back (unit mode and limits first), verifying each by reading it back; read-only, live and link settings are skipped and listed'
+            cand restore 'Write FILE''s settings back (unit mode and limits first; SMD4: resolution, currents and frequencies first, the mode last, only while the motor stands still), verifying each by reading it back; read-only, live and link settings are skipped and listed'
         }
         &'tmclsh;help;snapshot;save'= {
         }

@@ -7,6 +7,11 @@ mod repl;
 mod replay;
 mod scan;
 mod script;
+mod smd4_record;
+mod smd4_replay;
+mod smd4_scan;
+mod smd4_script;
+mod smd4_snapshot;
 mod snapshot;
 
 use std::path::Path;

@@ -1,20 +1,23 @@
 //! `tmclsh snapshot save|diff|restore`: a module's parameters in a TOML file, compared with a
-//! module or another file, written back in a safe order and verified.
+//! module or another file, written back in a safe order and verified — TMCL modules and SMD4
+//! drives alike (`--protocol smd4`).
 
 use std::io::{BufRead, IsTerminal, Write};
 use std::path::PathBuf;
 use std::sync::Arc;
 
+use crate::commission::ParamDevice;
 use crate::commission::actions::{self, RestoreOptions};
-use crate::commission::restore::{self, Plan};
+use crate::commission::shell::param_device;
 use crate::commission::tmcl::profile_params;
 use crate::exit::{Exit, ExitStatus};
 use crate::profile::Profile;
-use crate::session::tmcl::TmclSession;
+use crate::protocol::Dialect;
+use crate::protocol::smd4::Smd4Spec;
 use crate::session::{SessionError, interrupt};
 
 use super::Failure;
-use super::connection::{ConnectionArgs, SessionArgs, open_tmcl};
+use super::connection::ModuleArgs;
 
 /// Arguments of `snapshot`.
 #[derive(Debug, Clone, clap::Args)]
@@ -31,9 +34,7 @@ enum Action {
         #[arg(value_name = "FILE")]
         file: PathBuf,
         #[command(flatten)]
-        connection: ConnectionArgs,
-        #[command(flatten)]
-        session: SessionArgs,
+        module: ModuleArgs,
     },
     /// Show the settings that differ between FILE and the module, or between FILE and FILE2
     /// (exit code 1 when they differ).
@@ -45,17 +46,18 @@ enum Action {
         #[arg(value_name = "FILE2")]
         other: Option<PathBuf>,
         #[command(flatten)]
-        connection: ConnectionArgs,
-        #[command(flatten)]
-        session: SessionArgs,
+        module: ModuleArgs,
     },
-    /// Write FILE's settings back (unit mode and limits first), verifying each by reading it
-    /// back; read-only, live and link settings are skipped and listed.
+    /// Write FILE's settings back (unit mode and limits first; SMD4: resolution, currents and
+    /// frequencies first, the mode last, only while the motor stands still), verifying each by
+    /// reading it back; read-only, live and link settings are skipped and listed.
     Restore {
         /// The snapshot file.
         #[arg(value_name = "FILE")]
         file: PathBuf,
-        /// Afterwards store the written parameters to EEPROM (STAP/STGP), after a confirmation.
+        /// Afterwards make the written parameters permanent, after a confirmation: EEPROM
+        /// (STAP/STGP) on TMCL modules; STORE on an SMD4, which saves its whole working
+        /// configuration.
         #[arg(long)]
         store: bool,
         /// Confirm --store without asking (for scripts).
@@ -65,9 +67,7 @@ enum Action {
         #[arg(long)]
         dry_run: bool,
         #[command(flatten)]
-        connection: ConnectionArgs,
-        #[command(flatten)]
-        session: SessionArgs,
+        module: ModuleArgs,
     },
 }
 
@@ -79,36 +79,33 @@ pub fn run(
 ) -> Result<Exit, Failure> {
     interrupt::install();
     match args.action {
-        Action::Save {
-            file,
-            connection,
-            session,
-        } => with_session(&connection, &session, profile, |s| {
-            actions::save(s, &file, out).map(|_| ())
+        Action::Save { file, module } => with_device(&module, profile, |d| {
+            actions::save(d, &file, out).map(|_| ())
         }),
         Action::Diff {
             file,
             other: Some(other),
-            ..
+            module,
         } => {
-            let params = profile_params(profile);
+            let params = match module.connection.protocol {
+                Dialect::Tmcl => profile_params(profile),
+                Dialect::Smd4 => crate::commission::smd4::spec_params(Smd4Spec::builtin()),
+            };
             finish(actions::diff_files(&file, &other, &params, out).map(|_| ()))
         }
         Action::Diff {
             file,
             other: None,
-            connection,
-            session,
-        } => with_session(&connection, &session, profile, |s| {
-            actions::diff(s, &file, out).map(|_| ())
+            module,
+        } => with_device(&module, profile, |d| {
+            actions::diff(d, &file, out).map(|_| ())
         }),
         Action::Restore {
             file,
             store,
             yes,
             dry_run,
-            connection,
-            session,
+            module,
         } => {
             let ask = store && !yes && !dry_run;
             if ask && !std::io::stdin().is_terminal() {
@@ -118,36 +115,34 @@ pub fn run(
                 ));
             }
             let options = RestoreOptions { store, dry_run };
-            let module = session.module;
-            with_session(&connection, &session, profile, |s| {
-                let mut confirm = |plan: &Plan| {
+            with_device(&module, profile, |d| {
+                let mut confirm = |question: &str| {
                     if ask {
-                        confirm_store(plan, module)
+                        confirm_store(question)
                     } else {
                         Ok(true)
                     }
                 };
-                actions::restore(s, &file, options, &mut confirm, out).map(|_| ())
+                actions::restore(d, &file, options, &mut confirm, out).map(|_| ())
             })
         }
     }
 }
 
-/// Opens a session, runs `f`, and closes the session (modules back in their modes) whatever
-/// happened.
-fn with_session(
-    connection: &ConnectionArgs,
-    session: &SessionArgs,
+/// Opens a session in the dialect the flags say, runs `f` on its module, and closes the session
+/// (TMCL modules back in their modes) whatever happened.
+fn with_device(
+    module: &ModuleArgs,
     profile: &Arc<Profile>,
-    f: impl FnOnce(&mut TmclSession) -> Result<(), SessionError>,
+    f: impl FnOnce(&mut dyn ParamDevice) -> Result<(), SessionError>,
 ) -> Result<Exit, Failure> {
-    let mut s = open_tmcl(connection, session, profile)?;
-    let result = f(&mut s);
-    for notice in s.take_notices() {
+    let mut session = module.open(profile)?;
+    let result = f(param_device(&mut session));
+    for notice in session.take_notices() {
         eprintln!("tmclsh: {notice}");
     }
     interrupt::take();
-    for message in s.close() {
+    for message in session.close() {
         eprintln!("tmclsh: {message}");
     }
     finish(result)
@@ -180,9 +175,8 @@ impl Write for PipeSafe<'_> {
     }
 }
 
-fn confirm_store(plan: &Plan, module: u8) -> Result<bool, SessionError> {
-    let n = restore::storable(plan).count();
-    eprint!("store {n} parameters to the EEPROM of module {module}? [y/N] ");
+fn confirm_store(question: &str) -> Result<bool, SessionError> {
+    eprint!("{question} [y/N] ");
     let mut answer = String::new();
     std::io::stdin().lock().read_line(&mut answer)?;
     Ok(matches!(answer.trim(), "y" | "Y" | "yes" | "YES" | "Yes"))

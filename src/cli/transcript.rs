@@ -1,5 +1,6 @@
 //! `tmclsh transcript to-rhai LOG`: a `--log` transcript turned into a Rhai script that sends the
-//! same commands and checks the values received.
+//! same commands and checks the values received — of a TMCL or an SMD4 session, as the transcript
+//! says.
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -45,12 +46,16 @@ pub fn run(args: TranscriptArgs, profile: &Profile, out: &mut dyn Write) -> Resu
     })?;
     let entries = replay::parse::parse(&text)
         .map_err(|e| Failure::new(Exit::Refused, format!("{}: {e}", log.display())))?;
-    let steps = replay::steps(&entries, profile);
     let name = log.file_name().map_or_else(
         || log.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let script = replay::to_rhai(&steps, profile, &name, wait);
+    let script = if replay::smd4::is_smd4(&entries) {
+        let spec = crate::protocol::smd4::Smd4Spec::builtin();
+        replay::smd4::to_rhai(&replay::smd4::steps(&entries, spec), spec, &name, wait)
+    } else {
+        replay::to_rhai(&replay::steps(&entries, profile), profile, &name, wait)
+    };
     let written = match &output {
         Some(path) => std::fs::write(path, &script),
         None => out.write_all(script.as_bytes()),

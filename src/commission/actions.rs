@@ -34,12 +34,15 @@ pub fn save(
         .as_deref()
         .map(|f| format!(", firmware {f}"))
         .unwrap_or_default();
+    let address = snapshot
+        .address
+        .map(|a| format!(" at address {a}"))
+        .unwrap_or_default();
     writeln!(
         out,
-        "saved {} parameters of the {} at address {}{firmware} to {}",
+        "saved {} parameters of the {}{address}{firmware} to {}",
         snapshot.entries.len(),
         snapshot.module,
-        snapshot.address,
         path.display()
     )?;
     let unreadable: Vec<&str> = snapshot.unreadable().map(|e| e.name.as_str()).collect();
@@ -62,7 +65,7 @@ pub fn diff(
 ) -> Result<Comparison, SessionError> {
     let file = Snapshot::load(path)?;
     let comparison = diff::with_device(&file, device)?;
-    let right = format!("module {}", device.address());
+    let right = device.who();
     report(comparison, [&path.display().to_string(), &right], out)
 }
 
@@ -96,20 +99,20 @@ fn report(
 /// How to restore.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct RestoreOptions {
-    /// Store the written parameters to EEPROM afterwards (STAP/STGP).
+    /// Make the written parameters permanent afterwards (TMCL STAP/STGP, SMD4 STORE).
     pub store: bool,
     /// Only print what would be sent.
     pub dry_run: bool,
 }
 
 /// Restores the snapshot at `path`: plans, writes and verifies, lists what was skipped, and — when
-/// `options.store` and `confirm` agrees — stores to EEPROM. Fails (exit 1) when a write was
-/// refused or read back differently; nothing is stored then.
+/// `options.store` and `confirm` agrees to the question it is asked — makes the values permanent.
+/// Fails (exit 1) when a write was refused or read back differently; nothing is stored then.
 pub fn restore(
     device: &mut dyn ParamDevice,
     path: &Path,
     options: RestoreOptions,
-    confirm: &mut dyn FnMut(&Plan) -> Result<bool, SessionError>,
+    confirm: &mut dyn FnMut(&str) -> Result<bool, SessionError>,
     out: &mut dyn Write,
 ) -> Result<Outcome, SessionError> {
     let snapshot = Snapshot::load(path)?;
@@ -122,6 +125,7 @@ pub fn restore(
         restore::write_skipped(&plan, out)?;
         return Ok(Outcome::default());
     }
+    device.ready_to_restore()?;
     if snapshot.module != device.module_name() {
         writeln!(
             out,
@@ -132,12 +136,13 @@ pub fn restore(
     }
     let mut outcome = restore::execute(device, &plan)?;
     restore::write_skipped(&plan, out)?;
-    if outcome.failed.is_empty() && options.store && confirm(&plan)? {
+    let memory = device.memory();
+    if outcome.failed.is_empty() && options.store && confirm(&store_question(device, &plan))? {
         restore::store(device, &plan, &mut outcome)?;
     } else if options.store && !outcome.failed.is_empty() {
-        writeln!(out, "not stored to EEPROM: some parameters failed")?;
+        writeln!(out, "not stored to {memory}: some parameters failed")?;
     }
-    restore::write_outcome(&outcome, out)?;
+    restore::write_outcome(&outcome, memory, out)?;
     if !outcome.failed.is_empty() {
         return Err(failed(format!(
             "{} parameters were not restored",
@@ -145,4 +150,21 @@ pub fn restore(
         )));
     }
     Ok(outcome)
+}
+
+/// The confirmation asked before storing: how many parameters, where, and the line when one line
+/// does it all ("… of drive @3 with STORE").
+pub fn store_question(device: &dyn ParamDevice, plan: &Plan) -> String {
+    let params: Vec<_> = restore::storable(plan).collect();
+    let steps = device.store_steps(&params);
+    let with = match steps.as_slice() {
+        [one] if one.params.len() > 1 => format!(" with {}", one.line),
+        _ => String::new(),
+    };
+    format!(
+        "store {} parameters to the {} of {}{with}?",
+        params.len(),
+        device.memory(),
+        device.who()
+    )
 }

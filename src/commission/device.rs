@@ -1,11 +1,14 @@
 //! The seam between the commissioning tools and a module dialect: list the parameters, read,
-//! write and store one. Snapshots, watches and recordings only use this trait, so a dialect that
-//! implements it (TMCL here, SMD4 later) gets them all.
+//! write and store them. Snapshots, watches and recordings only use this trait, so a dialect that
+//! implements it (TMCL in [`super::tmcl`], SMD4 in [`super::smd4`]) gets them all.
 
 use crate::profile::{Access, SnapshotRole};
 use crate::session::SessionError;
 
-/// Where a parameter lives: an axis parameter of a motor, or a global parameter of a bank.
+use super::value::{ParamValue, Reading, Tolerance};
+
+/// Where a parameter lives: an axis parameter of a motor, a global parameter of a bank, or a
+/// setting of a drive that has one motor and no banks (SMD4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Scope {
     /// An axis parameter of this motor.
@@ -18,27 +21,30 @@ pub enum Scope {
         /// Bank number.
         bank: u8,
     },
+    /// A setting or query of the drive, named by its mnemonic.
+    Drive,
 }
 
 impl Scope {
-    /// The section of a snapshot file (`axis.0`, `global.2`).
+    /// The section of a snapshot file (`axis.0`, `global.2`, `drive`).
     pub fn section(self) -> String {
         match self {
             Scope::Axis { motor } => format!("axis.{motor}"),
             Scope::Global { bank } => format!("global.{bank}"),
+            Scope::Drive => "drive".into(),
         }
     }
 }
 
 /// A parameter as the commissioning tools see it.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct ParamRef {
     /// Where it lives.
     pub scope: Scope,
-    /// The identifier users type, unique within its scope (`max_current`).
+    /// The identifier users type, unique within its scope (`max_current`, `MOTOR:IR`).
     pub name: String,
-    /// Its number in the dialect (TMCL: the type byte).
-    pub number: u32,
+    /// Its number in the dialect (TMCL: the type byte); SMD4 settings have none.
+    pub number: Option<u32>,
     /// Unit as printed in the manual (may be empty).
     pub unit: String,
     /// Read, write and store rules.
@@ -47,27 +53,48 @@ pub struct ParamRef {
     pub role: SnapshotRole,
     /// Restore order: lower ranks are written first; equal ranks keep the list order.
     pub rank: usize,
+    /// How two of its values are compared.
+    pub tolerance: Tolerance,
 }
 
 impl ParamRef {
-    /// "axis 6" / "global 0/65": where to find it in the manual's tables.
+    /// "axis 6" / "global 0/65": where to find it in the manual's tables (empty for a drive's
+    /// settings, whose name says it all).
     pub fn place(&self) -> String {
+        let number = self.number.unwrap_or_default();
         match self.scope {
-            Scope::Axis { motor: 0 } => format!("axis {}", self.number),
-            Scope::Axis { motor } => format!("axis {} motor {motor}", self.number),
-            Scope::Global { bank } => format!("global {bank}/{}", self.number),
+            Scope::Axis { motor: 0 } => format!("axis {number}"),
+            Scope::Axis { motor } => format!("axis {number} motor {motor}"),
+            Scope::Global { bank } => format!("global {bank}/{number}"),
+            Scope::Drive => String::new(),
         }
     }
+}
+
+/// One step that makes restored parameters survive a power cycle: one per parameter (TMCL
+/// STAP/STGP) or one for the whole configuration (SMD4 STORE).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StoreStep {
+    /// The line it sends.
+    pub line: String,
+    /// The restored parameters it makes permanent.
+    pub params: Vec<ParamRef>,
 }
 
 /// A module whose parameters can be listed, read, written and stored — implemented by each
 /// dialect's session for the module it targets.
 pub trait ParamDevice {
-    /// The module type, as its profile names it ("TMCM-142").
+    /// The module type, as its profile names it ("TMCM-142", "SMD4").
     fn module_name(&self) -> String;
 
-    /// The bus address of the module talked to.
-    fn address(&self) -> u8;
+    /// The bus address of the module talked to, where requests carry one.
+    fn address(&self) -> Option<u32>;
+
+    /// The module talked to, for messages ("module 1", "drive @3").
+    fn who(&self) -> String;
+
+    /// What the module keeps its settings in over a power cycle, for messages ("EEPROM").
+    fn memory(&self) -> &'static str;
 
     /// The firmware version, where the module tells it (`None` when it cannot).
     fn firmware(&mut self) -> Option<String>;
@@ -75,21 +102,27 @@ pub trait ParamDevice {
     /// Every parameter of the module's profile, in table order.
     fn params(&self) -> Vec<ParamRef>;
 
-    /// The parameter a user means by `name` (an identifier or a unique prefix of one).
+    /// The parameter a user means by `name` (an identifier or a unique abbreviation of one).
     fn find(&self, name: &str) -> Result<ParamRef, String>;
 
     /// Reads one parameter; a refusal by the module is [`SessionError::Device`].
-    fn read(&mut self, param: &ParamRef) -> Result<i64, SessionError>;
+    fn read(&mut self, param: &ParamRef) -> Result<Reading, SessionError>;
 
     /// Writes one parameter (in RAM).
-    fn write(&mut self, param: &ParamRef, value: i64) -> Result<(), SessionError>;
-
-    /// Stores one parameter to the module's EEPROM.
-    fn store(&mut self, param: &ParamRef) -> Result<(), SessionError>;
+    fn write(&mut self, param: &ParamRef, value: &ParamValue) -> Result<(), SessionError>;
 
     /// The line [`ParamDevice::write`] sends, for dry runs and hints.
-    fn write_line(&self, param: &ParamRef, value: i64) -> String;
+    fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String;
 
-    /// The line [`ParamDevice::store`] sends.
-    fn store_line(&self, param: &ParamRef) -> String;
+    /// How `params` (written by a restore) are made permanent, in order.
+    fn store_steps(&self, params: &[&ParamRef]) -> Vec<StoreStep>;
+
+    /// Runs one step of [`ParamDevice::store_steps`].
+    fn store(&mut self, step: &StoreStep) -> Result<(), SessionError>;
+
+    /// Whether the module can take a restore now; the error says why not (an SMD4 drive must
+    /// stand still).
+    fn ready_to_restore(&mut self) -> Result<(), SessionError> {
+        Ok(())
+    }
 }

@@ -9,9 +9,10 @@ use crate::session::SessionError;
 use super::device::{ParamDevice, ParamRef, Scope};
 use super::progress::Progress;
 use super::snapshot::{Entry, Snapshot};
+use super::value::{ParamValue, Reading, Tolerance};
 
 /// One parameter that differs.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Difference {
     /// Where it lives.
     pub scope: Scope,
@@ -28,10 +29,10 @@ pub struct Difference {
 }
 
 /// One side of a difference.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum Side {
-    /// A value.
-    Value(i64),
+    /// A value (with the name of an enumerated value, where known).
+    Value(Reading),
     /// The parameter is not there.
     Missing,
     /// It could not be read (the module's answer).
@@ -40,16 +41,43 @@ pub enum Side {
 
 impl Side {
     fn of(entry: Option<&Entry>) -> Side {
-        match entry.map(|e| &e.value) {
-            Some(Ok(v)) => Side::Value(*v),
-            Some(Err(e)) => Side::Unreadable(e.clone()),
+        match entry {
+            Some(Entry {
+                value: Ok(value),
+                label,
+                real,
+                ..
+            }) => Side::Value(Reading {
+                value: value.clone(),
+                real: *real,
+                label: label.clone(),
+            }),
+            Some(Entry { value: Err(e), .. }) => Side::Unreadable(e.clone()),
             None => Side::Missing,
+        }
+    }
+
+    /// The value, where there is one.
+    pub fn value(&self) -> Option<&ParamValue> {
+        match self {
+            Side::Value(reading) => Some(&reading.value),
+            _ => None,
+        }
+    }
+
+    /// Whether two sides hold the same value of a parameter compared with `tolerance`.
+    fn same(&self, other: &Side, tolerance: Tolerance) -> bool {
+        match (self, other) {
+            (Side::Value(a), Side::Value(b)) => tolerance.same(&a.value, &b.value),
+            (Side::Missing, Side::Missing) => true,
+            (Side::Unreadable(a), Side::Unreadable(b)) => a == b,
+            _ => false,
         }
     }
 
     fn text(&self) -> String {
         match self {
-            Side::Value(v) => v.to_string(),
+            Side::Value(reading) => reading.text(),
             Side::Missing => "(absent)".into(),
             Side::Unreadable(_) => "(unreadable)".into(),
         }
@@ -57,7 +85,7 @@ impl Side {
 }
 
 /// The result of a comparison.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Comparison {
     /// How many settings were compared.
     pub compared: usize,
@@ -85,12 +113,12 @@ pub fn with_device(
     for param in &params {
         progress.step(&param.name);
         let module = match device.read(param) {
-            Ok(v) => Side::Value(v),
+            Ok(reading) => Side::Value(reading),
             Err(e @ SessionError::Device { .. }) => Side::Unreadable(e.to_string()),
             Err(e) => return Err(e),
         };
         let left = Side::of(file.get(param.scope, &param.name));
-        if left != module {
+        if !left.same(&module, param.tolerance) {
             differences.push(difference(param, left, module));
         }
     }
@@ -130,7 +158,7 @@ pub fn between(left: &Snapshot, right: &Snapshot, params: &[ParamRef]) -> Compar
             .find(|p| p.scope == scope && p.name == name)
             .is_none_or(|p| compared(p.role))
     };
-    let mut keys: Vec<(Scope, u32, String)> = Vec::new();
+    let mut keys: Vec<(Scope, Option<u32>, String)> = Vec::new();
     for e in left.entries.iter().chain(&right.entries) {
         let key = (e.scope, e.number, e.name.clone());
         if is_setting(e.scope, &e.name) && !keys.iter().any(|k| k.0 == key.0 && k.2 == key.2) {
@@ -142,8 +170,9 @@ pub fn between(left: &Snapshot, right: &Snapshot, params: &[ParamRef]) -> Compar
     for (scope, _, name) in &keys {
         let (a, b) = (left.get(*scope, name), right.get(*scope, name));
         let (l, r) = (Side::of(a), Side::of(b));
-        if l != r {
-            let param = params.iter().find(|p| p.scope == *scope && p.name == *name);
+        let param = params.iter().find(|p| p.scope == *scope && p.name == *name);
+        let tolerance = param.map_or(Tolerance::Exact, |p| p.tolerance);
+        if !l.same(&r, tolerance) {
             differences.push(Difference {
                 scope: *scope,
                 name: name.clone(),
@@ -214,16 +243,21 @@ pub fn write_table(
             *w = (*w).max(cell.chars().count());
         }
     }
+    // A drive's settings have no place in a numbered table: no "where" column then.
+    let placed = rows.iter().any(|r| !r[1].is_empty());
     for row in std::iter::once(&header).chain(&rows) {
+        let place = if placed {
+            format!("{:<w$}  ", row[1], w = widths[1])
+        } else {
+            String::new()
+        };
         let line = format!(
-            "{:<w0$}  {:<w1$}  {:>w2$}  {:>w3$}  {}",
+            "{:<w0$}  {place}{:>w2$}  {:>w3$}  {}",
             row[0],
-            row[1],
             row[2],
             row[3],
             row[4],
             w0 = widths[0],
-            w1 = widths[1],
             w2 = widths[2],
             w3 = widths[3],
         );

@@ -8,8 +8,9 @@ use crate::profile::Profile;
 use crate::protocol::tmcl::Status;
 use crate::session::SessionError;
 
-use super::device::{ParamDevice, ParamRef, Scope};
+use super::device::{ParamDevice, ParamRef, Scope, StoreStep};
 use super::tmcl::param_ref;
+use super::value::{ParamValue, Reading};
 
 pub struct FakeDevice {
     pub params: Vec<ParamRef>,
@@ -78,8 +79,16 @@ impl ParamDevice for FakeDevice {
         "TMCM-142".into()
     }
 
-    fn address(&self) -> u8 {
-        1
+    fn address(&self) -> Option<u32> {
+        Some(1)
+    }
+
+    fn who(&self) -> String {
+        "module 1".into()
+    }
+
+    fn memory(&self) -> &'static str {
+        "EEPROM"
     }
 
     fn firmware(&mut self) -> Option<String> {
@@ -98,17 +107,18 @@ impl ParamDevice for FakeDevice {
             .ok_or_else(|| format!("unknown parameter '{name}'"))
     }
 
-    fn read(&mut self, param: &ParamRef) -> Result<i64, SessionError> {
+    fn read(&mut self, param: &ParamRef) -> Result<Reading, SessionError> {
         if self.refuse_read.contains(&param.name) {
             return Err(Self::refused(&param.name));
         }
-        Ok(self.values[&(param.scope, param.name.clone())])
+        Ok(Reading::of(self.values[&(param.scope, param.name.clone())]))
     }
 
-    fn write(&mut self, param: &ParamRef, value: i64) -> Result<(), SessionError> {
+    fn write(&mut self, param: &ParamRef, value: &ParamValue) -> Result<(), SessionError> {
         if self.refuse_write.contains(&param.name) {
             return Err(Self::refused(&param.name));
         }
+        let value = value.as_i64().expect("the fake holds integers");
         self.log.push(format!("write {} {value}", param.name));
         if !self.stuck.contains(&param.name) {
             self.values.insert((param.scope, param.name.clone()), value);
@@ -116,16 +126,24 @@ impl ParamDevice for FakeDevice {
         Ok(())
     }
 
-    fn store(&mut self, param: &ParamRef) -> Result<(), SessionError> {
-        self.log.push(format!("store {}", param.name));
-        Ok(())
-    }
-
-    fn write_line(&self, param: &ParamRef, value: i64) -> String {
+    fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
         format!("SET {} {value}", param.name)
     }
 
-    fn store_line(&self, param: &ParamRef) -> String {
-        format!("STORE {}", param.name)
+    fn store_steps(&self, params: &[&ParamRef]) -> Vec<StoreStep> {
+        params
+            .iter()
+            .map(|p| StoreStep {
+                line: format!("STORE {}", p.name),
+                params: vec![(*p).clone()],
+            })
+            .collect()
+    }
+
+    fn store(&mut self, step: &StoreStep) -> Result<(), SessionError> {
+        for param in &step.params {
+            self.log.push(format!("store {}", param.name));
+        }
+        Ok(())
     }
 }

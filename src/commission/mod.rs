@@ -2,7 +2,9 @@
 //! recordings with a terminal chart, and transcripts turned into regression scripts.
 //!
 //! Everything that reads or writes parameters goes through [`ParamDevice`], a small seam each
-//! dialect's session implements (TMCL in [`tmcl`]), so the same tools serve every module type.
+//! dialect's session implements (TMCL in [`tmcl`], SMD4 in [`smd4`]), so the same tools serve
+//! every module type. Values are [`ParamValue`]s — integers, real numbers or text — compared
+//! with each parameter's [`Tolerance`].
 //! Pure parts — the snapshot file, the diff, the restore order, CSV, chart rendering, transcript
 //! parsing and script generation, the scan table — are functions tested without any I/O.
 
@@ -16,12 +18,16 @@ pub mod replay;
 pub mod restore;
 pub mod scan;
 pub mod shell;
+pub mod smd4;
+pub mod smd4_scan;
 pub mod snapshot;
 pub mod tmcl;
+pub mod value;
 pub mod watch;
 
 #[cfg(test)]
 mod fake;
 
-pub use device::{ParamDevice, ParamRef, Scope};
+pub use device::{ParamDevice, ParamRef, Scope, StoreStep};
 pub use snapshot::Snapshot;
+pub use value::{ParamValue, Reading, Tolerance};

@@ -139,9 +139,14 @@ fn number(v: f64) -> String {
     }
 }
 
-/// Draws every column of `recording` as a chart, `width` characters wide in all.
+/// Draws every column of `recording` as a chart, `width` characters wide in all; a column of
+/// text (an SMD4's flag words) is named, not drawn.
 pub fn write_recording(recording: &Recording, width: usize, out: &mut dyn Write) -> io::Result<()> {
     for (i, name) in recording.columns.iter().enumerate() {
+        if !recording.numeric(i) {
+            writeln!(out, "{name}: not numbers, not drawn (see the CSV file)\n")?;
+            continue;
+        }
         let points = recording.series(i);
         let label = points.iter().map(|p| number(p.1).len()).max().unwrap_or(1) + 2;
         let cells = width.saturating_sub(label + 2).max(10);

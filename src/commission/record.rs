@@ -8,7 +8,8 @@
 //! ```
 //!
 //! `time_ms` counts from the first sample; each row's values were read one after the other
-//! starting at that time.
+//! starting at that time. Integers are written as they are, real numbers always with a decimal
+//! point (`1000.0`, an SMD4's MOTOR:VACT in Hz), text as it is (an SMD4's flag words).
 
 use std::io::{self, Write};
 use std::time::Duration;
@@ -17,6 +18,7 @@ use crate::session::{SessionError, interrupt};
 use crate::sim::clock::Clock;
 
 use super::device::{ParamDevice, ParamRef};
+use super::value::ParamValue;
 
 /// Sampled values of some parameters over time.
 #[derive(Debug, Clone, PartialEq)]
@@ -33,7 +35,7 @@ pub struct Sample {
     /// Milliseconds since the first sample.
     pub time_ms: u64,
     /// One value per column.
-    pub values: Vec<i64>,
+    pub values: Vec<ParamValue>,
 }
 
 /// What to sample, how often, for how long.
@@ -70,7 +72,7 @@ pub fn record(
         }
         let mut values = Vec::with_capacity(plan.params.len());
         for param in &plan.params {
-            values.push(device.read(param)?);
+            values.push(device.read(param)?.value);
         }
         let sample = Sample {
             time_ms: elapsed.as_millis() as u64,
@@ -119,7 +121,7 @@ pub fn csv_row(sample: &Sample) -> String {
     let mut line = sample.time_ms.to_string();
     for v in &sample.values {
         line.push(',');
-        line.push_str(&v.to_string());
+        line.push_str(&v.to_csv());
     }
     line
 }
@@ -136,7 +138,7 @@ impl Recording {
         text
     }
 
-    /// Reads a recording back from CSV (as written by tmclsh: a `time_ms` column, then integers).
+    /// Reads a recording back from CSV (as written by tmclsh: a `time_ms` column, then values).
     pub fn from_csv(text: &str) -> Result<Recording, String> {
         let mut lines = text.lines().filter(|l| !l.trim().is_empty());
         let header = lines.next().ok_or("the file is empty")?;
@@ -156,27 +158,31 @@ impl Recording {
                     columns.len() + 1
                 ));
             }
-            let number = |cell: &str| {
-                cell.parse::<i64>()
-                    .map_err(|_| format!("line {row}: '{cell}' is not an integer"))
-            };
-            let time_ms = u64::try_from(number(cells[0])?)
-                .map_err(|_| format!("line {row}: time is negative"))?;
-            let values = cells[1..]
-                .iter()
-                .map(|c| number(c))
-                .collect::<Result<_, _>>()?;
+            let time_ms = cells[0]
+                .parse::<i64>()
+                .map_err(|_| format!("line {row}: '{}' is not an integer", cells[0]))?;
+            let time_ms =
+                u64::try_from(time_ms).map_err(|_| format!("line {row}: time is negative"))?;
+            let values = cells[1..].iter().map(|c| ParamValue::from_csv(c)).collect();
             samples.push(Sample { time_ms, values });
         }
         Ok(Recording { columns, samples })
     }
 
-    /// The (time in seconds, value) points of one column.
+    /// The (time in seconds, value) points of one column; samples whose value is not a number
+    /// are left out.
     pub fn series(&self, column: usize) -> Vec<(f64, f64)> {
         self.samples
             .iter()
-            .map(|s| (s.time_ms as f64 / 1000.0, s.values[column] as f64))
+            .filter_map(|s| Some((s.time_ms as f64 / 1000.0, s.values[column].as_f64()?)))
             .collect()
+    }
+
+    /// Whether a column holds numbers (a chart can draw it).
+    pub fn numeric(&self, column: usize) -> bool {
+        self.samples
+            .iter()
+            .all(|s| s.values[column].as_f64().is_some())
     }
 }
 
@@ -214,7 +220,9 @@ pub fn parse_duration(text: &str) -> Result<Duration, String> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::device::StoreStep;
     use super::super::fake::FakeDevice;
+    use super::super::value::Reading;
     use super::*;
     use crate::sim::clock::ManualClock;
 
@@ -255,8 +263,14 @@ mod tests {
         fn module_name(&self) -> String {
             self.inner.module_name()
         }
-        fn address(&self) -> u8 {
-            1
+        fn address(&self) -> Option<u32> {
+            Some(1)
+        }
+        fn who(&self) -> String {
+            "module 1".into()
+        }
+        fn memory(&self) -> &'static str {
+            "EEPROM"
         }
         fn firmware(&mut self) -> Option<String> {
             None
@@ -267,22 +281,22 @@ mod tests {
         fn find(&self, name: &str) -> Result<ParamRef, String> {
             self.inner.find(name)
         }
-        fn read(&mut self, _: &ParamRef) -> Result<i64, SessionError> {
+        fn read(&mut self, _: &ParamRef) -> Result<Reading, SessionError> {
             let t = self.clock.now().as_millis() as i64;
             self.clock.advance(self.read_cost);
-            Ok(t * 10)
+            Ok(Reading::of(t * 10))
         }
-        fn write(&mut self, p: &ParamRef, v: i64) -> Result<(), SessionError> {
+        fn write(&mut self, p: &ParamRef, v: &ParamValue) -> Result<(), SessionError> {
             self.inner.write(p, v)
         }
-        fn store(&mut self, p: &ParamRef) -> Result<(), SessionError> {
-            self.inner.store(p)
-        }
-        fn write_line(&self, p: &ParamRef, v: i64) -> String {
+        fn write_line(&self, p: &ParamRef, v: &ParamValue) -> String {
             self.inner.write_line(p, v)
         }
-        fn store_line(&self, p: &ParamRef) -> String {
-            self.inner.store_line(p)
+        fn store_steps(&self, params: &[&ParamRef]) -> Vec<StoreStep> {
+            self.inner.store_steps(params)
+        }
+        fn store(&mut self, step: &StoreStep) -> Result<(), SessionError> {
+            self.inner.store(step)
         }
     }
 
@@ -299,7 +313,11 @@ mod tests {
         let rec = record(&mut device, &plan, &clock, &mut || false, &mut |_| Ok(())).unwrap();
         let times: Vec<u64> = rec.samples.iter().map(|s| s.time_ms).collect();
         assert_eq!(times, [0, 30, 60, 90]);
-        let values: Vec<i64> = rec.samples.iter().map(|s| s.values[0]).collect();
+        let values: Vec<i64> = rec
+            .samples
+            .iter()
+            .filter_map(|s| s.values[0].as_i64())
+            .collect();
         assert_eq!(
             values,
             [0, 300, 600, 900],
@@ -345,11 +363,11 @@ mod tests {
             samples: vec![
                 Sample {
                     time_ms: 0,
-                    values: vec![1, -2],
+                    values: vec![1.into(), (-2).into()],
                 },
                 Sample {
                     time_ms: 20,
-                    values: vec![3, 4],
+                    values: vec![3.into(), 4.into()],
                 },
             ],
         };
@@ -357,9 +375,9 @@ mod tests {
         assert_eq!(text, "time_ms,a,b\n0,1,-2\n20,3,4\n");
         assert_eq!(Recording::from_csv(&text).unwrap(), rec);
         assert!(
-            Recording::from_csv("time_ms,a\n0,1\n5,x\n")
+            Recording::from_csv("time_ms,a\nx,1\n")
                 .unwrap_err()
-                .contains("line 3: 'x'")
+                .contains("line 2: 'x'")
         );
         assert!(
             Recording::from_csv("t,a\n")
@@ -371,6 +389,26 @@ mod tests {
                 .unwrap_err()
                 .contains("line 2 has 1")
         );
+    }
+
+    #[test]
+    fn real_numbers_and_text_round_trip_and_only_numbers_are_charted() {
+        let rec = Recording {
+            columns: vec!["MOTOR:PACT".into(), "SYS:FLAGS".into()],
+            samples: vec![Sample {
+                time_ms: 0,
+                values: vec![1000.0.into(), ParamValue::Text("0x0808 0x0000".into())],
+            }],
+        };
+        let text = rec.to_csv();
+        assert_eq!(
+            text,
+            "time_ms,MOTOR:PACT,SYS:FLAGS\n0,1000.0,0x0808 0x0000\n"
+        );
+        let back = Recording::from_csv(&text).unwrap();
+        assert_eq!(back, rec);
+        assert!(back.numeric(0) && !back.numeric(1));
+        assert_eq!(back.series(1), []);
     }
 
     #[test]

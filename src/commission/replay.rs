@@ -13,6 +13,7 @@
 //! row with nothing sent in between (a settled value), and kept as comments otherwise.
 
 pub mod parse;
+pub mod smd4;
 
 use std::fmt::Write as _;
 

@@ -15,6 +15,7 @@ use super::device::{ParamDevice, ParamRef};
 use super::plot;
 use super::record::{self, CsvFile, Recording};
 use super::scan;
+use super::smd4_scan;
 use super::watch::{self, Key, Screen, TerminalScreen};
 
 /// What the helpers remember between commands.
@@ -32,13 +33,15 @@ pub fn helper(
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
-    let what = format!(":{name}");
     match name {
-        "snapshot" => snapshot(param_device(session, &what)?, arg, out),
-        "scan" => scan_bus(session.tmcl(&what)?, arg, out),
-        "watch" => watch(param_device(session, &what)?, arg, out),
+        "snapshot" => snapshot(param_device(session), arg, out),
+        "scan" => match session {
+            Session::Tmcl(s) => scan_bus(s, arg, out),
+            Session::Smd4(s) => scan_drives(s, arg, out),
+        },
+        "watch" => watch(param_device(session), arg, out),
         "record" => {
-            let (path, recording) = record(param_device(session, &what)?, arg, out)?;
+            let (path, recording) = record(param_device(session), arg, out)?;
             state.last_recording = Some((path, recording));
             Ok(())
         }
@@ -49,17 +52,11 @@ pub fn helper(
     }
 }
 
-/// The session's module as a [`ParamDevice`]; a dialect whose session implements the trait gets
-/// an arm here.
-pub fn param_device<'a>(
-    session: &'a mut Session,
-    what: &str,
-) -> Result<&'a mut dyn ParamDevice, SessionError> {
+/// The session's module as a [`ParamDevice`]; every dialect's session implements it.
+pub fn param_device(session: &mut Session) -> &mut dyn ParamDevice {
     match session {
-        Session::Tmcl(s) => Ok(s),
-        Session::Smd4(_) => Err(SessionError::Usage(format!(
-            "{what} works with TMCL modules only"
-        ))),
+        Session::Tmcl(s) => s,
+        Session::Smd4(s) => s,
     }
 }
 
@@ -116,7 +113,7 @@ fn snapshot(
                         .into(),
                 ));
             }
-            let mut confirmed = |_: &super::restore::Plan| Ok(true);
+            let mut confirmed = |_: &str| Ok(true);
             actions::restore(session, Path::new(file), options, &mut confirmed, out).map(|_| ())
         }
         _ => Err(usage(USAGE)),
@@ -144,6 +141,33 @@ fn scan_bus(
     let quiet = scan::quiet_time(session.profile());
     let report = scan::scan(session, &addresses, per_reply, quiet)?;
     scan::write_report(&report, out)?;
+    Ok(())
+}
+
+fn scan_drives(
+    session: &mut crate::session::smd4::Smd4Session,
+    arg: &str,
+    out: &mut dyn Write,
+) -> Result<(), SessionError> {
+    const USAGE: &str = ":scan [ADDRESSES] [TIME PER REPLY]  (e.g. :scan 1-247 50ms)";
+    let words: Vec<&str> = arg.split_whitespace().collect();
+    let addresses: Vec<u32> = match words.first() {
+        Some(a) => scan::parse_addresses(a)
+            .map_err(|e| usage(&format!("{USAGE}; {e}")))?
+            .into_iter()
+            .map(u32::from)
+            .collect(),
+        None => (1..=crate::protocol::smd4::MAX_ADDRESS).collect(),
+    };
+    let per_reply = match words.get(1) {
+        Some(t) => record::parse_duration(t).map_err(|e| usage(&format!("{USAGE}; {e}")))?,
+        None => session.options().timeout,
+    };
+    if words.len() > 2 {
+        return Err(usage(USAGE));
+    }
+    let report = smd4_scan::scan(session, &addresses, per_reply)?;
+    smd4_scan::write_report(&report, out)?;
     Ok(())
 }
 

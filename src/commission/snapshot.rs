@@ -16,8 +16,18 @@
 //! user_variable_0 = { number = 0, value = 0, unit = "", access = "RWE" }
 //! ```
 //!
-//! `axis.N` holds motor N's axis parameters, `global.B` bank B's global parameters. A parameter the
-//! module refused to read has `error = "…"` instead of a value.
+//! `axis.N` holds motor N's axis parameters, `global.B` bank B's global parameters. A drive with
+//! one motor and named settings (SMD4) has a `drive` section keyed by mnemonic, with real numbers,
+//! text, the name of an enumerated value and the real value of a user/real pair:
+//!
+//! ```toml
+//! [drive]
+//! "SYS:MODE" = { value = 1, label = "Remote", unit = "", access = "RWE" }
+//! "MOTOR:IR" = { value = 1.0103, unit = "A rms", access = "RWE" }
+//! "MOTOR:AMAX" = { value = 150.0, real = 149.88, unit = "Hz/s", access = "RWE" }
+//! ```
+//!
+//! A parameter the module refused to read has `error = "…"` instead of a value.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -29,14 +39,15 @@ use crate::session::SessionError;
 
 use super::device::{ParamDevice, Scope};
 use super::progress::Progress;
+use super::value::{ParamValue, Reading};
 
 /// A module's parameters at one moment.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Snapshot {
     /// The module type ("TMCM-142").
     pub module: String,
-    /// The bus address it was read from.
-    pub address: u8,
+    /// The bus address it was read from, where requests carried one.
+    pub address: Option<u32>,
     /// The firmware version, where the module told it.
     pub firmware: Option<String>,
     /// When it was taken (RFC 3339).
@@ -48,16 +59,20 @@ pub struct Snapshot {
 }
 
 /// One parameter of a snapshot.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Entry {
     /// Where it lives.
     pub scope: Scope,
     /// Its identifier.
     pub name: String,
-    /// Its number.
-    pub number: u32,
+    /// Its number, where the dialect numbers parameters.
+    pub number: Option<u32>,
     /// The value, or why the module would not tell it.
-    pub value: Result<i64, String>,
+    pub value: Result<ParamValue, String>,
+    /// The real value of a user/real pair (informative: the drive derives it).
+    pub real: Option<f64>,
+    /// The name of an enumerated value (informative).
+    pub label: Option<String>,
     /// Its unit (informative).
     pub unit: String,
     /// Its access letters when it was saved (informative).
@@ -78,9 +93,9 @@ impl Snapshot {
         let mut entries = Vec::with_capacity(params.len());
         for param in &params {
             progress.step(&param.name);
-            let value = match device.read(param) {
-                Ok(value) => Ok(value),
-                Err(e @ SessionError::Device { .. }) => Err(e.to_string()),
+            let (value, real, label) = match device.read(param) {
+                Ok(Reading { value, real, label }) => (Ok(value), real, label),
+                Err(e @ SessionError::Device { .. }) => (Err(e.to_string()), None, None),
                 Err(e) => return Err(e),
             };
             entries.push(Entry {
@@ -88,6 +103,8 @@ impl Snapshot {
                 name: param.name.clone(),
                 number: param.number,
                 value,
+                real,
+                label,
                 unit: param.unit.clone(),
                 access: param.access.letters(),
             });
@@ -120,11 +137,14 @@ impl Snapshot {
         out.push_str(
             "# tmclsh parameter snapshot: every readable parameter, keyed by name.\n\
              # `tmclsh snapshot diff FILE` compares it with a module, `tmclsh snapshot restore FILE`\n\
-             # writes the settings back. Values may be edited; number, unit and access are notes.\n\n",
+             # writes the settings back. Values may be edited; number, unit, access, label and real\n\
+             # are notes.\n\n",
         );
         out.push_str("[module]\n");
         let _ = writeln!(out, "name = {}", quoted(&self.module));
-        let _ = writeln!(out, "address = {}", self.address);
+        if let Some(address) = self.address {
+            let _ = writeln!(out, "address = {address}");
+        }
         if let Some(firmware) = &self.firmware {
             let _ = writeln!(out, "firmware = {}", quoted(firmware));
         }
@@ -136,18 +156,23 @@ impl Snapshot {
                 let _ = write!(out, "\n[{}]\n", entry.scope.section());
                 section = Some(entry.scope);
             }
-            let value = match &entry.value {
-                Ok(v) => format!("value = {v}"),
-                Err(e) => format!("error = {}", quoted(e)),
-            };
-            let _ = writeln!(
-                out,
-                "{} = {{ number = {}, {value}, unit = {}, access = {} }}",
-                key(&entry.name),
-                entry.number,
-                quoted(&entry.unit),
-                quoted(&entry.access)
-            );
+            let mut fields = Vec::new();
+            if let Some(number) = entry.number {
+                fields.push(format!("number = {number}"));
+            }
+            match &entry.value {
+                Ok(v) => fields.push(format!("value = {}", v.to_toml())),
+                Err(e) => fields.push(format!("error = {}", quoted(e))),
+            }
+            if let Some(real) = entry.real {
+                fields.push(format!("real = {}", ParamValue::Float(real).to_toml()));
+            }
+            if let Some(label) = &entry.label {
+                fields.push(format!("label = {}", quoted(label)));
+            }
+            fields.push(format!("unit = {}", quoted(&entry.unit)));
+            fields.push(format!("access = {}", quoted(&entry.access)));
+            let _ = writeln!(out, "{} = {{ {} }}", key(&entry.name), fields.join(", "));
         }
         out
     }
@@ -166,23 +191,12 @@ impl Snapshot {
                     _ => Scope::Global { bank: n },
                 };
                 for (name, row) in rows {
-                    let value = match (row.value, &row.error) {
-                        (Some(v), _) => Ok(v),
-                        (None, Some(e)) => Err(e.clone()),
-                        (None, None) => {
-                            return Err(format!("[{kind}.{index}] {name}: no value"));
-                        }
-                    };
-                    entries.push(Entry {
-                        scope,
-                        name: name.clone(),
-                        number: row.number.unwrap_or(u32::MAX),
-                        value,
-                        unit: row.unit.clone(),
-                        access: row.access.clone(),
-                    });
+                    entries.push(row.entry(scope, name, &format!("[{kind}.{index}]"))?);
                 }
             }
+        }
+        for (name, row) in &file.drive {
+            entries.push(row.entry(Scope::Drive, name, "[drive]")?);
         }
         entries.sort_by(|a, b| (a.scope, a.number, &a.name).cmp(&(b.scope, b.number, &b.name)));
         Ok(Snapshot {
@@ -225,13 +239,15 @@ struct File {
     axis: BTreeMap<String, BTreeMap<String, Row>>,
     #[serde(default)]
     global: BTreeMap<String, BTreeMap<String, Row>>,
+    #[serde(default)]
+    drive: BTreeMap<String, Row>,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct ModuleRow {
     name: String,
-    address: u8,
+    address: Option<u32>,
     firmware: Option<String>,
     #[serde(default)]
     date: String,
@@ -243,12 +259,36 @@ struct ModuleRow {
 #[serde(deny_unknown_fields)]
 struct Row {
     number: Option<u32>,
-    value: Option<i64>,
+    value: Option<toml::Value>,
     error: Option<String>,
+    real: Option<f64>,
+    label: Option<String>,
     #[serde(default)]
     unit: String,
     #[serde(default)]
     access: String,
+}
+
+impl Row {
+    fn entry(&self, scope: Scope, name: &str, section: &str) -> Result<Entry, String> {
+        let value = match (&self.value, &self.error) {
+            (Some(v), _) => Ok(ParamValue::from_toml(v).ok_or_else(|| {
+                format!("{section} {name}: the value {v} is not a number or a string")
+            })?),
+            (None, Some(e)) => Err(e.clone()),
+            (None, None) => return Err(format!("{section} {name}: no value")),
+        };
+        Ok(Entry {
+            scope,
+            name: name.to_string(),
+            number: self.number,
+            value,
+            real: self.real,
+            label: self.label.clone(),
+            unit: self.unit.clone(),
+            access: self.access.clone(),
+        })
+    }
 }
 
 fn quoted(text: &str) -> String {

@@ -7,15 +7,24 @@ use crate::protocol::tmcl::line::Op;
 use crate::session::SessionError;
 use crate::session::tmcl::{Answer, TmclSession};
 
-use super::device::{ParamDevice, ParamRef, Scope};
+use super::device::{ParamDevice, ParamRef, Scope, StoreStep};
+use super::value::{ParamValue, Reading, Tolerance};
 
 impl ParamDevice for TmclSession {
     fn module_name(&self) -> String {
         self.profile().module.clone()
     }
 
-    fn address(&self) -> u8 {
-        self.target()
+    fn address(&self) -> Option<u32> {
+        Some(self.target().into())
+    }
+
+    fn who(&self) -> String {
+        format!("module {}", self.target())
+    }
+
+    fn memory(&self) -> &'static str {
+        "EEPROM"
     }
 
     fn firmware(&mut self) -> Option<String> {
@@ -54,37 +63,47 @@ impl ParamDevice for TmclSession {
         }
     }
 
-    fn read(&mut self, param: &ParamRef) -> Result<i64, SessionError> {
+    fn read(&mut self, param: &ParamRef) -> Result<Reading, SessionError> {
         let instruction = instruction(param, [6, 10], 0);
         let exchange = self.request(self.target(), instruction)?.checked()?;
         exchange
             .value()
-            .map(i64::from)
+            .map(|v| Reading::of(i64::from(v)))
             .ok_or_else(|| SessionError::Link(format!("no value in the reply '{}'", exchange.raw)))
     }
 
-    fn write(&mut self, param: &ParamRef, value: i64) -> Result<(), SessionError> {
+    fn write(&mut self, param: &ParamRef, value: &ParamValue) -> Result<(), SessionError> {
         let value = word(param, value)?;
         let instruction = instruction(param, [5, 9], value);
         self.request(self.target(), instruction)?.checked()?;
         Ok(())
     }
 
-    fn store(&mut self, param: &ParamRef) -> Result<(), SessionError> {
-        let instruction = instruction(param, [7, 11], 0);
-        self.request(self.target(), instruction)?.checked()?;
-        Ok(())
-    }
-
-    fn write_line(&self, param: &ParamRef, value: i64) -> String {
-        let value = i32::try_from(value).unwrap_or(i32::MAX);
+    fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
+        let value = word(param, value).unwrap_or(i32::MAX);
         let op = Op::Command(instruction(param, [5, 9], value));
         self.format(self.target(), op)
     }
 
-    fn store_line(&self, param: &ParamRef) -> String {
-        let op = Op::Command(instruction(param, [7, 11], 0));
-        self.format(self.target(), op)
+    fn store_steps(&self, params: &[&ParamRef]) -> Vec<StoreStep> {
+        params
+            .iter()
+            .map(|&param| {
+                let op = Op::Command(instruction(param, [7, 11], 0));
+                StoreStep {
+                    line: self.format(self.target(), op),
+                    params: vec![param.clone()],
+                }
+            })
+            .collect()
+    }
+
+    fn store(&mut self, step: &StoreStep) -> Result<(), SessionError> {
+        for param in &step.params {
+            let instruction = instruction(param, [7, 11], 0);
+            self.request(self.target(), instruction)?.checked()?;
+        }
+        Ok(())
     }
 }
 
@@ -109,28 +128,39 @@ pub(super) fn param_ref(profile: &Profile, p: &Param, scope: Scope) -> ParamRef 
     ParamRef {
         scope,
         name: p.ident.clone(),
-        number: p.number.into(),
+        number: Some(p.number.into()),
         unit: p.unit.clone(),
         access: p.access,
         role: profile.snapshot.role(p),
         rank: profile.snapshot.rank(&p.ident),
+        tolerance: Tolerance::Exact,
     }
 }
 
 /// The instruction for `param`: `commands[0]` for axis parameters, `commands[1]` for global ones.
 fn instruction(param: &ParamRef, commands: [u8; 2], value: i32) -> Instruction {
-    let number = u8::try_from(param.number).unwrap_or(u8::MAX);
+    let number = param
+        .number
+        .and_then(|n| u8::try_from(n).ok())
+        .unwrap_or(u8::MAX);
     match param.scope {
         Scope::Axis { motor } => Instruction::new(commands[0], number, motor, value),
         Scope::Global { bank } => Instruction::new(commands[1], number, bank, value),
+        // Not a TMCL scope: global bank 0, which the module refuses unless the number exists.
+        Scope::Drive => Instruction::new(commands[1], number, 0, value),
     }
 }
 
-fn word(param: &ParamRef, value: i64) -> Result<i32, SessionError> {
-    i32::try_from(value).map_err(|_| {
-        SessionError::Usage(format!(
-            "{} = {value} does not fit in a 32-bit TMCL value",
-            param.name
-        ))
-    })
+/// The 32-bit word of a TMCL value; real numbers and text are refused (as a refusal of this
+/// parameter, so a restore goes on with the others).
+fn word(param: &ParamRef, value: &ParamValue) -> Result<i32, SessionError> {
+    value
+        .as_i64()
+        .and_then(|v| i32::try_from(v).ok())
+        .ok_or_else(|| {
+            SessionError::Rejected(format!(
+                "{} = {value} is not a 32-bit integer, as TMCL values are",
+                param.name
+            ))
+        })
 }

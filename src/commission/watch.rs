@@ -14,6 +14,7 @@ use crossterm::{cursor, queue, terminal};
 use crate::session::{SessionError, interrupt};
 
 use super::device::{ParamDevice, ParamRef};
+use super::value::{ParamValue, Reading};
 
 /// What a key press means to a watch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -57,8 +58,8 @@ pub fn watch(
             });
         }
         let header = format!(
-            "module {} every {} ms, {:.1} s — any key stops, Ctrl-C stops the motor",
-            device.address(),
+            "{} every {} ms, {:.1} s — any key stops, Ctrl-C stops the motor",
+            device.who(),
             interval.as_millis(),
             start.elapsed().as_secs_f64()
         );
@@ -72,8 +73,13 @@ pub fn watch(
     }
 }
 
-/// One frame: the header, then a row per parameter (name, value, unit).
-pub fn render(header: &str, params: &[ParamRef], values: &[Result<i64, String>]) -> Vec<String> {
+/// One frame: the header, then a row per parameter (name, value, unit, and the real value of a
+/// user/real pair).
+pub fn render(
+    header: &str,
+    params: &[ParamRef],
+    values: &[Result<Reading, String>],
+) -> Vec<String> {
     let name_width = params
         .iter()
         .map(|p| p.name.len())
@@ -83,11 +89,16 @@ pub fn render(header: &str, params: &[ParamRef], values: &[Result<i64, String>])
     let shown: Vec<String> = values
         .iter()
         .map(|v| match v {
-            Ok(v) => v.to_string(),
+            Ok(v) => v.text(),
             Err(_) => "error".into(),
         })
         .collect();
-    let value_width = shown.iter().map(String::len).chain([5]).max().unwrap_or(5);
+    let value_width = shown
+        .iter()
+        .map(|s| s.chars().count())
+        .chain([5])
+        .max()
+        .unwrap_or(5);
     let mut lines = vec![
         header.to_string(),
         format!(
@@ -98,6 +109,9 @@ pub fn render(header: &str, params: &[ParamRef], values: &[Result<i64, String>])
     for ((param, value), original) in params.iter().zip(&shown).zip(values) {
         let tail = match original {
             Err(e) => e.clone(),
+            Ok(Reading {
+                real: Some(real), ..
+            }) => format!("{} (real {})", param.unit, ParamValue::Float(*real)),
             Ok(_) => param.unit.clone(),
         };
         let line = format!("{:<name_width$}  {value:>value_width$}  {tail}", param.name);
@@ -238,7 +252,11 @@ mod tests {
     fn rows_are_aligned_whatever_the_value_widths() {
         let device = FakeDevice::new();
         let params = vec![device.param("max_current"), device.param("actual_position")];
-        let lines = render("h", &params, &[Ok(5), Ok(-1234567)]);
+        let lines = render(
+            "h",
+            &params,
+            &[Ok(Reading::of(5)), Ok(Reading::of(-1234567))],
+        );
         let end_of = |line: &str, value: &str| line.find(value).unwrap() + value.len();
         assert_eq!(end_of(&lines[2], " 5"), end_of(&lines[3], "-1234567"));
         assert_eq!(

@@ -1,5 +1,6 @@
-//! How parameter snapshots treat each parameter, as data (the `[snapshot]` table of a profile):
-//! which values are live, which settings a restore writes first, and which it leaves to the user.
+//! How parameter snapshots treat each parameter, as data (the `[snapshot]` table of a profile, and
+//! of `data/smd4.toml`): which values are live, which settings a restore writes first or last, and
+//! which it leaves to the user.
 
 use serde::Deserialize;
 
@@ -14,6 +15,10 @@ pub struct SnapshotRules {
     /// Settings a restore writes before all others, in this order (unit modes, limits).
     #[serde(default)]
     pub first: Vec<String>,
+    /// Settings a restore writes after all others, in this order (a mode that hands the motor
+    /// to another input).
+    #[serde(default)]
+    pub last: Vec<String>,
     /// Settings compared but never written by a restore (link and EEPROM protection).
     #[serde(default)]
     pub manual: Vec<String>,
@@ -35,8 +40,13 @@ pub enum SnapshotRole {
 impl SnapshotRules {
     /// The role of `param` under these rules.
     pub fn role(&self, param: &Param) -> SnapshotRole {
-        let listed = |list: &[String]| list.contains(&param.ident);
-        if !param.access.write {
+        self.role_of(&param.ident, param.access.write)
+    }
+
+    /// The role of the parameter `ident`, writable or not, under these rules.
+    pub fn role_of(&self, ident: &str, writable: bool) -> SnapshotRole {
+        let listed = |list: &[String]| list.iter().any(|i| i == ident);
+        if !writable {
             SnapshotRole::ReadOnly
         } else if listed(&self.live) {
             SnapshotRole::Live
@@ -47,24 +57,34 @@ impl SnapshotRules {
         }
     }
 
-    /// Where `ident` comes in the restore order: its place in `first`, or after all of them.
+    /// Where `ident` comes in the restore order: its place in `first`; after all of them when in
+    /// neither list; after those, its place in `last`.
     pub fn rank(&self, ident: &str) -> usize {
-        self.first
-            .iter()
-            .position(|i| i == ident)
-            .unwrap_or(self.first.len())
+        let first = self.first.iter().position(|i| i == ident);
+        let last = self.last.iter().position(|i| i == ident);
+        match (first, last) {
+            (Some(i), _) => i,
+            (None, Some(i)) => self.first.len() + 1 + i,
+            (None, None) => self.first.len(),
+        }
     }
 
     /// Checks that every listed identifier names a parameter (a typo would silently not apply).
     pub(crate) fn check(&self, params: &[&Param]) -> Result<(), String> {
+        self.check_names(|ident| params.iter().any(|p| p.ident == ident))
+    }
+
+    /// Checks every listed identifier with `known`.
+    pub(crate) fn check_names(&self, known: impl Fn(&str) -> bool) -> Result<(), String> {
         let lists = [
             ("live", &self.live),
             ("first", &self.first),
+            ("last", &self.last),
             ("manual", &self.manual),
         ];
         for (list, idents) in lists {
             for ident in idents {
-                if !params.iter().any(|p| p.ident == *ident) {
+                if !known(ident) {
                     return Err(format!(
                         "[snapshot] {list} names '{ident}', which is not a parameter"
                     ));

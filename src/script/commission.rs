@@ -1,7 +1,8 @@
 //! The commissioning functions of scripts — the only file access a script has, and only to the
 //! path it names: `snapshot_save`, `snapshot_diff`, `snapshot_restore` (TOML files) and
 //! `record_csv` (CSV files). The extension is required, so a script cannot overwrite arbitrary
-//! files with a snapshot or a recording.
+//! files with a snapshot or a recording. The same functions serve TMCL modules and SMD4 drives;
+//! values come back as integers, real numbers or strings as the module has them.
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
@@ -13,7 +14,7 @@ use rhai::{Array, Dynamic, Engine, INT, Map};
 use crate::commission::actions::{self, RestoreOptions};
 use crate::commission::diff::{self, Side};
 use crate::commission::record::{self, CsvFile};
-use crate::commission::{ParamDevice, Snapshot};
+use crate::commission::{ParamDevice, ParamValue, Snapshot};
 use crate::sim::clock::SystemClock;
 
 use super::common::duration;
@@ -112,7 +113,7 @@ fn restore<S: ParamDevice>(session: &RefCell<S>, path: &str, store: bool) -> Fal
         &mut *session,
         &path,
         options,
-        &mut |_| Ok(true),
+        &mut |_: &str| Ok(true),
         &mut std::io::sink(),
     ))?;
     Ok(outcome.verified as INT)
@@ -171,8 +172,10 @@ fn names(value: &Dynamic) -> Fallible<Vec<String>> {
 }
 
 fn side(side: &Side) -> Dynamic {
-    match side {
-        Side::Value(v) => (*v as INT).into(),
-        Side::Missing | Side::Unreadable(_) => Dynamic::UNIT,
+    match side.value() {
+        Some(ParamValue::Int(i)) => (*i as INT).into(),
+        Some(ParamValue::Float(f)) => (*f as rhai::FLOAT).into(),
+        Some(ParamValue::Text(t)) => t.clone().into(),
+        None => Dynamic::UNIT,
     }
 }

@@ -107,7 +107,10 @@ pub fn run_source(
             (Session::Tmcl(s), result)
         }
         Session::Smd4(s) => {
-            let (s, result) = script.run(s, Smd4Session::annotate, smd4::register);
+            let (s, result) = script.run(s, Smd4Session::annotate, |engine, s| {
+                smd4::register(engine, s);
+                commission::register(engine, s);
+            });
             (Session::Smd4(s), result)
         }
     }

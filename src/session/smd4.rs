@@ -126,9 +126,26 @@ impl Smd4Session {
         &self.options
     }
 
+    /// Runs `f` with replies awaited at most `timeout` (a bus scan's time per address).
+    pub fn with_timeout<T>(&mut self, timeout: Duration, f: impl FnOnce(&mut Self) -> T) -> T {
+        let saved = std::mem::replace(&mut self.options.timeout, timeout);
+        let result = f(self);
+        self.options.timeout = saved;
+        result
+    }
+
     /// The `@N` prefix used for requests without one.
     pub fn address(&self) -> Option<u32> {
         self.smd4.address
+    }
+
+    /// The line `request` is sent as (the session's address applied), for dry runs.
+    pub fn format(&self, request: &Request) -> String {
+        let mut request = request.clone();
+        if request.address.is_none() {
+            request.address = self.smd4.address;
+        }
+        request.format(self.smd4.prefix)
     }
 
     /// Changes the prefix used for requests without one.

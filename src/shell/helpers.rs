@@ -197,28 +197,28 @@ pub const HELPERS: &[Helper] = &[
         ":snapshot save|diff|restore FILE",
         "save the module's parameters to a TOML file, compare with one, or write one back",
         ArgKind::Snapshot,
-        Only::Tmcl,
+        Only::Both,
     ),
     helper(
         "scan",
         ":scan [ADDRESSES] [TIME]",
-        "find the modules on the bus (default 1-26), with firmware and echo",
+        "find the modules on the bus (TMCL 1-26 with firmware and echo; SMD4 1-247)",
         ArgKind::Module,
-        Only::Tmcl,
+        Only::Both,
     ),
     helper(
         "watch",
         ":watch PARAM[,PARAM…] [INTERVAL]",
         "live table of parameters; any key stops, Ctrl-C also stops the motor",
         ArgKind::Param,
-        Only::Tmcl,
+        Only::Both,
     ),
     helper(
         "record",
         ":record FILE.csv PARAM[,…] [INTERVAL] [DURATION]",
         "sample parameters with timestamps into a CSV file",
         ArgKind::Record,
-        Only::Tmcl,
+        Only::Both,
     ),
     helper(
         "plot",
@@ -291,7 +291,12 @@ mod tests {
                 .unwrap_err()
                 .contains("ambiguous: :raw, :run, :reset, :record")
         );
-        assert_eq!(find("r", Dialect::Smd4).unwrap().name, "raw");
+        assert!(
+            find("r", Dialect::Smd4)
+                .unwrap_err()
+                .contains("ambiguous: :raw, :record")
+        );
+        assert_eq!(find("ra", Dialect::Smd4).unwrap().name, "raw");
         assert_eq!(
             find("prams", Dialect::Tmcl).unwrap_err(),
             "unknown helper ':prams'; did you mean :params?; :help lists them"

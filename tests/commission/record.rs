@@ -68,13 +68,17 @@ fn samples_follow_a_move_exactly_on_a_shared_manual_clock() {
     for sample in &recording.samples {
         let t = sample.time_ms as f64 / 1000.0;
         let expected = trapezoid(8000.0, 8000.0, 16000.0, t);
-        let position = sample.values[0] as f64;
+        let position = sample.values[0].as_f64().unwrap();
         assert!(
             (position - expected).abs() <= 1.0,
             "at {t} s: position {position}, the trapezoid says {expected}"
         );
     }
-    let speeds: Vec<i64> = recording.samples.iter().map(|s| s.values[1]).collect();
+    let speeds: Vec<i64> = recording
+        .samples
+        .iter()
+        .map(|s| s.values[1].as_i64().unwrap())
+        .collect();
     assert_eq!(speeds[5], 8000, "cruising at 0.5 s");
     assert_eq!(*speeds.last().unwrap(), 0, "stopped at the end");
     assert!(speeds[..5].windows(2).all(|w| w[0] <= w[1]), "{speeds:?}");
@@ -115,7 +119,11 @@ fn record_and_plot_a_move_over_tcp() {
     assert!(n >= 2, "{text}");
     let times: Vec<u64> = recording.samples.iter().map(|s| s.time_ms).collect();
     assert!(times.windows(2).all(|w| w[0] < w[1]), "{times:?}");
-    let positions: Vec<i64> = recording.samples.iter().map(|s| s.values[0]).collect();
+    let positions: Vec<i64> = recording
+        .samples
+        .iter()
+        .map(|s| s.values[0].as_i64().unwrap())
+        .collect();
     assert!(positions.windows(2).all(|w| w[0] <= w[1]), "{positions:?}");
     assert!(positions.iter().all(|p| (0..=100_000).contains(p)));
     let shown = stdout(&out);

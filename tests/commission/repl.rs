@@ -14,14 +14,16 @@ use crate::sim::{PATIENCE, Sim};
 use crate::util::{bin, tempdir};
 
 /// `tmclsh` running on the slave side of a pseudo-terminal.
-struct Terminal {
+pub(super) struct Terminal {
     master: File,
     child: Child,
     seen: String,
+    /// Cursor-position queries answered so far.
+    answered: usize,
 }
 
 impl Terminal {
-    fn spawn(args: &[&str]) -> Terminal {
+    pub(super) fn spawn(args: &[&str]) -> Terminal {
         let pty = nix::pty::openpty(None, None).expect("a pseudo-terminal");
         let slave: OwnedFd = pty.slave;
         let home = tempdir();
@@ -40,17 +42,18 @@ impl Terminal {
             master: File::from(pty.master),
             child,
             seen: String::new(),
+            answered: 0,
         }
     }
 
-    fn send(&mut self, text: &str) {
+    pub(super) fn send(&mut self, text: &str) {
         self.master.write_all(text.as_bytes()).unwrap();
         self.master.flush().unwrap();
     }
 
     /// Reads until the output since the last call contains `needle` (answering cursor-position
     /// queries as a terminal would); returns that output.
-    fn until(&mut self, needle: &str) -> String {
+    pub(super) fn until(&mut self, needle: &str) -> String {
         let deadline = Instant::now() + PATIENCE;
         let start = self.seen.len();
         while !self.seen[start..].contains(needle) {
@@ -71,17 +74,19 @@ impl Terminal {
                 "tmclsh closed the terminal; it showed {:?}",
                 &self.seen[start..]
             );
-            let text = String::from_utf8_lossy(&buf[..n]).into_owned();
-            if text.contains("\x1b[6n") {
+            self.seen.push_str(&String::from_utf8_lossy(&buf[..n]));
+            // Counted over everything seen: a query may arrive split over two reads.
+            let queries = self.seen.matches("\x1b[6n").count();
+            for _ in self.answered..queries {
                 self.send("\x1b[1;1R");
             }
-            self.seen.push_str(&text);
+            self.answered = queries;
         }
         self.seen[start..].to_string()
     }
 
     /// Waits for the exit code.
-    fn exit_code(&mut self) -> i32 {
+    pub(super) fn exit_code(&mut self) -> i32 {
         let deadline = Instant::now() + PATIENCE;
         loop {
             if let Some(status) = self.child.try_wait().unwrap() {
@@ -98,7 +103,7 @@ impl Terminal {
     }
 
     /// Whether the terminal is back in line mode with echo (not left raw).
-    fn cooked(&self) -> bool {
+    pub(super) fn cooked(&self) -> bool {
         let modes = tcgetattr(self.master.as_fd()).unwrap();
         modes
             .local_flags

@@ -6,6 +6,11 @@ use super::super::fake::FakeDevice;
 use super::super::restore::{self, Reason};
 use super::*;
 
+/// A diff side holding the integer `v`.
+fn int(v: i64) -> Side {
+    Side::Value(Reading::of(v))
+}
+
 fn captured(device: &mut FakeDevice) -> Snapshot {
     Snapshot::capture(device).unwrap()
 }
@@ -39,9 +44,9 @@ fn only_readable_parameters_are_saved_with_name_number_and_unit() {
     let e = snapshot
         .get(Scope::Axis { motor: 0 }, "actual_position")
         .unwrap();
-    assert_eq!((e.number, e.unit.as_str()), (1, "usteps"));
+    assert_eq!((e.number, e.unit.as_str()), (Some(1), "usteps"));
     assert_eq!(snapshot.module, "TMCM-142");
-    assert_eq!(snapshot.address, 1);
+    assert_eq!(snapshot.address, Some(1));
 }
 
 #[test]
@@ -98,13 +103,13 @@ fn the_diff_with_a_module_shows_exactly_the_changed_settings() {
         [
             (
                 "max_current",
-                &Side::Value(before("max_current")),
-                &Side::Value(3)
+                &Side::Value(Reading::of(before("max_current"))),
+                &int(3)
             ),
             (
                 "user_variable_55",
-                &Side::Value(before("user_variable_55")),
-                &Side::Value(9)
+                &Side::Value(Reading::of(before("user_variable_55"))),
+                &int(9)
             ),
         ]
     );
@@ -154,13 +159,15 @@ fn two_files_are_compared_by_name_including_entries_only_one_has() {
         .iter()
         .position(|e| e.name == "max_current")
         .unwrap();
-    right.entries[i].value = Ok(1);
+    right.entries[i].value = Ok(1.into());
     right.entries.retain(|e| e.name != "standby_current");
     right.entries.push(Entry {
         scope: Scope::Global { bank: 9 },
         name: "mystery".into(),
-        number: 1,
-        value: Ok(5),
+        number: Some(1),
+        value: Ok(5.into()),
+        real: None,
+        label: None,
         unit: String::new(),
         access: "RW".into(),
     });
@@ -173,9 +180,9 @@ fn two_files_are_compared_by_name_including_entries_only_one_has() {
     assert_eq!(
         names,
         [
-            ("max_current", &Side::Value(1)),
+            ("max_current", &int(1)),
             ("standby_current", &Side::Missing),
-            ("mystery", &Side::Value(5)),
+            ("mystery", &int(5)),
         ]
     );
 }
@@ -199,7 +206,7 @@ fn restore_writes_unit_mode_and_limits_first_then_table_order() {
     let numbers: Vec<u32> = plan.writes[4..]
         .iter()
         .filter(|(p, _)| matches!(p.scope, Scope::Axis { .. }))
-        .map(|(p, _)| p.number)
+        .filter_map(|(p, _)| p.number)
         .collect();
     assert!(numbers.windows(2).all(|w| w[0] < w[1]), "{numbers:?}");
     assert!(order.iter().all(|n| device.param(n).access.write));
@@ -241,7 +248,7 @@ fn a_restore_brings_changed_settings_back_and_verifies_each() {
     let outcome = restore::execute(&mut device, &plan).unwrap();
     assert_eq!(device.get("max_current"), 10);
     assert_eq!(
-        device.get("pid_p"),
+        ParamValue::Int(device.get("pid_p")),
         snapshot
             .get(Scope::Axis { motor: 0 }, "pid_p")
             .unwrap()
@@ -297,12 +304,12 @@ fn store_happens_only_when_confirmed_and_only_for_eeprom_parameters() {
         store: true,
         dry_run: false,
     };
-    let mut no = |_: &restore::Plan| Ok(false);
+    let mut no = |_: &str| Ok(false);
     actions::restore(&mut device, &path, options, &mut no, &mut Vec::new()).unwrap();
     assert!(!device.log.iter().any(|l| l.starts_with("store")));
     device.log.clear();
     device.set("standby_current", 9);
-    let mut yes = |_: &restore::Plan| Ok(true);
+    let mut yes = |_: &str| Ok(true);
     let outcome = actions::restore(&mut device, &path, options, &mut yes, &mut Vec::new()).unwrap();
     let stored: Vec<&str> = device
         .log
@@ -342,7 +349,7 @@ fn a_dry_run_prints_the_lines_and_sends_nothing() {
         dry_run: true,
     };
     let mut out = Vec::new();
-    let mut never = |_: &restore::Plan| -> Result<bool, SessionError> { panic!("no prompt") };
+    let mut never = |_: &str| -> Result<bool, SessionError> { panic!("no prompt") };
     actions::restore(&mut device, &path, options, &mut never, &mut out).unwrap();
     assert!(device.log.is_empty());
     assert_eq!(device.get("pid_p"), 3);

@@ -11,6 +11,8 @@ pub(crate) struct Smd4File {
     #[serde(default)]
     pub simulation: SimulationRow,
     #[serde(default)]
+    pub snapshot: SnapshotRow,
+    #[serde(default)]
     pub error_code: Vec<ErrorCodeRow>,
     #[serde(default)]
     pub sflag: Vec<FlagRow>,
@@ -28,6 +30,16 @@ pub(crate) struct SimulationRow {
     pub dhcp_gateway: Option<String>,
     pub external_enable_input: Option<bool>,
     pub sstop_seconds: Option<f64>,
+}
+
+/// The `[snapshot]` section: the lists every profile has, and the SMD4's own rules.
+#[derive(Debug, Default, Deserialize)]
+pub(crate) struct SnapshotRow {
+    #[serde(flatten)]
+    pub rules: crate::profile::SnapshotRules,
+    #[serde(default)]
+    pub needs_standby: bool,
+    pub float_digits: Option<u32>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -35,6 +35,6 @@ pub use items::{DataItem, Value};
 pub use multiline::{Progress, ReplyCollector, default_quiet_gap};
 pub use request::{ADDRESSING_HELP, PrefixStyle, Request, RequestError};
 pub use response::{Expectation, Response, ResponseError, parse_response};
-pub use spec::{SimConstants, Smd4Spec};
+pub use spec::{SimConstants, Smd4Spec, SnapshotSpec};
 pub use types::{ArgValue, ItemType};
 pub use validate::{Access, Checked, MAX_ADDRESS, ValidationError, validate};

@@ -9,6 +9,7 @@ use super::commands::CommandTable;
 use super::errors::ErrorInfo;
 use super::flags::FlagTable;
 use super::load::Smd4File;
+use crate::profile::SnapshotRules;
 
 /// The data file, kept in the repository as the single source of truth and built into the binary.
 pub const BUILTIN_TOML: &str = include_str!("../../../data/smd4.toml");
@@ -30,6 +31,17 @@ pub struct SimConstants {
     pub sstop_seconds: f64,
 }
 
+/// How parameter snapshots treat the drive's values (the `[snapshot]` section).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SnapshotSpec {
+    /// Live, first, last and manual lists, by canonical mnemonic.
+    pub rules: SnapshotRules,
+    /// A restore starts only while the drive reports standby.
+    pub needs_standby: bool,
+    /// Significant digits FLOAT replies carry: real values are compared to this precision.
+    pub float_digits: u32,
+}
+
 /// Everything the data file says about the SMD4.
 #[derive(Debug, Clone)]
 pub struct Smd4Spec {
@@ -43,6 +55,8 @@ pub struct Smd4Spec {
     pub errors: Vec<ErrorInfo>,
     /// Simulator constants.
     pub sim: SimConstants,
+    /// Snapshot rules.
+    pub snapshot: SnapshotSpec,
 }
 
 impl Smd4Spec {
@@ -63,8 +77,16 @@ impl Smd4Spec {
                 .map(|t| t.parse().map_err(|_| format!("bad IPv4 address '{t}'")))
                 .unwrap_or(Ok(fallback))
         };
+        let commands = CommandTable::from_rows(&file.command)?;
+        let rules = file.snapshot.rules.clone();
+        rules.check_names(|name| commands.get(name).is_some_and(|c| c.mnemonic == name))?;
         Ok(Smd4Spec {
-            commands: CommandTable::from_rows(&file.command)?,
+            snapshot: SnapshotSpec {
+                rules,
+                needs_standby: file.snapshot.needs_standby,
+                float_digits: file.snapshot.float_digits.unwrap_or(5),
+            },
+            commands,
             sflags: FlagTable::from_rows(&file.sflag),
             eflags: FlagTable::from_rows(&file.eflag),
             errors: file
@@ -158,5 +180,11 @@ mod tests {
         let bad = "[[command]]\nmnemonic = \"X\"\nkind = \"query\"\nreply = \"value\"\n";
         assert!(Smd4Spec::from_toml(bad).unwrap_err().contains("value_type"));
         assert!(Smd4Spec::from_toml("not toml [").is_err());
+        let bad = "[snapshot]\nfirst = [\"MOTOR:NOPE\"]\n";
+        assert!(
+            Smd4Spec::from_toml(bad)
+                .unwrap_err()
+                .contains("[snapshot] first names 'MOTOR:NOPE'")
+        );
     }
 }
