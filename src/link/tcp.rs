@@ -50,13 +50,25 @@ impl Link for TcpLink {
 
     fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
         let wait = deadline.saturating_duration_since(Instant::now());
-        if wait.is_zero() {
-            return Err(LinkError::Timeout);
+        // A deadline already past still takes what has arrived (a non-blocking read), so the
+        // session's drain before each request really empties the socket.
+        let now_only = wait.is_zero();
+        if now_only {
+            self.stream
+                .set_nonblocking(true)
+                .map_err(LinkError::from_io)?;
+        } else {
+            self.stream
+                .set_read_timeout(Some(wait))
+                .map_err(LinkError::from_io)?;
         }
-        self.stream
-            .set_read_timeout(Some(wait))
-            .map_err(LinkError::from_io)?;
-        match self.stream.read(buf) {
+        let result = self.stream.read(buf);
+        if now_only {
+            self.stream
+                .set_nonblocking(false)
+                .map_err(LinkError::from_io)?;
+        }
+        match result {
             Ok(0) => Err(LinkError::Lost(format!(
                 "{} closed the connection",
                 self.address
@@ -98,5 +110,42 @@ impl Link for TcpLink {
     fn reopen(&mut self) -> Result<(), LinkError> {
         self.stream = connect(&self.address, Duration::from_secs(2))?;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::io::Write;
+    use std::net::TcpListener;
+
+    use super::*;
+
+    #[test]
+    fn a_past_deadline_still_takes_what_has_arrived() {
+        let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+        let address = listener.local_addr().unwrap().to_string();
+        let mut link = TcpLink::connect(&address, Duration::from_secs(5)).unwrap();
+        let (mut peer, _) = listener.accept().unwrap();
+        peer.write_all(b"abc").unwrap();
+        let mut buf = [0u8; 1];
+        let deadline = Instant::now() + Duration::from_secs(5);
+        assert_eq!(
+            link.recv(&mut buf, deadline).unwrap(),
+            1,
+            "the first byte is there"
+        );
+        let mut rest = [0u8; 8];
+        let n = link.recv(&mut rest, Instant::now()).unwrap();
+        assert_eq!(&rest[..n], b"bc", "taken without waiting");
+        assert!(matches!(
+            link.recv(&mut rest, Instant::now()),
+            Err(LinkError::Timeout)
+        ));
+        drop(peer);
+        let n = link.recv(&mut rest, Instant::now() + Duration::from_secs(5));
+        assert!(
+            matches!(n, Err(LinkError::Lost(_))),
+            "a closed peer is a lost link"
+        );
     }
 }
