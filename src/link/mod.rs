@@ -1,6 +1,7 @@
 //! Links: the byte pipes between tmclsh and a module — a serial port, a TCP socket, or the
-//! built-in simulator in-process. Small on purpose: send, receive before a deadline, describe,
-//! discard stale input, reopen after the link was lost.
+//! built-in simulator in-process. Small on purpose: send, receive before a deadline (a deadline
+//! already past takes what has arrived, which is how stale input is drained), describe, reopen
+//! after the link was lost.
 
 mod serial;
 mod tcp;
@@ -48,9 +49,6 @@ pub trait Link: Send {
     /// read into `buf` (never 0), or [`LinkError::Timeout`]. A deadline already past still
     /// returns bytes that have arrived, without waiting.
     fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError>;
-
-    /// Drops bytes that have already arrived (stale replies, line noise), without waiting.
-    fn discard_input(&mut self) -> Result<(), LinkError>;
 
     /// What the link talks to, for banners and messages ("serial /dev/ttyUSB0 at 9600 baud").
     fn describe(&self) -> String;

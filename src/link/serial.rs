@@ -79,12 +79,6 @@ impl Link for SerialLink {
         }
     }
 
-    fn discard_input(&mut self) -> Result<(), LinkError> {
-        self.port
-            .clear(serialport::ClearBuffer::Input)
-            .map_err(|e| LinkError::Lost(e.to_string()))
-    }
-
     fn describe(&self) -> String {
         format!("serial {} at {} baud", self.path, self.baud)
     }

@@ -78,31 +78,6 @@ impl Link for TcpLink {
         }
     }
 
-    fn discard_input(&mut self) -> Result<(), LinkError> {
-        self.stream
-            .set_nonblocking(true)
-            .map_err(LinkError::from_io)?;
-        let mut buf = [0u8; 512];
-        let result = loop {
-            match self.stream.read(&mut buf) {
-                Ok(0) => {
-                    break Err(LinkError::Lost(format!(
-                        "{} closed the connection",
-                        self.address
-                    )));
-                }
-                Ok(_) => continue,
-                Err(e) if e.kind() == std::io::ErrorKind::WouldBlock => break Ok(()),
-                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
-                Err(e) => break Err(LinkError::from_io(e)),
-            }
-        };
-        self.stream
-            .set_nonblocking(false)
-            .map_err(LinkError::from_io)?;
-        result
-    }
-
     fn describe(&self) -> String {
         format!("tcp {}", self.address)
     }

@@ -25,9 +25,6 @@ impl Link for Counting {
     fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
         self.inner.recv(buf, deadline)
     }
-    fn discard_input(&mut self) -> Result<(), LinkError> {
-        self.inner.discard_input()
-    }
     fn describe(&self) -> String {
         self.inner.describe()
     }

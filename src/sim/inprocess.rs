@@ -120,14 +120,6 @@ impl Link for SimLink {
         }
     }
 
-    fn discard_input(&mut self) -> Result<(), LinkError> {
-        self.pending.clear();
-        let now = self.clock.now();
-        let mut stale = Vec::new();
-        self.lock().poll_output(now, &mut stale);
-        Ok(())
-    }
-
     fn describe(&self) -> String {
         self.name.clone()
     }

@@ -194,11 +194,6 @@ impl Link for FakeLink {
         Ok(n)
     }
 
-    fn discard_input(&mut self) -> Result<(), LinkError> {
-        self.module.wire.lock().unwrap().out.clear();
-        Ok(())
-    }
-
     fn describe(&self) -> String {
         "scripted module".into()
     }
