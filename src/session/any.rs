@@ -130,9 +130,8 @@ impl Session {
         match self {
             Session::Tmcl(s) => {
                 let target = s.target();
-                for motor in 0..s.profile().axes {
-                    let mst = crate::protocol::tmcl::Instruction::new(3, 0, motor, 0);
-                    match s.request(target, mst) {
+                for (motor, result) in s.stop_motors(target) {
+                    match result {
                         Ok(_) => report.push(format!(
                             "interrupted: stopped motor {motor} of the target module (MST)"
                         )),

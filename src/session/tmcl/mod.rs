@@ -303,6 +303,18 @@ impl TmclSession {
         }
     }
 
+    /// Sends MST to every motor of `module`; the answer for each motor.
+    pub fn stop_motors(&mut self, module: u8) -> Vec<(u8, Result<Exchange, SessionError>)> {
+        (0..self.profile.axes)
+            .map(|motor| {
+                (
+                    motor,
+                    self.request(module, Instruction::new(3, 0, motor, 0)),
+                )
+            })
+            .collect()
+    }
+
     /// Stops every module this session set moving or whose program it started (MST, and STOP /
     /// command 128 for programs). Returns what was done, for the user.
     pub fn stop_motion(&mut self) -> Vec<String> {
@@ -318,9 +330,8 @@ impl TmclSession {
         let moved: Vec<u8> = self.moved.iter().copied().collect();
         for module in moved {
             let c = address_char(module).unwrap_or('?');
-            for motor in 0..self.profile.axes {
-                let mst = Instruction::new(3, 0, motor, 0);
-                match self.request(module, mst) {
+            for (motor, result) in self.stop_motors(module) {
+                match result {
                     Ok(x) if x.ok() => {
                         report.push(format!("stopped motor {motor} of module {c} (MST)"))
                     }
