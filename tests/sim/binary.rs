@@ -22,7 +22,9 @@ fn binary_frames_over_the_pty() {
     assert_eq!(port.transact(1, 5, 8, 0, 1).status, Status::WrongType);
     assert_eq!(port.transact(1, 5, 6, 0, 99).status, Status::InvalidValue);
     assert_eq!(port.transact(1, 29, 0, 0, 0).status, Status::NotAvailable);
-    assert_eq!(port.transact(1, 19, 0, 0, 0).status, Status::InvalidCommand);
+    // JA is for programs only; CALC may also be sent directly (manual 6.4.4 / 6.4.5).
+    assert_eq!(port.transact(1, 22, 0, 0, 0).status, Status::InvalidCommand);
+    assert_eq!(port.transact(1, 19, 9, 0, 5).status, Status::Ok);
 
     port.send(&frame(1, 136, 0, 0, 0));
     let version = port.read_n(9);

@@ -88,6 +88,8 @@ const CCO: u8 = 32;
 const AAP: u8 = 34;
 const AGP: u8 = 35;
 const ACO: u8 = 39;
+const CALC: u8 = 19;
+const CALCX: u8 = 33;
 
 /// EEPROM lock values of GP 73 (generic TMCL reference).
 const LOCK: i32 = 1234;
@@ -206,6 +208,8 @@ impl Machine {
             SCO => self.set_coordinate(i.type_, value)?,
             ACO => self.set_coordinate(i.type_, self.vm.acc)?,
             CCO => self.set_coordinate(i.type_, self.axis.counter(t))?,
+            // Only a division by zero fails here: the keyword was checked before.
+            CALC | CALCX => self.calculate(i).map_err(|_| Status::InvalidValue)?,
             GCO => return Ok(self.coords[i.type_ as usize]),
             _ => return Err(Status::InvalidCommand),
         }

@@ -299,16 +299,23 @@ impl Machine {
         }
     }
 
+    /// CALC and CALCX on the one accumulator and X register, from a program or in direct mode
+    /// (manual 6.4.5: calculation commands may be used in both).
+    pub(super) fn calculate(&mut self, i: &Instruction) -> Result<(), ProgramError> {
+        match (i.command, i.type_) {
+            (CALC, op) => self.vm.acc = calc(op, self.vm.acc, i.value)?,
+            (_, 9) => self.vm.x = self.vm.acc,
+            (_, 10) => std::mem::swap(&mut self.vm.acc, &mut self.vm.x),
+            (_, op) => self.vm.acc = calc(op, self.vm.acc, self.vm.x)?,
+        }
+        Ok(())
+    }
+
     fn instruction(&mut self, t: f64, i: &Instruction) -> Result<(), ProgramError> {
         let next = t + self.instruction_time();
         let mut next_pc = self.vm.pc + 1;
         match i.command {
-            CALC => self.vm.acc = calc(i.type_, self.vm.acc, i.value)?,
-            CALCX => match i.type_ {
-                9 => self.vm.x = self.vm.acc,
-                10 => std::mem::swap(&mut self.vm.acc, &mut self.vm.x),
-                op => self.vm.acc = calc(op, self.vm.acc, self.vm.x)?,
-            },
+            CALC | CALCX => self.calculate(i)?,
             COMP => self.vm.compared = Some(self.vm.acc.cmp(&i.value)),
             JC => {
                 use Ordering::{Equal, Greater, Less};

@@ -37,14 +37,30 @@ fn valid_lines_pass_without_warnings() {
 #[test]
 fn program_only_commands_are_refused_in_ascii_and_direct_mode() {
     assert_eq!(
-        refused("CALC ADD, 5", Mode::Ascii),
-        "CALC only exists inside stand-alone TMCL programs"
+        refused("COMP 5", Mode::Ascii),
+        "COMP only exists inside stand-alone TMCL programs"
     );
     assert_eq!(
         refused("JA 0", Mode::Binary),
         "JA only exists inside stand-alone TMCL programs"
     );
     assert!(check("CALC ADD, 5", Mode::Program).is_ok());
+}
+
+#[test]
+fn calculation_commands_share_one_rule_direct_yes_ascii_no() {
+    // Manual 6.4.5: CALC, CALCX, AAP, AGP and ACO "could also be used in direct mode".
+    for line in [
+        "CALC ADD, 5",
+        "CALCX SWAP",
+        "AAP 4, 0",
+        "AGP 0, 2",
+        "ACO 1, 0",
+    ] {
+        assert!(check(line, Mode::Binary).is_ok(), "{line}");
+        let e = refused(line, Mode::Ascii);
+        assert!(e.contains("is not available in ASCII mode"), "{line}: {e}");
+    }
 }
 
 #[test]

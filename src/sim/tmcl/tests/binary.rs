@@ -441,3 +441,14 @@ fn enter_ascii_mode_replies_then_speaks_ascii() {
     assert_eq!(sim.ok(139, 0, 0, 0), 0);
     assert_eq!(sim.line("AGAP 4, 0"), "AGAP 4, 0\rBA 100 1000000\r");
 }
+
+#[test]
+fn calculations_in_direct_mode_work_on_the_one_accumulator() {
+    let mut sim = Sim::new();
+    assert_eq!(sim.status(19, 9, 0, 700), Status::Ok); // CALC LOAD, 700
+    assert_eq!(sim.status(19, 0, 0, 11), Status::Ok); // CALC ADD, 11
+    assert_eq!(sim.status(19, 3, 0, 0), Status::InvalidValue); // CALC DIV, 0
+    assert_eq!(sim.status(33, 9, 0, 0), Status::Ok); // CALCX LOAD: X := 711
+    assert_eq!(sim.status(34, 4, 0, 0), Status::Ok); // AAP 4, 0
+    assert_eq!(sim.frame(1, 6, 4, 0, 0).value, 711); // GAP 4, 0
+}
