@@ -14,7 +14,7 @@ use super::connection::ModuleArgs;
 use super::position::{flag, leaf_matches, subcommand_mut, subcommand_path};
 
 /// Shared options a subcommand receives with the group but has no use for: hidden from its help
-/// and refused when given. (subcommand, option ids, why)
+/// and refused when given. (subcommand, option ids, why) — the ids are checked by a test.
 const UNUSED: &[(&str, &[&str], &str)] = &[
     (
         "download",
@@ -65,8 +65,8 @@ const SMD4_ONLY: &[&str] = &["address", "prefix_comma", "quiet_gap"];
 /// Subcommands that read no module tables (`--profile` is global, so every one receives it).
 const NO_TABLES: &[&str] = &["ports", "completions"];
 
-/// Hides the options of [`UNUSED`] from the help and completions of their subcommands (they are
-/// still parsed, so that [`check`] can say why they are refused).
+/// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
+/// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).
 pub fn hide_unused(mut cmd: Command) -> Command {
     for (path, ids, _) in UNUSED {
         let words: Vec<&str> = path.split(' ').collect();
@@ -96,8 +96,27 @@ fn in_subcommand(cmd: Command, words: &[&str], f: &dyn Fn(Command) -> Command) -
 /// parsed command has no use for. `cmd` is the built command `matches` came from.
 pub fn check(cmd: &mut Command, matches: &ArgMatches) -> Result<(), clap::Error> {
     let path = subcommand_path(matches).unwrap_or_default();
-    let words = path.join(" ");
-    let leaf = leaf_matches(matches);
+    let refusals = refusals(&path.join(" "), leaf_matches(matches));
+    if refusals.is_empty() {
+        return Ok(());
+    }
+    let sub = subcommand_mut(cmd, &path);
+    let lines: Vec<String> = refusals
+        .iter()
+        .map(|(id, why)| {
+            let arg = sub
+                .get_arguments()
+                .find(|a| a.get_id().as_str() == id)
+                .expect("a given option is an argument of its command");
+            format!("{} {why}", flag(arg))
+        })
+        .collect();
+    Err(sub.error(ErrorKind::ArgumentConflict, lines.join("\n")))
+}
+
+/// The options given on the command line of subcommand `words` ("" for the shell) that it has no
+/// use for, each once, with why.
+fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
     let given = |id: &str| {
         leaf.ids().any(|i| i.as_str() == id)
             && leaf.value_source(id) == Some(ValueSource::CommandLine)
@@ -105,7 +124,9 @@ pub fn check(cmd: &mut Command, matches: &ArgMatches) -> Result<(), clap::Error>
     let mut refusals: Vec<(String, String)> = Vec::new();
     let mut refuse = |ids: &[&str], why: String| {
         for id in ids.iter().filter(|id| given(id)) {
-            refusals.push((id.to_string(), why.clone()));
+            if refusals.iter().all(|(seen, _)| seen != id) {
+                refusals.push((id.to_string(), why.clone()));
+            }
         }
     };
     let named = if words.is_empty() {
@@ -127,47 +148,32 @@ pub fn check(cmd: &mut Command, matches: &ArgMatches) -> Result<(), clap::Error>
         None => {}
     }
     if words == "download" && dialect(leaf) == Some(Dialect::Smd4) {
-        refuse(
-            &["protocol"],
-            format!("smd4 does not apply to {named}: it works with TMCL modules only"),
-        );
+        let why = format!("smd4 does not apply to {named}: it works with TMCL modules only");
+        refuse(&["protocol"], why);
     }
     if given("port") && given("tcp") {
         refuse(&["tcp"], "and --port name two links; give one".into());
     }
     if !has_value(leaf, "port") || given("tcp") {
-        refuse(
-            &["baud"],
-            "is the bit rate of a serial port; give it with --port".into(),
-        );
+        let why = "is the bit rate of a serial port; give it with --port";
+        refuse(&["baud"], why.into());
     }
     if words == "snapshot diff" && has_value(leaf, "other") {
-        let module = module_ids();
-        let module: Vec<&str> = module.iter().map(String::as_str).collect();
-        let offline: Vec<&str> = module.into_iter().filter(|id| *id != "protocol").collect();
+        let ids = module_ids();
+        let offline: Vec<&str> = ids
+            .iter()
+            .map(String::as_str)
+            .filter(|id| *id != "protocol")
+            .collect();
         refuse(
             &offline,
             "does not apply to comparing two snapshot files".into(),
         );
     }
-    if NO_TABLES.contains(&words.as_str()) {
+    if NO_TABLES.contains(&words) {
         refuse(&["profile"], format!("does not apply to {named}"));
     }
-    if refusals.is_empty() {
-        return Ok(());
-    }
-    let sub = subcommand_mut(cmd, &path);
-    let lines: Vec<String> = refusals
-        .iter()
-        .map(|(id, why)| {
-            let arg = sub
-                .get_arguments()
-                .find(|a| a.get_id().as_str() == id)
-                .expect("a given option is an argument of its command");
-            format!("{} {why}", flag(arg))
-        })
-        .collect();
-    Err(sub.error(ErrorKind::ArgumentConflict, lines.join("\n")))
+    refusals
 }
 
 /// The protocol in effect, for commands that have the option.
@@ -210,6 +216,17 @@ mod tests {
                     "`{path}` has no option {id}"
                 );
             }
+        }
+    }
+
+    #[test]
+    fn the_dialect_options_are_options_of_the_shell() {
+        let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
+        for id in TMCL_ONLY.iter().chain(SMD4_ONLY) {
+            assert!(cmd.get_arguments().any(|a| a.get_id() == id), "{id}");
+        }
+        for path in NO_TABLES {
+            assert!(cmd.find_subcommand(path).is_some(), "{path}");
         }
     }
 
