@@ -56,9 +56,10 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;params' {
+            [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
         }
         'tmclsh;ports' {
@@ -119,11 +120,14 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
             [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Append every byte sent and received, timestamped and decoded, to FILE')
+            [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
+            [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
-            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
             [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
             [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')
             [CompletionResult]::new('--run', '--run', [CompletionResultType]::ParameterName, 'Start the program after downloading it')
+            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
+            [CompletionResult]::new('--prefix-comma', '--prefix-comma', [CompletionResultType]::ParameterName, 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
@@ -150,10 +154,10 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
-            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
             [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
             [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')
             [CompletionResult]::new('--prefix-comma', '--prefix-comma', [CompletionResultType]::ParameterName, 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP')
+            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
@@ -170,10 +174,10 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
-            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
             [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
             [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')
             [CompletionResult]::new('--prefix-comma', '--prefix-comma', [CompletionResultType]::ParameterName, 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP')
+            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break
@@ -226,17 +230,17 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
-            [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
             [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Append every byte sent and received, timestamped and decoded, to FILE')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
-            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
+            [CompletionResult]::new('--prefix-comma', '--prefix-comma', [CompletionResultType]::ParameterName, 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP')
             [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
             [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')
-            [CompletionResult]::new('--prefix-comma', '--prefix-comma', [CompletionResultType]::ParameterName, 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP')
+            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break

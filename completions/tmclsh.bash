@@ -267,7 +267,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__download)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --run --profile --help"
+            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-enter --stay-ascii --run --no-validate --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -302,6 +302,14 @@ _tmclsh() {
                     return 0
                     ;;
                 --log)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --address)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --quiet-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -555,12 +563,16 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__params)
-            opts="-h --profile --help"
+            opts="-h --protocol --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
+                --protocol)
+                    COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
                 --profile)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -657,7 +669,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__scan)
-            opts="-m -h --addresses --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -h --addresses --port --baud --tcp --protocol --timeout --log --prefix-comma --module --address --no-enter --stay-ascii --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -683,19 +695,19 @@ _tmclsh() {
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
                     return 0
                     ;;
-                --module)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                -m)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 --timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --log)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --module)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -m)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -847,7 +859,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__diff)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-enter --stay-ascii --address --prefix-comma --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1033,7 +1045,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__save)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-enter --stay-ascii --address --prefix-comma --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

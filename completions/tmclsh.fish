@@ -54,8 +54,10 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "scan" -d 'Find the mo
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "transcript" -d 'Turn a --log transcript into a replayable Rhai script'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "sim" -d 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
@@ -92,11 +94,14 @@ smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l run -d 'Start the program after downloading it'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -s h -l help -d 'Print help'
@@ -115,10 +120,10 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l baud -d 'Serial bit rate (8N1)' -r
@@ -131,10 +136,10 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l baud -d 'Serial bit rate (8N1)' -r
@@ -165,16 +170,16 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l baud -d 'Serial b
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -s h -l help -d 'Print help'

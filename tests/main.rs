@@ -8,6 +8,7 @@ mod cli;
 mod commission;
 #[cfg(feature = "hardware")]
 mod hardware;
+mod options;
 mod profiles;
 mod program;
 mod repl;

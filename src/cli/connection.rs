@@ -1,4 +1,6 @@
-//! Connection and session flags shared by the shell and every subcommand that talks to a module.
+//! Connection and session flags: one group ([`ModuleArgs`]) flattened the same way into the shell
+//! and every subcommand that talks to a module, so that `cli::position` can move the ones written
+//! before the subcommand behind it and `cli::relevance` can refuse those that would be ignored.
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -21,7 +23,9 @@ use super::Failure;
 pub struct ConnectionArgs {
     /// Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to
     /// its built-in simulated module.
-    #[arg(long, value_name = "PATH", env = "TMCLSH_PORT", conflicts_with = "tcp")]
+    // Not `conflicts_with = "tcp"`: clap would count TMCLSH_PORT as given and refuse every --tcp
+    // while it is set; `relevance` refuses the two on one command line instead.
+    #[arg(long, value_name = "PATH", env = "TMCLSH_PORT")]
     pub port: Option<String>,
     /// Serial bit rate (8N1).
     #[arg(long, value_name = "N", env = "TMCLSH_BAUD", default_value_t = 9600)]
@@ -29,6 +33,11 @@ pub struct ConnectionArgs {
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT")]
     pub tcp: Option<String>,
+}
+
+/// Which protocol the module speaks: shared by the faces that talk to a module and by `params`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct DialectArgs {
     /// The protocol the module speaks (also selects the built-in simulated module).
     #[arg(long, value_enum, default_value_t = Dialect::Tmcl, env = "TMCLSH_PROTOCOL")]
     pub protocol: Dialect,
@@ -126,36 +135,41 @@ impl ConnectionArgs {
         self.port.is_none() && self.tcp.is_none()
     }
 
-    /// Opens the link.
+    /// Opens the link: the TCP connection (--tcp, which only the command line gives, wins over a
+    /// TMCLSH_PORT), the serial port, or the built-in simulated module speaking `dialect`.
     pub fn open(
         &self,
+        dialect: Dialect,
         profile: &Arc<Profile>,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link: Box<dyn Link> = if let Some(path) = &self.port {
-            Box::new(
-                SerialLink::open(path, self.baud)
-                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
-            )
-        } else if let Some(address) = &self.tcp {
+        let link: Box<dyn Link> = if let Some(address) = &self.tcp {
             Box::new(
                 TcpLink::connect(address, timeout)
                     .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
             )
+        } else if let Some(path) = &self.port {
+            Box::new(
+                SerialLink::open(path, self.baud)
+                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
+            )
         } else {
-            crate::sim::builtin_link(profile, self.protocol)
+            crate::sim::builtin_link(profile, dialect)
         };
         Ok(link)
     }
 }
 
-/// Everything that says which module to talk to and how: shared by the shell and every
-/// subcommand that opens a session in either dialect.
+/// Everything that says which module to talk to and how: flattened, the same way, into the shell
+/// and every subcommand that opens a session in either dialect.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ModuleArgs {
     /// Where the module is.
     #[command(flatten)]
     pub connection: ConnectionArgs,
+    /// The protocol it speaks.
+    #[command(flatten)]
+    pub dialect: DialectArgs,
     /// How requests are sent and checked.
     #[command(flatten)]
     pub session: SessionArgs,
@@ -164,13 +178,46 @@ pub struct ModuleArgs {
     pub smd4: Smd4Args,
 }
 
+/// Who learns that the built-in simulator answers: a command run without a terminal says so on
+/// stderr, the REPL in its banner.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Audience {
+    /// A command that runs to its end: the notice goes to stderr.
+    Batch,
+    /// The REPL, whose banner names the simulated module.
+    Interactive,
+}
+
 impl ModuleArgs {
+    /// The protocol the module speaks.
+    pub fn protocol(&self) -> Dialect {
+        self.dialect.protocol
+    }
+
+    /// Opens the link, saying on stderr when a batch command is served by the built-in
+    /// simulator (so nobody mistakes its answers for hardware's).
+    pub fn link(
+        &self,
+        profile: &Arc<Profile>,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<Box<dyn Link>, Failure> {
+        let link = self.connection.open(self.protocol(), profile, timeout)?;
+        if self.connection.is_builtin() && audience == Audience::Batch {
+            eprintln!(
+                "tmclsh: using the built-in simulated {}; give --port or --tcp for hardware",
+                simulated_module(self.protocol(), profile)
+            );
+        }
+        Ok(link)
+    }
+
     /// Opens a session in the dialect the flags say.
-    pub fn open(&self, profile: &Arc<Profile>) -> Result<Session, Failure> {
+    pub fn open(&self, profile: &Arc<Profile>, audience: Audience) -> Result<Session, Failure> {
         let options = self.session.options();
         let transcript = self.session.transcript()?;
-        let link = self.connection.open(profile, options.timeout)?;
-        match self.connection.protocol {
+        let link = self.link(profile, options.timeout, audience)?;
+        match self.protocol() {
             Dialect::Tmcl => {
                 TmclSession::open(link, profile.clone(), options, transcript).map(Session::Tmcl)
             }
@@ -180,23 +227,27 @@ impl ModuleArgs {
         }
         .map_err(|e| Failure::new(e.exit(), e.to_string()))
     }
+
+    /// Opens a TMCL session (for subcommands that only exist for TMCL modules).
+    pub fn open_tmcl(&self, profile: &Arc<Profile>) -> Result<TmclSession, Failure> {
+        if self.protocol() != Dialect::Tmcl {
+            return Err(Failure::new(
+                Exit::Refused,
+                "this subcommand works with TMCL modules only",
+            ));
+        }
+        let options = self.session.options();
+        let transcript = self.session.transcript()?;
+        let link = self.link(profile, options.timeout, Audience::Batch)?;
+        TmclSession::open(link, profile.clone(), options, transcript)
+            .map_err(|e| Failure::new(e.exit(), e.to_string()))
+    }
 }
 
-/// Opens a TMCL session (for subcommands that only exist for TMCL modules).
-pub fn open_tmcl(
-    connection: &ConnectionArgs,
-    session: &SessionArgs,
-    profile: &Arc<Profile>,
-) -> Result<TmclSession, Failure> {
-    if connection.protocol != Dialect::Tmcl {
-        return Err(Failure::new(
-            Exit::Refused,
-            "this subcommand works with TMCL modules only",
-        ));
+/// The name of the built-in simulated module of `dialect`: the profile's module, or the SMD4.
+pub fn simulated_module(dialect: Dialect, profile: &Profile) -> &str {
+    match dialect {
+        Dialect::Tmcl => profile.module.as_str(),
+        Dialect::Smd4 => "SMD4",
     }
-    let options = session.options();
-    let transcript = session.transcript()?;
-    let link = connection.open(profile, options.timeout)?;
-    TmclSession::open(link, profile.clone(), options, transcript)
-        .map_err(|e| Failure::new(e.exit(), e.to_string()))
 }

@@ -16,7 +16,7 @@ use crate::session::interrupt;
 use crate::session::tmcl::TmclSession;
 
 use super::Failure;
-use super::connection::{ConnectionArgs, SessionArgs, open_tmcl};
+use super::connection::ModuleArgs;
 
 /// Arguments of `download`.
 #[derive(Debug, Clone, clap::Args)]
@@ -24,12 +24,9 @@ pub struct DownloadArgs {
     /// The program: TMCL source (assembled first) or a program file from `tmclsh asm -o`.
     #[arg(value_name = "FILE")]
     pub file: PathBuf,
-    /// Where the module is.
+    /// Which module, and how to talk to it.
     #[command(flatten)]
-    pub connection: ConnectionArgs,
-    /// How requests are sent and checked.
-    #[command(flatten)]
-    pub session: SessionArgs,
+    pub module: ModuleArgs,
     /// Start the program after downloading it.
     #[arg(long)]
     pub run: bool,
@@ -107,7 +104,7 @@ pub fn run(
 ) -> Result<Exit, Failure> {
     interrupt::install();
     let instructions = load(&args.file, profile)?;
-    let mut session = open_tmcl(&args.connection, &args.session, profile)?;
+    let mut session = args.module.open_tmcl(profile)?;
     let result = download_and_run(&mut session, &instructions, args.run);
     for notice in session.take_notices() {
         eprintln!("tmclsh: {notice}");

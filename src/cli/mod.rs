@@ -1,4 +1,6 @@
 //! The command-line surface (clap derive): one file per subcommand, errors mapped to exit codes.
+//! Options may be written before or after the subcommand (`position`); options that would change
+//! nothing are refused (`relevance`).
 
 mod asm;
 mod completions;
@@ -7,6 +9,8 @@ mod disasm;
 pub mod download;
 pub(crate) mod params;
 mod ports;
+mod position;
+mod relevance;
 pub mod run;
 mod scan;
 pub mod shell;
@@ -15,11 +19,12 @@ mod sim_smd4;
 mod snapshot;
 mod transcript;
 
+use std::ffi::OsString;
 use std::io::Write;
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use clap::{Parser, Subcommand};
+use clap::{FromArgMatches, Parser, Subcommand};
 
 use crate::exit::Exit;
 use crate::profile::Profile;
@@ -67,7 +72,7 @@ enum Command {
 
 /// Parses the process arguments and runs; returns the exit code.
 pub fn main() -> Exit {
-    let cli = match Cli::try_parse() {
+    let cli = match parse(std::env::args_os().collect()) {
         Ok(cli) => cli,
         Err(e) => {
             let _ = e.print();
@@ -87,6 +92,18 @@ pub fn main() -> Exit {
             failure.exit
         }
     }
+}
+
+/// Parses a command line (program name first): options written before the subcommand are
+/// handed to it, and options it has no use for are refused.
+pub fn parse(argv: Vec<OsString>) -> Result<Cli, clap::Error> {
+    let mut cmd = command();
+    cmd.build();
+    let first = cmd.try_get_matches_from_mut(argv.clone())?;
+    let argv = position::behind_subcommand(&mut cmd, &first, argv)?;
+    let matches = cmd.try_get_matches_from_mut(argv)?;
+    relevance::check(&mut cmd, &matches)?;
+    Cli::from_arg_matches(&matches)
 }
 
 /// An error on its way to stderr, with the exit code it means.
@@ -143,5 +160,5 @@ fn load_profile(cli: &Cli) -> Result<Arc<Profile>, Failure> {
 
 /// The clap command, for completions and docs.
 pub fn command() -> clap::Command {
-    <Cli as clap::CommandFactory>::command()
+    relevance::hide_unused(<Cli as clap::CommandFactory>::command())
 }

@@ -1,24 +1,48 @@
-//! `tmclsh params [FILTER]`: the profile's parameters as a table.
+//! `tmclsh params [FILTER]`: the profile's parameters as a table, or (`--protocol smd4`) the
+//! SMD4 commands with their access and arguments.
 
 use std::io::{self, Write};
 
 use crate::profile::{Param, ParamKind, Profile};
+use crate::protocol::Dialect;
+use crate::protocol::smd4::{Smd4Spec, hints};
+
+use super::connection::DialectArgs;
 
 /// Arguments of `params`.
 #[derive(Debug, clap::Args)]
 pub struct ParamsArgs {
-    /// Show parameters whose identifier or name contains FILTER, or whose number is FILTER.
+    /// Show parameters whose identifier or name contains FILTER, or whose number is FILTER
+    /// (SMD4: commands whose mnemonic contains FILTER).
     pub filter: Option<String>,
+    /// Whose tables to print.
+    #[command(flatten)]
+    pub dialect: DialectArgs,
 }
 
 pub fn run(args: &ParamsArgs, profile: &Profile, out: &mut dyn Write) -> io::Result<()> {
     let filter = args.filter.as_deref().unwrap_or("");
+    if args.dialect.protocol == Dialect::Smd4 {
+        return write_smd4(filter, out);
+    }
     let rows: Vec<&Param> = profile.matching(filter).collect();
     if rows.is_empty() {
         eprintln!("no {} parameter matches '{filter}'", profile.module);
         return Ok(());
     }
     write_table(&rows, out)
+}
+
+/// The SMD4 commands matching `filter`, one row each, as the shell's `:params` shows them.
+fn write_smd4(filter: &str, out: &mut dyn Write) -> io::Result<()> {
+    let mut rows = hints::matching(&Smd4Spec::builtin().commands, filter).peekable();
+    if rows.peek().is_none() {
+        eprintln!("no SMD4 command matches '{filter}'");
+    }
+    for spec in rows {
+        writeln!(out, "{}", hints::table_row(spec))?;
+    }
+    Ok(())
 }
 
 /// Prints parameters as an aligned table (shared with the REPL's `:params`).

@@ -9,7 +9,7 @@ use crate::script::{self, Limits};
 use crate::session::interrupt;
 
 use super::Failure;
-use super::connection::ModuleArgs;
+use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `run`.
 #[derive(Debug, Clone, clap::Args)]
@@ -36,7 +36,7 @@ pub struct RunArgs {
 pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     interrupt::install();
     script::check_file(&args.script).map_err(|r| Failure::new(r.exit, r.message))?;
-    let session = args.module.open(profile)?;
+    let session = args.module.open(profile, Audience::Batch)?;
     let limits = Limits {
         max_operations: args.max_operations,
         max_call_depth: args.max_call_depth,

@@ -14,7 +14,7 @@ use crate::session::smd4::Smd4Session;
 use crate::session::tmcl::TmclSession;
 
 use super::Failure;
-use super::connection::{ConnectionArgs, SessionArgs, Smd4Args};
+use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `scan`.
 #[derive(Debug, Clone, clap::Args)]
@@ -25,31 +25,28 @@ pub struct ScanArgs {
     /// --timeout).
     #[arg(long, value_name = "LIST")]
     pub addresses: Option<String>,
+    /// Which bus, and how to talk to it.
     #[command(flatten)]
-    connection: ConnectionArgs,
-    #[command(flatten)]
-    session: SessionArgs,
-    #[command(flatten)]
-    smd4: Smd4Args,
+    module: ModuleArgs,
 }
 
 /// Runs the scan; exit code 3 when nothing answered.
 pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Result<Exit, Failure> {
     interrupt::install();
     let out = &mut super::snapshot::PipeSafe(out);
-    let smd4 = args.connection.protocol == Dialect::Smd4;
+    let smd4 = args.module.protocol() == Dialect::Smd4;
     let default = if smd4 { "1-247" } else { "1-26" };
     let list = args.addresses.as_deref().unwrap_or(default);
     let addresses = scan::parse_addresses(list)
         .map_err(|e| Failure::new(Exit::Refused, format!("--addresses: {e}")))?;
-    let options = args.session.options();
+    let options = args.module.session.options();
     let per_reply = options.timeout;
-    let transcript = args.session.transcript()?;
-    let link = args.connection.open(profile, per_reply)?;
+    let transcript = args.module.session.transcript()?;
+    let link = args.module.link(profile, per_reply, Audience::Batch)?;
     let failed = |e: crate::session::SessionError| Failure::new(e.exit(), e.to_string());
     if smd4 {
-        let mut session =
-            Smd4Session::open(link, options, args.smd4.options(), transcript).map_err(failed)?;
+        let mut session = Smd4Session::open(link, options, args.module.smd4.options(), transcript)
+            .map_err(failed)?;
         let addresses: Vec<u32> = addresses.into_iter().map(u32::from).collect();
         let result = smd4_scan::scan(&mut session, &addresses, per_reply);
         for notice in session.take_notices() {

@@ -6,14 +6,13 @@ use std::sync::Arc;
 
 use crate::exit::Exit;
 use crate::profile::Profile;
-use crate::protocol::Dialect;
 use crate::session::Session;
 use crate::session::interrupt;
 use crate::shell::Shell;
 use crate::shell::batch::{self, Lines};
 
 use super::Failure;
-use super::connection::{ConnectionArgs, ModuleArgs};
+use super::connection::{Audience, ModuleArgs, simulated_module};
 
 /// Flags of the shell itself.
 #[derive(Debug, Clone, clap::Args)]
@@ -31,10 +30,15 @@ pub struct ShellArgs {
 pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     interrupt::install();
     let interactive = args.commands.is_empty() && std::io::stdin().is_terminal();
-    let session = args.module.open(profile)?;
+    let audience = if interactive {
+        Audience::Interactive
+    } else {
+        Audience::Batch
+    };
+    let session = args.module.open(profile, audience)?;
     let mut shell = Shell::new(session);
     if interactive {
-        let banner = banner(&args.module.connection, &shell, profile);
+        let banner = banner(&args.module, &shell, profile);
         return Ok(crate::repl::run(&mut shell, &banner));
     }
     let lines = if args.commands.is_empty() {
@@ -47,13 +51,10 @@ pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     Ok(batch::run(&mut shell, lines, &mut out, &mut err))
 }
 
-fn banner(connection: &ConnectionArgs, shell: &Shell, profile: &Profile) -> String {
+fn banner(module: &ModuleArgs, shell: &Shell, profile: &Profile) -> String {
     let version = env!("CARGO_PKG_VERSION");
-    if connection.is_builtin() {
-        let module = match connection.protocol {
-            Dialect::Tmcl => profile.module.as_str(),
-            Dialect::Smd4 => "SMD4",
-        };
+    if module.connection.is_builtin() {
+        let module = simulated_module(module.protocol(), profile);
         format!("tmclsh {version} — simulated {module} (built-in) — use --port to talk to hardware")
     } else {
         let module = match shell.session_ref() {

@@ -42,7 +42,8 @@ pub struct SimArgs {
     pub modules: Vec<u8>,
 
     /// Pace bytes like a serial line at N baud (10 bits per byte, both directions).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    // Its own id: the shell's --baud (a port's bit rate) written before `sim` is not this.
+    #[arg(long, id = "pace_baud", value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     pub baud: Option<u32>,
 
     /// Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts.

@@ -17,7 +17,7 @@ use crate::protocol::smd4::Smd4Spec;
 use crate::session::{SessionError, interrupt};
 
 use super::Failure;
-use super::connection::ModuleArgs;
+use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `snapshot`.
 #[derive(Debug, Clone, clap::Args)]
@@ -87,7 +87,7 @@ pub fn run(
             other: Some(other),
             module,
         } => {
-            let params = match module.connection.protocol {
+            let params = match module.protocol() {
                 Dialect::Tmcl => profile_params(profile),
                 Dialect::Smd4 => crate::commission::smd4::spec_params(Smd4Spec::builtin()),
             };
@@ -136,7 +136,7 @@ fn with_device(
     profile: &Arc<Profile>,
     f: impl FnOnce(&mut dyn ParamDevice) -> Result<(), SessionError>,
 ) -> Result<Exit, Failure> {
-    let mut session = module.open(profile)?;
+    let mut session = module.open(profile, Audience::Batch)?;
     let result = f(param_device(&mut session));
     for notice in session.take_notices() {
         eprintln!("tmclsh: {notice}");

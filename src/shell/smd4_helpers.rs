@@ -15,26 +15,8 @@ pub fn run(
 ) -> Result<(), SessionError> {
     match name {
         "params" => {
-            let needle = arg.to_ascii_uppercase();
-            for spec in session
-                .spec()
-                .commands
-                .iter()
-                .filter(|s| s.mnemonic.contains(&needle))
-            {
-                let access = match (spec.readable, spec.writable) {
-                    (true, true) => "R/W",
-                    (true, false) => "R",
-                    (false, true) => "W",
-                    (false, false) => "",
-                };
-                writeln!(
-                    out,
-                    "{:<22} {:<4} {}",
-                    spec.mnemonic,
-                    access,
-                    hints::arg_summary(spec)
-                )?;
+            for spec in hints::matching(&session.spec().commands, arg) {
+                writeln!(out, "{}", hints::table_row(spec))?;
             }
         }
         "target" => {

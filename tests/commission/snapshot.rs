@@ -105,20 +105,15 @@ fn two_files_are_compared_without_a_module() {
     expect(&with(&["-c", "SAP standby_current, 0, 5"], &pty(&sim)), 0);
     expect(&with(&["snapshot", "save", arg(&b)], &pty(&sim)), 0);
     drop(sim);
-    let out = expect(
-        &[
-            "snapshot",
-            "diff",
-            arg(&a),
-            arg(&b),
-            "--port",
-            "/nonexistent",
-        ],
-        1,
-    );
+    let out = expect(&["snapshot", "diff", arg(&a), arg(&b)], 1);
     assert_eq!(
         rows(&stdout(&out)),
         [("standby_current".into(), "2".into(), "5".into())]
+    );
+    assert!(
+        !stderr(&out).contains("built-in"),
+        "no module, not even the simulated one: {}",
+        stderr(&out)
     );
 }
 

@@ -61,6 +61,27 @@ pub fn arg_summary(spec: &CommandSpec) -> String {
     parts.join(", ")
 }
 
+/// The commands whose mnemonic contains `filter` (any case), in the document's order: what
+/// `tmclsh --protocol smd4 params` and the shell's `:params` list.
+pub fn matching<'a>(
+    table: &'a CommandTable,
+    filter: &str,
+) -> impl Iterator<Item = &'a CommandSpec> + 'a {
+    let needle = filter.to_ascii_uppercase();
+    table.iter().filter(move |s| s.mnemonic.contains(&needle))
+}
+
+/// One row of the command table: mnemonic, access (R, W, R/W) and what the argument accepts.
+pub fn table_row(spec: &CommandSpec) -> String {
+    let access = match (spec.readable, spec.writable) {
+        (true, true) => "R/W",
+        (true, false) => "R",
+        (false, true) => "W",
+        (false, false) => "",
+    };
+    format!("{:<22} {:<4} {}", spec.mnemonic, access, arg_summary(spec))
+}
+
 /// One line of help: usage, accepted values, access, the reply and the description.
 pub fn hint(spec: &CommandSpec) -> String {
     let access = match (spec.readable, spec.writable, spec.arg.is_some()) {
