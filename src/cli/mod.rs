@@ -83,10 +83,15 @@ pub fn main() -> Exit {
     match run(cli, &mut stdout) {
         Ok(exit) => exit,
         Err(failure) => {
-            eprintln!("tmclsh: {}", failure.message);
+            diagnose(&failure.message);
             failure.exit
         }
     }
+}
+
+/// One line of diagnostics on stderr, its device and input text escaped.
+pub(crate) fn diagnose(message: &str) {
+    eprintln!("tmclsh: {}", crate::escape::escape_control(message));
 }
 
 /// An error on its way to stderr, with the exit code it means.
