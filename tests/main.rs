@@ -10,6 +10,8 @@ mod commission;
 mod hardware;
 mod program;
 mod repl;
+#[cfg(unix)]
+mod reply_noise;
 mod script;
 mod shell;
 mod sim;
