@@ -12,6 +12,8 @@ mod options;
 mod profiles;
 mod program;
 mod repl;
+#[cfg(unix)]
+mod reply_noise;
 mod script;
 mod shell;
 mod sim;

@@ -107,10 +107,10 @@ pub fn run(
     let mut session = args.module.open_tmcl(profile)?;
     let result = download_and_run(&mut session, &instructions, args.run);
     for notice in session.take_notices() {
-        eprintln!("tmclsh: {notice}");
+        super::diagnose(&notice);
     }
     for message in session.close() {
-        eprintln!("tmclsh: {message}");
+        super::diagnose(&message);
     }
     let text = result?;
     writeln!(out, "{text}").map_err(|e| Failure::new(Exit::Link, e.to_string()))?;

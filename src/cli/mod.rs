@@ -88,7 +88,7 @@ pub fn main() -> Exit {
     match run(cli, &mut stdout) {
         Ok(exit) => exit,
         Err(failure) => {
-            eprintln!("tmclsh: {}", failure.message);
+            diagnose(&failure.message);
             failure.exit
         }
     }
@@ -104,6 +104,11 @@ pub fn parse(argv: Vec<OsString>) -> Result<Cli, clap::Error> {
     let matches = cmd.try_get_matches_from_mut(argv)?;
     relevance::check(&mut cmd, &matches)?;
     Cli::from_arg_matches(&matches)
+}
+
+/// One line of diagnostics on stderr, its device and input text escaped.
+pub(crate) fn diagnose(message: &str) {
+    eprintln!("tmclsh: {}", crate::escape::escape_control(message));
 }
 
 /// An error on its way to stderr, with the exit code it means.

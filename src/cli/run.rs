@@ -43,21 +43,21 @@ pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     };
     let (mut session, outcome) = script::run_file(&args.script, &args.args, session, limits);
     for notice in session.take_notices() {
-        eprintln!("tmclsh: {notice}");
+        super::diagnose(&notice);
     }
     let exit = match outcome {
         Ok(()) => Exit::Success,
         Err(report) => {
-            eprintln!("tmclsh: {}", report.message);
+            super::diagnose(&report.message);
             interrupt::take();
             for message in session.stop_motion() {
-                eprintln!("tmclsh: {message}");
+                super::diagnose(&message);
             }
             report.exit
         }
     };
     for message in session.close() {
-        eprintln!("tmclsh: {message}");
+        super::diagnose(&message);
     }
     Ok(exit)
 }

@@ -50,7 +50,7 @@ pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Resul
         let addresses: Vec<u32> = addresses.into_iter().map(u32::from).collect();
         let result = smd4_scan::scan(&mut session, &addresses, per_reply);
         for notice in session.take_notices() {
-            eprintln!("tmclsh: {notice}");
+            super::diagnose(&notice);
         }
         interrupt::take();
         session.close();
@@ -67,11 +67,11 @@ pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Resul
     let quiet = scan::quiet_time(profile);
     let result = scan::scan(&mut session, &addresses, per_reply, quiet);
     for notice in session.take_notices() {
-        eprintln!("tmclsh: {notice}");
+        super::diagnose(&notice);
     }
     interrupt::take();
     for message in session.close() {
-        eprintln!("tmclsh: {message}");
+        super::diagnose(&message);
     }
     let report = result.map_err(failed)?;
     if report.found.is_empty() {

@@ -139,11 +139,11 @@ fn with_device(
     let mut session = module.open(profile, Audience::Batch)?;
     let result = f(param_device(&mut session));
     for notice in session.take_notices() {
-        eprintln!("tmclsh: {notice}");
+        super::diagnose(&notice);
     }
     interrupt::take();
     for message in session.close() {
-        eprintln!("tmclsh: {message}");
+        super::diagnose(&message);
     }
     finish(result)
 }

@@ -15,6 +15,7 @@ use rustyline::error::ReadlineError;
 use rustyline::history::DefaultHistory;
 use rustyline::{CompletionType, Config, Editor};
 
+use crate::escape::escape_control;
 use crate::exit::Exit;
 use crate::protocol::tmcl::validate::Mode;
 use crate::session::tmcl::WireMode;
@@ -98,7 +99,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         let _ = editor.save_history(path);
     }
     for message in shell.session().close() {
-        let _ = writeln!(out, "{message}");
+        let _ = writeln!(out, "{}", escape_control(&message));
     }
     Exit::Success
 }
@@ -119,6 +120,8 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
             } else {
                 decoded.text
             };
+            // Escaped before it is coloured: the colour is ours, any other sequence is the device's.
+            let shown = escape_control(&shown).into_owned();
             let shown = match (color, decoded.ok) {
                 (false, _) => shown,
                 (true, true) => shown.green().to_string(),
@@ -129,6 +132,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
         })
     };
     for notice in shell.session().take_notices() {
+        let notice = escape_control(&notice).into_owned();
         let line = if color {
             notice.yellow().to_string()
         } else {
@@ -144,12 +148,12 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
             Flow::Continue
         }
         Err(SessionError::Lost(message)) => {
-            let _ = writeln!(out, "link lost: {message}");
+            let _ = writeln!(out, "link lost: {}", escape_control(&message));
             wait_for_link(shell, out);
             Flow::Continue
         }
         Err(e) => {
-            let line = format!("error: {e}");
+            let line = format!("error: {}", escape_control(&e.to_string()));
             let _ = writeln!(out, "{}", if color { line.red().to_string() } else { line });
             Flow::Continue
         }
@@ -159,7 +163,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
 /// After Ctrl-C: MST to the target module, and to every module this session set moving.
 fn stop_target(shell: &mut Shell, out: &mut dyn Write) {
     for line in shell.session().stop_target() {
-        let _ = writeln!(out, "{line}");
+        let _ = writeln!(out, "{}", escape_control(&line));
     }
 }
 

@@ -29,6 +29,7 @@ use std::rc::Rc;
 
 use rhai::{Dynamic, Engine, EvalAltResult, OptimizationLevel, Position, Scope};
 
+use crate::escape::escape_control;
 use crate::exit::Exit;
 use crate::session::Session;
 use crate::session::interrupt;
@@ -139,7 +140,7 @@ impl Script<'_> {
             let log_session = shared.clone();
             common::register(&mut engine, move |message| {
                 if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
-                    eprintln!("log: {message}");
+                    eprintln!("log: {}", escape_control(message));
                 }
             });
             register(&mut engine, &shared);
@@ -174,12 +175,22 @@ fn base_engine(limits: Limits) -> Engine {
     engine.set_max_map_size(1 << 16);
     engine.set_module_resolver(rhai::module_resolvers::DummyModuleResolver::new());
     engine.disable_symbol("eval");
-    engine.on_print(|text| println!("{text}"));
-    engine.on_debug(|text, _, pos| eprintln!("debug {pos}: {text}"));
+    engine.on_print(print);
+    engine.on_debug(|text, _, pos| eprintln!("debug {pos}: {}", escape_control(text)));
     engine.on_progress(|_| interrupt::pending().then(|| Dynamic::from("interrupted")));
     engine.register_type_with_name::<ScriptFailure>("Failure");
     engine.register_fn("to_string", |f: &mut ScriptFailure| f.message.clone());
     engine
+}
+
+/// Rhai's `print`: the text on stdout, its control characters escaped like all other output
+/// (a line feed stays a line break). A script's strings routinely carry device text — a reply's
+/// `raw`, its items, a caught error's message — and by then nothing tells those bytes from the
+/// script's own, so a device could retitle or clear the terminal, or hide a failed verdict behind
+/// a carriage return, in the output a user or a CI log trusts. The price is that a script cannot
+/// colour its output or move the cursor; a verdict needs neither.
+fn print(text: &str) {
+    println!("{}", escape_control(text));
 }
 
 fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Report> {

@@ -10,7 +10,8 @@ use std::time::{Duration, Instant};
 
 use crate::link::Link;
 use crate::protocol::smd4::{
-    Expectation, PrefixStyle, Progress, ReplyCollector, Request, Response, Smd4Spec, validate,
+    Expectation, PrefixStyle, Progress, ReplyCollector, Request, Response, Smd4Spec, check_reply,
+    is_reply_to, validate,
 };
 
 use super::transcript::{Entry, Transcript, escape_into};
@@ -235,7 +236,9 @@ impl Smd4Session {
                         ));
                         collector = ReplyCollector::new(expect.clone());
                     }
-                    Ok(Progress::Complete(reply)) => return Ok(self.finish(*reply, &consumed)),
+                    Ok(Progress::Complete(reply)) => {
+                        return self.finish(*reply, &consumed, &expect, request);
+                    }
                     Ok(Progress::AwaitQuiet) => {}
                     Err(_) => {
                         let mut shown = String::new();
@@ -251,7 +254,7 @@ impl Smd4Session {
                     let reply = collector
                         .finish_quiet()
                         .expect("awaiting quiet means a first line came");
-                    return Ok(self.finish(reply, &consumed));
+                    return self.finish(reply, &consumed, &expect, request);
                 }
             } else if !self.wire.fill(deadline)? {
                 let partial = self.wire.rx.clear();
@@ -289,13 +292,34 @@ impl Smd4Session {
         }
     }
 
-    fn finish(&mut self, reply: Response, consumed: &[u8]) -> Response {
+    /// A complete reply, checked against what the command declares: one that fails is line
+    /// noise, never a value.
+    fn finish(
+        &mut self,
+        reply: Response,
+        consumed: &[u8],
+        expect: &Expectation,
+        request: &Request,
+    ) -> Result<Response, SessionError> {
+        if let Err(noise) = check_reply(&reply, expect, request.address) {
+            self.wire.log(
+                Entry::Received,
+                consumed,
+                format_args!("line noise: {noise}"),
+            );
+            let mut shown = String::new();
+            escape_into(reply.raw.as_bytes(), &mut shown);
+            return Err(SessionError::Link(format!(
+                "line noise: {noise}, in the reply {shown} to {}",
+                request.format(self.smd4.prefix)
+            )));
+        }
         let meaning = match &reply.error {
             Some(error) => format!("error {error}"),
             None => format!("sflags {:#06x}", reply.sflags.0),
         };
         self.wire.log(Entry::Received, consumed, &meaning);
-        reply
+        Ok(reply)
     }
 
     /// Stops every drive this session set moving (MOTOR:STOP). Returns what was done.
@@ -338,9 +362,9 @@ impl Smd4Session {
     }
 }
 
-/// A reply carrying another drive's address prefix.
+/// A reply carrying another drive's address prefix (any prefix when the request had none).
 fn foreign(reply: &Response, request: &Request) -> bool {
-    matches!((reply.address, request.address), (Some(got), Some(wanted)) if got != wanted)
+    !is_reply_to(reply.address, request.address)
 }
 
 /// What may be wrong when nothing came back. A drive in addressing mode ignores packets silently,

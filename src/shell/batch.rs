@@ -1,13 +1,15 @@
 //! Non-interactive use: `-c LINE` arguments, or stdin lines when stdin is not a terminal.
 //!
 //! For each command stdout gets exactly one line, the reply as the module sent it (without echo or
-//! line ending); diagnostics go to stderr. The first failing line stops the run with its exit code
+//! line ending, control characters escaped); diagnostics go to stderr, escaped too, since they
+//! quote device and input text. The first failing line stops the run with its exit code
 //! (1 device error status, 2 refused before sending, 3 no reply or link lost, 130 Ctrl-C), after
 //! stopping the motors the run set moving.
 
 use std::io::{BufRead, Write};
 use std::sync::mpsc;
 
+use crate::escape::escape_control;
 use crate::exit::{Exit, ExitStatus};
 use crate::session::{SessionError, interrupt};
 
@@ -80,9 +82,14 @@ pub fn run(shell: &mut Shell, mut lines: Lines, out: &mut dyn Write, err: &mut d
         }
     };
     for message in shell.session().close() {
-        let _ = writeln!(err, "tmclsh: {message}");
+        diagnose(err, &message);
     }
     exit
+}
+
+/// One line of diagnostics on stderr.
+fn diagnose(err: &mut dyn Write, message: &str) {
+    let _ = writeln!(err, "tmclsh: {}", escape_control(message));
 }
 
 fn step(
@@ -103,6 +110,7 @@ fn step(
     report_notices(shell, err);
     let reply = result?;
     let shown = reply.shown();
+    let shown = escape_control(&shown);
     if writeln!(out, "{shown}").and_then(|()| out.flush()).is_err() {
         // stdout closed (e.g. piped into `head`): not an error, just stop.
         return Ok(Flow::Quit);
@@ -113,7 +121,7 @@ fn step(
 
 fn report_notices(shell: &mut Shell, err: &mut dyn Write) {
     for notice in shell.session().take_notices() {
-        let _ = writeln!(err, "tmclsh: {notice}");
+        diagnose(err, &notice);
     }
 }
 
@@ -124,14 +132,14 @@ fn fail(
     err: &mut dyn Write,
     at: Option<(usize, &str)>,
 ) -> Exit {
-    let _ = match at {
-        Some((number, text)) => writeln!(err, "tmclsh: line {number} ({text}): {error}"),
-        None => writeln!(err, "tmclsh: {error}"),
-    };
+    match at {
+        Some((number, text)) => diagnose(err, &format!("line {number} ({text}): {error}")),
+        None => diagnose(err, &error.to_string()),
+    }
     interrupt::take();
     if shell.session().may_be_moving() {
         for message in shell.session().stop_motion() {
-            let _ = writeln!(err, "tmclsh: {message}");
+            diagnose(err, &message);
         }
     }
     error.exit()

@@ -143,7 +143,7 @@ impl Shell {
         let Err(report) = outcome else { return Ok(()) };
         interrupt::take();
         for message in self.session().stop_motion() {
-            writeln!(out, "{message}")?;
+            writeln!(out, "{}", crate::escape::escape_control(&message))?;
         }
         Err(SessionError::Script {
             exit: report.exit,

@@ -2,7 +2,16 @@
 //! either hex case, floats with 4 or 5 decimals or without the `E`, and error items in several
 //! spellings. The simulator emits them; tests use them to feed the parser every variant.
 
+use std::ops::RangeInclusive;
+
 use super::errors::ErrorCode;
+
+/// Decimals a FLOAT is written with: 5 in the type table (`1.23000E+04`), 4 in every example
+/// (`1.0000E+00`). Replies with other counts are line noise ([`super::check`]).
+pub const FLOAT_DECIMALS: RangeInclusive<u8> = 4..=5;
+
+/// Decimals of the fixed-point values (PACT, PREL: `1000.00`).
+pub const FIXED_DECIMALS: usize = 2;
 
 /// Case of the hex digits of SFLAGS/EFLAGS.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -66,7 +75,7 @@ pub fn format_float(value: f64, style: FloatStyle) -> String {
 
 /// Fixed point with two decimals (`1000.00`), as the PACT/PREL examples show.
 pub fn format_fixed(value: f64) -> String {
-    format!("{value:.2}")
+    format!("{value:.FIXED_DECIMALS$}")
 }
 
 /// The error item(s) of a failed command, without the leading comma.

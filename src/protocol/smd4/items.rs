@@ -133,7 +133,7 @@ pub fn parse_named(raw: &str) -> Option<Value> {
     })
 }
 
-fn parse_hms(raw: &str) -> Option<Value> {
+pub(super) fn parse_hms(raw: &str) -> Option<Value> {
     let parts: Vec<u64> = raw
         .split(':')
         .map(|p| {
@@ -152,7 +152,7 @@ fn parse_hms(raw: &str) -> Option<Value> {
     }
 }
 
-fn is_uuid(raw: &str) -> bool {
+pub(super) fn is_uuid(raw: &str) -> bool {
     let groups: Vec<&str> = raw.split('-').collect();
     groups.len() == 5
         && groups

@@ -5,8 +5,10 @@
 //!
 //! A session uses it like this: [`validate()`] the typed [`Request`] (refuse with exit 2), send
 //! [`Request::wire`], feed the received lines to a [`ReplyCollector`] built from
-//! [`Expectation::for_request`], and look at the [`Response`] (a [`DeviceError`] means exit 1).
+//! [`Expectation::for_request`], [`check_reply`] the [`Response`] (a [`Noise`] means exit 3) and
+//! look at it (a [`DeviceError`] means exit 1).
 
+pub mod check;
 pub mod commands;
 pub mod errors;
 pub mod flags;
@@ -24,6 +26,7 @@ pub mod validate;
 #[cfg(test)]
 mod tests;
 
+pub use check::{Noise, check_reply, is_reply_to};
 pub use commands::{
     ArgProblem, ArgSpec, Choice, CommandSpec, CommandTable, Example, Kind, ReplyShape,
 };

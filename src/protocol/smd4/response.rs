@@ -88,8 +88,10 @@ impl ExitStatus for ResponseError {
 /// What a reply to a given command should carry; [`Expectation::unknown`] guesses.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Expectation {
-    shape: Option<ReplyShape>,
-    value: Option<ItemType>,
+    pub(super) shape: Option<ReplyShape>,
+    pub(super) value: Option<ItemType>,
+    /// The value may come in fixed point (PACT, PREL).
+    pub(super) fixed_point: bool,
 }
 
 impl Expectation {
@@ -103,6 +105,7 @@ impl Expectation {
         Expectation {
             shape: Some(spec.reply.clone()),
             value: spec.value_item_type(),
+            fixed_point: spec.fixed_point,
         }
     }
 
@@ -128,7 +131,7 @@ impl Expectation {
     }
 
     /// Whether a lone negative integer can be the command's value.
-    fn negative_int_is_data(&self) -> bool {
+    pub(super) fn negative_int_is_data(&self) -> bool {
         self.shape == Some(ReplyShape::Value) && self.value == Some(ItemType::Int)
     }
 }
@@ -186,12 +189,14 @@ fn typed_item(raw: &str, index: usize, expect: &Expectation) -> DataItem {
     DataItem::typed(raw, expect.item_type(index))
 }
 
-/// The error item, in whichever spelling it came.
+/// The error item, in whichever spelling it came. A code that does not fit an `i32` is no error
+/// code a drive sends: it stays a data item, for [`super::check`] to report as line noise.
 fn error_item(items: &[&str], expect: &Expectation) -> Option<DeviceError> {
     let first = items.first()?;
     if let Some(Value::Named { number, name }) = parse_named(first) {
-        return (number < 0 && items.len() == 1).then(|| DeviceError {
-            code: ErrorCode::from_code(number as i32),
+        let code = i32::try_from(number).ok()?;
+        return (code < 0 && items.len() == 1).then(|| DeviceError {
+            code: ErrorCode::from_code(code),
             text: Some(name),
         });
     }
@@ -210,11 +215,24 @@ fn error_item(items: &[&str], expect: &Expectation) -> Option<DeviceError> {
     }
 }
 
+/// Whether both flag words of a reply line are written as the type table says: `0x` and exactly
+/// four hex digits. [`parse_response`] reads shorter words too, so that a line is still
+/// recognised as a reply; a reply with a short word lost a digit on the way.
+pub(super) fn full_width_flags(line: &str) -> bool {
+    head_of_width(line, 4).is_ok()
+}
+
 type Head<'a> = (Option<&'a str>, u16, u16);
 
 fn head(input: &str) -> IResult<&str, Head<'_>> {
+    head_of_width(input, 1)
+}
+
+/// The prefix and flags, each flag word with `min_digits..=4` hex digits.
+fn head_of_width(input: &str, min_digits: usize) -> IResult<&str, Head<'_>> {
     let (rest, address) = opt(reply_prefix).parse(input)?;
-    (flag_word, char(','), flag_word)
+    let word = |i| flag_word(i, min_digits);
+    (word, char(','), word)
         .map(|(s, _, e)| (address, s, e))
         .parse(rest)
 }
@@ -233,11 +251,11 @@ fn reply_prefix(input: &str) -> IResult<&str, &str> {
     }
 }
 
-fn flag_word(input: &str) -> IResult<&str, u16> {
+fn flag_word(input: &str, min_digits: usize) -> IResult<&str, u16> {
     let (rest, (_, _, digits)) = (
         char('0'),
         one_of("xX"),
-        take_while_m_n(1, 4, |c: char| c.is_ascii_hexdigit()),
+        take_while_m_n(min_digits, 4, |c: char| c.is_ascii_hexdigit()),
     )
         .parse(input)?;
     let word = u16::from_str_radix(digits, 16).expect("at most four hex digits fit in u16");

@@ -176,7 +176,7 @@ pub fn parse_float(text: &str) -> Option<f64> {
     text.parse().ok().filter(|f: &f64| f.is_finite())
 }
 
-fn parse_dotted(text: &str) -> Option<Ipv4Addr> {
+pub(super) fn parse_dotted(text: &str) -> Option<Ipv4Addr> {
     let parts: Vec<&str> = text.split('.').collect();
     let octets: Option<Vec<u8>> = parts
         .iter()

@@ -4,7 +4,7 @@
 
 use crate::protocol::smd4::{
     Example, Expectation, ItemType, Progress, ReplyCollector, ReplyShape, Request, Smd4Spec,
-    ValidationError, Value, parse_response, validate,
+    ValidationError, Value, check_reply, parse_response, validate,
 };
 
 fn all_examples() -> Vec<(String, Example)> {
@@ -76,6 +76,8 @@ fn every_reply_parses_with_the_types_its_command_returns() {
         };
         let context = format!("{} -> {rx}", example.tx);
         assert!(reply.is_ok(), "{context}");
+        let checked = check_reply(&reply, &Expectation::for_command(spec), None);
+        assert_eq!(checked, Ok(()), "{context}: not line noise");
         match &spec.reply {
             ReplyShape::None => assert!(reply.data.is_empty(), "{context}"),
             ReplyShape::Literal(text) => {

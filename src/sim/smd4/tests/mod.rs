@@ -7,11 +7,12 @@ mod commands;
 mod motion;
 mod persistence;
 mod quirks;
+mod replies;
 
 use std::time::Duration;
 
 use crate::protocol::smd4::{
-    Expectation, Progress, ReplyCollector, Request, Response, Smd4Spec, parse_response,
+    Expectation, Progress, ReplyCollector, Request, Response, Smd4Spec, check_reply, parse_response,
 };
 use crate::sim::Device;
 
@@ -57,10 +58,22 @@ impl Bench {
         text.strip_suffix("\r\n").unwrap_or(&text).to_string()
     }
 
-    /// Sends `line` and parses the reply as a client would, multi-line replies included.
+    /// Sends `line` and parses and checks the reply as a client would, multi-line replies
+    /// included.
     pub fn reply(&mut self, line: &str) -> Response {
         let request = Request::parse(line).unwrap();
         let expect = Expectation::for_request(&Smd4Spec::builtin().commands, &request);
+        let reply = self.collect(line, expect.clone());
+        if let Err(noise) = check_reply(&reply, &expect, request.address) {
+            panic!(
+                "{line} -> {}: the client calls it line noise: {noise}",
+                reply.raw
+            );
+        }
+        reply
+    }
+
+    fn collect(&mut self, line: &str, expect: Expectation) -> Response {
         let text = self.raw(format!("{line}\r\n").as_bytes());
         let mut collector = ReplyCollector::new(expect);
         let mut lines = text.split_terminator("\r\n");
