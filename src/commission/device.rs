@@ -111,6 +111,10 @@ pub trait ParamDevice {
     /// Writes one parameter (in RAM).
     fn write(&mut self, param: &ParamRef, value: &ParamValue) -> Result<(), SessionError>;
 
+    /// Whether the module's validator lets [`ParamDevice::write`] send `value` to `param` (its
+    /// type, range and access), without sending anything; the error says why not.
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String>;
+
     /// The line [`ParamDevice::write`] sends, for dry runs and hints.
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String;
 

@@ -10,6 +10,7 @@
 //! `persistent` and `levels` fields of `data/smd4.toml`.
 
 use crate::profile::Access;
+use crate::protocol::smd4::validate::validate;
 use crate::protocol::smd4::{CommandSpec, ItemType, Kind, ReplyShape, Request, Response, Smd4Spec};
 use crate::protocol::smd4::{Value, items::DataItem};
 use crate::session::SessionError;
@@ -80,6 +81,13 @@ impl ParamDevice for Smd4Session {
         self.request(Request::new(&command.mnemonic).arg(argument(value)))?
             .checked()?;
         Ok(())
+    }
+
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
+        let request = Request::new(&param.name).arg(argument(value));
+        validate(&request, &self.spec().commands)
+            .map(|_| ())
+            .map_err(|e| e.to_string())
     }
 
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
