@@ -213,17 +213,22 @@ pub fn restore_snapshot(
 pub fn store_question(device: &dyn ParamDevice, plan: &Plan, outcome: &Outcome) -> String {
     let params: Vec<_> = restore::storable(plan, &outcome.verified).collect();
     let steps = device.store_steps(&params);
-    let with = match steps.as_slice() {
-        [one] => format!(" with {}", one.line),
-        _ => String::new(),
-    };
     let names: Vec<&str> = params.iter().map(|p| p.name.as_str()).collect();
-    format!(
-        "store {} parameter{} to the {} of {}{with} ({})?",
-        params.len(),
-        if params.len() == 1 { "" } else { "s" },
-        device.memory(),
-        device.who(),
-        names.join(", ")
-    )
+    let (memory, who) = (device.memory(), device.who());
+    match steps.as_slice() {
+        [one] if one.whole => format!(
+            "store the whole working configuration of {who} to its {memory} with {}, \
+             including the {} setting{} written ({})?",
+            one.line,
+            params.len(),
+            if params.len() == 1 { "" } else { "s" },
+            names.join(", ")
+        ),
+        _ => format!(
+            "store {} parameter{} to the {memory} of {who} ({})?",
+            params.len(),
+            if params.len() == 1 { "" } else { "s" },
+            names.join(", ")
+        ),
+    }
 }

@@ -150,6 +150,7 @@ impl ParamDevice for FakeDevice {
             .map(|p| StoreStep {
                 line: format!("STORE {}", p.name),
                 params: vec![(*p).clone()],
+                whole: false,
             })
             .collect()
     }

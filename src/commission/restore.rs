@@ -533,7 +533,7 @@ pub fn store(
     for step in &steps {
         // A step of one parameter is named by it; one for the whole configuration by its line.
         let name = match step.params.as_slice() {
-            [one] => one.name.clone(),
+            [one] if !step.whole => one.name.clone(),
             _ => step.line.clone(),
         };
         progress.step(&name);

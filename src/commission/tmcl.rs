@@ -81,6 +81,10 @@ impl ParamDevice for TmclSession {
     }
 
     fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
+        if !self.options().validate {
+            // --no-validate: the module judges (values still have to be 32-bit integers).
+            return word(param, value).map(|_| ()).map_err(|e| e.to_string());
+        }
         check_write(self.profile(), param, value)
     }
 
@@ -98,6 +102,7 @@ impl ParamDevice for TmclSession {
                 StoreStep {
                     line: self.format(self.target(), op),
                     params: vec![param.clone()],
+                    whole: false,
                 }
             })
             .collect()
