@@ -2,6 +2,9 @@
 //! line, column and both values, Ctrl-C during a rotation, the operation cap, and the example
 //! scripts of `scripts/`, against the simulator.
 
+mod limits;
+mod sandbox;
+
 use std::io::{BufRead, BufReader};
 use std::process::{Command, Stdio};
 
