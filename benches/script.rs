@@ -35,13 +35,19 @@ fn main() {
     std::fs::create_dir_all(&dir).expect("a scratch directory");
     let start_up = run(0, &dir);
     println!("start-up (N = 0): {:.1} ms", start_up.as_secs_f64() * 1e3);
-    println!("{:>10} {:>12} {:>12} {:>22}", "pushes", "ms", "ns/push", "ns/push vs N/2");
+    println!(
+        "{:>10} {:>12} {:>12} {:>22}",
+        "pushes", "ms", "ns/push", "ns/push vs N/2"
+    );
     let mut last: Option<f64> = None;
     for n in [100_000u64, 200_000, 400_000, 800_000, 1_600_000] {
         let t = run(n, &dir).saturating_sub(start_up);
         let per = t.as_nanos() as f64 / n as f64;
         let ratio = last.map_or(String::from("-"), |l| format!("{:.2}", per / l));
-        println!("{n:>10} {:>12.1} {per:>12.1} {ratio:>22}", t.as_secs_f64() * 1e3);
+        println!(
+            "{n:>10} {:>12.1} {per:>12.1} {ratio:>22}",
+            t.as_secs_f64() * 1e3
+        );
         last = Some(per);
     }
     let _ = std::fs::remove_dir_all(&dir);

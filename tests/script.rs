@@ -82,6 +82,8 @@ fn every_api_function_against_a_simulated_module() {
     let out = run(&[
         "run",
         &path,
+        "--allow-dir",
+        program.parent().unwrap().to_str().unwrap(),
         "--port",
         &sim.first,
         "--log",

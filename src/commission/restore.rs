@@ -367,7 +367,7 @@ fn by_hand(device: &mut dyn ParamDevice, plan: &Plan) -> Result<Vec<String>, Ses
 /// mismatch is recorded and the rest goes on; refusals are tried once more at the end. A lost
 /// link, a timeout or Ctrl-C ends the restore: [`Aborted`] then says what was written, which
 /// parameter was in flight and what was not sent.
-pub fn execute(device: &mut dyn ParamDevice, plan: &Plan) -> Result<Outcome, Aborted> {
+pub fn execute(device: &mut dyn ParamDevice, plan: &Plan) -> Result<Outcome, Box<Aborted>> {
     let mut run = Run {
         outcome: Outcome::default(),
         written: Vec::new(),
@@ -399,7 +399,7 @@ pub fn execute(device: &mut dyn ParamDevice, plan: &Plan) -> Result<Outcome, Abo
                 in_flight: in_flight_index.map(|i| plan.writes[i].0.name.clone()),
                 not_written,
             });
-            Err(Aborted { outcome, error })
+            Err(Box::new(Aborted { outcome, error }))
         }
     }
 }

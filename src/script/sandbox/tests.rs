@@ -81,7 +81,7 @@ fn the_script_directory_and_the_working_directory_are_the_roots() {
     let sandbox = Sandbox::for_script(&d.join("s.rhai"), &[], false);
     let cwd = std::env::current_dir().unwrap().canonicalize().unwrap();
     assert_eq!(sandbox.roots(), [d.clone(), cwd]);
-    let relative = Sandbox::for_script(Path::new("s.rhai"), &[d.clone()], false);
+    let relative = Sandbox::for_script(Path::new("s.rhai"), std::slice::from_ref(&d), false);
     assert_eq!(
         relative.roots().len(),
         2,
