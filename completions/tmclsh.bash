@@ -603,7 +603,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__run)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --max-operations --max-call-depth --profile --help"
+            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -654,6 +654,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --max-call-depth)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --max-memory)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --max-time)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --allow-dir)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -987,7 +999,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__restore)
-            opts="-m -h --store --yes --dry-run --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -h --store --yes --dry-run --force --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

@@ -74,11 +74,15 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l address -d 'SMD4: 
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-operations -d 'Operations after which a runaway script is stopped (0: no limit)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-call-depth -d 'Deepest nesting of function calls' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-memory -d 'Memory the script may hold, in MiB (0: no limit)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-time -d 'Wall-clock time after which the script is stopped, its motors too (exit code 1): 500ms, 30s, 2m, or milliseconds' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l allow-dir -d 'A directory the script\'s file functions may also reach (repeatable); by default they reach only the script\'s directory and the working directory' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l overwrite -d 'Let the script\'s file functions replace existing files that are not tmclsh snapshots or recordings'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -s o -l output -d 'Write the program file (format in the README); without it the source is only checked' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
@@ -155,6 +159,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l store -d 'Afterwards make the written parameters permanent, after a confirmation: EEPROM (STAP/STGP) on TMCL modules; STORE on an SMD4, which saves its whole working configuration'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l yes -d 'Confirm --store without asking (for scripts)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l dry-run -d 'Only print the lines that would be sent'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l force -d 'Restore a file with problems that allow it: of another module type, with numbers that disagree with the names (written by name), with names, motors or banks the module lacks (skipped). Values the module would refuse are never forced'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'

@@ -66,6 +66,11 @@ enum Action {
         /// Only print the lines that would be sent.
         #[arg(long)]
         dry_run: bool,
+        /// Restore a file with problems that allow it: of another module type, with numbers
+        /// that disagree with the names (written by name), with names, motors or banks the
+        /// module lacks (skipped). Values the module would refuse are never forced.
+        #[arg(long)]
+        force: bool,
         #[command(flatten)]
         module: ModuleArgs,
     },
@@ -105,6 +110,7 @@ pub fn run(
             store,
             yes,
             dry_run,
+            force,
             module,
         } => {
             let ask = store && !yes && !dry_run;
@@ -114,7 +120,12 @@ pub fn run(
                     "--store asks for a confirmation on a terminal; add --yes to store without asking",
                 ));
             }
-            let options = RestoreOptions { store, dry_run };
+            let options = RestoreOptions {
+                store,
+                dry_run,
+                force,
+                redact: false,
+            };
             with_device(&module, profile, |d| {
                 let mut confirm = |question: &str| {
                     if ask {

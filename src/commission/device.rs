@@ -79,6 +79,8 @@ pub struct StoreStep {
     pub line: String,
     /// The restored parameters it makes permanent.
     pub params: Vec<ParamRef>,
+    /// Whether it stores the module's whole working configuration, not only `params`.
+    pub whole: bool,
 }
 
 /// A module whose parameters can be listed, read, written and stored — implemented by each
@@ -110,6 +112,11 @@ pub trait ParamDevice {
 
     /// Writes one parameter (in RAM).
     fn write(&mut self, param: &ParamRef, value: &ParamValue) -> Result<(), SessionError>;
+
+    /// Whether the module's validator lets [`ParamDevice::write`] send `value` to `param` (its
+    /// type, range and access), without sending anything; the error says why not. Under
+    /// `--no-validate` only what cannot be sent at all is refused.
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String>;
 
     /// The line [`ParamDevice::write`] sends, for dry runs and hints.
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String;

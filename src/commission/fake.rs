@@ -21,6 +21,8 @@ pub struct FakeDevice {
     pub refuse_write: Vec<String>,
     /// Parameters that keep their value whatever is written.
     pub stuck: Vec<String>,
+    /// A parameter whose write times out (the link fails there).
+    pub time_out_at: Option<String>,
     /// "write NAME VALUE" / "store NAME", in order.
     pub log: Vec<String>,
 }
@@ -47,6 +49,7 @@ impl FakeDevice {
             refuse_read: Vec::new(),
             refuse_write: Vec::new(),
             stuck: Vec::new(),
+            time_out_at: None,
             log: Vec::new(),
         }
     }
@@ -118,12 +121,23 @@ impl ParamDevice for FakeDevice {
         if self.refuse_write.contains(&param.name) {
             return Err(Self::refused(&param.name));
         }
+        if self.time_out_at.as_ref() == Some(&param.name) {
+            return Err(SessionError::Timeout {
+                module: "A".into(),
+                timeout: std::time::Duration::from_millis(1000),
+                hint: String::new(),
+            });
+        }
         let value = value.as_i64().expect("the fake holds integers");
         self.log.push(format!("write {} {value}", param.name));
         if !self.stuck.contains(&param.name) {
             self.values.insert((param.scope, param.name.clone()), value);
         }
         Ok(())
+    }
+
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
+        super::tmcl::check_write(&Profile::builtin(), param, value)
     }
 
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
@@ -136,6 +150,7 @@ impl ParamDevice for FakeDevice {
             .map(|p| StoreStep {
                 line: format!("STORE {}", p.name),
                 params: vec![(*p).clone()],
+                whole: false,
             })
             .collect()
     }

@@ -108,13 +108,16 @@ fn wait_until(clock: &dyn Clock, when: Duration) -> Result<(), SessionError> {
 
 /// The CSV header line (without line ending).
 pub fn csv_header(columns: &[String]) -> String {
-    let mut line = String::from("time_ms");
+    let mut line = String::from(CSV_TIME);
     for c in columns {
         line.push(',');
         line.push_str(c);
     }
     line
 }
+
+/// The first column of every recording: how a file tmclsh wrote is recognised.
+pub const CSV_TIME: &str = "time_ms";
 
 /// One CSV data line (without line ending).
 pub fn csv_row(sample: &Sample) -> String {
@@ -194,9 +197,14 @@ pub struct CsvFile {
 impl CsvFile {
     /// Creates (or replaces) the file and writes the header.
     pub fn create(path: &std::path::Path, columns: &[String]) -> Result<CsvFile, SessionError> {
-        let mut file = std::fs::File::create(path).map_err(|e| {
+        let file = std::fs::File::create(path).map_err(|e| {
             SessionError::Usage(format!("cannot write recording {}: {e}", path.display()))
         })?;
+        CsvFile::start(file, columns)
+    }
+
+    /// Writes the header to an opened, empty file (a script's, opened through its sandbox).
+    pub fn start(mut file: std::fs::File, columns: &[String]) -> Result<CsvFile, SessionError> {
         writeln!(file, "{}", csv_header(columns))?;
         Ok(CsvFile { file })
     }
@@ -288,6 +296,9 @@ mod tests {
         }
         fn write(&mut self, p: &ParamRef, v: &ParamValue) -> Result<(), SessionError> {
             self.inner.write(p, v)
+        }
+        fn check_write(&self, _: &ParamRef, _: &ParamValue) -> Result<(), String> {
+            Ok(())
         }
         fn write_line(&self, p: &ParamRef, v: &ParamValue) -> String {
             self.inner.write_line(p, v)

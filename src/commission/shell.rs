@@ -69,8 +69,7 @@ fn snapshot(
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
-    const USAGE: &str =
-        ":snapshot save FILE | diff FILE [FILE2] | restore FILE [--dry-run] [--store --yes]";
+    const USAGE: &str = ":snapshot save FILE | diff FILE [FILE2] | restore FILE [--dry-run] [--force] [--store --yes]";
     let words: Vec<&str> = arg.split_whitespace().collect();
     let flags: Vec<&str> = words
         .iter()
@@ -85,7 +84,7 @@ fn snapshot(
     let flag = |f: &str| flags.contains(&f);
     if let Some(unknown) = flags
         .iter()
-        .find(|f| !["--dry-run", "--store", "--yes"].contains(f))
+        .find(|f| !["--dry-run", "--store", "--yes", "--force"].contains(f))
     {
         return Err(SessionError::Usage(format!(
             "unknown option {unknown}; {USAGE}"
@@ -106,6 +105,8 @@ fn snapshot(
             let options = RestoreOptions {
                 store: flag("--store"),
                 dry_run: flag("--dry-run"),
+                force: flag("--force"),
+                redact: false,
             };
             if options.store && !options.dry_run && !flag("--yes") {
                 return Err(SessionError::Usage(

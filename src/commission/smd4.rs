@@ -10,6 +10,7 @@
 //! `persistent` and `levels` fields of `data/smd4.toml`.
 
 use crate::profile::Access;
+use crate::protocol::smd4::validate::validate;
 use crate::protocol::smd4::{CommandSpec, ItemType, Kind, ReplyShape, Request, Response, Smd4Spec};
 use crate::protocol::smd4::{Value, items::DataItem};
 use crate::session::SessionError;
@@ -82,6 +83,16 @@ impl ParamDevice for Smd4Session {
         Ok(())
     }
 
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
+        if !self.options().validate {
+            return Ok(()); // --no-validate: the drive judges.
+        }
+        let request = Request::new(&param.name).arg(argument(value));
+        validate(&request, &self.spec().commands)
+            .map(|_| ())
+            .map_err(|e| e.to_string())
+    }
+
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
         self.format(&Request::new(&param.name).arg(argument(value)))
     }
@@ -93,6 +104,7 @@ impl ParamDevice for Smd4Session {
         vec![StoreStep {
             line: self.format(&Request::new(store_mnemonic(self.spec()))),
             params: params.iter().map(|&p| p.clone()).collect(),
+            whole: true,
         }]
     }
 

@@ -4,6 +4,7 @@
 use crate::profile::{Param, Profile};
 use crate::protocol::tmcl::Instruction;
 use crate::protocol::tmcl::line::Op;
+use crate::protocol::tmcl::validate::{Mode, validate_instruction};
 use crate::session::SessionError;
 use crate::session::tmcl::{Answer, TmclSession};
 
@@ -79,6 +80,14 @@ impl ParamDevice for TmclSession {
         Ok(())
     }
 
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
+        if !self.options().validate {
+            // --no-validate: the module judges (values still have to be 32-bit integers).
+            return word(param, value).map(|_| ()).map_err(|e| e.to_string());
+        }
+        check_write(self.profile(), param, value)
+    }
+
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
         let value = word(param, value).unwrap_or(i32::MAX);
         let op = Op::Command(instruction(param, [5, 9], value));
@@ -93,6 +102,7 @@ impl ParamDevice for TmclSession {
                 StoreStep {
                     line: self.format(self.target(), op),
                     params: vec![param.clone()],
+                    whole: false,
                 }
             })
             .collect()
@@ -135,6 +145,20 @@ pub(super) fn param_ref(profile: &Profile, p: &Param, scope: Scope) -> ParamRef 
         rank: profile.snapshot.rank(&p.ident),
         tolerance: Tolerance::Exact,
     }
+}
+
+/// Whether the validator of `profile` lets a write of `value` to `param` through (the same check
+/// a typed SAP/SGP gets: a 32-bit integer, in range, writable, on a motor the module has).
+pub(super) fn check_write(
+    profile: &Profile,
+    param: &ParamRef,
+    value: &ParamValue,
+) -> Result<(), String> {
+    let value = word(param, value).map_err(|e| e.to_string())?;
+    let instruction = instruction(param, [5, 9], value);
+    validate_instruction(&instruction, profile, Mode::Ascii)
+        .map(|_| ())
+        .map_err(|e| e.to_string())
 }
 
 /// The instruction for `param`: `commands[0]` for axis parameters, `commands[1]` for global ones.

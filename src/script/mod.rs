@@ -1,9 +1,10 @@
 //! Rhai scripting: commissioning and test sequences with loops and assertions, run from a shell
 //! or CI (`tmclsh run`) or from the REPL (`:source`), where the exit code is the verdict.
 //!
-//! Scripts reach the module only through the session, cannot touch files (except the snapshot and
-//! recording files they name), processes or the network (no module resolver, no I/O functions),
-//! and run with capped operations and call depth.
+//! Scripts reach the module only through the session, reach files only through their
+//! [`sandbox::Sandbox`] (snapshots, recordings and programs, in the script's and the working
+//! directory), cannot touch processes or the network (no module resolver, no I/O functions), and
+//! run with capped operations, call depth, memory and time ([`limits`]).
 //! Device functions are registered as volatile, so Rhai's optimiser never runs them while
 //! compiling.
 
@@ -19,6 +20,9 @@ macro_rules! volatile {
 mod commission;
 mod common;
 pub mod failure;
+pub mod limits;
+pub mod memory;
+pub mod sandbox;
 mod smd4;
 mod tmcl;
 mod waiting;
@@ -26,6 +30,8 @@ mod waiting;
 use std::cell::RefCell;
 use std::path::Path;
 use std::rc::Rc;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use rhai::{Dynamic, Engine, EvalAltResult, OptimizationLevel, Position, Scope};
 
@@ -38,23 +44,9 @@ use crate::session::tmcl::TmclSession;
 
 pub use failure::ScriptFailure;
 
-/// Limits a script runs under.
-#[derive(Debug, Clone, Copy)]
-pub struct Limits {
-    /// Operations before a runaway script is stopped (0 = no limit).
-    pub max_operations: u64,
-    /// Deepest function call nesting.
-    pub max_call_depth: usize,
-}
-
-impl Default for Limits {
-    fn default() -> Self {
-        Limits {
-            max_operations: 100_000_000,
-            max_call_depth: 64,
-        }
-    }
-}
+pub use limits::Limits;
+use memory::Budget;
+use sandbox::Sandbox;
 
 /// A script's failure as reported: `file:line:column: message` and the exit code.
 #[derive(Debug, Clone, PartialEq)]
@@ -66,6 +58,8 @@ pub struct Report {
 }
 
 /// Runs the script at `path` with `args` over `session`; returns the session and the outcome.
+/// Its file functions reach the script's directory, the working directory and
+/// `limits.allow_dirs`.
 pub fn run_file(
     path: &Path,
     args: &[String],
@@ -73,8 +67,9 @@ pub fn run_file(
     limits: Limits,
 ) -> (Session, Result<(), Report>) {
     let name = path.display().to_string();
+    let sandbox = Sandbox::for_script(path, &limits.allow_dirs, limits.overwrite);
     match std::fs::read_to_string(path) {
-        Ok(source) => run_source(&name, &source, args, session, limits),
+        Ok(source) => run_in(&name, &source, args, session, limits, sandbox),
         Err(e) => (
             session,
             Err(Report {
@@ -85,7 +80,8 @@ pub fn run_file(
     }
 }
 
-/// Runs script text; `name` labels messages.
+/// Runs script text; `name` labels messages. Its file functions reach the working directory and
+/// `limits.allow_dirs`.
 pub fn run_source(
     name: &str,
     source: &str,
@@ -93,29 +89,46 @@ pub fn run_source(
     session: Session,
     limits: Limits,
 ) -> (Session, Result<(), Report>) {
+    let dirs = std::iter::once(Path::new(".")).chain(limits.allow_dirs.iter().map(|d| d.as_path()));
+    let sandbox = Sandbox::new(dirs, limits.overwrite);
+    run_in(name, source, args, session, limits, sandbox)
+}
+
+fn run_in(
+    name: &str,
+    source: &str,
+    args: &[String],
+    session: Session,
+    limits: Limits,
+    sandbox: Sandbox,
+) -> (Session, Result<(), Report>) {
     let script = Script {
         name,
         source,
         args,
         limits,
+        sandbox: Rc::new(sandbox),
     };
     match session {
         Session::Tmcl(s) => {
-            let (s, result) = script.run(s, TmclSession::annotate, |engine, s| {
-                tmcl::register(engine, s);
-                commission::register(engine, s);
+            let (s, result) = script.run(s, TmclSession::annotate, |engine, s, files| {
+                tmcl::register(engine, s, files);
+                commission::register(engine, s, files);
             });
             (Session::Tmcl(s), result)
         }
         Session::Smd4(s) => {
-            let (s, result) = script.run(s, Smd4Session::annotate, |engine, s| {
+            let (s, result) = script.run(s, Smd4Session::annotate, |engine, s, files| {
                 smd4::register(engine, s);
-                commission::register(engine, s);
+                commission::register(engine, s, files);
             });
             (Session::Smd4(s), result)
         }
     }
 }
+
+/// The functions a dialect adds to the engine: over the session, with the sandbox for files.
+type Registrar<S> = fn(&mut Engine, &Rc<RefCell<S>>, &Rc<Sandbox>);
 
 /// A script about to run.
 struct Script<'a> {
@@ -123,6 +136,7 @@ struct Script<'a> {
     source: &'a str,
     args: &'a [String],
     limits: Limits,
+    sandbox: Rc<Sandbox>,
 }
 
 impl Script<'_> {
@@ -132,19 +146,33 @@ impl Script<'_> {
         &self,
         session: S,
         annotate: fn(&mut S, &str) -> bool,
-        register: fn(&mut Engine, &Rc<RefCell<S>>),
+        register: Registrar<S>,
     ) -> (S, Result<(), Report>) {
         let shared = Rc::new(RefCell::new(session));
+        let watchdog = limits::Watchdog::start(self.limits.max_time);
         let result = {
-            let mut engine = base_engine(self.limits);
+            let budget = self.limits.max_memory.map(Budget::from_now);
+            let mut engine = base_engine(&self.limits, budget, watchdog.flag());
             let log_session = shared.clone();
             common::register(&mut engine, move |message| {
                 if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
                     eprintln!("log: {}", escape_control(message));
                 }
             });
-            register(&mut engine, &shared);
+            register(&mut engine, &shared, &self.sandbox);
             execute(&engine, self.name, self.source, self.args)
+        };
+        let result = if watchdog.stop(result.is_ok()) && result.is_err() {
+            Err(Report {
+                exit: Exit::DeviceError,
+                message: format!(
+                    "{}: {}",
+                    self.name,
+                    limits::out_of_time(self.limits.max_time)
+                ),
+            })
+        } else {
+            result
         };
         let session = Rc::try_unwrap(shared)
             .map(RefCell::into_inner)
@@ -160,24 +188,41 @@ pub fn check_file(path: &Path) -> Result<(), Report> {
         exit: Exit::Refused,
         message: format!("cannot read script {name}: {e}"),
     })?;
-    compile(&base_engine(Limits::default()), &name, &source).map(|_| ())
+    let engine = base_engine(&Limits::default(), None, Arc::default());
+    compile(&engine, &name, &source).map(|_| ())
 }
 
-/// The engine with limits and sandboxing, without device functions.
-fn base_engine(limits: Limits) -> Engine {
+/// Why the progress callback ended a script.
+const MEMORY: &str = "memory";
+const TIME: &str = "time";
+
+/// The engine with limits and sandboxing, without device functions. Rhai's data-size limits are
+/// not set: they walk whole values after every call (see [`memory`]); `budget` bounds memory
+/// instead, checked at every operation like Ctrl-C and the deadline (`expired`).
+fn base_engine(limits: &Limits, budget: Option<Budget>, expired: Arc<AtomicBool>) -> Engine {
     let mut engine = Engine::new();
     engine.set_optimization_level(OptimizationLevel::Simple);
     engine.set_max_operations(limits.max_operations);
     engine.set_max_call_levels(limits.max_call_depth);
     engine.set_max_expr_depths(128, 64);
-    engine.set_max_string_size(1 << 20);
-    engine.set_max_array_size(1 << 20);
-    engine.set_max_map_size(1 << 16);
     engine.set_module_resolver(rhai::module_resolvers::DummyModuleResolver::new());
     engine.disable_symbol("eval");
     engine.on_print(print);
     engine.on_debug(|text, _, pos| eprintln!("debug {pos}: {}", escape_control(text)));
-    engine.on_progress(|_| interrupt::pending().then(|| Dynamic::from("interrupted")));
+    engine.on_progress(move |_| {
+        if expired.load(Ordering::Relaxed) {
+            Some(Dynamic::from(TIME))
+        } else if interrupt::pending() {
+            Some(Dynamic::from("interrupted"))
+        } else if budget.is_some_and(Budget::exceeded) {
+            Some(Dynamic::from(MEMORY))
+        } else {
+            None
+        }
+    });
+    if let Some(budget) = budget {
+        memory::register_builders(&mut engine, budget);
+    }
     engine.register_type_with_name::<ScriptFailure>("Failure");
     engine.register_fn("to_string", |f: &mut ScriptFailure| f.message.clone());
     engine
@@ -234,6 +279,10 @@ fn report(name: &str, error: EvalAltResult) -> Report {
                 message: at(name, position, &failure.message),
             }
         }
+        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == MEMORY => Report {
+            exit: Exit::DeviceError,
+            message: at(name, position, memory::MESSAGE),
+        },
         EvalAltResult::ErrorTerminated(..) => Report {
             exit: Exit::Interrupted,
             message: at(name, position, "interrupted"),

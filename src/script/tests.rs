@@ -48,8 +48,9 @@ fn session() -> (TmclSession, Arc<AtomicUsize>) {
 fn device_functions_never_run_while_compiling_even_at_full_optimisation() {
     let (session, sent) = session();
     let shared = Rc::new(RefCell::new(session));
-    let mut engine = base_engine(Limits::default());
-    tmcl::register(&mut engine, &shared);
+    let mut engine = base_engine(&Limits::default(), None, Arc::default());
+    let sandbox = Rc::new(Sandbox::new([std::path::Path::new(".")], false));
+    tmcl::register(&mut engine, &shared, &sandbox);
     engine.set_optimization_level(OptimizationLevel::Full);
     let before = sent.load(Ordering::SeqCst);
     let ast = engine

@@ -7,19 +7,21 @@ use std::rc::Rc;
 
 use rhai::{Dynamic, Engine, INT, Map};
 
+use crate::profile::Profile;
 use crate::protocol::tmcl::line::address_of;
 use crate::protocol::tmcl::{Instruction, Status};
 use crate::session::tmcl::{Answer, Exchange, TmclSession};
 
 use super::common::duration;
 use super::failure::{Fallible, device, refused};
+use super::sandbox::{READ_LIMIT, Sandbox};
 use super::waiting;
 
 /// The session a script talks through.
 pub type Shared = Rc<RefCell<TmclSession>>;
 
 /// Registers the TMCL functions over `session`.
-pub fn register(engine: &mut Engine, session: &Shared) {
+pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     let s = session.clone();
     volatile!(engine, "send", move |line: &str| value_of(checked(
         s.borrow_mut().execute(line)
@@ -195,11 +197,9 @@ pub fn register(engine: &mut Engine, session: &Shared) {
         })
     });
     let s = session.clone();
+    let files = sandbox.clone();
     volatile!(engine, "download", move |path: &str| -> Fallible<INT> {
-        // The only file a script reads is the one it names here.
-        let profile = s.borrow().profile().clone();
-        let instructions = crate::cli::download::load(std::path::Path::new(path), &profile)
-            .map_err(|f| super::failure::ScriptFailure::new(f.exit, f.message).into_rhai())?;
+        let instructions = program(&files, path, &s.borrow().profile().clone())?;
         let mut session = s.borrow_mut();
         let target = session.target();
         device(crate::program::download(
@@ -328,4 +328,31 @@ fn byte(what: &str, n: INT) -> Fallible<u8> {
 
 fn word(what: &str, n: INT) -> Fallible<i32> {
     i32::try_from(n).map_err(|_| refused(format!("{what} {n} does not fit in a 32-bit value")))
+}
+
+/// The program at `path` (a program file or TMCL source), read through the sandbox. Errors say
+/// where the first problem is, never what the file holds: the file may not be the script's.
+fn program(sandbox: &Sandbox, path: &str, profile: &Profile) -> Fallible<Vec<Instruction>> {
+    let bytes = sandbox
+        .read(path, READ_LIMIT)
+        .map_err(|r| refused(r.to_string()))?;
+    crate::asm::load_program(&bytes, path, profile).map_err(|e| {
+        let first = e.to_string();
+        let place = first
+            .strip_prefix(path)
+            .and_then(|rest| rest.strip_prefix(':'))
+            .and_then(|rest| {
+                let mut parts = rest.splitn(3, ':');
+                let line = parts.next()?.parse::<usize>().ok()?;
+                let column = parts.next()?.parse::<usize>().ok()?;
+                Some(format!(
+                    " (the first problem is at line {line}, column {column})"
+                ))
+            })
+            .unwrap_or_default();
+        refused(format!(
+            "{path} is not a program for the {}{place}; `tmclsh asm {path}` shows why",
+            profile.module
+        ))
+    })
 }
