@@ -12,6 +12,7 @@ use crate::protocol::Dialect;
 use crate::protocol::smd4::PrefixStyle;
 use crate::session::smd4::{Smd4Options, Smd4Session};
 use crate::session::tmcl::TmclSession;
+use crate::session::transcript::Header;
 use crate::session::{Session, SessionOptions, Transcript};
 
 use super::Failure;
@@ -104,17 +105,12 @@ impl SessionArgs {
         }
     }
 
-    /// Opens the transcript, if asked for.
-    pub fn transcript(&self) -> Result<Option<Transcript>, Failure> {
+    /// Opens the transcript, if asked for, starting it with `header`.
+    pub fn transcript(&self, header: &Header) -> Result<Option<Transcript>, Failure> {
         self.log
             .as_deref()
             .map(|path| {
-                Transcript::open(path).map_err(|e| {
-                    Failure::new(
-                        Exit::Refused,
-                        format!("cannot open log file {}: {e}", path.display()),
-                    )
-                })
+                Transcript::open(path, header).map_err(|e| Failure::new(e.exit(), e.to_string()))
             })
             .transpose()
     }
@@ -168,7 +164,8 @@ impl ModuleArgs {
     /// Opens a session in the dialect the flags say.
     pub fn open(&self, profile: &Arc<Profile>) -> Result<Session, Failure> {
         let options = self.session.options();
-        let transcript = self.session.transcript()?;
+        let header = Header::new(self.connection.protocol, profile);
+        let transcript = self.session.transcript(&header)?;
         let link = self.connection.open(profile, options.timeout)?;
         match self.connection.protocol {
             Dialect::Tmcl => {
@@ -195,7 +192,7 @@ pub fn open_tmcl(
         ));
     }
     let options = session.options();
-    let transcript = session.transcript()?;
+    let transcript = session.transcript(&Header::tmcl(profile))?;
     let link = connection.open(profile, options.timeout)?;
     TmclSession::open(link, profile.clone(), options, transcript)
         .map_err(|e| Failure::new(e.exit(), e.to_string()))

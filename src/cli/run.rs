@@ -59,5 +59,11 @@ pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     for message in session.close() {
         eprintln!("tmclsh: {message}");
     }
+    if let Some(failure) = session.transcript().and_then(|t| t.failure()) {
+        eprintln!("tmclsh: {failure}: the run asked for a transcript, so it failed");
+        if exit == Exit::Success {
+            return Ok(Exit::Link);
+        }
+    }
     Ok(exit)
 }

@@ -44,7 +44,8 @@ pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Resul
         .map_err(|e| Failure::new(Exit::Refused, format!("--addresses: {e}")))?;
     let options = args.session.options();
     let per_reply = options.timeout;
-    let transcript = args.session.transcript()?;
+    let header = crate::session::transcript::Header::new(args.connection.protocol, profile);
+    let transcript = args.session.transcript(&header)?;
     let link = args.connection.open(profile, per_reply)?;
     let failed = |e: crate::session::SessionError| Failure::new(e.exit(), e.to_string());
     if smd4 {

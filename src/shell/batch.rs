@@ -73,7 +73,8 @@ pub fn run(shell: &mut Shell, mut lines: Lines, out: &mut dyn Write, err: &mut d
         if text.is_empty() || text.starts_with('#') {
             continue;
         }
-        match step(shell, text, out, err) {
+        match step(shell, text, out, err).and_then(|flow| transcript_written(shell).map(|()| flow))
+        {
             Ok(Flow::Continue) => {}
             Ok(Flow::Quit) => break Exit::Success,
             Err(e) => break fail(shell, &e, err, Some((number, text))),
@@ -82,7 +83,27 @@ pub fn run(shell: &mut Shell, mut lines: Lines, out: &mut dyn Write, err: &mut d
     for message in shell.session().close() {
         let _ = writeln!(err, "tmclsh: {message}");
     }
+    if let (Exit::Success, Err(e)) = (exit, transcript_written(shell)) {
+        // Only the closing lines were lost; the commands ran.
+        report_notices(shell, err);
+        let _ = writeln!(err, "tmclsh: {e}");
+        return e.exit();
+    }
     exit
+}
+
+/// A run that asked for a transcript ends when it cannot be written (the notice before says why).
+fn transcript_written(shell: &Shell) -> Result<(), SessionError> {
+    let failed = shell
+        .session_ref()
+        .transcript()
+        .is_some_and(|t| t.failure().is_some());
+    if failed {
+        return Err(SessionError::Link(
+            "the run stops: it asked for a transcript that cannot be written".into(),
+        ));
+    }
+    Ok(())
 }
 
 fn step(
