@@ -2,31 +2,46 @@
 //!
 //! For each command stdout gets exactly one line, the reply as the module sent it (without echo or
 //! line ending); diagnostics go to stderr. The first failing line stops the run with its exit code
-//! (1 device error status, 2 refused before sending, 3 no reply or link lost, 130 Ctrl-C), after
-//! stopping the motors the run set moving.
+//! (1 device error status, 2 refused before sending, 3 no reply, link lost or a transcript that
+//! cannot be written, 130 Ctrl-C), after stopping the motors the run set moving.
+//!
+//! Piped lines end with CR, LF or CRLF ([`lines`]); a line that is too long or not UTF-8 is
+//! refused like a line the validator refuses. Control characters in a line are shown escaped.
 
-use std::io::{BufRead, Write};
+pub mod lines;
+
+use std::borrow::Cow;
+use std::io::Write;
 use std::sync::mpsc;
 
 use crate::exit::{Exit, ExitStatus};
+use crate::session::transcript::escape_into;
 use crate::session::{SessionError, interrupt};
 
 use super::{Flow, Shell};
+use lines::{LineError, LineReader, MAX_LINE};
+
+/// Lines read ahead of the one running: enough to keep the reader busy, few enough that a large
+/// file on stdin is not read into memory ahead of a slow module.
+const READ_AHEAD: usize = 16;
+
+/// One line of input, or why it cannot be used.
+type Line = Result<String, LineError>;
 
 /// Where lines come from.
 pub enum Lines {
     /// Given up front (`-c`).
     Given(std::vec::IntoIter<String>),
     /// Read as they arrive (stdin); a reader thread keeps Ctrl-C responsive while waiting.
-    Stream(mpsc::Receiver<std::io::Result<String>>),
+    Stream(mpsc::Receiver<std::io::Result<Line>>),
 }
 
 impl Lines {
     /// Lines of stdin, read on a thread as they arrive.
     pub fn stdin() -> Lines {
-        let (tx, rx) = mpsc::channel();
+        let (tx, rx) = mpsc::sync_channel(READ_AHEAD);
         std::thread::spawn(move || {
-            for line in std::io::stdin().lock().lines() {
+            for line in LineReader::new(std::io::stdin().lock()) {
                 if tx.send(line).is_err() {
                     break;
                 }
@@ -35,9 +50,12 @@ impl Lines {
         Lines::Stream(rx)
     }
 
-    fn next(&mut self) -> Option<Result<String, SessionError>> {
+    fn next(&mut self) -> Option<Result<Line, SessionError>> {
         match self {
-            Lines::Given(lines) => lines.next().map(Ok),
+            Lines::Given(lines) => lines.next().map(|line| match line.len() {
+                length if length > MAX_LINE => Ok(Err(LineError::TooLong)),
+                _ => Ok(Ok(line)),
+            }),
             Lines::Stream(rx) => loop {
                 if interrupt::pending() {
                     return Some(Err(SessionError::Interrupted));
@@ -69,6 +87,13 @@ pub fn run(shell: &mut Shell, mut lines: Lines, out: &mut dyn Write, err: &mut d
             Some(Err(e)) => break fail(shell, &e, err, None),
         };
         number += 1;
+        let line = match line {
+            Ok(line) => line,
+            Err(e) => {
+                let refused = SessionError::Usage(format!("line {number}: {e}; nothing sent"));
+                break fail(shell, &refused, err, None);
+            }
+        };
         let text = line.trim();
         if text.is_empty() || text.starts_with('#') {
             continue;
@@ -145,9 +170,15 @@ fn fail(
     err: &mut dyn Write,
     at: Option<(usize, &str)>,
 ) -> Exit {
+    let message = error.to_string();
     let _ = match at {
-        Some((number, text)) => writeln!(err, "tmclsh: line {number} ({text}): {error}"),
-        None => writeln!(err, "tmclsh: {error}"),
+        Some((number, text)) => writeln!(
+            err,
+            "tmclsh: line {number} ({}): {}",
+            shown(text),
+            shown(&message)
+        ),
+        None => writeln!(err, "tmclsh: {}", shown(&message)),
     };
     interrupt::take();
     if shell.session().may_be_moving() {
@@ -156,4 +187,15 @@ fn fail(
         }
     }
     error.exit()
+}
+
+/// Text for a message: as is, or escaped and quoted when it holds control characters (an input
+/// line must not move the cursor, retitle or clear the terminal it is reported on).
+fn shown(text: &str) -> Cow<'_, str> {
+    if !text.chars().any(char::is_control) {
+        return Cow::Borrowed(text);
+    }
+    let mut escaped = String::with_capacity(text.len() + 8);
+    escape_into(text.as_bytes(), &mut escaped);
+    Cow::Owned(escaped)
 }
