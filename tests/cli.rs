@@ -73,7 +73,9 @@ fn a_broken_profile_is_refused_with_exit_2() {
     let out = run(&["--profile", path.to_str().unwrap(), "params"]);
     assert_eq!(code(&out), 2);
     assert!(
-        stderr(&out).contains("does not follow the profile schema"),
+        stderr(&out).contains(
+            "refused (schema in the README, \"Module profiles\"):\n  line 2: invalid type"
+        ),
         "{}",
         stderr(&out)
     );

@@ -14,6 +14,7 @@ use crate::protocol::Dialect;
 use crate::protocol::smd4::PrefixStyle;
 use crate::session::smd4::{Smd4Options, Smd4Session};
 use crate::session::tmcl::TmclSession;
+use crate::session::transcript::Header;
 use crate::session::{Session, SessionOptions, Transcript};
 
 use super::Failure;
@@ -113,17 +114,12 @@ impl SessionArgs {
         }
     }
 
-    /// Opens the transcript, if asked for.
-    pub fn transcript(&self) -> Result<Option<Transcript>, Failure> {
+    /// Opens the transcript, if asked for, starting it with `header`.
+    pub fn transcript(&self, header: &Header) -> Result<Option<Transcript>, Failure> {
         self.log
             .as_deref()
             .map(|path| {
-                Transcript::open(path).map_err(|e| {
-                    Failure::new(
-                        Exit::Refused,
-                        format!("cannot open log file {}: {e}", path.display()),
-                    )
-                })
+                Transcript::open(path, header).map_err(|e| Failure::new(e.exit(), e.to_string()))
             })
             .transpose()
     }
@@ -215,7 +211,8 @@ impl ModuleArgs {
     /// Opens a session in the dialect the flags say.
     pub fn open(&self, profile: &Arc<Profile>, audience: Audience) -> Result<Session, Failure> {
         let options = self.session.options();
-        let transcript = self.session.transcript()?;
+        let header = Header::new(self.protocol(), profile);
+        let transcript = self.session.transcript(&header)?;
         let link = self.link(profile, options.timeout, audience)?;
         match self.protocol() {
             Dialect::Tmcl => {
@@ -237,7 +234,7 @@ impl ModuleArgs {
             ));
         }
         let options = self.session.options();
-        let transcript = self.session.transcript()?;
+        let transcript = self.session.transcript(&Header::tmcl(profile))?;
         let link = self.link(profile, options.timeout, Audience::Batch)?;
         TmclSession::open(link, profile.clone(), options, transcript)
             .map_err(|e| Failure::new(e.exit(), e.to_string()))

@@ -88,6 +88,12 @@ pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     for message in session.close() {
         super::diagnose(&message);
     }
+    if let Some(failure) = session.transcript().and_then(|t| t.failure()) {
+        eprintln!("tmclsh: {failure}: the run asked for a transcript, so it failed");
+        if exit == Exit::Success {
+            return Ok(Exit::Link);
+        }
+    }
     Ok(exit)
 }
 

@@ -41,7 +41,8 @@ pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Resul
         .map_err(|e| Failure::new(Exit::Refused, format!("--addresses: {e}")))?;
     let options = args.module.session.options();
     let per_reply = options.timeout;
-    let transcript = args.module.session.transcript()?;
+    let header = crate::session::transcript::Header::new(args.module.protocol(), profile);
+    let transcript = args.module.session.transcript(&header)?;
     let link = args.module.link(profile, per_reply, Audience::Batch)?;
     let failed = |e: crate::session::SessionError| Failure::new(e.exit(), e.to_string());
     if smd4 {

@@ -13,6 +13,7 @@
 //! row with nothing sent in between (a settled value), and kept as comments otherwise.
 
 pub mod parse;
+mod recognise;
 pub mod smd4;
 
 use std::fmt::Write as _;
@@ -24,6 +25,15 @@ use crate::protocol::tmcl::reply::parse_reply;
 use crate::protocol::tmcl::{AsciiWord, Instruction, Status};
 
 use parse::{Entry, Record};
+pub use recognise::{Recognised, recognise};
+
+/// Whether any step is an exchange to replay (a transcript of only failed or unreadable
+/// commands replays nothing).
+pub fn replays_something(steps: &[Step]) -> bool {
+    steps
+        .iter()
+        .any(|s| matches!(s, Step::Exchange { .. } | Step::Version { .. }))
+}
 
 /// One thing the script does.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -88,6 +98,7 @@ fn reply_after(rest: &[Entry]) -> Option<&[u8]> {
                 return Some(bytes);
             }
             Record::Note(note) if note.starts_with("no reply") => return None,
+            Record::Header(_) => return None, // another session starts
             _ => {}
         }
     }

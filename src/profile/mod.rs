@@ -4,10 +4,11 @@
 //! TMCM-142 profile is built in (`data/tmcm142.toml`); `--profile FILE.toml` loads another module's
 //! table with the same schema, so a new module needs no new release.
 
+mod check;
 pub(crate) mod load;
 mod snapshot;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 
 use crate::protocol::tmcl::commands::CommandTable;
@@ -164,6 +165,8 @@ pub struct Profile {
     pub sim: SimConstants,
     /// How parameter snapshots treat each parameter.
     pub snapshot: SnapshotRules,
+    /// The file it was loaded from; `None` for the built-in profile.
+    pub source: Option<PathBuf>,
 }
 
 /// Why a profile could not be loaded.
@@ -177,15 +180,16 @@ pub enum ProfileError {
         /// What the OS said.
         source: std::io::Error,
     },
-    /// The file is not valid TOML or does not follow the schema.
+    /// The file is not valid TOML, does not follow the schema, or has rows that cannot be right.
     #[error(
-        "profile {path} does not follow the profile schema (see README, \"Module profiles\"): {message}"
+        "profile {path} refused (schema in the README, \"Module profiles\"):\n  {}",
+        problems.join("\n  ")
     )]
     Schema {
         /// The file.
         path: String,
-        /// What is wrong.
-        message: String,
+        /// What is wrong, one `line N: …` each.
+        problems: Vec<String>,
     },
 }
 
@@ -235,40 +239,65 @@ impl Profile {
             source,
         })?;
         let builtin = Profile::builtin();
-        Profile::from_toml(&text, Some(&builtin.commands)).map_err(|message| ProfileError::Schema {
-            path: path.display().to_string(),
-            message,
-        })
+        let mut profile =
+            Profile::from_toml(&text, Some(&builtin.commands)).map_err(|message| {
+                ProfileError::Schema {
+                    path: path.display().to_string(),
+                    problems: message.lines().map(String::from).collect(),
+                }
+            })?;
+        profile.source = Some(path.to_path_buf());
+        Ok(profile)
     }
 
     /// Builds a profile from TOML text; `fallback_commands` fills in a missing command table.
+    /// Every problem of the file is reported, one `line N: …` per line of the error.
     pub fn from_toml(
         text: &str,
         fallback_commands: Option<&CommandTable>,
     ) -> Result<Profile, String> {
-        let file = ProfileFile::parse(text).map_err(|e| e.to_string())?;
+        let file = ProfileFile::parse(text).map_err(|e| check::render_toml_error(text, &e))?;
+        let problems = check::check(&file);
+        if !problems.is_empty() {
+            return Err(check::render(text, &problems).join("\n"));
+        }
+        let at = |place: Vec<check::Step>, message: String| {
+            check::render(text, &[check::Problem::at(place, message)]).join("\n")
+        };
         let commands = if file.command.is_empty() {
             fallback_commands
                 .cloned()
                 .ok_or_else(|| "no [[command]] rows".to_string())?
         } else {
             let ascii_words = file.ascii.as_ref().map(|a| a.ascii_only_commands.clone());
-            CommandTable::from_rows(&file.command, ascii_words.unwrap_or_default())?
+            CommandTable::from_rows(&file.command, ascii_words.unwrap_or_default()).map_err(
+                |message| {
+                    // The table names the command by number; numbers are unique by now.
+                    let row = file
+                        .command
+                        .iter()
+                        .position(|r| message.starts_with(&format!("command {}:", r.number)));
+                    let place = match row {
+                        Some(i) => vec![check::Step::Key("command"), check::Step::Row(i)],
+                        None => vec![check::Step::Key("command")],
+                    };
+                    at(place, message)
+                },
+            )?
         };
         let mut axis = Vec::new();
         for row in &file.axis_parameter {
-            axis.extend(expand(row, ParamKind::Axis)?);
+            axis.extend(expand(row, ParamKind::Axis));
         }
         let mut global = Vec::new();
         for row in &file.global_parameter {
-            global.extend(expand(row, ParamKind::Global { bank: row.bank })?);
+            global.extend(expand(row, ParamKind::Global { bank: row.bank }));
         }
         axis.sort_by_key(|p| p.number);
         global.sort_by_key(|p| (p.bank(), p.number));
-        check_unique(&axis)?;
-        check_unique(&global)?;
         file.snapshot
-            .check(&axis.iter().chain(&global).collect::<Vec<_>>())?;
+            .check(&axis.iter().chain(&global).collect::<Vec<_>>())
+            .map_err(|message| at(vec![check::Step::Key("snapshot")], message))?;
         let sim = file.simulation.as_ref();
         Ok(Profile {
             module: file.meta.module.clone(),
@@ -303,6 +332,7 @@ impl Profile {
                 instruction_us: sim.and_then(|s| s.instruction_us).unwrap_or(100),
             },
             snapshot: file.snapshot.clone(),
+            source: None,
         })
     }
 
@@ -370,20 +400,15 @@ fn find_by_name<'a>(
     }
 }
 
-/// One row, or one per number for rows spanning `number..=number_last` (user variables).
-fn expand(row: &ParamRow, kind: ParamKind) -> Result<Vec<Param>, String> {
+/// One row, or one per number for rows spanning `number..=number_last` (user variables). The
+/// row has passed [`check`]: numbers lie in 0..255, -1 marks a placeholder.
+fn expand(row: &ParamRow, kind: ParamKind) -> Vec<Param> {
     if row.number < 0 {
-        return Ok(Vec::new()); // placeholder rows (e.g. bank 1, contents unknown)
+        return Vec::new(); // placeholder rows (e.g. bank 1, contents unknown)
     }
     let last = row.number_last.unwrap_or(row.number);
-    if last > 255 || last < row.number {
-        return Err(format!(
-            "parameter '{}': numbers must lie in 0..255",
-            row.ident
-        ));
-    }
     let spans = row.number_last.is_some();
-    Ok((row.number..=last)
+    (row.number..=last)
         .map(|number| Param {
             kind,
             number: number as u8,
@@ -393,7 +418,7 @@ fn expand(row: &ParamRow, kind: ParamKind) -> Result<Vec<Param>, String> {
                 row.name.clone()
             },
             ident: if spans {
-                format!("{}_{number}", row.ident)
+                format!("{}_{number}", row.ident.to_ascii_lowercase())
             } else {
                 row.ident.to_ascii_lowercase()
             },
@@ -404,22 +429,7 @@ fn expand(row: &ParamRow, kind: ParamKind) -> Result<Vec<Param>, String> {
             default: row.default,
             uncertain: row.uncertain,
         })
-        .collect())
-}
-
-fn check_unique(params: &[Param]) -> Result<(), String> {
-    for (i, p) in params.iter().enumerate() {
-        if let Some(q) = params[..i]
-            .iter()
-            .find(|q| q.ident == p.ident || (q.bank() == p.bank() && q.number == p.number))
-        {
-            return Err(format!(
-                "parameters '{}' and '{}' share a number or identifier",
-                q.ident, p.ident
-            ));
-        }
-    }
-    Ok(())
+        .collect()
 }
 
 #[cfg(test)]

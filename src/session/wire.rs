@@ -130,11 +130,12 @@ impl Wire {
         }
     }
 
-    /// Stops writing a transcript that failed, with a notice.
+    /// Says that the transcript failed. It stays attached, so the faces can see its
+    /// [`Transcript::failure`] and end a run that asked for it; it records nothing more.
     fn close_transcript(&mut self, error: &std::io::Error) {
-        if let Some(t) = self.transcript.take() {
+        if let Some(t) = &self.transcript {
             self.notices.push(format!(
-                "stopped writing the transcript {}: {error}",
+                "cannot write the transcript {}: {error}; nothing more is recorded",
                 t.path().display()
             ));
         }

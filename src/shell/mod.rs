@@ -11,10 +11,12 @@ mod tmcl_helpers;
 use std::io::{self, Write};
 use std::path::Path;
 
+use crate::exit::{Exit, ExitStatus};
 use crate::protocol::tmcl::line::address_char;
 use crate::script::{self, Limits};
 use crate::session::smd4::drive_name;
 use crate::session::tmcl::WireMode;
+use crate::session::transcript::Header;
 use crate::session::{Session, SessionError, Transcript, interrupt};
 
 /// Whether to go on after a helper command.
@@ -155,15 +157,25 @@ impl Shell {
         let session = self.session();
         if arg.is_empty() {
             match session.transcript() {
-                Some(t) => writeln!(out, "logging to {}", t.path().display())?,
+                Some(t) => match t.failure() {
+                    Some(failure) => writeln!(out, "not logging: {failure}; :log FILE starts")?,
+                    None => writeln!(out, "logging to {}", t.path().display())?,
+                },
                 None => writeln!(out, "not logging; :log FILE starts")?,
             }
         } else if arg == "off" {
             session.set_transcript(None);
             writeln!(out, "transcript stopped")?;
         } else {
-            let transcript = Transcript::open(Path::new(arg))
-                .map_err(|e| SessionError::Usage(format!("cannot open log file {arg}: {e}")))?;
+            let header = match session {
+                Session::Tmcl(s) => Header::tmcl(s.profile()),
+                Session::Smd4(_) => Header::smd4(),
+            };
+            let transcript =
+                Transcript::open(Path::new(arg), &header).map_err(|e| match e.exit() {
+                    Exit::Refused => SessionError::Usage(e.to_string()),
+                    _ => SessionError::Link(e.to_string()),
+                })?;
             session.set_transcript(Some(transcript));
             writeln!(out, "logging to {arg}")?;
         }

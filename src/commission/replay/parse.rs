@@ -1,7 +1,7 @@
 //! Reading a `--log` transcript back: `<time> tx|rx "<escaped bytes>" ; <meaning>` and
 //! `<time> -- <note>` lines (the format of [`crate::session::transcript`]).
 
-use crate::session::transcript::unescape;
+use crate::session::transcript::{self, Header, unescape};
 
 /// One transcript line.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -17,6 +17,8 @@ pub enum Record {
     },
     /// A remark (mode changes, timeouts, session start and end).
     Note(String),
+    /// The start of a session's part of the file: what it is a transcript of.
+    Header(Header),
 }
 
 /// A transcript line with its place in the file.
@@ -31,61 +33,82 @@ pub struct Entry {
 }
 
 /// Parses a whole transcript; blank lines are skipped, anything else malformed is an error that
-/// names the line.
+/// names the line — except an unfinished last line, which a full disk cuts short: it is left out.
 pub fn parse(text: &str) -> Result<Vec<Entry>, String> {
     let mut entries = Vec::new();
+    let count = text.lines().count();
     for (i, raw) in text.lines().enumerate() {
-        let line = i + 1;
-        if raw.trim().is_empty() {
-            continue;
+        match parse_line(i + 1, raw) {
+            Ok(Some(entry)) => entries.push(entry),
+            Ok(None) => {}
+            Err(_) if i + 1 == count && !text.ends_with('\n') && cut_short(raw) => break,
+            Err(e) => return Err(e),
         }
-        let bad = |what: &str| format!("line {line}: {what}: {raw}");
-        let (time, rest) = raw.split_once(' ').ok_or_else(|| bad("no time stamp"))?;
-        let (tag, rest) = rest.split_once(' ').unwrap_or((rest, ""));
-        let record = match tag {
-            "--" => Record::Note(rest.to_string()),
-            "tx" | "rx" => {
-                let (quoted, meaning) = split_quoted(rest).ok_or_else(|| bad("no quoted bytes"))?;
-                let bytes = unescape(quoted).ok_or_else(|| bad("bad escape in the bytes"))?;
-                if tag == "tx" {
-                    Record::Sent(bytes)
-                } else {
-                    Record::Received {
-                        bytes,
-                        meaning: meaning.to_string(),
-                    }
-                }
-            }
-            _ => return Err(bad("not tx, rx or --")),
-        };
-        entries.push(Entry {
-            line,
-            time: time.to_string(),
-            record,
-        });
     }
     Ok(entries)
 }
 
+/// Whether a malformed last line is a transcript line cut short: its time stamp and tag are there.
+fn cut_short(raw: &str) -> bool {
+    let tag = raw.split(' ').nth(1).unwrap_or("");
+    ["tx", "rx", "--", transcript::HEADER_TAG].contains(&tag)
+}
+
+/// One line: `None` when blank.
+fn parse_line(line: usize, raw: &str) -> Result<Option<Entry>, String> {
+    if raw.trim().is_empty() {
+        return Ok(None);
+    }
+    let bad = |what: &str| format!("line {line}: {what}: {}", excerpt(raw));
+    let (time, rest) = raw.split_once(' ').ok_or_else(|| bad("no time stamp"))?;
+    let (tag, rest) = rest.split_once(' ').unwrap_or((rest, ""));
+    let record = match tag {
+        "--" => Record::Note(rest.to_string()),
+        transcript::HEADER_TAG => {
+            Record::Header(Header::parse(rest).map_err(|e| format!("line {line}: {e}"))?)
+        }
+        "tx" | "rx" => {
+            let (quoted, meaning) = split_quoted(rest).ok_or_else(|| bad("no quoted bytes"))?;
+            let bytes = unescape(quoted).ok_or_else(|| bad("bad escape in the bytes"))?;
+            if tag == "tx" {
+                Record::Sent(bytes)
+            } else {
+                Record::Received {
+                    bytes,
+                    meaning: meaning.to_string(),
+                }
+            }
+        }
+        _ => return Err(bad("not a transcript line (tx, rx, -- or ##)")),
+    };
+    Ok(Some(Entry {
+        line,
+        time: time.to_string(),
+        record,
+    }))
+}
+
+/// The start of a line for a message: escaped, and cut short (the file may be anything).
+fn excerpt(raw: &str) -> String {
+    const SHOWN: usize = 60;
+    let cut = raw.char_indices().nth(SHOWN).map_or(raw.len(), |(i, _)| i);
+    let mut text = String::new();
+    transcript::escape_into(&raw.as_bytes()[..cut], &mut text);
+    if cut < raw.len() {
+        text.push_str(" …");
+    }
+    text
+}
+
 /// Splits `"…" ; meaning` into the quoted part (with its quotes) and the meaning.
 fn split_quoted(text: &str) -> Option<(&str, &str)> {
-    let bytes = text.as_bytes();
-    if bytes.first() != Some(&b'"') {
-        return None;
-    }
-    let mut i = 1;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'\\' => i += 2,
-            b'"' => {
-                let rest = text[i + 1..].trim_start();
-                let meaning = rest.strip_prefix(';').map(str::trim).unwrap_or("");
-                return Some((&text[..=i], meaning));
-            }
-            _ => i += 1,
-        }
-    }
-    None
+    let (quoted, rest) = transcript::split_quoted(text)?;
+    let meaning = rest
+        .trim_start()
+        .strip_prefix(';')
+        .map(str::trim)
+        .unwrap_or("");
+    Some((quoted, meaning))
 }
 
 #[cfg(test)]
@@ -126,12 +149,26 @@ mod tests {
 
     #[test]
     fn malformed_lines_are_refused_with_their_number() {
-        assert_eq!(parse("x\n").unwrap_err(), "line 1: no time stamp: x");
+        assert_eq!(parse("x\n").unwrap_err(), "line 1: no time stamp: \"x\"");
+        assert_eq!(parse("t -- a\nt tx \"AG").unwrap().len(), 1, "cut short");
+        assert!(parse("t tx \"AG\nt -- a\n").is_err());
+        assert!(parse("t tx \"AG\n").is_err(), "a whole line");
         let error = parse("t -- ok\nt zz \"a\"\n").unwrap_err();
-        assert!(error.starts_with("line 2: not tx, rx or --"), "{error}");
-        assert!(parse("t tx \"\\q\"").unwrap_err().contains("bad escape"));
         assert!(
-            parse("t tx unquoted")
+            error.starts_with("line 2: not a transcript line"),
+            "{error}"
+        );
+        let long = format!("t zz \x1b[2J{}", "x".repeat(10_000));
+        let error = parse(&long).unwrap_err();
+        assert!(error.len() < 200 && error.contains("\\x1B[2J"), "{error}");
+        let error = parse("t ## tmclsh transcript: dialect \"x\", module \"y\"\n").unwrap_err();
+        assert!(
+            error.starts_with("line 1: a header naming the unknown dialect 'x'"),
+            "{error}"
+        );
+        assert!(parse("t tx \"\\q\"\n").unwrap_err().contains("bad escape"));
+        assert!(
+            parse("t tx unquoted\n")
                 .unwrap_err()
                 .contains("no quoted bytes")
         );

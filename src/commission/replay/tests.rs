@@ -1,8 +1,9 @@
 //! Transcript to script, on transcripts written the way the session writes them.
 
 use super::*;
+use crate::protocol::Dialect;
 use crate::protocol::tmcl::frame::encode_version_string;
-use crate::session::transcript::escape_into;
+use crate::session::transcript::{Header, escape_into};
 
 /// Builds transcript text line by line.
 #[derive(Default)]
@@ -209,4 +210,75 @@ fn lines_without_reply_and_stale_bytes_are_comments_or_ignored() {
 fn rhai_strings_escape_quotes_and_backslashes() {
     assert_eq!(rhai_string("a\"b\\c"), "\"a\\\"b\\\\c\"");
     assert_eq!(rhai_string("x\u{1}"), "\"x\\x01\"");
+}
+
+impl Log {
+    fn header(&mut self, header: &Header) -> &mut Self {
+        self.0.push_str("2026-01-01T00:00:00.000Z ## ");
+        self.0.push_str(&header.to_text());
+        self.0.push('\n');
+        self
+    }
+    fn recognised(&self) -> Result<Recognised, String> {
+        recognise(&parse::parse(&self.0).unwrap())
+    }
+}
+
+#[test]
+fn the_header_says_what_a_transcript_is_of() {
+    let mut log = Log::default();
+    log.header(&Header::smd4()).tx("MOTOR:STOP");
+    let kind = log.recognised().unwrap();
+    assert_eq!((kind.dialect, kind.notice), (Dialect::Smd4, None));
+    // The same session again, appended: still one kind.
+    log.header(&Header::smd4()).tx("SYS:FW");
+    assert_eq!(log.recognised().unwrap().dialect, Dialect::Smd4);
+}
+
+#[test]
+fn sessions_of_different_modules_in_one_file_are_refused() {
+    let mut log = Log::default();
+    log.header(&Header::tmcl(&Profile::builtin()))
+        .exchange("AGAP 4, 0", 100, 5)
+        .header(&Header::smd4());
+    let error = log.recognised().unwrap_err();
+    assert!(
+        error.contains("TMCL TMCM-142 (line 1) and SMD4 SMD4 (line 4)"),
+        "{error}"
+    );
+}
+
+#[test]
+fn a_file_from_before_headers_is_read_with_a_notice() {
+    let mut log = Log::default();
+    log.note("SMD4 session opened on simulator")
+        .tx("MOTOR:STOP");
+    let kind = log.recognised().unwrap();
+    assert_eq!(kind.dialect, Dialect::Smd4);
+    assert!(kind.notice.unwrap().contains("read as SMD4"));
+    let mut log = Log::default();
+    log.exchange("AGAP 4, 0", 100, 5);
+    assert_eq!(log.recognised().unwrap().dialect, Dialect::Tmcl);
+    log.header(&Header::tmcl(&Profile::builtin()));
+    let kind = log.recognised().unwrap();
+    assert!(
+        kind.notice
+            .unwrap()
+            .contains("lines before line 3 have no header")
+    );
+}
+
+#[test]
+fn a_transcript_of_only_failures_replays_nothing() {
+    let mut log = Log::default();
+    log.contact()
+        .tx("AGAP 6, 0")
+        .note("no reply from module A within 1000 ms");
+    assert!(!replays_something(&log.steps()));
+    log.exchange("AGAP 7, 0", 100, 8);
+    assert!(replays_something(&log.steps()));
+    // SMD4 lines read as TMCL: not lines a TMCM module understands.
+    let mut log = Log::default();
+    log.tx("MOTOR:STOP").tx("SYS:FW");
+    assert!(!replays_something(&log.steps()));
 }

@@ -54,6 +54,27 @@ impl Values {
     }
 }
 
+/// The profile, with the bank-0 interface settings (GP 64..127: address, host address, ASCII
+/// mode, EEPROM magic …) the simulated firmware works by. A custom profile that leaves them out
+/// gets the built-in profile's rows: without them the module would answer to no address at all.
+fn with_interface_settings(profile: Arc<Profile>) -> Arc<Profile> {
+    let builtin = Profile::builtin();
+    let missing: Vec<Param> = builtin
+        .global
+        .iter()
+        .filter(|p| eeprom_only(Slot::Global(p.bank(), p.number)))
+        .filter(|p| profile.global_param(0, p.number).is_none())
+        .cloned()
+        .collect();
+    if missing.is_empty() {
+        return profile;
+    }
+    let mut profile = Profile::clone(&profile);
+    profile.global.extend(missing);
+    profile.global.sort_by_key(|p| (p.bank(), p.number));
+    Arc::new(profile)
+}
+
 /// RAM and EEPROM values of every parameter of the profile.
 pub(crate) struct Params {
     profile: Arc<Profile>,
@@ -67,6 +88,7 @@ pub(crate) struct Params {
 impl Params {
     /// Factory state of a module whose serial address is `address`.
     pub fn new(profile: Arc<Profile>, address: u8) -> Params {
+        let profile = with_interface_settings(profile);
         let mut axis_index = Box::new([None; 256]);
         for (i, p) in profile.axis.iter().enumerate() {
             axis_index[p.number as usize] = Some(i as u16);
