@@ -180,7 +180,7 @@ fn params_and_times(
     let mut split = words.len();
     while split > 1
         && words.len() - split < times
-        && record::parse_duration(words[split - 1]).is_ok()
+        && record::is_time(words[split - 1])
     {
         split -= 1;
     }
