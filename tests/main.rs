@@ -10,6 +10,7 @@ mod commission;
 mod hardware;
 mod program;
 mod repl;
+mod safety;
 mod script;
 mod shell;
 mod sim;

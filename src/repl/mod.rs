@@ -108,6 +108,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
     if text.is_empty() {
         return Flow::Continue;
     }
+    crate::crash::point("repl", text);
     interrupt::take();
     let result = if text.starts_with(':') {
         shell.helper(text, out)
