@@ -351,9 +351,7 @@ fn too_nested(at: &Token) -> SyntaxError {
 fn too_deep(at: &Token) -> SyntaxError {
     (
         at.column,
-        format!(
-            "the expression is more than {MAX_DEPTH} operations deep; split it with constants"
-        ),
+        format!("the expression is more than {MAX_DEPTH} operations deep; split it with constants"),
     )
 }
 

@@ -261,9 +261,7 @@ impl<'a> Resolver<'a> {
 
     /// The key of the constant `name` if it has no value yet.
     fn unsettled(&self, name: &str) -> Option<&'a str> {
-        let (key, definition) = self
-            .definitions
-            .get_key_value(&name.to_ascii_lowercase())?;
+        let (key, definition) = self.definitions.get_key_value(&name.to_ascii_lowercase())?;
         let constant = matches!(definition.kind, Kind::Constant(_));
         (constant && !self.values.contains_key(key)).then_some(key.as_str())
     }

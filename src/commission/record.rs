@@ -462,7 +462,12 @@ mod tests {
     fn times_longer_than_a_week_are_refused_before_any_clock_sees_them() {
         assert_eq!(parse_duration("7days").unwrap(), MAX_TIME);
         assert_eq!(parse_duration("604800000").unwrap(), MAX_TIME);
-        for text in ["300000000000y", "8days", "604800001", "18446744073709551615"] {
+        for text in [
+            "300000000000y",
+            "8days",
+            "604800001",
+            "18446744073709551615",
+        ] {
             assert_eq!(
                 parse_duration(text).unwrap_err(),
                 format!("'{text}' is longer than 7days, the longest time allowed here"),

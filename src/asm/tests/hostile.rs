@@ -45,7 +45,10 @@ fn deep_nesting_is_refused_at_the_level_that_is_too_deep() {
     let message = format!("parentheses and signs nest more than {MAX_NESTING} levels deep here");
     // Column of the first sign or parenthesis past the limit.
     let at = |start: usize, per_level: usize| {
-        format!("t.tmc:1:{}: error: {message}", start + MAX_NESTING * per_level)
+        format!(
+            "t.tmc:1:{}: error: {message}",
+            start + MAX_NESTING * per_level
+        )
     };
     assert_eq!(errors_of(nested), [at(5, 1)]);
     assert_eq!(errors_of(minus), [at(5, 1)]);
@@ -57,9 +60,17 @@ fn deep_nesting_is_refused_at_the_level_that_is_too_deep() {
 fn nesting_up_to_the_limit_is_evaluated() {
     let minus = format!("ROL 0, {}7", "-".repeat(MAX_NESTING));
     assert_eq!(value_of(minus), 7, "an even number of signs");
-    let parens = format!("ROL 0, {}7{}", "(".repeat(MAX_NESTING), ")".repeat(MAX_NESTING));
+    let parens = format!(
+        "ROL 0, {}7{}",
+        "(".repeat(MAX_NESTING),
+        ")".repeat(MAX_NESTING)
+    );
     assert_eq!(value_of(parens), 7);
-    let sums = format!("ROL 0, {}0{}", "(1 + ".repeat(MAX_NESTING), ")".repeat(MAX_NESTING));
+    let sums = format!(
+        "ROL 0, {}0{}",
+        "(1 + ".repeat(MAX_NESTING),
+        ")".repeat(MAX_NESTING)
+    );
     assert_eq!(value_of(sums), MAX_NESTING as i32);
     let one_more = format!("ROL 0, {}7", "-".repeat(MAX_NESTING + 1));
     assert_eq!(errors_of(one_more).len(), 1);
@@ -118,7 +129,10 @@ fn every_overflow_in_constant_arithmetic_is_an_error() {
     ] {
         let errors = errors_of(format!("{min}X = {expr}\nROL 0, 1"));
         assert_eq!(errors.len(), 1, "{expr}: {errors:?}");
-        assert!(errors[0].ends_with(&format!("error: overflow in '{op}'")), "{expr}: {errors:?}");
+        assert!(
+            errors[0].ends_with(&format!("error: overflow in '{op}'")),
+            "{expr}: {errors:?}"
+        );
     }
     // Fine in 64 bits, then refused as a 32-bit value, not wrapped.
     let errors = errors_of(format!("{min}ROL 0, Min / 0x100000000 * 0x100000000"));
@@ -143,7 +157,11 @@ fn only_the_first_unknown_names_get_a_suggestion() {
 
 #[test]
 fn a_file_of_several_megabytes_is_answered() {
-    let line = format!("Loop: MVP ABS, 0, ({}) // {}\n", "1 + ".repeat(100) + "1", "x".repeat(100));
+    let line = format!(
+        "Loop: MVP ABS, 0, ({}) // {}\n",
+        "1 + ".repeat(100) + "1",
+        "x".repeat(100)
+    );
     let source = line.repeat(20_000);
     assert!(source.len() > 4_000_000);
     let errors = errors_of(source);
