@@ -226,6 +226,88 @@ fn a_crash_with_an_smd4_drive_sends_motor_stop() {
     assert_eq!(drive.motor().velocity, 0.0);
 }
 
+#[test]
+fn ctrl_c_at_the_idle_prompt_stops_the_motor_this_session_started() {
+    let mut sim = tmcl_sim();
+    let mut p = terminal(&["--port", &sim.first], &[]);
+    p.exp_string("A> ").unwrap();
+    // Nothing moving: Ctrl-C only clears the line, as before.
+    p.send_control('c').unwrap();
+    p.exp_string("\r\n").unwrap();
+    let shown = p.exp_string("A> ").unwrap();
+    assert!(!shown.contains("MST"), "{shown}");
+    p.send_line("ROR 0, 200000").unwrap();
+    p.exp_string("ok").unwrap();
+    p.exp_string("A> ").unwrap();
+    assert!(velocity_after(&mut sim, "1s") > 0.0, "the motor turns");
+    p.send_control('c').unwrap();
+    p.exp_string("stopped motor 0 of module A (MST)").unwrap();
+    p.exp_string("A> ").unwrap();
+    assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
+    // Stopped: the next Ctrl-C is a plain one again.
+    p.send_control('c').unwrap();
+    p.exp_string("\r\n").unwrap();
+    let shown = p.exp_string("A> ").unwrap();
+    assert!(!shown.contains("MST"), "{shown}");
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+    assert_eq!(exit_code(&p), 0);
+}
+
+#[test]
+fn ctrl_c_at_the_idle_smd4_prompt_sends_motor_stop() {
+    let mut drive = Drive::start(Via::Pty, &["--manual-clock"]);
+    let args = drive.connection();
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let mut p = terminal(&args, &[]);
+    p.exp_string("smd4> ").unwrap();
+    p.send_line("MOTOR:RUNV,+").unwrap();
+    p.exp_string("smd4> ").unwrap();
+    drive.console("advance 5s");
+    assert!(drive.motor().velocity > 0.0, "the motor turns");
+    p.send_control('c').unwrap();
+    p.exp_string("(MOTOR:STOP)").unwrap();
+    p.exp_string("smd4> ").unwrap();
+    drive.console("advance 5s");
+    assert_eq!(drive.motor().velocity, 0.0);
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
+
+#[test]
+fn stop_warns_that_the_program_s_motion_goes_on_and_ctrl_c_then_stops_it() {
+    let mut sim = tmcl_sim();
+    let program = repo().join("scripts/test2.tmc");
+    let mut p = terminal(&["--port", &sim.first], &[]);
+    p.exp_string("A> ").unwrap();
+    p.send_line(&format!(":download {}", program.display()))
+        .unwrap();
+    p.exp_string("downloaded").unwrap();
+    p.send_line(":run").unwrap();
+    p.exp_string("program started").unwrap();
+    p.exp_string("A> ").unwrap();
+    // The program's first instruction, ROL 0, 500000, sets the motor turning left.
+    assert!(
+        velocity_after(&mut sim, "2s") < 0.0,
+        "the program turns the motor"
+    );
+    p.send_line(":stop").unwrap();
+    p.exp_string("program stopped").unwrap();
+    p.exp_string("warning: motor 0 of module A is still turning")
+        .unwrap();
+    p.exp_string("A> ").unwrap();
+    assert!(
+        velocity_after(&mut sim, "10s") < 0.0,
+        "STOP does not stop the motion"
+    );
+    p.send_control('c').unwrap();
+    p.exp_string("stopped motor 0 of module A (MST)").unwrap();
+    p.exp_string("A> ").unwrap();
+    assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
+
 /// Program files that overflowed the stack or panicked before.
 fn hostile_files() -> Vec<(&'static str, String, &'static str)> {
     vec![

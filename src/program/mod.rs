@@ -167,6 +167,33 @@ pub fn status(session: &mut TmclSession, module: u8) -> Result<i32, SessionError
         .unwrap_or(0))
 }
 
+/// Warnings about the motors of `module` that still turn, with their speed: stopping a program
+/// does not stop the motion it started. A check that cannot be made says why.
+pub fn still_turning(session: &mut TmclSession, module: u8) -> Vec<String> {
+    let c = address_char(module).unwrap_or('?');
+    let Ok(speed) = session.profile().find_axis("actual_speed") else {
+        return Vec::new();
+    };
+    let (number, ident) = (speed.number, speed.ident.clone());
+    let mut warnings = Vec::new();
+    for motor in 0..session.profile().axes {
+        let read = session
+            .request(module, Instruction::new(6, number, motor, 0))
+            .and_then(Exchange::checked);
+        match read.map(|x| x.value().unwrap_or(0)) {
+            Ok(0) => {}
+            Ok(value) => warnings.push(format!(
+                "motor {motor} of module {c} is still turning ({ident} = {value}): the program \
+                 stopped, its motion did not; MST {motor} or Ctrl-C stops it"
+            )),
+            Err(e) => warnings.push(format!(
+                "could not check whether motor {motor} of module {c} still turns: {e}"
+            )),
+        }
+    }
+    warnings
+}
+
 /// "stopped", "running" … for a status value.
 pub fn status_name(value: i32) -> &'static str {
     application_status(value)

@@ -287,7 +287,7 @@ impl TmclSession {
                     self.running.insert(exchange.module);
                 }
                 if i.command == 128 {
-                    self.running.remove(&exchange.module);
+                    self.stopped_program(exchange.module);
                 }
                 if mode::changes_echo(&i) {
                     self.relearn_echo(exchange.module);
@@ -297,9 +297,17 @@ impl TmclSession {
                 self.running.insert(exchange.module);
             }
             Some(Op::Ascii(AsciiWord::Stop)) => {
-                self.running.remove(&exchange.module);
+                self.stopped_program(exchange.module);
             }
             _ => {}
+        }
+    }
+
+    /// A program this session started was stopped: the motion it started goes on (STOP ends the
+    /// program, not the motion), so the module counts as set moving by this session.
+    fn stopped_program(&mut self, module: u8) {
+        if self.running.remove(&module) {
+            self.moved.insert(module);
         }
     }
 
