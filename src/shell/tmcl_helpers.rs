@@ -58,7 +58,7 @@ pub fn run(
             let exchange = session.stop_program(target)?.checked()?;
             report_program(session, &exchange, "stopped", out)?;
             for warning in program::still_turning(session, target) {
-                writeln!(out, "warning: {warning}")?;
+                session.notify(format!("warning: {warning}"));
             }
         }
         "step" | "reset" | "status" => {

@@ -189,6 +189,12 @@ impl TmclSession {
         std::mem::take(&mut self.wire.notices)
     }
 
+    /// Adds a message for the user, shown with the session's own notices (on stderr in
+    /// non-interactive use) at the next [`take_notices`](Self::take_notices).
+    pub fn notify(&mut self, text: String) {
+        self.wire.notices.push(text);
+    }
+
     /// Starts or stops writing the transcript.
     pub fn set_transcript(&mut self, transcript: Option<Transcript>) {
         self.wire.transcript = transcript;
