@@ -8,6 +8,7 @@
 //! with 101. The panic hook only keeps the message, so nothing is printed twice.
 
 use std::backtrace::{Backtrace, BacktraceStatus};
+use std::io::Write;
 use std::panic::{self, PanicHookInfo, UnwindSafe};
 use std::process::ExitCode;
 use std::sync::{Mutex, MutexGuard, PoisonError};
@@ -54,14 +55,16 @@ pub fn guard(main: impl FnOnce() -> Exit + UnwindSafe) -> ExitCode {
     match panic::catch_unwind(main) {
         Ok(exit) => exit.into(),
         Err(_) => {
-            eprintln!("{}", report());
+            // Not eprintln!, which panics when stderr is gone.
+            let _ = writeln!(std::io::stderr(), "{}", report());
             ExitCode::from(EXIT_CODE)
         }
     }
 }
 
 /// The panic hook: keeps the message for [`report`]. Panics on other threads (which hold no
-/// session) are told at once, as the program may go on.
+/// session) are told at once, as the program may go on. Nothing here may panic: a panic inside
+/// the hook aborts the process before any session could stop its motors.
 fn keep(info: &PanicHookInfo<'_>) {
     let payload = info.payload();
     let message = payload
@@ -75,7 +78,10 @@ fn keep(info: &PanicHookInfo<'_>) {
         Some("main") => {}
         name => {
             let name = name.unwrap_or("unnamed");
-            eprintln!("tmclsh: internal error in thread {name}: {message} (at {location})");
+            let _ = writeln!(
+                std::io::stderr(),
+                "tmclsh: internal error in thread {name}: {message} (at {location})"
+            );
             return;
         }
     }
