@@ -10,6 +10,7 @@
 pub mod asm;
 pub mod cli;
 pub mod commission;
+pub mod crash;
 pub mod escape;
 pub mod exit;
 pub mod link;

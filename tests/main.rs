@@ -15,6 +15,7 @@ mod program;
 mod repl;
 #[cfg(unix)]
 mod reply_noise;
+mod safety;
 mod script;
 mod shell;
 mod sim;

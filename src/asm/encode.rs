@@ -204,7 +204,9 @@ fn operands(
         .first()
         .is_some_and(|o| o.kind == OperandKind::GlobalParam)
         && statement.operands.first().is_some_and(is_profile_name);
-    let required = spec.required_operands() - usize::from(bank_implied && given == 1);
+    let required = spec
+        .required_operands()
+        .saturating_sub(usize::from(bank_implied && given == 1));
     if given < required || given > spec.operands.len() {
         let expected = if required == spec.operands.len() {
             count_text(required)

@@ -59,6 +59,7 @@ pub fn read_binary(bytes: &[u8]) -> Result<Vec<Instruction>, BinaryError> {
 /// Assembles `source`; `file` names it in messages. Checks every instruction for a stand-alone
 /// program of `profile`, and the program against `profile.program_memory`.
 pub fn assemble(source: &str, file: &str, profile: &Profile) -> Result<Program, AsmErrors> {
+    crate::crash::point("assemble", file);
     let mut diags = Diagnostics::new(file);
     let mut symbols = Symbols::default();
     let mut statements: Vec<Statement> = Vec::new();

@@ -14,6 +14,8 @@
 //!
 //! Unlike the interactive line grammar there is no address character, operands are separated by
 //! commas only (an operand may contain spaces: `Speed * 2`), and lines may carry labels.
+//! Parentheses and signs nest at most [`MAX_NESTING`] levels and an expression's tree is at most
+//! [`MAX_DEPTH`] deep, so no file can exhaust the stack.
 
 use super::error::Position;
 use super::lex::{Tok, Token};
@@ -201,7 +203,7 @@ fn operands(tokens: &[Token]) -> Result<Vec<Operand>, SyntaxError> {
         if first.is(',') {
             return Err((first.column, "operand missing before ','".into()));
         }
-        let (expr, after) = expr(rest)?;
+        let (expr, _, after) = expr(rest, 0)?;
         out.push(Operand {
             expr,
             column: first.column,
@@ -219,12 +221,21 @@ fn operands(tokens: &[Token]) -> Result<Vec<Operand>, SyntaxError> {
     }
 }
 
+/// How deeply parentheses and signs may nest (C asks compilers for 63 levels). The parser
+/// recurses once per level, so the bound keeps a hostile file (20,000 minus signs, 100,000
+/// parentheses) from overflowing the stack.
+pub(super) const MAX_NESTING: usize = 64;
+
+/// How deep an expression's tree may grow (a chain `a + b + c …` grows one level per operator).
+/// Evaluating and dropping the tree recurse once per level.
+pub(super) const MAX_DEPTH: usize = 256;
+
 /// An expression that must use all of `tokens`; `end_column` locates a missing one.
 fn whole_expr(tokens: &[Token], end_column: usize) -> Result<Expr, SyntaxError> {
     if tokens.is_empty() {
         return Err((end_column, "value missing".into()));
     }
-    let (expr, rest) = expr(tokens)?;
+    let (expr, _, rest) = expr(tokens, 0)?;
     match rest.first() {
         None => Ok(expr),
         Some(t) => Err((
@@ -234,28 +245,34 @@ fn whole_expr(tokens: &[Token], end_column: usize) -> Result<Expr, SyntaxError> 
     }
 }
 
-type Parsed<'a> = Result<(Expr, &'a [Token]), SyntaxError>;
+/// A parsed expression, the number of levels it spans, and the tokens after it.
+type Parsed<'a> = Result<(Expr, usize, &'a [Token]), SyntaxError>;
 
-fn expr(tokens: &[Token]) -> Parsed<'_> {
-    binary(tokens, &['+', '-'], term)
+/// Each rule gets `nesting`, the parentheses and signs around the expression it parses, and
+/// returns the depth of the tree it built.
+type Rule<'a> = fn(&'a [Token], usize) -> Parsed<'a>;
+
+fn expr(tokens: &[Token], nesting: usize) -> Parsed<'_> {
+    binary(tokens, nesting, &['+', '-'], term)
 }
 
-fn term(tokens: &[Token]) -> Parsed<'_> {
-    binary(tokens, &['*', '/', '%'], unary)
+fn term(tokens: &[Token], nesting: usize) -> Parsed<'_> {
+    binary(tokens, nesting, &['*', '/', '%'], unary)
 }
 
-fn binary<'a>(
-    tokens: &'a [Token],
-    ops: &[char],
-    next: fn(&'a [Token]) -> Parsed<'a>,
-) -> Parsed<'a> {
-    let (mut left, mut rest) = next(tokens)?;
+fn binary<'a>(tokens: &'a [Token], nesting: usize, ops: &[char], next: Rule<'a>) -> Parsed<'a> {
+    let (mut left, mut depth, mut rest) = next(tokens, nesting)?;
     while let Some(op_token) = rest.first() {
         let Tok::Punct(op) = op_token.tok else { break };
         if !ops.contains(&op) {
             break;
         }
-        let (right, after) = next(&rest[1..]).map_err(|e| missing_after(e, op_token))?;
+        let (right, right_depth, after) =
+            next(&rest[1..], nesting).map_err(|e| missing_after(e, op_token))?;
+        depth = depth.max(right_depth) + 1;
+        if depth > MAX_DEPTH {
+            return Err(too_deep(op_token));
+        }
         left = Expr::Binary {
             op,
             left: Box::new(left),
@@ -264,27 +281,36 @@ fn binary<'a>(
         };
         rest = after;
     }
-    Ok((left, rest))
+    Ok((left, depth, rest))
 }
 
-fn unary(tokens: &[Token]) -> Parsed<'_> {
+fn unary<'a>(tokens: &'a [Token], nesting: usize) -> Parsed<'a> {
     let Some(first) = tokens.first() else {
         return Err((0, "value missing".into()));
     };
+    let inner = |rest: &'a [Token], rule: Rule<'a>| -> Parsed<'a> {
+        if nesting >= MAX_NESTING {
+            return Err(too_nested(first));
+        }
+        rule(rest, nesting + 1).map_err(|e| missing_after(e, first))
+    };
     match &first.tok {
         Tok::Punct('-') => {
-            let (inner, rest) = unary(&tokens[1..]).map_err(|e| missing_after(e, first))?;
+            let (inner, depth, rest) = inner(&tokens[1..], unary)?;
+            if depth >= MAX_DEPTH {
+                return Err(too_deep(first));
+            }
             let negated = Expr::Negate {
                 inner: Box::new(inner),
                 column: first.column,
             };
-            Ok((negated, rest))
+            Ok((negated, depth + 1, rest))
         }
-        Tok::Punct('+') => unary(&tokens[1..]).map_err(|e| missing_after(e, first)),
+        Tok::Punct('+') => inner(&tokens[1..], unary),
         Tok::Punct('(') => {
-            let (inner, rest) = expr(&tokens[1..]).map_err(|e| missing_after(e, first))?;
+            let (inner, depth, rest) = inner(&tokens[1..], expr)?;
             match rest.first() {
-                Some(close) if close.is(')') => Ok((inner, &rest[1..])),
+                Some(close) if close.is(')') => Ok((inner, depth, &rest[1..])),
                 Some(other) => Err((
                     other.column,
                     format!("expected ')', found '{}'", other.text()),
@@ -297,6 +323,7 @@ fn unary(tokens: &[Token]) -> Parsed<'_> {
                 value: *value,
                 hex: *hex,
             },
+            1,
             &tokens[1..],
         )),
         Tok::Ident(name) => Ok((
@@ -304,6 +331,7 @@ fn unary(tokens: &[Token]) -> Parsed<'_> {
                 name: name.clone(),
                 column: first.column,
             },
+            1,
             &tokens[1..],
         )),
         Tok::Punct(_) | Tok::Text(_) => Err((
@@ -311,6 +339,20 @@ fn unary(tokens: &[Token]) -> Parsed<'_> {
             format!("expected a number or a name, found '{}'", first.text()),
         )),
     }
+}
+
+fn too_nested(at: &Token) -> SyntaxError {
+    (
+        at.column,
+        format!("parentheses and signs nest more than {MAX_NESTING} levels deep here"),
+    )
+}
+
+fn too_deep(at: &Token) -> SyntaxError {
+    (
+        at.column,
+        format!("the expression is more than {MAX_DEPTH} operations deep; split it with constants"),
+    )
 }
 
 /// A "value missing" at the end of the line points just after the operator.

@@ -5,7 +5,8 @@
 //! be used before the line that defines them; constants are evaluated on first use, and a
 //! constant defined in terms of itself is an error rather than a hang.
 
-use std::collections::HashMap;
+use std::cell::Cell;
+use std::collections::{HashMap, HashSet};
 
 use crate::suggest;
 
@@ -49,6 +50,33 @@ pub(super) struct Symbols {
     definitions: HashMap<String, Definition>,
     /// Evaluated constants; `None` for those whose problem was reported.
     values: HashMap<String, Option<i64>>,
+    /// "Did you mean" suggestions still to be offered (see [`MAX_SUGGESTIONS`]).
+    suggestions: Suggestions,
+}
+
+/// How many unknown names get a "did you mean" suggestion. Each compares the name with every
+/// definition, so a file of tens of thousands of misspellings would otherwise take minutes; the
+/// errors beyond the first ones are still reported, without suggestion.
+const MAX_SUGGESTIONS: usize = 100;
+
+/// The suggestions offered so far in one file.
+#[derive(Debug, Default)]
+struct Suggestions(Cell<usize>);
+
+impl Suggestions {
+    /// The definition nearest to `name` among `candidates`, while the budget lasts.
+    fn nearest<'d>(
+        &self,
+        name: &str,
+        candidates: impl Iterator<Item = &'d Definition>,
+    ) -> Option<String> {
+        let given = self.0.get();
+        if given >= MAX_SUGGESTIONS {
+            return None;
+        }
+        self.0.set(given + 1);
+        suggest::nearest(name, candidates.map(|d| d.name.as_str()))
+    }
 }
 
 impl Symbols {
@@ -113,7 +141,7 @@ impl Symbols {
             let mut resolver = Resolver {
                 definitions: &self.definitions,
                 values: &mut self.values,
-                stack: Vec::new(),
+                suggestions: &self.suggestions,
                 problems: &mut problems,
             };
             resolver.constant(&key);
@@ -146,7 +174,7 @@ impl Symbols {
             .definitions
             .values()
             .filter(|d| expect == Expect::Value || matches!(d.kind, Kind::Label(_)));
-        let suggestion = suggest::nearest(name, candidates.map(|d| d.name.as_str()));
+        let suggestion = self.suggestions.nearest(name, candidates);
         match expect {
             Expect::Label => Problem::UnknownLabel {
                 name: name.to_string(),
@@ -160,61 +188,97 @@ impl Symbols {
     }
 }
 
-/// Evaluates constants depth-first, remembering which are on the way to catch cycles.
+/// Evaluates constants in dependency order with a work list of its own rather than by recursion,
+/// so a chain of a hundred thousand constants, each defined by the next, needs no deeper stack
+/// than one constant; constants on the way are remembered to catch cycles.
 struct Resolver<'a> {
     definitions: &'a HashMap<String, Definition>,
     values: &'a mut HashMap<String, Option<i64>>,
-    stack: Vec<String>,
+    suggestions: &'a Suggestions,
     problems: &'a mut Vec<(Position, Problem)>,
 }
 
-impl Resolver<'_> {
-    fn constant(&mut self, key: &str) -> Option<i64> {
-        if let Some(value) = self.values.get(key) {
-            return *value;
-        }
+impl<'a> Resolver<'a> {
+    /// Evaluates the constant `root` and every constant it needs that has no value yet.
+    fn constant(&mut self, root: &str) {
         let definitions = self.definitions;
-        let definition = &definitions[key];
-        let Kind::Constant(expr) = &definition.kind else {
-            unreachable!("only constants are resolved")
-        };
-        if self.stack.iter().any(|k| k == key) {
-            self.problems.push((
-                definition.at,
-                Problem::Cycle {
-                    name: definition.name.clone(),
-                },
-            ));
-            self.values.insert(key.to_string(), None);
-            return None;
-        }
-        self.stack.push(key.to_string());
-        let result = evaluate(expr, &mut |name, column| self.lookup(name, column));
-        self.stack.pop();
-        let value = match result {
-            Ok(value) => Some(value),
-            Err(EvalError::At(column, problem)) => {
-                let at = Position {
-                    line: definition.at.line,
-                    column,
-                };
-                self.problems.push((at, problem));
-                None
+        // Each constant on the way, with its names and how many of them are settled.
+        let mut pending: Vec<(&str, Vec<&str>, usize)> = Vec::new();
+        let mut on_the_way: HashSet<&str> = HashSet::new();
+        let mut next = Some(root).filter(|key| !self.values.contains_key(*key));
+        loop {
+            if let Some(key) = next.take() {
+                let (_, expr) = constant_definition(definitions, key);
+                pending.push((key, names_in(expr), 0));
+                on_the_way.insert(key);
             }
-            Err(EvalError::Reported) => None,
-        };
-        // A cycle may already have marked this constant; keep the first verdict.
-        *self.values.entry(key.to_string()).or_insert(value)
+            let Some((key, names, settled)) = pending.last_mut() else {
+                return;
+            };
+            while let Some(name) = names.get(*settled) {
+                match self.unsettled(name) {
+                    Some(dependency) if on_the_way.contains(dependency) => {
+                        let (cycle, _) = constant_definition(definitions, dependency);
+                        self.problems.push((
+                            cycle.at,
+                            Problem::Cycle {
+                                name: cycle.name.clone(),
+                            },
+                        ));
+                        self.values.insert(dependency.to_string(), None);
+                    }
+                    Some(dependency) => {
+                        next = Some(dependency);
+                        break;
+                    }
+                    None => {}
+                }
+                *settled += 1;
+            }
+            if next.is_some() {
+                continue;
+            }
+            let key = *key;
+            pending.pop();
+            on_the_way.remove(key);
+            let (definition, expr) = constant_definition(definitions, key);
+            let value = match evaluate(expr, &mut |name, column| self.lookup(name, column)) {
+                Ok(value) => Some(value),
+                Err(EvalError::At(column, problem)) => {
+                    let at = Position {
+                        line: definition.at.line,
+                        column,
+                    };
+                    self.problems.push((at, problem));
+                    None
+                }
+                Err(EvalError::Reported) => None,
+            };
+            // A cycle may already have marked this constant; keep the first verdict.
+            self.values.entry(key.to_string()).or_insert(value);
+        }
     }
 
-    fn lookup(&mut self, name: &str, column: usize) -> Result<i64, EvalError> {
+    /// The key of the constant `name` if it has no value yet.
+    fn unsettled(&self, name: &str) -> Option<&'a str> {
+        let (key, definition) = self.definitions.get_key_value(&name.to_ascii_lowercase())?;
+        let constant = matches!(definition.kind, Kind::Constant(_));
+        (constant && !self.values.contains_key(key)).then_some(key.as_str())
+    }
+
+    /// A name's value once every constant it needs has one.
+    fn lookup(&self, name: &str, column: usize) -> Result<i64, EvalError> {
         let key = name.to_ascii_lowercase();
         match self.definitions.get(&key).map(|d| &d.kind) {
             Some(Kind::Label(address)) => Ok(*address),
-            Some(Kind::Constant(_)) => self.constant(&key).ok_or(EvalError::Reported),
+            Some(Kind::Constant(_)) => self
+                .values
+                .get(&key)
+                .copied()
+                .flatten()
+                .ok_or(EvalError::Reported),
             None => {
-                let suggestion =
-                    suggest::nearest(name, self.definitions.values().map(|d| d.name.as_str()));
+                let suggestion = self.suggestions.nearest(name, self.definitions.values());
                 Err(EvalError::At(
                     column,
                     Problem::UnknownSymbol {
@@ -227,7 +291,38 @@ impl Resolver<'_> {
     }
 }
 
-/// Evaluates `expr` in 64-bit arithmetic, looking names up with `lookup`.
+/// The definition and expression of constant `key`.
+fn constant_definition<'d>(
+    definitions: &'d HashMap<String, Definition>,
+    key: &str,
+) -> (&'d Definition, &'d Expr) {
+    let definition = &definitions[key];
+    match &definition.kind {
+        Kind::Constant(expr) => (definition, expr),
+        Kind::Label(_) => unreachable!("only constants are resolved"),
+    }
+}
+
+/// The names in `expr`, in the order evaluation meets them.
+fn names_in(expr: &Expr) -> Vec<&str> {
+    let mut names = Vec::new();
+    let mut stack = vec![expr];
+    while let Some(expr) = stack.pop() {
+        match expr {
+            Expr::Number { .. } => {}
+            Expr::Name { name, .. } => names.push(name.as_str()),
+            Expr::Negate { inner, .. } => stack.push(inner),
+            Expr::Binary { left, right, .. } => {
+                stack.push(right);
+                stack.push(left);
+            }
+        }
+    }
+    names
+}
+
+/// Evaluates `expr` in checked 64-bit arithmetic, looking names up with `lookup`. Recursion is
+/// bounded by the parser's nesting limit.
 fn evaluate(
     expr: &Expr,
     lookup: &mut dyn FnMut(&str, usize) -> Result<i64, EvalError>,
@@ -251,9 +346,9 @@ fn evaluate(
                 '-' => a.checked_sub(b).ok_or_else(|| fail("overflow in '-'")),
                 '*' => a.checked_mul(b).ok_or_else(|| fail("overflow in '*'")),
                 '/' if b == 0 => Err(fail("division by zero")),
-                '/' => Ok(a / b),
+                '/' => a.checked_div(b).ok_or_else(|| fail("overflow in '/'")),
                 '%' if b == 0 => Err(fail("division by zero in '%'")),
-                _ => Ok(a % b),
+                _ => a.checked_rem(b).ok_or_else(|| fail("overflow in '%'")),
             }
         }
     }

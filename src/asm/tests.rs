@@ -468,3 +468,5 @@ fn the_readme_example_assembles() {
         ]
     );
 }
+
+mod hostile;

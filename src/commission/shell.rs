@@ -179,10 +179,7 @@ fn params_and_times(
     times: usize,
 ) -> Result<(Vec<ParamRef>, Vec<Duration>), String> {
     let mut split = words.len();
-    while split > 1
-        && words.len() - split < times
-        && record::parse_duration(words[split - 1]).is_ok()
-    {
+    while split > 1 && words.len() - split < times && record::is_time(words[split - 1]) {
         split -= 1;
     }
     let durations = words[split..]

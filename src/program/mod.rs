@@ -2,10 +2,12 @@
 //! verification, and program control (run, stop, step, reset, status) from ASCII mode, switching
 //! to binary mode transparently for the control functions ASCII mode lacks.
 
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
 use crate::protocol::tmcl::line::address_char;
 use crate::protocol::tmcl::{Instruction, Status};
-use crate::session::SessionError;
 use crate::session::tmcl::{Exchange, TmclSession, WireMode};
+use crate::session::{SessionError, interrupt};
 use crate::shell::render::application_status;
 
 /// What a download did.
@@ -28,13 +30,10 @@ pub fn download(
     mut progress: impl FnMut(usize, usize),
 ) -> Result<DownloadReport, SessionError> {
     session.in_binary(module, |s| {
-        s.request(module, Instruction::new(132, 0, 0, 0))?
-            .checked()?;
-        let stored = store_all(s, module, program, &mut progress);
-        // Leave download mode whatever happened, so the module executes commands again.
-        let quit = s
-            .request(module, Instruction::new(133, 0, 0, 0))
-            .and_then(Exchange::checked);
+        let mut download_mode = DownloadMode::enter(s, module)?;
+        let stored = store_all(download_mode.session, module, program, &mut progress);
+        let quit = download_mode.leave();
+        drop(download_mode);
         stored?;
         quit?;
         let verified = verify(s, module, program, &mut progress)?;
@@ -43,6 +42,50 @@ pub fn download(
             verified,
         })
     })
+}
+
+/// A module in download mode (132), which stores every command instead of executing it — the MST
+/// meant to stop a motor included. It is left (133) whatever ends the download: an error, Ctrl-C
+/// (whose flag would cancel the request and is put back afterwards) or a panic unwinding
+/// through it.
+struct DownloadMode<'s> {
+    session: &'s mut TmclSession,
+    module: u8,
+    open: bool,
+}
+
+impl<'s> DownloadMode<'s> {
+    fn enter(session: &'s mut TmclSession, module: u8) -> Result<Self, SessionError> {
+        session
+            .request(module, Instruction::new(132, 0, 0, 0))?
+            .checked()?;
+        Ok(DownloadMode {
+            session,
+            module,
+            open: true,
+        })
+    }
+
+    fn leave(&mut self) -> Result<(), SessionError> {
+        self.open = false;
+        let interrupted = interrupt::take();
+        let quit = self
+            .session
+            .request(self.module, Instruction::new(133, 0, 0, 0))
+            .and_then(Exchange::checked);
+        if interrupted {
+            interrupt::raise();
+        }
+        quit.map(|_| ())
+    }
+}
+
+impl Drop for DownloadMode<'_> {
+    fn drop(&mut self) {
+        if self.open {
+            let _ = catch_unwind(AssertUnwindSafe(|| self.leave()));
+        }
+    }
 }
 
 fn store_all(
@@ -62,6 +105,7 @@ fn store_all(
             });
         }
         progress(address + 1, program.len() * 2);
+        crate::crash::point("download", &address.to_string());
     }
     Ok(())
 }
@@ -121,6 +165,33 @@ pub fn status(session: &mut TmclSession, module: u8) -> Result<i32, SessionError
     Ok(control(session, module, Instruction::new(135, 0, 0, 0))?
         .value()
         .unwrap_or(0))
+}
+
+/// Warnings about the motors of `module` that still turn, with their speed: stopping a program
+/// does not stop the motion it started. A check that cannot be made says why.
+pub fn still_turning(session: &mut TmclSession, module: u8) -> Vec<String> {
+    let c = address_char(module).unwrap_or('?');
+    let Ok(speed) = session.profile().find_axis("actual_speed") else {
+        return Vec::new();
+    };
+    let (number, ident) = (speed.number, speed.ident.clone());
+    let mut warnings = Vec::new();
+    for motor in 0..session.profile().axes {
+        let read = session
+            .request(module, Instruction::new(6, number, motor, 0))
+            .and_then(Exchange::checked);
+        match read.map(|x| x.value().unwrap_or(0)) {
+            Ok(0) => {}
+            Ok(value) => warnings.push(format!(
+                "motor {motor} of module {c} is still turning ({ident} = {value}): the program \
+                 stopped, its motion did not; MST {motor} or Ctrl-C stops it"
+            )),
+            Err(e) => warnings.push(format!(
+                "could not check whether motor {motor} of module {c} still turns: {e}"
+            )),
+        }
+    }
+    warnings
 }
 
 /// "stopped", "running" … for a status value.

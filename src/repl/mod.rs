@@ -1,6 +1,7 @@
 //! The interactive shell: rustyline with history, completion, hints and highlighting; decoded,
-//! coloured replies; Ctrl-C stops a command (and the motor) in flight; a lost link is waited for
-//! and reopened with history and settings intact.
+//! coloured replies; Ctrl-C stops a command (and the motor) in flight, and at the idle prompt stops
+//! the motors while something this session started may still move; a lost link is waited for and
+//! reopened with history and settings intact.
 
 pub mod complete;
 pub mod editor;
@@ -84,7 +85,14 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
                     break;
                 }
             }
-            Err(ReadlineError::Interrupted) => continue,
+            // Ctrl-C at the prompt: the panic key while something this session started may
+            // still move; otherwise it only clears the line.
+            Err(ReadlineError::Interrupted) => {
+                if shell.session_ref().may_be_moving() {
+                    interrupt::take();
+                    stop_target(shell, &mut out);
+                }
+            }
             Err(ReadlineError::Eof) => break,
             Err(e) => {
                 eprintln!("tmclsh: {e}");
@@ -109,6 +117,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
     if text.is_empty() {
         return Flow::Continue;
     }
+    crate::crash::point("repl", text);
     interrupt::take();
     let result = if text.starts_with(':') {
         shell.helper(text, out)
@@ -160,7 +169,8 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
     }
 }
 
-/// After Ctrl-C: MST to the target module, and to every module this session set moving.
+/// After Ctrl-C: MST to every motor of the target module (MOTOR:STOP on an SMD4), and to every
+/// module this session set moving.
 fn stop_target(shell: &mut Shell, out: &mut dyn Write) {
     for line in shell.session().stop_target() {
         let _ = writeln!(out, "{}", escape_control(&line));

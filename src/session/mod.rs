@@ -5,6 +5,7 @@
 //! Rhai scripts all go through the same session.
 
 mod any;
+mod guard;
 pub mod interrupt;
 mod rx;
 pub mod smd4;

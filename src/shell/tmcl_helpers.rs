@@ -57,6 +57,9 @@ pub fn run(
         "stop" => {
             let exchange = session.stop_program(target)?.checked()?;
             report_program(session, &exchange, "stopped", out)?;
+            for warning in program::still_turning(session, target) {
+                session.notify(format!("warning: {warning}"));
+            }
         }
         "step" | "reset" | "status" => {
             let command = match helper.name {

@@ -95,3 +95,29 @@ fn smd4_mnemonics_complete_level_by_level() {
     };
     assert!(candidates.is_empty(), ":flags is SMD4 only");
 }
+
+proptest::proptest! {
+    /// Whatever is typed and wherever the cursor is, completion, hints and the highlighter's
+    /// check answer: a panic here would strike while the line editor holds the terminal.
+    #[test]
+    fn any_line_and_cursor_is_answered(
+        line in "[ -~äé\t]{0,40}",
+        cut in 0usize..41,
+    ) {
+        let profile = Profile::builtin();
+        let mut pos = cut.min(line.len());
+        while !line.is_char_boundary(pos) {
+            pos -= 1;
+        }
+        for grammar in [Grammar::Tmcl(&profile), Grammar::Smd4(crate::protocol::smd4::Smd4Spec::builtin())] {
+            let _ = complete(&line, pos, grammar);
+        }
+        let _ = crate::repl::hint::hint(&line[..pos], &profile);
+        for tables in [
+            crate::repl::editor::Tables::Tmcl(profile.clone()),
+            crate::repl::editor::Tables::Smd4(crate::protocol::smd4::Smd4Spec::builtin()),
+        ] {
+            let _ = crate::repl::editor::ReplHelper::new(tables, true).is_invalid(&line);
+        }
+    }
+}

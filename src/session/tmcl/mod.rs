@@ -189,6 +189,12 @@ impl TmclSession {
         std::mem::take(&mut self.wire.notices)
     }
 
+    /// Adds a message for the user, shown with the session's own notices (on stderr in
+    /// non-interactive use) at the next [`take_notices`](Self::take_notices).
+    pub fn notify(&mut self, text: String) {
+        self.wire.notices.push(text);
+    }
+
     /// Starts or stops writing the transcript.
     pub fn set_transcript(&mut self, transcript: Option<Transcript>) {
         self.wire.transcript = transcript;
@@ -287,7 +293,7 @@ impl TmclSession {
                     self.running.insert(exchange.module);
                 }
                 if i.command == 128 {
-                    self.running.remove(&exchange.module);
+                    self.stopped_program(exchange.module);
                 }
                 if mode::changes_echo(&i) {
                     self.relearn_echo(exchange.module);
@@ -297,9 +303,17 @@ impl TmclSession {
                 self.running.insert(exchange.module);
             }
             Some(Op::Ascii(AsciiWord::Stop)) => {
-                self.running.remove(&exchange.module);
+                self.stopped_program(exchange.module);
             }
             _ => {}
+        }
+    }
+
+    /// A program this session started was stopped: the motion it started goes on (STOP ends the
+    /// program, not the motion), so the module counts as set moving by this session.
+    fn stopped_program(&mut self, module: u8) {
+        if self.running.remove(&module) {
+            self.moved.insert(module);
         }
     }
 
