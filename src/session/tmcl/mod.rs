@@ -9,19 +9,22 @@ mod binary;
 mod mode;
 mod probe;
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::{BTreeMap, BTreeSet, VecDeque};
 use std::sync::Arc;
 
 use crate::link::Link;
 use crate::profile::Profile;
 use crate::protocol::tmcl::commands::AsciiWord;
+use crate::protocol::tmcl::frame::{FRAME_LEN, ReplyFrame};
 use crate::protocol::tmcl::line::{self, Line, Op, address_char, format_instruction, format_line};
+use crate::protocol::tmcl::reply::parse_reply_bytes;
 use crate::protocol::tmcl::syntax::parse_line;
 use crate::protocol::tmcl::validate::{self, Mode};
 use crate::protocol::tmcl::{Instruction, Status};
 
+use super::rx::is_line_break;
 use super::transcript::Transcript;
-use super::wire::Wire;
+use super::wire::{Peer, Wire};
 use super::{SessionError, SessionOptions};
 
 pub use mode::{Echo, WireMode};
@@ -104,6 +107,11 @@ pub struct TmclSession {
     modules: BTreeMap<u8, mode::ModuleState>,
     moved: BTreeSet<u8>,
     running: BTreeSet<u8>,
+    /// Requests go out without waiting for a suspect line to go quiet (stops, mode restores).
+    urgent: bool,
+    /// ASCII lines that failed, as sent: their echo and reply may still come, so an identical
+    /// request is spelled differently (see `ascii.rs`).
+    unanswered: VecDeque<Vec<u8>>,
 }
 
 impl TmclSession {
@@ -141,6 +149,8 @@ impl TmclSession {
             modules: BTreeMap::new(),
             moved: BTreeSet::new(),
             running: BTreeSet::new(),
+            urgent: false,
+            unanswered: VecDeque::new(),
         };
         let opened = format!("session opened on {}", session.wire.link.describe());
         session.wire.note(&opened);
@@ -303,21 +313,30 @@ impl TmclSession {
         }
     }
 
-    /// Sends MST to every motor of `module`; the answer for each motor.
+    /// Sends MST to every motor of `module` at once, even on a line that has not settled since a
+    /// failure; the answer for each motor.
     pub fn stop_motors(&mut self, module: u8) -> Vec<(u8, Result<Exchange, SessionError>)> {
-        (0..self.profile.axes)
-            .map(|motor| {
-                (
-                    motor,
-                    self.request(module, Instruction::new(3, 0, motor, 0)),
-                )
-            })
-            .collect()
+        self.urgently(|s| {
+            (0..s.profile.axes)
+                .map(|motor| (motor, s.request(module, Instruction::new(3, 0, motor, 0))))
+                .collect()
+        })
+    }
+
+    /// Stops the motors of `module` (even if this session did not start them) together with
+    /// everything this session set moving, each once (after Ctrl-C).
+    pub fn stop_motion_and(&mut self, module: u8) -> Vec<String> {
+        self.moved.insert(module);
+        self.stop_motion()
     }
 
     /// Stops every module this session set moving or whose program it started (MST, and STOP /
     /// command 128 for programs). Returns what was done, for the user.
     pub fn stop_motion(&mut self) -> Vec<String> {
+        self.urgently(Self::stop_everything)
+    }
+
+    fn stop_everything(&mut self) -> Vec<String> {
         let mut report = Vec::new();
         let programs: Vec<u8> = self.running.iter().copied().collect();
         for module in programs {
@@ -444,10 +463,15 @@ impl TmclSession {
     /// Ends the session: every module goes back to the mode it was found in (unless
     /// `--stay-ascii`). Returns what was done.
     pub fn close(&mut self) -> Vec<String> {
-        let mut report = Vec::new();
         if self.options.stay_ascii {
-            return report;
+            return Vec::new();
         }
+        // Mode restores carry no value for anyone: they need not wait for a suspect line.
+        self.urgently(Self::restore_modes)
+    }
+
+    fn restore_modes(&mut self) -> Vec<String> {
+        let mut report = Vec::new();
         let to_restore: Vec<u8> = self
             .modules
             .iter()
@@ -481,7 +505,7 @@ impl TmclSession {
     /// Reopens a lost link and re-enters ASCII mode on the modules that were in it.
     pub fn reconnect(&mut self) -> Result<(), SessionError> {
         self.wire.link.reopen()?;
-        self.wire.rx.clear();
+        self.wire.reset();
         self.wire
             .note(&format!("link reopened: {}", self.wire.link.describe()));
         let ascii: Vec<u8> = self
@@ -506,6 +530,73 @@ impl TmclSession {
     fn describe_instruction(&self, instruction: &Instruction) -> String {
         format_instruction(instruction, &self.profile)
     }
+
+    /// Runs `f` with requests sent at once, without resynchronising a suspect line first.
+    fn urgently<T>(&mut self, f: impl FnOnce(&mut Self) -> T) -> T {
+        let was = std::mem::replace(&mut self.urgent, true);
+        let result = f(self);
+        self.urgent = was;
+        result
+    }
+
+    /// Runs one exchange with `module` between the wire's begin and finish, so that any failure
+    /// — whatever returns it — leaves the line suspect until it has settled. `optional` replies
+    /// (BIN) may fail to come without that.
+    fn exchange<T>(
+        &mut self,
+        module: u8,
+        optional: bool,
+        f: impl FnOnce(&mut Self) -> Result<T, SessionError>,
+    ) -> Result<T, SessionError> {
+        let timeout = self.options.timeout;
+        let peer = Peer::Module(module.into());
+        let result = self
+            .wire
+            .begin(peer, self.urgent, timeout, position_events)
+            .and_then(|()| f(self));
+        let settled = match &result {
+            Ok(_) => true,
+            Err(SessionError::Timeout { .. }) => optional,
+            Err(_) => false,
+        };
+        self.wire.finish(settled);
+        result
+    }
+}
+
+/// Recognises position-reached events (the delayed second reply of command 138) among bytes that
+/// arrived outside an exchange: ASCII lines with status 128, or binary frames of command 138.
+/// They are reported, not taken for replies, and do not make the line suspect.
+fn position_events(bytes: &[u8]) -> Option<Vec<String>> {
+    let event = |module: String| format!("module {module}: target position reached (event)");
+    let lines: Vec<&[u8]> = bytes
+        .split(|&b| is_line_break(b))
+        .filter(|l| !l.is_empty())
+        .collect();
+    let ascii: Option<Vec<String>> = lines
+        .iter()
+        .map(|line| {
+            parse_reply_bytes(line)
+                .filter(|r| r.status == Status::PositionReachedEvent)
+                .map(|r| event(r.module.to_string()))
+        })
+        .collect();
+    if let Some(notices) = ascii.filter(|n| !n.is_empty()) {
+        return Some(notices);
+    }
+    if bytes.is_empty() || bytes.len() % FRAME_LEN != 0 {
+        return None;
+    }
+    bytes
+        .chunks(FRAME_LEN)
+        .map(|chunk| {
+            let frame: &[u8; FRAME_LEN] = chunk.try_into().ok()?;
+            ReplyFrame::decode(frame)
+                .ok()
+                .filter(|r| r.command == 138 && r.status == Status::PositionReachedEvent)
+                .map(|r| event(r.module.to_string()))
+        })
+        .collect()
 }
 
 #[cfg(test)]
