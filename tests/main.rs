@@ -8,6 +8,7 @@ mod cli;
 mod commission;
 #[cfg(feature = "hardware")]
 mod hardware;
+mod hostile;
 mod program;
 mod repl;
 mod script;
