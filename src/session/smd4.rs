@@ -221,7 +221,7 @@ impl Smd4Session {
         let timeout = self.options.timeout;
         let result = self
             .wire
-            .begin(peer, self.urgent, timeout, nothing_benign)
+            .begin(peer, self.urgent, timeout, &mut nothing_benign)
             .and_then(|()| self.transact(&request, silent));
         self.wire.finish(result.is_ok());
         let exchange = Smd4Exchange {
@@ -431,13 +431,24 @@ impl Smd4Session {
     pub fn stop_motion(&mut self) -> Vec<String> {
         let moved: Vec<Option<u32>> = std::mem::take(&mut self.moved).into_iter().collect();
         let was = std::mem::replace(&mut self.urgent, true);
+        let wire = self
+            .wire
+            .link
+            .byte_time()
+            .map_or(Duration::ZERO, |b| b * 64);
+        let wait = self.options.timeout.min(super::STOP_CONFIRMATION + wire);
         let mut report = Vec::new();
         for address in moved {
             let mut stop = Request::new("MOTOR:STOP");
             stop.address = address;
             let name = drive_name(address);
-            match self.request(stop).and_then(Smd4Exchange::checked) {
+            let result = self.with_timeout(wait, |s| s.request(stop));
+            match result.and_then(Smd4Exchange::checked) {
                 Ok(_) => report.push(format!("stopped the motor of drive {name} (MOTOR:STOP)")),
+                Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
+                    "sent MOTOR:STOP to drive {name}; no answer within {} ms",
+                    timeout.as_millis()
+                )),
                 Err(e) => report.push(format!("could not stop the motor of drive {name}: {e}")),
             }
         }

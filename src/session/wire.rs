@@ -66,11 +66,21 @@ const DRAIN_BUDGET: usize = RX_CAP;
 /// Bytes that arrived between exchanges or while the line resynchronised.
 const OUTSIDE: &str = "data that arrived outside any exchange (a late reply?)";
 
-/// Recognises harmless unsolicited data (TMCL position events); returns the notices it deserves.
-pub(crate) type Benign = fn(&[u8]) -> Option<Vec<String>>;
+/// Recognises harmless data that arrived between exchanges (TMCL position events, late answers
+/// a dialect can attribute); `None` when it cannot vouch for all of it.
+pub(crate) type Benign<'a> = &'a mut dyn FnMut(&[u8]) -> Option<Harmless>;
+
+/// What harmless data between exchanges amounts to.
+#[derive(Debug, Default)]
+pub(crate) struct Harmless {
+    /// What the user should hear (events).
+    pub notices: Vec<String>,
+    /// Peers whose late answers have now all been seen: trusted again.
+    pub answered: Vec<Peer>,
+}
 
 /// Nothing is harmless.
-pub(crate) fn nothing_benign(_: &[u8]) -> Option<Vec<String>> {
+pub(crate) fn nothing_benign(_: &[u8]) -> Option<Harmless> {
     None
 }
 
@@ -357,10 +367,13 @@ impl Wire {
         if stale.iter().all(|&b| is_line_break(b)) {
             let n = stale.len();
             self.discard_quietly(n, "line ends between exchanges");
-        } else if let Some(notices) = benign(stale) {
+        } else if let Some(harmless) = benign(stale) {
             let n = stale.len();
-            self.notices.extend(notices);
-            self.log_received(n, "events between exchanges");
+            self.notices.extend(harmless.notices);
+            for peer in harmless.answered {
+                self.trust(peer);
+            }
+            self.log_received(n, "events and late answers between exchanges, discarded");
         } else {
             self.discard_unexpected(None);
         }

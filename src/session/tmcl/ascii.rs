@@ -10,7 +10,6 @@
 //! nothing in a reply says which request it answers; the wire's resynchronisation after a failure
 //! is what keeps a late reply out (see `session/wire.rs`).
 
-use std::collections::VecDeque;
 use std::time::{Duration, Instant};
 
 use crate::protocol::tmcl::line::{Op, address_char};
@@ -23,8 +22,8 @@ use super::super::transcript::{Entry, escape_into};
 use super::super::wire::{MAX_LINE, Peer, Settled, Wire};
 use super::{Answer, Exchange, TmclSession};
 
-/// How many failed requests are remembered for their late echoes.
-const UNANSWERED: usize = 8;
+/// The most spaces put after the address character to tell a request from an unanswered one.
+const MAX_SPACES: usize = 8;
 
 /// What is discarded most often.
 const UNEXPECTED: &str = "unexpected data from the line";
@@ -37,8 +36,6 @@ struct Scan<'a> {
     /// The line as sent, without CR.
     sent: &'a [u8],
     echo_seen: bool,
-    /// The late echo of an earlier request was just discarded: its reply comes next.
-    late_echo: bool,
     /// The rest of an overlong line is still arriving: discard it up to its end.
     in_junk: bool,
     /// This exchange's bytes taken so far, for the transcript record of the reply.
@@ -87,13 +84,14 @@ impl TmclSession {
     ) -> Result<Exchange, SessionError> {
         let wire_text = self.spelling(text);
         let optional = optional_wait.is_some();
+        let mut echoed = false;
         let result = self.exchange(module, optional, |s| {
-            s.ascii_exchange(module, text, &wire_text, op, optional_wait)
+            s.ascii_exchange(module, text, &wire_text, op, optional_wait, &mut echoed)
         });
         match &result {
             Ok(_) => {}
             Err(SessionError::Timeout { .. }) if optional => {}
-            Err(_) => remember(&mut self.unanswered, wire_text.into_bytes()),
+            Err(_) => self.unanswered.remember(wire_text.into_bytes(), echoed),
         }
         result
     }
@@ -105,6 +103,7 @@ impl TmclSession {
         wire_text: &str,
         op: Option<Op>,
         optional_wait: Option<Duration>,
+        echoed: &mut bool,
     ) -> Result<Exchange, SessionError> {
         let c = address_char(module).unwrap_or('?');
         let mut line = Vec::with_capacity(wire_text.len() + 1);
@@ -119,12 +118,13 @@ impl TmclSession {
         let mut scan = Scan {
             sent: wire_text.as_bytes(),
             echo_seen: false,
-            late_echo: false,
             in_junk: false,
             held: Vec::new(),
         };
         loop {
-            if let Some(found) = self.scan(&mut scan, module, echo_required)? {
+            let found = self.scan(&mut scan, module, echo_required);
+            *echoed = scan.echo_seen;
+            if let Some(found) = found? {
                 if !echo_known
                     && !scan.echo_seen
                     && self.echo_follows(&found, scan.sent, deadline)?
@@ -214,17 +214,12 @@ impl TmclSession {
                 Some(reply) if reply.module == c && acceptable => {
                     return Ok(Some((reply, latin1(&line), used)));
                 }
-                Some(reply) if reply.module == c && scan.late_echo => {
-                    scan.late_echo = false;
+                Some(reply) if reply.module == c && self.unanswered.reply_arrived(c) => {
                     self.wire
                         .discard_quietly(used, "late reply to a request given up earlier");
-                    // Every request to this module given up has now been echoed and answered:
-                    // nothing more is on its way.
-                    if !self
-                        .unanswered
-                        .iter()
-                        .any(|u| u.first() == Some(&(c as u8)))
-                    {
+                    // Every request to this module given up has now been answered: nothing
+                    // more is on its way.
+                    if !self.unanswered.pending(c) {
                         self.wire.trust(Peer::Module(module.into()));
                     }
                 }
@@ -239,8 +234,7 @@ impl TmclSession {
                     );
                     self.wire.discard(used, &kind);
                 }
-                None if !scan.echo_seen && forget(&mut self.unanswered, &line) => {
-                    scan.late_echo = true;
+                None if !scan.echo_seen && self.unanswered.echo_arrived(&line) => {
                     self.wire
                         .discard_quietly(used, "late echo of a request given up earlier");
                 }
@@ -409,28 +403,11 @@ impl TmclSession {
     fn spelling(&self, text: &str) -> String {
         let split = text.chars().next().map_or(0, char::len_utf8);
         let (address, rest) = text.split_at(split);
-        (0..=UNANSWERED)
+        (0..=MAX_SPACES)
             .map(|spaces| format!("{address}{}{rest}", " ".repeat(spaces)))
-            .find(|t| !self.unanswered.iter().any(|u| u == t.as_bytes()))
+            .find(|t| !self.unanswered.contains(t.as_bytes()))
             .unwrap_or_else(|| text.to_string())
     }
-}
-
-/// Remembers a line whose exchange failed (the oldest is forgotten beyond [`UNANSWERED`]).
-fn remember(unanswered: &mut VecDeque<Vec<u8>>, line: Vec<u8>) {
-    if !unanswered.contains(&line) {
-        unanswered.push_back(line);
-    }
-    while unanswered.len() > UNANSWERED {
-        unanswered.pop_front();
-    }
-}
-
-/// Forgets `line` if it was an unanswered request (its late echo has come); whether it was.
-fn forget(unanswered: &mut VecDeque<Vec<u8>>, line: &[u8]) -> bool {
-    let before = unanswered.len();
-    unanswered.retain(|u| u != line);
-    unanswered.len() != before
 }
 
 /// Whether a request may leave the module in binary mode (BIN, typed or sent unvalidated).

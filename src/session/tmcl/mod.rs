@@ -8,15 +8,19 @@ mod ascii;
 mod binary;
 mod mode;
 mod probe;
+mod unanswered;
 
-use std::collections::{BTreeMap, BTreeSet, VecDeque};
+use std::collections::{BTreeMap, BTreeSet};
 use std::sync::Arc;
+use std::time::Duration;
 
 use crate::link::Link;
 use crate::profile::Profile;
 use crate::protocol::tmcl::commands::AsciiWord;
 use crate::protocol::tmcl::frame::{FRAME_LEN, ReplyFrame};
-use crate::protocol::tmcl::line::{self, Line, Op, address_char, format_instruction, format_line};
+use crate::protocol::tmcl::line::{
+    self, Line, Op, address_char, address_of, format_instruction, format_line,
+};
 use crate::protocol::tmcl::reply::parse_reply_bytes;
 use crate::protocol::tmcl::syntax::parse_line;
 use crate::protocol::tmcl::validate::{self, Mode};
@@ -24,10 +28,12 @@ use crate::protocol::tmcl::{Instruction, Status};
 
 use super::rx::is_line_break;
 use super::transcript::Transcript;
-use super::wire::{Peer, Wire};
+use super::wire::{Harmless, Peer, Wire};
 use super::{SessionError, SessionOptions};
 
 pub use mode::{Echo, WireMode};
+
+use unanswered::Unanswered;
 
 /// What a module answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -109,9 +115,8 @@ pub struct TmclSession {
     running: BTreeSet<u8>,
     /// Requests go out without waiting for a suspect line to go quiet (stops, mode restores).
     urgent: bool,
-    /// ASCII lines that failed, as sent: their echo and reply may still come, so an identical
-    /// request is spelled differently (see `ascii.rs`).
-    unanswered: VecDeque<Vec<u8>>,
+    /// ASCII lines that failed: their echo and reply may still come.
+    unanswered: Unanswered,
 }
 
 impl TmclSession {
@@ -150,7 +155,7 @@ impl TmclSession {
             moved: BTreeSet::new(),
             running: BTreeSet::new(),
             urgent: false,
-            unanswered: VecDeque::new(),
+            unanswered: Unanswered::default(),
         };
         let opened = format!("session opened on {}", session.wire.link.describe());
         session.wire.note(&opened);
@@ -323,6 +328,18 @@ impl TmclSession {
         })
     }
 
+    /// How long a stop waits for its confirmation: a module answers MST at once, so the wire
+    /// time of the exchange and [`super::STOP_CONFIRMATION`]; whoever pressed Ctrl-C hears within
+    /// that that the stop went out, however slow the interrupted reply was.
+    fn stop_wait(&self) -> Duration {
+        let wire = self
+            .wire
+            .link
+            .byte_time()
+            .map_or(Duration::ZERO, |b| b * 32);
+        self.options.timeout.min(super::STOP_CONFIRMATION + wire)
+    }
+
     /// Stops the motors of `module` (even if this session did not start them) together with
     /// everything this session set moving, each once (after Ctrl-C).
     pub fn stop_motion_and(&mut self, module: u8) -> Vec<String> {
@@ -337,12 +354,21 @@ impl TmclSession {
     }
 
     fn stop_everything(&mut self) -> Vec<String> {
+        let wait = self.stop_wait();
+        self.with_timeout(wait, Self::stop_each)
+    }
+
+    fn stop_each(&mut self) -> Vec<String> {
         let mut report = Vec::new();
         let programs: Vec<u8> = self.running.iter().copied().collect();
         for module in programs {
             let c = address_char(module).unwrap_or('?');
             match self.stop_program(module) {
                 Ok(_) => report.push(format!("stopped the TMCL program of module {c}")),
+                Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
+                    "sent STOP to module {c}; no answer within {} ms",
+                    timeout.as_millis()
+                )),
                 Err(e) => report.push(format!("could not stop the program of module {c}: {e}")),
             }
         }
@@ -355,6 +381,10 @@ impl TmclSession {
                         report.push(format!("stopped motor {motor} of module {c} (MST)"))
                     }
                     Ok(x) => report.push(format!("MST to module {c} answered {}", x.raw)),
+                    Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
+                        "sent MST to motor {motor} of module {c}; no answer within {} ms",
+                        timeout.as_millis()
+                    )),
                     Err(e) => {
                         report.push(format!("could not stop motor {motor} of module {c}: {e}"))
                     }
@@ -550,9 +580,12 @@ impl TmclSession {
     ) -> Result<T, SessionError> {
         let timeout = self.options.timeout;
         let peer = Peer::Module(module.into());
+        let unanswered = &mut self.unanswered;
         let result = self
             .wire
-            .begin(peer, self.urgent, timeout, position_events)
+            .begin(peer, self.urgent, timeout, &mut |bytes| {
+                harmless(bytes, unanswered)
+            })
             .and_then(|()| f(self));
         let settled = match &result {
             Ok(_) => true,
@@ -564,30 +597,39 @@ impl TmclSession {
     }
 }
 
-/// Recognises position-reached events (the delayed second reply of command 138) among bytes that
-/// arrived outside an exchange: ASCII lines with status 128, or binary frames of command 138.
-/// They are reported, not taken for replies, and do not make the line suspect.
-fn position_events(bytes: &[u8]) -> Option<Vec<String>> {
+/// Recognises what may arrive between exchanges without making the line suspect: position-reached
+/// events (the delayed second reply of command 138, as ASCII lines with status 128 or binary
+/// frames of command 138), and the late echo and reply of a request given up earlier (a module
+/// with none left is trusted again).
+fn harmless(bytes: &[u8], unanswered: &mut Unanswered) -> Option<Harmless> {
     let event = |module: String| format!("module {module}: target position reached (event)");
-    let lines: Vec<&[u8]> = bytes
-        .split(|&b| is_line_break(b))
-        .filter(|l| !l.is_empty())
-        .collect();
-    let ascii: Option<Vec<String>> = lines
-        .iter()
-        .map(|line| {
-            parse_reply_bytes(line)
-                .filter(|r| r.status == Status::PositionReachedEvent)
-                .map(|r| event(r.module.to_string()))
-        })
-        .collect();
-    if let Some(notices) = ascii.filter(|n| !n.is_empty()) {
-        return Some(notices);
+    let mut found = Harmless::default();
+    let mut ascii = true;
+    for line in bytes.split(|&b| is_line_break(b)).filter(|l| !l.is_empty()) {
+        match parse_reply_bytes(line) {
+            Some(r) if r.status == Status::PositionReachedEvent => {
+                found.notices.push(event(r.module.to_string()));
+            }
+            Some(r) if unanswered.reply_arrived(r.module) => {
+                if let (false, Some(module)) = (unanswered.pending(r.module), address_of(r.module))
+                {
+                    found.answered.push(Peer::Module(module.into()));
+                }
+            }
+            None if unanswered.echo_arrived(line) => {}
+            _ => {
+                ascii = false;
+                break;
+            }
+        }
+    }
+    if ascii {
+        return Some(found);
     }
     if bytes.is_empty() || bytes.len() % FRAME_LEN != 0 {
         return None;
     }
-    bytes
+    let notices: Option<Vec<String>> = bytes
         .chunks(FRAME_LEN)
         .map(|chunk| {
             let frame: &[u8; FRAME_LEN] = chunk.try_into().ok()?;
@@ -596,7 +638,11 @@ fn position_events(bytes: &[u8]) -> Option<Vec<String>> {
                 .filter(|r| r.command == 138 && r.status == Status::PositionReachedEvent)
                 .map(|r| event(r.module.to_string()))
         })
-        .collect()
+        .collect();
+    notices.map(|notices| Harmless {
+        notices,
+        answered: Vec::new(),
+    })
 }
 
 #[cfg(test)]

@@ -130,7 +130,9 @@ impl TmclSession {
         // finds the start of our frame only after the line was idle for its receive time-out.
         let resync = Duration::from_millis(u64::from(self.profile.sim.frame_timeout_ms) * 11 / 10);
         self.wire.idle_for(resync)?;
-        self.wire.drain(super::position_events)?;
+        let unanswered = &mut self.unanswered;
+        self.wire
+            .drain(&mut |bytes| super::harmless(bytes, unanswered))?;
         let frame = CommandFrame {
             address: module,
             instruction: Instruction::new(139, 0, 0, 0),

@@ -709,3 +709,41 @@ fn ctrl_c_stops_the_target_and_what_was_moved_once_each() {
     );
     assert_eq!(sent_text(&wire).matches("MST").count(), 1);
 }
+
+#[test]
+fn the_late_reply_of_an_echoed_request_is_known_for_what_it_is() {
+    let (mut s, wire) = open(Quirks {
+        first_gap_reply: Some(b""),
+        ..Quirks::default()
+    });
+    s.take_notices();
+    // Echoed at once, answered only after the timeout: between exchanges…
+    let e = s.execute("GAP 1, 0").unwrap_err();
+    assert!(e.to_string().contains("echoed but not answered"), "{e}");
+    wire.lock().unwrap().out.extend(b"BA 100 7777\r");
+    let before = waits(&wire);
+    assert_eq!(s.execute("GAP 4, 0").unwrap().value(), Some(0));
+    assert_eq!(waits(&wire), before, "nothing more to wait for");
+    // … or while the next request waits for its echo.
+    let (mut s, _) = open(Quirks {
+        first_gap_reply: Some(b""),
+        stale_before_echo: b"BA 100 7777\r",
+        ..Quirks::default()
+    });
+    assert!(s.execute("GAP 1, 0").is_err());
+    s.take_notices();
+    assert_eq!(s.execute("GAP 4, 0").unwrap().value(), Some(0));
+    assert_eq!(
+        s.take_notices(),
+        Vec::<String>::new(),
+        "the late answer is expected, not noise"
+    );
+    // With nothing unanswered, the same bytes are a stray reply again.
+    assert_eq!(s.execute("GAP 4, 0").unwrap().value(), Some(0));
+    assert!(
+        s.take_notices()
+            .iter()
+            .any(|n| n.contains("before the echo")),
+        "reported"
+    );
+}

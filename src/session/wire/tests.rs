@@ -91,7 +91,7 @@ const B: Peer = Peer::Module(2);
 fn a_clean_line_never_waits_before_an_exchange() {
     let (mut w, script) = wire();
     for _ in 0..3 {
-        w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+        w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
         w.finish(true);
     }
     assert_eq!(waits(&script), 0, "only polls");
@@ -101,11 +101,11 @@ fn a_clean_line_never_waits_before_an_exchange() {
 #[test]
 fn after_a_failure_a_late_reply_is_discarded_before_the_next_request() {
     let (mut w, script) = wire();
-    w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
     w.finish(false);
     // The answer to the failed request turns up after the timeout.
     arrive(&script, TIMEOUT / 2, b"BA 100 -5000\r");
-    w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
     assert_eq!(w.rx.len(), 0, "nothing left for the next exchange");
     assert!(waits(&script) > 0, "waited for the line to go quiet");
     w.finish(true);
@@ -118,29 +118,31 @@ fn after_a_failure_a_late_reply_is_discarded_before_the_next_request() {
     );
     // Trusted again: the next exchange does not wait.
     let before = waits(&script);
-    w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
     assert_eq!(waits(&script), before);
 }
 
 #[test]
 fn suspicion_is_per_peer_unless_replies_name_no_sender() {
     let (mut w, script) = wire();
-    w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
     w.finish(false);
-    w.begin(B, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(B, false, TIMEOUT, &mut nothing_benign).unwrap();
     w.finish(true);
     assert_eq!(
         waits(&script),
         0,
         "module B's replies cannot be taken for A's"
     );
-    w.begin(Peer::Any, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(Peer::Any, false, TIMEOUT, &mut nothing_benign)
+        .unwrap();
     w.finish(true);
     assert!(waits(&script) > 0, "an anonymous reply could be A's");
     let (mut w, script) = wire();
-    w.begin(Peer::Any, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(Peer::Any, false, TIMEOUT, &mut nothing_benign)
+        .unwrap();
     w.finish(false);
-    w.begin(B, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(B, false, TIMEOUT, &mut nothing_benign).unwrap();
     assert!(
         waits(&script) > 0,
         "an anonymous late reply could pass for B's"
@@ -150,12 +152,12 @@ fn suspicion_is_per_peer_unless_replies_name_no_sender() {
 #[test]
 fn urgent_requests_go_out_at_once_and_the_line_stays_suspect() {
     let (mut w, script) = wire();
-    w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
     w.finish(false);
-    w.begin(A, true, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, true, TIMEOUT, &mut nothing_benign).unwrap();
     w.finish(true);
     assert_eq!(waits(&script), 0, "a stop does not wait");
-    w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
     assert!(waits(&script) > 0, "the next ordinary request does");
 }
 
@@ -163,27 +165,48 @@ fn urgent_requests_go_out_at_once_and_the_line_stays_suspect() {
 fn stale_bytes_between_exchanges_make_the_line_suspect_but_line_ends_and_events_do_not() {
     let (mut w, script) = wire();
     arrive(&script, Duration::ZERO, b"\r\n\0\r");
-    w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
     w.finish(true);
     arrive(&script, Duration::ZERO, b"EVENT\r");
-    let events: Benign = |b| (b == b"EVENT\r").then(|| vec!["an event".to_string()]);
-    w.begin(A, false, TIMEOUT, events).unwrap();
+    let mut events = |b: &[u8]| {
+        (b == b"EVENT\r").then(|| Harmless {
+            notices: vec!["an event".to_string()],
+            answered: Vec::new(),
+        })
+    };
+    w.begin(A, false, TIMEOUT, &mut events).unwrap();
     w.finish(true);
     assert_eq!(waits(&script), 0);
     assert_eq!(w.notices, ["an event"]);
     arrive(&script, Duration::ZERO, b"BA 100 7\r");
-    w.begin(A, false, TIMEOUT, events).unwrap();
+    w.begin(A, false, TIMEOUT, &mut events).unwrap();
     assert!(waits(&script) > 0, "a stray reply: resynchronised first");
+}
+
+#[test]
+fn late_answers_a_dialect_vouches_for_end_the_suspicion_of_their_peer() {
+    let (mut w, script) = wire();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
+    w.finish(false);
+    arrive(&script, Duration::ZERO, b"LATE\r");
+    let mut late = |b: &[u8]| {
+        (b == b"LATE\r").then(|| Harmless {
+            notices: Vec::new(),
+            answered: vec![A],
+        })
+    };
+    w.begin(A, false, TIMEOUT, &mut late).unwrap();
+    assert_eq!(waits(&script), 0, "nothing more is on its way from A");
 }
 
 #[test]
 fn a_line_that_never_goes_quiet_fails_without_sending_in_bounded_time() {
     let (mut w, script) = wire();
-    w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
     w.finish(false);
     script.lock().unwrap().flood = Some(b"junk\r".repeat(200));
     let started = Instant::now();
-    let e = w.begin(A, false, TIMEOUT, nothing_benign).unwrap_err();
+    let e = w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap_err();
     w.finish(false);
     assert!(e.to_string().contains("did not go quiet"), "{e}");
     assert!(started.elapsed() < Duration::from_secs(10), "hang guard");
@@ -196,7 +219,7 @@ fn a_line_that_never_goes_quiet_fails_without_sending_in_bounded_time() {
 fn a_flood_between_exchanges_is_read_within_a_budget() {
     let (mut w, script) = wire();
     script.lock().unwrap().flood = Some(vec![b'7'; 4096]);
-    let e = w.begin(A, false, TIMEOUT, nothing_benign).unwrap_err();
+    let e = w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap_err();
     assert!(e.to_string().contains("did not go quiet"), "{e}");
 }
 
@@ -258,7 +281,7 @@ fn a_burst_costs_only_a_poll() {
 #[test]
 fn discards_are_summarised_once_per_kind() {
     let (mut w, _) = wire();
-    w.begin(A, false, TIMEOUT, nothing_benign).unwrap();
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
     for _ in 0..1000 {
         w.rx.extend(b"junk\r").unwrap();
         w.discard(5, "unexpected data from the line");
