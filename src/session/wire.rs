@@ -130,7 +130,6 @@ impl Wire {
         benign: Benign,
     ) -> Result<(), SessionError> {
         self.in_flight = None;
-        self.discards = Discards::default();
         self.drain(benign)?;
         if !urgent && self.suspect.covers(peer) {
             self.resync(timeout)?;
