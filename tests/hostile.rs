@@ -61,8 +61,12 @@ pub enum Act {
     /// Holds the answer (changed by a function) back until the next request arrives, and sends
     /// it just before that request's answer: later than any wait for quiet.
     HoldUntilNext(fn(&[u8]) -> Vec<u8>),
-    /// Sends these bytes one at a time, this far apart (a paced serial line).
-    Paced(Vec<u8>, Duration),
+    /// Sends `at_once`, then `paced` one byte at a time, `gap` apart (a paced serial line).
+    Paced {
+        at_once: Vec<u8>,
+        paced: Vec<u8>,
+        gap: Duration,
+    },
     /// Sends the answer (if `answer`), then `unit` every `every` for this long (a reply that
     /// goes on and on at the pace of a line).
     Trickle {
@@ -289,8 +293,13 @@ impl Server {
             Act::Map(f) => self.schedule(busy, f(&answer)),
             Act::Late(after) => self.schedule(busy + after, answer),
             Act::HoldUntilNext(f) => self.held = Some(f(&answer)),
-            Act::Paced(bytes, gap) => {
-                for (i, b) in bytes.into_iter().enumerate() {
+            Act::Paced {
+                at_once,
+                paced,
+                gap,
+            } => {
+                self.schedule(busy, at_once);
+                for (i, b) in paced.into_iter().enumerate() {
                     self.schedule(busy + gap * (i as u32 + 1), vec![b]);
                 }
             }

@@ -54,8 +54,9 @@ const MAX_SETTLE: Duration = Duration::from_millis(10);
 /// Bytes arriving faster than this came in one burst: what follows a reply arrives with it.
 const BURST_PACE: Duration = Duration::from_micros(10);
 
-/// Margin on the wait for the next byte of a transmission: timer slack and wake-up lateness.
-const SETTLE_SLACK: Duration = Duration::from_micros(30);
+/// Margin on the wait for the next byte of a transmission besides a quarter of its pace: the
+/// sender's and this process's wake-up lateness.
+const SETTLE_SLACK: Duration = Duration::from_micros(50);
 
 /// Discarded bytes are written to the transcript in records of about this size.
 const DISCARD_RECORD: usize = 4096;
@@ -286,7 +287,8 @@ impl Wire {
             .link
             .byte_time()
             .map_or(MAX_SETTLE, |b| (b * 2).min(MAX_SETTLE));
-        pace.min(cap) * 3 / 2 + SETTLE_SLACK
+        // The next byte is due one byte time after the last.
+        pace.min(cap) * 5 / 4 + SETTLE_SLACK
     }
 
     /// How long the line must be quiet before a suspect peer is trusted again: as long as the

@@ -147,21 +147,19 @@ fn a_corrupted_reply_is_line_noise_never_a_value_nor_a_refusal() {
 #[test]
 fn what_follows_a_reply_on_a_paced_line_is_waited_for() {
     // The corrupted reply arrives a byte at a time, as from a serial line: the rest of the
-    // value comes after the CR that cut it, and must still be seen.
+    // value comes after the CR that cut it, and must still be seen. 8 ms a byte: 1200 baud.
     for via in BOTH {
-        // 4 ms a byte: a 2400 baud line.
         let device = || {
             Fake::tmcl(
                 via,
-                on("GAP 4, 0", 1, || {
-                    Act::Paced(
-                        b"AGAP 4, 0\rBA 100 100\r0000\r".to_vec(),
-                        Duration::from_millis(4),
-                    )
+                on("GAP 4, 0", 1, || Act::Paced {
+                    at_once: b"AGAP 4, 0\r".to_vec(),
+                    paced: b"BA 100 100\r0000\r".to_vec(),
+                    gap: Duration::from_millis(8),
                 }),
             )
         };
-        fails_then_recovers_at(device, "2400", "line noise", &format!("{via:?}: paced"));
+        fails_then_recovers_at(device, "1200", "line noise", &format!("{via:?}: paced"));
     }
 }
 

@@ -246,7 +246,7 @@ fn what_follows_a_reply_decides_whether_it_is_taken() {
 #[test]
 fn bytes_that_follow_at_the_line_pace_are_waited_for() {
     let (mut w, script) = wire();
-    let byte = Duration::from_millis(3);
+    let byte = Duration::from_millis(10);
     for (i, b) in b"BA 100 -800\r143\r".iter().enumerate() {
         arrive(&script, byte * (i as u32 + 1), &[*b]);
     }
