@@ -8,32 +8,27 @@ mod ascii;
 mod binary;
 mod mode;
 mod probe;
+mod stop;
 mod unanswered;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::Arc;
-use std::time::Duration;
 
 use crate::link::Link;
 use crate::profile::Profile;
 use crate::protocol::tmcl::commands::AsciiWord;
-use crate::protocol::tmcl::frame::{FRAME_LEN, ReplyFrame};
-use crate::protocol::tmcl::line::{
-    self, Line, Op, address_char, address_of, format_instruction, format_line,
-};
-use crate::protocol::tmcl::reply::parse_reply_bytes;
+use crate::protocol::tmcl::line::{self, Line, Op, address_char, format_instruction, format_line};
 use crate::protocol::tmcl::syntax::parse_line;
 use crate::protocol::tmcl::validate::{self, Mode};
 use crate::protocol::tmcl::{Instruction, Status};
 
-use super::rx::is_line_break;
 use super::transcript::Transcript;
-use super::wire::{Harmless, Peer, Wire};
+use super::wire::{Peer, Wire};
 use super::{SessionError, SessionOptions};
 
 pub use mode::{Echo, WireMode};
 
-use unanswered::Unanswered;
+use unanswered::{Unanswered, harmless};
 
 /// What a module answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -318,86 +313,6 @@ impl TmclSession {
         }
     }
 
-    /// Sends MST to every motor of `module` at once, even on a line that has not settled since a
-    /// failure; the answer for each motor.
-    pub fn stop_motors(&mut self, module: u8) -> Vec<(u8, Result<Exchange, SessionError>)> {
-        self.urgently(|s| {
-            (0..s.profile.axes)
-                .map(|motor| (motor, s.request(module, Instruction::new(3, 0, motor, 0))))
-                .collect()
-        })
-    }
-
-    /// How long a stop waits for its confirmation: a module answers MST at once, so the wire
-    /// time of the exchange and [`super::STOP_CONFIRMATION`]; whoever pressed Ctrl-C hears within
-    /// that that the stop went out, however slow the interrupted reply was.
-    fn stop_wait(&self) -> Duration {
-        let wire = self
-            .wire
-            .link
-            .byte_time()
-            .map_or(Duration::ZERO, |b| b * 32);
-        self.options.timeout.min(super::STOP_CONFIRMATION + wire)
-    }
-
-    /// Stops the motors of `module` (even if this session did not start them) together with
-    /// everything this session set moving, each once (after Ctrl-C).
-    pub fn stop_motion_and(&mut self, module: u8) -> Vec<String> {
-        self.moved.insert(module);
-        self.stop_motion()
-    }
-
-    /// Stops every module this session set moving or whose program it started (MST, and STOP /
-    /// command 128 for programs). Returns what was done, for the user.
-    pub fn stop_motion(&mut self) -> Vec<String> {
-        self.urgently(Self::stop_everything)
-    }
-
-    fn stop_everything(&mut self) -> Vec<String> {
-        let wait = self.stop_wait();
-        self.with_timeout(wait, Self::stop_each)
-    }
-
-    fn stop_each(&mut self) -> Vec<String> {
-        let mut report = Vec::new();
-        let programs: Vec<u8> = self.running.iter().copied().collect();
-        for module in programs {
-            let c = address_char(module).unwrap_or('?');
-            match self.stop_program(module) {
-                Ok(_) => report.push(format!("stopped the TMCL program of module {c}")),
-                Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
-                    "sent STOP to module {c}; no answer within {} ms",
-                    timeout.as_millis()
-                )),
-                Err(e) => report.push(format!("could not stop the program of module {c}: {e}")),
-            }
-        }
-        let moved: Vec<u8> = self.moved.iter().copied().collect();
-        for module in moved {
-            let c = address_char(module).unwrap_or('?');
-            for (motor, result) in self.stop_motors(module) {
-                match result {
-                    Ok(x) if x.ok() => {
-                        report.push(format!("stopped motor {motor} of module {c} (MST)"))
-                    }
-                    Ok(x) => report.push(format!("MST to module {c} answered {}", x.raw)),
-                    Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
-                        "sent MST to motor {motor} of module {c}; no answer within {} ms",
-                        timeout.as_millis()
-                    )),
-                    Err(e) => {
-                        report.push(format!("could not stop motor {motor} of module {c}: {e}"))
-                    }
-                }
-            }
-        }
-        self.moved.clear();
-        for line in &report {
-            self.wire.note(line);
-        }
-        report
-    }
-
     /// Whether this session started motion or a program that may still be going.
     pub fn may_be_moving(&self) -> bool {
         !self.moved.is_empty() || !self.running.is_empty()
@@ -595,54 +510,6 @@ impl TmclSession {
         self.wire.finish(settled);
         result
     }
-}
-
-/// Recognises what may arrive between exchanges without making the line suspect: position-reached
-/// events (the delayed second reply of command 138, as ASCII lines with status 128 or binary
-/// frames of command 138), and the late echo and reply of a request given up earlier (a module
-/// with none left is trusted again).
-fn harmless(bytes: &[u8], unanswered: &mut Unanswered) -> Option<Harmless> {
-    let event = |module: String| format!("module {module}: target position reached (event)");
-    let mut found = Harmless::default();
-    let mut ascii = true;
-    for line in bytes.split(|&b| is_line_break(b)).filter(|l| !l.is_empty()) {
-        match parse_reply_bytes(line) {
-            Some(r) if r.status == Status::PositionReachedEvent => {
-                found.notices.push(event(r.module.to_string()));
-            }
-            Some(r) if unanswered.reply_arrived(r.module) => {
-                if let (false, Some(module)) = (unanswered.pending(r.module), address_of(r.module))
-                {
-                    found.answered.push(Peer::Module(module.into()));
-                }
-            }
-            None if unanswered.echo_arrived(line) => {}
-            _ => {
-                ascii = false;
-                break;
-            }
-        }
-    }
-    if ascii {
-        return Some(found);
-    }
-    if bytes.is_empty() || bytes.len() % FRAME_LEN != 0 {
-        return None;
-    }
-    let notices: Option<Vec<String>> = bytes
-        .chunks(FRAME_LEN)
-        .map(|chunk| {
-            let frame: &[u8; FRAME_LEN] = chunk.try_into().ok()?;
-            ReplyFrame::decode(frame)
-                .ok()
-                .filter(|r| r.command == 138 && r.status == Status::PositionReachedEvent)
-                .map(|r| event(r.module.to_string()))
-        })
-        .collect();
-    notices.map(|notices| Harmless {
-        notices,
-        answered: Vec::new(),
-    })
 }
 
 #[cfg(test)]

@@ -132,7 +132,7 @@ impl TmclSession {
         self.wire.idle_for(resync)?;
         let unanswered = &mut self.unanswered;
         self.wire
-            .drain(&mut |bytes| super::harmless(bytes, unanswered))?;
+            .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))?;
         let frame = CommandFrame {
             address: module,
             instruction: Instruction::new(139, 0, 0, 0),

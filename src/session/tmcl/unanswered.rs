@@ -4,6 +4,14 @@
 
 use std::collections::VecDeque;
 
+use crate::protocol::tmcl::Status;
+use crate::protocol::tmcl::frame::{FRAME_LEN, ReplyFrame};
+use crate::protocol::tmcl::line::address_of;
+use crate::protocol::tmcl::reply::parse_reply_bytes;
+
+use super::super::rx::is_line_break;
+use super::super::wire::{Harmless, Peer};
+
 /// How many failed requests are remembered.
 const KEPT: usize = 8;
 
@@ -68,6 +76,54 @@ impl Unanswered {
             .iter()
             .any(|e| e.line.first() == Some(&(module as u8)))
     }
+}
+
+/// Recognises what may arrive between exchanges without making the line suspect: position-reached
+/// events (the delayed second reply of command 138, as ASCII lines with status 128 or binary
+/// frames of command 138), and the late echo and reply of a request given up earlier (a module
+/// with none left is trusted again).
+pub(super) fn harmless(bytes: &[u8], unanswered: &mut Unanswered) -> Option<Harmless> {
+    let event = |module: String| format!("module {module}: target position reached (event)");
+    let mut found = Harmless::default();
+    let mut ascii = true;
+    for line in bytes.split(|&b| is_line_break(b)).filter(|l| !l.is_empty()) {
+        match parse_reply_bytes(line) {
+            Some(r) if r.status == Status::PositionReachedEvent => {
+                found.notices.push(event(r.module.to_string()));
+            }
+            Some(r) if unanswered.reply_arrived(r.module) => {
+                if let (false, Some(module)) = (unanswered.pending(r.module), address_of(r.module))
+                {
+                    found.answered.push(Peer::Module(module.into()));
+                }
+            }
+            None if unanswered.echo_arrived(line) => {}
+            _ => {
+                ascii = false;
+                break;
+            }
+        }
+    }
+    if ascii {
+        return Some(found);
+    }
+    if bytes.is_empty() || bytes.len() % FRAME_LEN != 0 {
+        return None;
+    }
+    let notices: Option<Vec<String>> = bytes
+        .chunks(FRAME_LEN)
+        .map(|chunk| {
+            let frame: &[u8; FRAME_LEN] = chunk.try_into().ok()?;
+            ReplyFrame::decode(frame)
+                .ok()
+                .filter(|r| r.command == 138 && r.status == Status::PositionReachedEvent)
+                .map(|r| event(r.module.to_string()))
+        })
+        .collect();
+    notices.map(|notices| Harmless {
+        notices,
+        answered: Vec::new(),
+    })
 }
 
 #[cfg(test)]

@@ -1,5 +1,6 @@
 //! The wire's trust rules against a scripted link whose bytes arrive at chosen times.
 
+use super::trust::RESYNC_MAX;
 use super::*;
 
 use std::collections::VecDeque;
