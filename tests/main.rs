@@ -8,6 +8,7 @@ mod cli;
 mod commission;
 #[cfg(feature = "hardware")]
 mod hardware;
+mod hostile;
 mod inputs;
 mod options;
 mod profiles;

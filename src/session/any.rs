@@ -123,28 +123,23 @@ impl Session {
         }
     }
 
-    /// After Ctrl-C in the REPL: stop the target's motor even if this session did not start it,
-    /// and everything the session set moving.
+    /// After Ctrl-C: stops the target's motors even if this session did not start them, and
+    /// everything the session set moving — each once, sent at once even while an interrupted
+    /// reply may still be arriving. Returns one line per stop, then whatever else the session has
+    /// to report, so nothing is left over for the next command.
     pub fn stop_target(&mut self) -> Vec<String> {
-        let mut report = Vec::new();
-        match self {
+        let report = match self {
             Session::Tmcl(s) => {
                 let target = s.target();
-                for (motor, result) in s.stop_motors(target) {
-                    match result {
-                        Ok(_) => report.push(format!(
-                            "interrupted: stopped motor {motor} of the target module (MST)"
-                        )),
-                        Err(e) => report.push(format!("interrupted; MST failed: {e}")),
-                    }
-                }
+                s.stop_motion_and(target)
             }
-            Session::Smd4(s) => match s.execute("MOTOR:STOP") {
-                Ok(_) => report.push("interrupted: stopped the motor (MOTOR:STOP)".to_string()),
-                Err(e) => report.push(format!("interrupted; MOTOR:STOP failed: {e}")),
-            },
-        }
-        report.extend(self.stop_motion());
+            Session::Smd4(s) => s.stop_motion_and_target(),
+        };
+        let mut report: Vec<String> = report
+            .into_iter()
+            .map(|line| format!("interrupted: {line}"))
+            .collect();
+        report.extend(self.take_notices());
         report
     }
 

@@ -21,6 +21,11 @@ use crate::protocol::tmcl::InputError;
 pub use any::{Reply, Session};
 pub use transcript::Transcript;
 
+/// How long a stop (MST, MOTOR:STOP) waits for its answer besides the exchange's wire time. Stops
+/// go out at once; a module answers them at once; and after Ctrl-C the user hears within this that
+/// the stop went out, however long the interrupted reply would have taken.
+pub(crate) const STOP_CONFIRMATION: Duration = Duration::from_millis(50);
+
 /// Settings shared by every dialect's session.
 #[derive(Debug, Clone)]
 pub struct SessionOptions {

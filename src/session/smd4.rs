@@ -4,6 +4,11 @@
 //! line noise reported, not taken, and MOTOR:STOP for drives the session set moving when a run
 //! is aborted. SMD4 drives have no echo and no separate ASCII mode, so there is nothing to enter
 //! or restore.
+//!
+//! With no echo, nothing in a reply says which request it answers: after any failed exchange the
+//! wire resynchronises before the next request (see `session/wire.rs`). Replies of an addressed
+//! drive carry its `@N,` prefix, so a failure at one address does not hold up the others — unless
+//! the drives turn out to answer without the prefix.
 
 use std::collections::BTreeSet;
 use std::time::{Duration, Instant};
@@ -14,9 +19,16 @@ use crate::protocol::smd4::{
     is_reply_to, validate,
 };
 
+use super::rx::is_line_break;
 use super::transcript::{Entry, Transcript, escape_into};
-use super::wire::Wire;
+use super::wire::{MAX_LINE, Peer, Settled, Wire, nothing_benign};
 use super::{SessionError, SessionOptions};
+
+/// The most a reply may hold, all its lines together.
+const MAX_REPLY: usize = 64 * 1024;
+
+/// What is discarded most often.
+const UNEXPECTED: &str = "unexpected data from the line";
 
 /// SMD4-specific settings.
 #[derive(Debug, Clone, Copy)]
@@ -90,6 +102,10 @@ pub struct Smd4Session {
     options: SessionOptions,
     smd4: Smd4Options,
     moved: BTreeSet<Option<u32>>,
+    /// Requests go out without waiting for a suspect line to go quiet (stops).
+    urgent: bool,
+    /// An addressed drive answered without its `@N,` prefix: replies cannot be told apart.
+    unprefixed_replies: bool,
 }
 
 impl Smd4Session {
@@ -106,6 +122,8 @@ impl Smd4Session {
             options,
             smd4,
             moved: BTreeSet::new(),
+            urgent: false,
+            unprefixed_replies: false,
         };
         let opened = format!("SMD4 session opened on {}", session.wire.link.describe());
         session.wire.note(&opened);
@@ -196,21 +214,21 @@ impl Smd4Session {
         }
         let spec = self.spec.commands.get(&request.mnemonic);
         let sent = request.format(self.smd4.prefix);
-        self.wire.drain()?;
-        self.wire.send(
-            &request.wire(self.smd4.prefix),
-            format_args!("to {}", drive_name(request.address)),
-        )?;
         let silent = request.is_broadcast() || spec.is_some_and(|s| s.no_response);
-        let response = if silent {
-            None
-        } else {
-            Some(self.receive(&request)?)
+        let peer = match request.address {
+            Some(address) if !self.unprefixed_replies => Peer::Module(address),
+            _ => Peer::Any,
         };
+        let timeout = self.options.timeout;
+        let result = self
+            .wire
+            .begin(peer, self.urgent, timeout, &mut nothing_benign)
+            .and_then(|()| self.transact(&request, silent));
+        self.wire.finish(result.is_ok());
         let exchange = Smd4Exchange {
             sent,
             request,
-            response,
+            response: result?,
         };
         if exchange.ok() && spec.is_some_and(|s| s.starts_motion) {
             self.moved.insert(exchange.request.address);
@@ -218,50 +236,122 @@ impl Smd4Session {
         Ok(exchange)
     }
 
+    /// Sends a request and reads its reply (none for broadcasts and silent commands). Any error
+    /// returned from here, whatever finds it, leaves the line suspect until it has settled.
+    fn transact(
+        &mut self,
+        request: &Request,
+        silent: bool,
+    ) -> Result<Option<Response>, SessionError> {
+        self.wire.send(
+            &request.wire(self.smd4.prefix),
+            format_args!("to {}", drive_name(request.address)),
+        )?;
+        if silent {
+            return Ok(None);
+        }
+        let response = self.receive(request)?;
+        if request.address.is_some() && response.address.is_none() {
+            self.unprefixed_replies = true;
+        }
+        Ok(Some(response))
+    }
+
     /// Reads the reply to `request`: whole lines, fed to a collector; a multi-line reply ends
-    /// when nothing arrived for the quiet gap.
+    /// when nothing arrived for the quiet gap, a single-line one once the bytes after it were
+    /// seen. Lines are consumed as they are judged, so a flood costs neither time beyond the
+    /// deadline nor memory.
     fn receive(&mut self, request: &Request) -> Result<Response, SessionError> {
         let expect = Expectation::for_request(&self.spec.commands, request);
         let mut collector = ReplyCollector::new(expect.clone());
         let deadline = Instant::now() + self.options.timeout;
-        let mut consumed = Vec::new();
+        // A multi-line reply's last line may come up to the deadline; its quiet gap after that.
+        let multi_line_end = deadline + self.smd4.quiet_gap;
+        // This reply's bytes, for the transcript.
+        let mut reply_bytes = Vec::new();
+        let mut in_junk = false;
         loop {
-            while let Some(line) = self.next_line(&mut consumed) {
+            loop {
+                if in_junk {
+                    match self.wire.rx.line_end(0) {
+                        Some(end) => {
+                            self.wire.discard_more(end);
+                            in_junk = false;
+                        }
+                        None => {
+                            let n = self.wire.rx.len();
+                            self.wire.discard_more(n);
+                            break;
+                        }
+                    }
+                }
+                let bytes = self.wire.rx.bytes();
+                let breaks = bytes.iter().take_while(|&&b| is_line_break(b)).count();
+                if breaks > 0 {
+                    reply_bytes.extend(self.wire.rx.take(breaks));
+                    continue;
+                }
+                let Some(end) = self.wire.rx.line_end(0) else {
+                    if self.wire.rx.len() > MAX_LINE {
+                        let n = self.wire.rx.len();
+                        self.wire.discard(n, UNEXPECTED);
+                        in_junk = true;
+                    }
+                    break;
+                };
+                let used = end + 1;
+                if end > MAX_LINE {
+                    self.wire.discard(used, UNEXPECTED);
+                    continue;
+                }
+                let line = String::from_utf8_lossy(&self.wire.rx.bytes()[..end]).into_owned();
                 match collector.push_line(&line) {
                     Ok(Progress::Complete(reply)) if foreign(&reply, request) => {
-                        self.wire.notices.push(format!(
-                            "ignored a reply from drive {} while waiting for {}: {line}",
+                        let kind = format!(
+                            "a reply from drive {} while waiting for {}",
                             drive_name(reply.address),
                             drive_name(request.address)
-                        ));
+                        );
+                        self.wire.discard(used, &kind);
                         collector = ReplyCollector::new(expect.clone());
                     }
                     Ok(Progress::Complete(reply)) => {
-                        return self.finish(*reply, &consumed, &expect, request);
+                        return self.settle(*reply, reply_bytes, used, deadline, &expect, request);
                     }
-                    Ok(Progress::AwaitQuiet) => {}
-                    Err(_) => {
-                        let mut shown = String::new();
-                        escape_into(line.as_bytes(), &mut shown);
-                        self.wire
-                            .notices
-                            .push(format!("ignored unexpected data from the line: {shown}"));
+                    Ok(Progress::AwaitQuiet) => {
+                        reply_bytes.extend(self.wire.rx.take(used));
+                        if reply_bytes.len() > MAX_REPLY {
+                            return Err(self.endless(
+                                request,
+                                reply_bytes,
+                                "is longer than 64 KiB",
+                            ));
+                        }
                     }
+                    Err(_) => self.wire.discard(used, UNEXPECTED),
                 }
             }
+            let now = Instant::now();
             if collector.awaiting_quiet() {
-                if !self.wire.fill(Instant::now() + self.smd4.quiet_gap)? {
+                if now >= multi_line_end {
+                    return Err(self.endless(request, reply_bytes, "did not end in time"));
+                }
+                let gap_end = now + self.smd4.quiet_gap;
+                if !self.wire.fill(gap_end.min(multi_line_end))? {
+                    if gap_end > multi_line_end {
+                        return Err(self.endless(request, reply_bytes, "did not end in time"));
+                    }
                     let reply = collector
                         .finish_quiet()
                         .expect("awaiting quiet means a first line came");
-                    return self.finish(reply, &consumed, &expect, request);
+                    return self.finish(reply, &reply_bytes, &expect, request);
                 }
-            } else if !self.wire.fill(deadline)? {
+            } else if now >= deadline || !self.wire.fill(deadline)? {
                 let partial = self.wire.rx.clear();
-                consumed.extend_from_slice(&partial);
-                if !consumed.is_empty() {
+                reply_bytes.extend_from_slice(&partial);
+                if !reply_bytes.is_empty() {
                     self.wire
-                        .log(Entry::Received, &consumed, "no complete reply");
+                        .log(Entry::Received, &reply_bytes, "no complete reply");
                 }
                 let module = drive_name(request.address);
                 self.wire.note(&format!("no reply from {module}"));
@@ -274,22 +364,60 @@ impl Smd4Session {
         }
     }
 
-    /// The next complete line (CR LF, LF or CR terminated) from the receive buffer.
-    fn next_line(&mut self, consumed: &mut Vec<u8>) -> Option<String> {
-        loop {
-            let bytes = self.wire.rx.bytes();
-            let end = bytes.iter().position(|&b| b == b'\n' || b == b'\r')?;
-            let mut used = end + 1;
-            if bytes[end] == b'\r' && bytes.get(end + 1) == Some(&b'\n') {
-                used += 1;
+    /// Takes a single-line reply whose line takes the first `used` buffered bytes, once what
+    /// follows it has been seen: nothing but line ends.
+    fn settle(
+        &mut self,
+        reply: Response,
+        mut reply_bytes: Vec<u8>,
+        used: usize,
+        deadline: Instant,
+        expect: &Expectation,
+        request: &Request,
+    ) -> Result<Response, SessionError> {
+        match self.wire.settle(used, deadline, &mut |_| false)? {
+            Settled::Clean(n) => {
+                reply_bytes.extend(self.wire.rx.take(n));
+                self.finish(reply, &reply_bytes, expect, request)
             }
-            let taken = self.wire.rx.take(used);
-            consumed.extend_from_slice(&taken);
-            let line = String::from_utf8_lossy(&taken[..end]).into_owned();
-            if !line.is_empty() {
-                return Some(line);
+            Settled::Noise => {
+                let mut after = String::new();
+                let rest = &self.wire.rx.bytes()[used..];
+                escape_into(&rest[..rest.len().min(40)], &mut after);
+                reply_bytes.extend(self.wire.rx.clear());
+                self.wire.log(
+                    Entry::Received,
+                    &reply_bytes,
+                    "a reply followed by more data: line noise, discarded",
+                );
+                let mut shown = String::new();
+                escape_into(reply.raw.as_bytes(), &mut shown);
+                let message = format!(
+                    "line noise: the reply {shown} was followed by {after}, so it may be cut short \
+                     or not the answer; not taken"
+                );
+                self.wire.note(&message);
+                Err(SessionError::Link(message))
             }
         }
+    }
+
+    /// A multi-line reply that does not end: line noise.
+    fn endless(&mut self, request: &Request, mut bytes: Vec<u8>, what: &str) -> SessionError {
+        bytes.extend(self.wire.rx.clear());
+        self.wire.log(
+            Entry::Received,
+            &bytes,
+            "a reply that does not end: line noise, discarded",
+        );
+        let message = format!(
+            "line noise: the reply to {} {what} (--timeout {} ms, then --quiet-gap {} ms); not taken",
+            request.mnemonic,
+            self.options.timeout.as_millis(),
+            self.smd4.quiet_gap.as_millis()
+        );
+        self.wire.note(&message);
+        SessionError::Link(message)
     }
 
     /// A complete reply, checked against what the command declares: one that fails is line
@@ -309,10 +437,12 @@ impl Smd4Session {
             );
             let mut shown = String::new();
             escape_into(reply.raw.as_bytes(), &mut shown);
-            return Err(SessionError::Link(format!(
+            let message = format!(
                 "line noise: {noise}, in the reply {shown} to {}",
                 request.format(self.smd4.prefix)
-            )));
+            );
+            self.wire.note(&message);
+            return Err(SessionError::Link(message));
         }
         let meaning = match &reply.error {
             Some(error) => format!("error {error}"),
@@ -322,23 +452,44 @@ impl Smd4Session {
         Ok(reply)
     }
 
-    /// Stops every drive this session set moving (MOTOR:STOP). Returns what was done.
+    /// Stops every drive this session set moving (MOTOR:STOP), at once even on a line that has
+    /// not settled since a failure. Returns what was done.
     pub fn stop_motion(&mut self) -> Vec<String> {
         let moved: Vec<Option<u32>> = std::mem::take(&mut self.moved).into_iter().collect();
+        let was = std::mem::replace(&mut self.urgent, true);
+        let wire = self
+            .wire
+            .link
+            .byte_time()
+            .map_or(Duration::ZERO, |b| b * 64);
+        let wait = self.options.timeout.min(super::STOP_CONFIRMATION + wire);
         let mut report = Vec::new();
         for address in moved {
             let mut stop = Request::new("MOTOR:STOP");
             stop.address = address;
             let name = drive_name(address);
-            match self.request(stop).and_then(Smd4Exchange::checked) {
+            let result = self.with_timeout(wait, |s| s.request(stop));
+            match result.and_then(Smd4Exchange::checked) {
                 Ok(_) => report.push(format!("stopped the motor of drive {name} (MOTOR:STOP)")),
+                Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
+                    "sent MOTOR:STOP to drive {name}; no answer within {} ms",
+                    timeout.as_millis()
+                )),
                 Err(e) => report.push(format!("could not stop the motor of drive {name}: {e}")),
             }
         }
+        self.urgent = was;
         for line in &report {
             self.wire.note(line);
         }
         report
+    }
+
+    /// Stops the session's drive (even if this session did not start it) together with every
+    /// drive this session set moving, each once (after Ctrl-C).
+    pub fn stop_motion_and_target(&mut self) -> Vec<String> {
+        self.moved.insert(self.smd4.address);
+        self.stop_motion()
     }
 
     /// Whether this session started motion that may still be going.
@@ -355,7 +506,7 @@ impl Smd4Session {
     /// Reopens a lost link.
     pub fn reconnect(&mut self) -> Result<(), SessionError> {
         self.wire.link.reopen()?;
-        self.wire.rx.clear();
+        self.wire.reset();
         let reopened = format!("link reopened: {}", self.wire.link.describe());
         self.wire.note(&reopened);
         Ok(())

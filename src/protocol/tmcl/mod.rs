@@ -16,6 +16,6 @@ pub use error::{InputError, Warning};
 pub use frame::{CommandFrame, FrameDecoder, ReplyFrame};
 pub use instruction::Instruction;
 pub use line::{Line, Op, address_char, address_of, format_instruction, format_line, parse};
-pub use reply::{AsciiReply, parse_reply};
+pub use reply::{AsciiReply, host_char, parse_reply, parse_reply_bytes};
 pub use status::Status;
 pub use validate::{Mode, validate};

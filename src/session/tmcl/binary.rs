@@ -20,7 +20,14 @@ impl TmclSession {
         module: u8,
         instruction: Instruction,
     ) -> Result<Exchange, SessionError> {
-        self.wire.drain()?;
+        self.exchange(module, false, |s| s.binary_exchange(module, instruction))
+    }
+
+    fn binary_exchange(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<Exchange, SessionError> {
         let sent = self.describe_instruction(&instruction);
         let frame = CommandFrame {
             address: module,
@@ -42,61 +49,70 @@ impl TmclSession {
         let deadline = Instant::now() + self.options.timeout;
         loop {
             while self.wire.rx.len() >= FRAME_LEN {
-                let bytes = self.wire.rx.take(FRAME_LEN);
                 let mut raw = [0u8; FRAME_LEN];
-                raw.copy_from_slice(&bytes);
+                raw.copy_from_slice(&self.wire.rx.bytes()[..FRAME_LEN]);
                 if instruction.command == 136 && instruction.type_ == 0 {
                     let (_, text) = decode_version_string(&raw);
+                    self.settle_binary(module, &raw, deadline)?;
                     self.wire
-                        .log(Entry::Received, &bytes, format_args!("version {text}"));
+                        .log_received(FRAME_LEN, format_args!("version {text}"));
                     return Ok(exchange(Answer::Version(text.clone()), text));
                 }
                 let reply = match ReplyFrame::decode(&raw) {
                     Ok(reply) => reply,
                     Err(e) => {
-                        self.wire.log(Entry::Received, &bytes, "bad checksum");
-                        self.wire.rx.clear();
-                        return Err(SessionError::Link(format!(
-                            "corrupted reply from module {module}: {e}"
-                        )));
+                        return Err(self.binary_noise(
+                            "bad checksum",
+                            format!("corrupted reply from module {module}: {e}"),
+                        ));
                     }
                 };
-                self.wire.log(
-                    Entry::Received,
-                    &bytes,
-                    format_args!(
-                        "from module {}: {}, value {}",
-                        reply.module, reply.status, reply.value
-                    ),
-                );
                 if reply.command == 138 && reply.status == Status::PositionReachedEvent {
                     self.wire.notices.push(format!(
                         "module {}: target position reached (event)",
                         reply.module
                     ));
+                    self.wire.log_received(
+                        FRAME_LEN,
+                        "target position reached event, not a reply; discarded",
+                    );
                     continue;
                 }
                 if reply.module != module || reply.command != instruction.command {
-                    self.wire.notices.push(format!(
-                        "ignored reply {} while waiting for module {module}",
-                        hex(&bytes)
-                    ));
+                    let kind = format!("a reply frame not for module {module}'s request");
+                    self.wire.discard(FRAME_LEN, &kind);
                     continue;
                 }
-                let raw = binary_reply_text(&reply);
+                if let Status::Other(code) = reply.status {
+                    return Err(self.binary_noise(
+                        "unknown status",
+                        format!(
+                            "line noise: module {module} answered with status {code}, which no \
+                             module sends; not taken"
+                        ),
+                    ));
+                }
+                self.settle_binary(module, &raw, deadline)?;
+                self.wire.log_received(
+                    FRAME_LEN,
+                    format_args!(
+                        "from module {}: {}, value {}",
+                        reply.module, reply.status, reply.value
+                    ),
+                );
                 return Ok(exchange(
                     Answer::Reply {
                         status: reply.status,
                         value: reply.value,
                     },
-                    raw,
+                    binary_reply_text(&reply),
                 ));
             }
-            if !self.wire.fill(deadline)? {
+            if Instant::now() >= deadline || !self.wire.fill(deadline)? {
                 let partial = self.wire.rx.clear();
                 if !partial.is_empty() {
                     self.wire
-                        .log(Entry::Received, &partial, "incomplete frame, discarded");
+                        .log(Entry::Received, &partial, "incomplete frame, no reply");
                 }
                 return Err(SessionError::Timeout {
                     module: address_char(module).unwrap_or('?').to_string(),
@@ -109,6 +125,65 @@ impl TmclSession {
                 });
             }
         }
+    }
+
+    /// Checks what follows the reply frame at the front of the buffer: nothing, or whole event
+    /// frames. Anything else — a frame that is longer than nine bytes, a second reply — is noise.
+    fn settle_binary(
+        &mut self,
+        module: u8,
+        reply: &[u8; FRAME_LEN],
+        deadline: Instant,
+    ) -> Result<(), SessionError> {
+        let hard_end = deadline.max(Instant::now() + self.wire.settle_time());
+        let mut pos = FRAME_LEN;
+        loop {
+            while self.wire.rx.len() >= pos + FRAME_LEN {
+                let mut frame = [0u8; FRAME_LEN];
+                frame.copy_from_slice(&self.wire.rx.bytes()[pos..pos + FRAME_LEN]);
+                match ReplyFrame::decode(&frame) {
+                    Ok(r) if r.command == 138 && r.status == Status::PositionReachedEvent => {
+                        self.wire.notices.push(format!(
+                            "module {}: target position reached (event)",
+                            r.module
+                        ));
+                        pos += FRAME_LEN;
+                    }
+                    _ => return Err(self.trailing_noise(module, reply)),
+                }
+            }
+            let partial = self.wire.rx.len() > pos;
+            if Instant::now() >= hard_end || !self.wire.await_more(hard_end)? {
+                if partial {
+                    return Err(self.trailing_noise(module, reply));
+                }
+                return Ok(());
+            }
+        }
+    }
+
+    fn trailing_noise(&mut self, module: u8, reply: &[u8; FRAME_LEN]) -> SessionError {
+        let rest = &self.wire.rx.bytes()[FRAME_LEN..];
+        let after = hex(&rest[..rest.len().min(3 * FRAME_LEN)]);
+        self.binary_noise(
+            "a reply followed by more data",
+            format!(
+                "line noise: the reply {} from module {module} was followed by {after}; not taken",
+                hex(reply)
+            ),
+        )
+    }
+
+    /// Ends a binary exchange on line noise, logging what was received.
+    fn binary_noise(&mut self, what: &str, message: String) -> SessionError {
+        let bytes = self.wire.rx.clear();
+        self.wire.log(
+            Entry::Received,
+            &bytes,
+            format_args!("{what}: line noise, discarded"),
+        );
+        self.wire.note(&message);
+        SessionError::Link(message)
     }
 }
 

@@ -8,6 +8,8 @@ mod ascii;
 mod binary;
 mod mode;
 mod probe;
+mod stop;
+mod unanswered;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::Arc;
@@ -21,10 +23,12 @@ use crate::protocol::tmcl::validate::{self, Mode};
 use crate::protocol::tmcl::{Instruction, Status};
 
 use super::transcript::Transcript;
-use super::wire::Wire;
+use super::wire::{Peer, Wire};
 use super::{SessionError, SessionOptions};
 
 pub use mode::{Echo, WireMode};
+
+use unanswered::{Unanswered, harmless};
 
 /// What a module answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -104,6 +108,10 @@ pub struct TmclSession {
     modules: BTreeMap<u8, mode::ModuleState>,
     moved: BTreeSet<u8>,
     running: BTreeSet<u8>,
+    /// Requests go out without waiting for a suspect line to go quiet (stops, mode restores).
+    urgent: bool,
+    /// ASCII lines that failed: their echo and reply may still come.
+    unanswered: Unanswered,
 }
 
 impl TmclSession {
@@ -141,6 +149,8 @@ impl TmclSession {
             modules: BTreeMap::new(),
             moved: BTreeSet::new(),
             running: BTreeSet::new(),
+            urgent: false,
+            unanswered: Unanswered::default(),
         };
         let opened = format!("session opened on {}", session.wire.link.describe());
         session.wire.note(&opened);
@@ -317,52 +327,6 @@ impl TmclSession {
         }
     }
 
-    /// Sends MST to every motor of `module`; the answer for each motor.
-    pub fn stop_motors(&mut self, module: u8) -> Vec<(u8, Result<Exchange, SessionError>)> {
-        (0..self.profile.axes)
-            .map(|motor| {
-                (
-                    motor,
-                    self.request(module, Instruction::new(3, 0, motor, 0)),
-                )
-            })
-            .collect()
-    }
-
-    /// Stops every module this session set moving or whose program it started (MST, and STOP /
-    /// command 128 for programs). Returns what was done, for the user.
-    pub fn stop_motion(&mut self) -> Vec<String> {
-        let mut report = Vec::new();
-        let programs: Vec<u8> = self.running.iter().copied().collect();
-        for module in programs {
-            let c = address_char(module).unwrap_or('?');
-            match self.stop_program(module) {
-                Ok(_) => report.push(format!("stopped the TMCL program of module {c}")),
-                Err(e) => report.push(format!("could not stop the program of module {c}: {e}")),
-            }
-        }
-        let moved: Vec<u8> = self.moved.iter().copied().collect();
-        for module in moved {
-            let c = address_char(module).unwrap_or('?');
-            for (motor, result) in self.stop_motors(module) {
-                match result {
-                    Ok(x) if x.ok() => {
-                        report.push(format!("stopped motor {motor} of module {c} (MST)"))
-                    }
-                    Ok(x) => report.push(format!("MST to module {c} answered {}", x.raw)),
-                    Err(e) => {
-                        report.push(format!("could not stop motor {motor} of module {c}: {e}"))
-                    }
-                }
-            }
-        }
-        self.moved.clear();
-        for line in &report {
-            self.wire.note(line);
-        }
-        report
-    }
-
     /// Whether this session started motion or a program that may still be going.
     pub fn may_be_moving(&self) -> bool {
         !self.moved.is_empty() || !self.running.is_empty()
@@ -458,10 +422,15 @@ impl TmclSession {
     /// Ends the session: every module goes back to the mode it was found in (unless
     /// `--stay-ascii`). Returns what was done.
     pub fn close(&mut self) -> Vec<String> {
-        let mut report = Vec::new();
         if self.options.stay_ascii {
-            return report;
+            return Vec::new();
         }
+        // Mode restores carry no value for anyone: they need not wait for a suspect line.
+        self.urgently(Self::restore_modes)
+    }
+
+    fn restore_modes(&mut self) -> Vec<String> {
+        let mut report = Vec::new();
         let to_restore: Vec<u8> = self
             .modules
             .iter()
@@ -495,7 +464,7 @@ impl TmclSession {
     /// Reopens a lost link and re-enters ASCII mode on the modules that were in it.
     pub fn reconnect(&mut self) -> Result<(), SessionError> {
         self.wire.link.reopen()?;
-        self.wire.rx.clear();
+        self.wire.reset();
         self.wire
             .note(&format!("link reopened: {}", self.wire.link.describe()));
         let ascii: Vec<u8> = self
@@ -519,6 +488,41 @@ impl TmclSession {
     /// A human description of an instruction for the transcript.
     fn describe_instruction(&self, instruction: &Instruction) -> String {
         format_instruction(instruction, &self.profile)
+    }
+
+    /// Runs `f` with requests sent at once, without resynchronising a suspect line first.
+    fn urgently<T>(&mut self, f: impl FnOnce(&mut Self) -> T) -> T {
+        let was = std::mem::replace(&mut self.urgent, true);
+        let result = f(self);
+        self.urgent = was;
+        result
+    }
+
+    /// Runs one exchange with `module` between the wire's begin and finish, so that any failure
+    /// — whatever returns it — leaves the line suspect until it has settled. `optional` replies
+    /// (BIN) may fail to come without that.
+    fn exchange<T>(
+        &mut self,
+        module: u8,
+        optional: bool,
+        f: impl FnOnce(&mut Self) -> Result<T, SessionError>,
+    ) -> Result<T, SessionError> {
+        let timeout = self.options.timeout;
+        let peer = Peer::Module(module.into());
+        let unanswered = &mut self.unanswered;
+        let result = self
+            .wire
+            .begin(peer, self.urgent, timeout, &mut |bytes| {
+                harmless(bytes, unanswered)
+            })
+            .and_then(|()| f(self));
+        let settled = match &result {
+            Ok(_) => true,
+            Err(SessionError::Timeout { .. }) => optional,
+            Err(_) => false,
+        };
+        self.wire.finish(settled);
+        result
     }
 }
 

@@ -87,9 +87,13 @@ pub(super) struct ModuleState {
     pub echo_known: bool,
 }
 
-/// The longest wait for the optional binary reply to 139 and the optional reply to BIN. Modules
-/// that answer do so within a few byte times; one that does not costs this once per session.
+/// How long a module may take to start answering 139 or BIN, which it may not answer at all. The
+/// wait for such a reply adds the time its bytes need on the wire; a module that does not answer
+/// costs this once per session.
 const OPTIONAL_REPLY_WAIT: Duration = Duration::from_millis(200);
+
+/// The longest reply line to BIN with its echo: `ABIN` CR, then `BA 100 0` CR LF.
+const BIN_EXCHANGE_BYTES: u32 = 2 * 7 + 20;
 
 /// Whether an instruction changes global parameter 67 (so the echo must be learnt again).
 pub(super) fn changes_echo(i: &Instruction) -> bool {
@@ -126,7 +130,9 @@ impl TmclSession {
         // finds the start of our frame only after the line was idle for its receive time-out.
         let resync = Duration::from_millis(u64::from(self.profile.sim.frame_timeout_ms) * 11 / 10);
         self.wire.idle_for(resync)?;
-        self.wire.drain()?;
+        let unanswered = &mut self.unanswered;
+        self.wire
+            .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))?;
         let frame = CommandFrame {
             address: module,
             instruction: Instruction::new(139, 0, 0, 0),
@@ -155,10 +161,22 @@ impl TmclSession {
         self.learn_echo(module, found)
     }
 
+    /// How long to wait for an optional reply when `bytes` must pass on the wire (out and back):
+    /// the module's reaction time (no longer than the timeout, so scans stay quick) plus the
+    /// bytes' wire time, whatever the timeout.
+    fn optional_wait(&self, bytes: u32) -> Duration {
+        let wire = self
+            .wire
+            .link
+            .byte_time()
+            .map_or(Duration::ZERO, |b| b * bytes);
+        OPTIONAL_REPLY_WAIT.min(self.options.timeout) + wire
+    }
+
     /// Waits briefly for the binary reply some firmware sends to 139; true if it came.
     fn optional_binary_reply(&mut self, module: u8) -> Result<bool, SessionError> {
-        let deadline = Instant::now() + OPTIONAL_REPLY_WAIT.min(self.options.timeout);
-        while self.wire.rx.len() < FRAME_LEN {
+        let deadline = Instant::now() + self.optional_wait(2 * FRAME_LEN as u32);
+        while self.wire.rx.len() < FRAME_LEN && Instant::now() < deadline {
             if !self.wire.fill(deadline)? {
                 break;
             }
@@ -268,12 +286,9 @@ impl TmclSession {
     pub fn leave_ascii(&mut self, module: u8) -> Result<Exchange, SessionError> {
         let c = address_char(module).unwrap_or('?');
         let text = format!("{c}BIN");
-        let result = self.ascii_request_with(
-            module,
-            &text,
-            Some(Op::Ascii(AsciiWord::Bin)),
-            Some(OPTIONAL_REPLY_WAIT),
-        );
+        let wait = self.optional_wait(BIN_EXCHANGE_BYTES);
+        let result =
+            self.ascii_request_with(module, &text, Some(Op::Ascii(AsciiWord::Bin)), Some(wait));
         let exchange = match result {
             Ok(x) => x,
             Err(SessionError::Timeout { .. }) => Exchange {

@@ -46,8 +46,17 @@ impl TmclSession {
     /// their frame timeout — reading and discarding whatever arrives meanwhile.
     pub fn quiet(&mut self, duration: Duration) -> Result<(), SessionError> {
         let deadline = Instant::now() + duration;
-        while self.wire.fill(deadline)? {}
-        self.wire.drain()
+        while Instant::now() < deadline {
+            if self.wire.fill(deadline)? {
+                let n = self.wire.rx.len();
+                self.wire
+                    .discard_quietly(n, "while the line was kept quiet");
+            }
+        }
+        let n = self.wire.rx.len();
+        self.wire
+            .discard_quietly(n, "while the line was kept quiet");
+        Ok(())
     }
 
     /// Sends a lone CR, which ends whatever partial line ASCII-mode modules hold.

@@ -30,6 +30,13 @@ struct Quirks {
     stale_before_echo: &'static [u8],
     /// The link hands over one byte per read, as a slow serial line does.
     trickle: bool,
+    /// The first `GAP 1, 0` is answered `7777`, and only just before the next line's answer:
+    /// later than any wait for a quiet line.
+    late_first_gap: bool,
+    /// Replaces the reply line of the first `GAP 1, 0` (line end included).
+    first_gap_reply: Option<&'static [u8]>,
+    /// BIN gets no reply.
+    bin_silent: bool,
 }
 
 impl Default for Quirks {
@@ -46,6 +53,9 @@ impl Default for Quirks {
             foreign_reply_first: false,
             stale_before_echo: b"",
             trickle: false,
+            late_first_gap: false,
+            first_gap_reply: None,
+            bin_silent: false,
         }
     }
 }
@@ -54,6 +64,10 @@ impl Default for Quirks {
 struct Wire {
     sent: Vec<u8>,
     out: VecDeque<u8>,
+    /// Reads that waited for bytes that did not come.
+    waits: usize,
+    /// Every answer comes only when the next line arrives (a module a reply behind).
+    lagging: bool,
 }
 
 struct FakeModule {
@@ -62,6 +76,10 @@ struct FakeModule {
     frames: FrameDecoder,
     line: Vec<u8>,
     position: i32,
+    gaps: usize,
+    /// Output held back (see `Quirks::late_first_gap`), and whether output goes there now.
+    held: Vec<u8>,
+    holding: bool,
 }
 
 impl FakeModule {
@@ -78,8 +96,10 @@ impl FakeModule {
         }
     }
 
-    fn emit(&self, bytes: &[u8]) {
-        if !self.quirks.silent {
+    fn emit(&mut self, bytes: &[u8]) {
+        if self.holding {
+            self.held.extend_from_slice(bytes);
+        } else if !self.quirks.silent {
             self.wire.lock().unwrap().out.extend(bytes);
         }
     }
@@ -119,10 +139,23 @@ impl FakeModule {
         if !text.starts_with('A') {
             return; // not addressed to us (or garbage)
         }
+        let held = std::mem::take(&mut self.held);
+        self.emit(&held);
+        let first_gap = text.contains("GAP 1, 0") && {
+            self.gaps += 1;
+            self.gaps == 1
+        };
+        let lagging = self.wire.lock().unwrap().lagging;
+        self.holding = (first_gap && self.quirks.late_first_gap) || lagging;
+        self.answer_line(&text, first_gap);
+        self.holding = false;
+    }
+
+    fn answer_line(&mut self, text: &str, first_gap: bool) {
         self.emit(self.quirks.stale_before_echo);
         let echo = Echo::from_gp67(self.quirks.gp67);
         if echo != Echo::None {
-            let mut shown = text.clone().into_bytes();
+            let mut shown = text.as_bytes().to_vec();
             if self.quirks.echo_noise {
                 *shown.last_mut().unwrap() ^= 0x01;
             }
@@ -133,12 +166,19 @@ impl FakeModule {
             self.emit(b"BC 100 7\r");
         }
         self.emit(self.quirks.garbage_before_reply);
+        if let (true, Some(reply)) = (first_gap, self.quirks.first_gap_reply) {
+            self.emit(reply);
+            return;
+        }
         let profile = Profile::builtin();
-        let (status, value) = match line::parse(&text, &profile).map(|l| l.op) {
+        let (status, value) = match line::parse(text, &profile).map(|l| l.op) {
             Ok(Op::Command(i)) if i.command == 10 && i.type_ == 67 => (100, self.quirks.gp67),
             Ok(Op::Command(i)) if i.command == 9 && i.type_ == 67 => {
                 self.quirks.gp67 = i.value;
                 (100, 0)
+            }
+            Ok(Op::Command(i)) if i.command == 6 && i.type_ == 1 && first_gap && self.holding => {
+                (100, 7777)
             }
             Ok(Op::Command(i)) if i.command == 6 && i.type_ == 1 => (100, self.position),
             Ok(Op::Command(i)) if i.command == 5 && i.type_ == 1 => {
@@ -147,8 +187,10 @@ impl FakeModule {
             }
             Ok(Op::Command(i)) if i.command == 6 && i.type_ == 200 => (3, 0),
             Ok(Op::Ascii(crate::protocol::tmcl::AsciiWord::Bin)) => {
-                self.emit(b"BA 100 0");
-                self.emit(self.quirks.reply_ending);
+                if !self.quirks.bin_silent {
+                    self.emit(b"BA 100 0");
+                    self.emit(self.quirks.reply_ending);
+                }
                 self.quirks.ascii = false;
                 return;
             }
@@ -179,6 +221,9 @@ impl Link for FakeLink {
     fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
         let mut wire = self.module.wire.lock().unwrap();
         if wire.out.is_empty() {
+            if deadline > Instant::now() {
+                wire.waits += 1;
+            }
             drop(wire);
             // Nothing will ever arrive: the wait a real link would do until the deadline.
             std::thread::sleep(deadline.saturating_duration_since(Instant::now()));
@@ -217,6 +262,9 @@ fn open_with(
         frames: FrameDecoder::new(),
         line: Vec::new(),
         position: -5000,
+        gaps: 0,
+        held: Vec::new(),
+        holding: false,
     };
     let link = Box::new(FakeLink { module });
     (
@@ -534,4 +582,168 @@ fn stop_motion_sends_mst_to_modules_that_were_moved() {
     );
     assert!(sent_text(&wire).ends_with("AMST 0\r"));
     assert!(!s.may_be_moving());
+}
+
+fn waits(wire: &Arc<Mutex<Wire>>) -> usize {
+    wire.lock().unwrap().waits
+}
+
+#[test]
+fn with_an_echo_an_identical_request_after_a_failure_is_spelled_so_its_echo_is_its_own() {
+    for gp67 in [0x00, 0x10] {
+        let (mut s, wire) = open(Quirks {
+            gp67,
+            late_first_gap: true,
+            ..Quirks::default()
+        });
+        let e = s.execute("GAP 1, 0").unwrap_err();
+        assert!(matches!(e, SessionError::Timeout { .. }), "{e}");
+        // The first request's echo and answer (7777) come just before the second's.
+        let x = s.execute("GAP 1, 0").unwrap();
+        assert_eq!(x.value(), Some(-5000), "gp67={gp67:#x}");
+        assert_eq!(x.sent, "AGAP 1, 0", "the canonical line is reported");
+        assert!(
+            sent_text(&wire).ends_with("A GAP 1, 0\r"),
+            "{}",
+            sent_text(&wire)
+        );
+        assert!(
+            s.take_notices().iter().all(|n| !n.contains("ignored")),
+            "late answers of a request given up are expected, not noise"
+        );
+        // Every late answer has come: the module is trusted again without a wait.
+        let before = waits(&wire);
+        let x = s.execute("GAP 1, 0").unwrap();
+        assert_eq!(x.value(), Some(-5000));
+        assert!(
+            sent_text(&wire).ends_with("\rAGAP 1, 0\r"),
+            "back to the plain line"
+        );
+        assert_eq!(waits(&wire), before, "gp67={gp67:#x}");
+    }
+}
+
+#[test]
+fn without_an_echo_a_reply_later_than_the_quiet_wait_is_the_one_limit() {
+    let (mut s, wire) = open(Quirks {
+        gp67: 0x20,
+        ..Quirks::default()
+    });
+    // From now on the module answers each line only when the next one arrives.
+    wire.lock().unwrap().lagging = true;
+    assert!(s.execute("GAP 1, 0").is_err());
+    let x = s.execute("GAP 1, 0").unwrap();
+    assert_eq!(
+        x.value(),
+        Some(7777),
+        "nothing tells the late reply from the answer"
+    );
+}
+
+#[test]
+fn after_a_timeout_the_next_request_waits_for_a_quiet_line_and_a_stop_does_not() {
+    let (mut s, wire) = open(Quirks {
+        gp67: 0x20,
+        first_gap_reply: Some(b""),
+        ..Quirks::default()
+    });
+    assert!(s.execute("GAP 1, 0").is_err());
+    let before = waits(&wire);
+    let stops = s.stop_motors(1);
+    assert!(stops.iter().all(|(_, r)| r.is_ok()), "{stops:?}");
+    assert_eq!(waits(&wire), before, "MST went out at once");
+    s.execute("GAP 4, 0").unwrap();
+    assert!(
+        waits(&wire) > before,
+        "an ordinary request resynchronised first"
+    );
+}
+
+#[test]
+fn a_reply_cut_short_by_a_corrupted_byte_is_line_noise() {
+    for reply in [
+        &b"BA 100 -50\r00\r"[..],
+        b"BA 100 -5000\rBA 100 7\r",
+        b"BA 150 -5000\r",
+        b"BA 1\r00 -5000\r",
+    ] {
+        let (mut s, _) = open(Quirks {
+            first_gap_reply: Some(reply),
+            ..Quirks::default()
+        });
+        let e = s.execute("GAP 1, 0").unwrap_err();
+        assert!(e.to_string().starts_with("line noise"), "{e}");
+        assert_eq!(crate::exit::ExitStatus::exit(&e), crate::exit::Exit::Link);
+        assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    }
+}
+
+#[test]
+fn no_cr_follows_a_bin_that_got_no_answer() {
+    let (mut s, wire) = open(Quirks {
+        bin_silent: true,
+        ..Quirks::default()
+    });
+    let x = s.execute("BIN").unwrap();
+    assert_eq!(x.answer, Answer::Nothing);
+    assert!(sent_text(&wire).ends_with("ABIN\r"), "{}", sent_text(&wire));
+    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    let frame = CommandFrame {
+        address: 1,
+        instruction: Instruction::new(6, 1, 0, 0),
+    }
+    .encode();
+    let sent = wire.lock().unwrap().sent.clone();
+    assert!(sent.ends_with(&[b"ABIN\r".as_slice(), &frame].concat()));
+}
+
+#[test]
+fn ctrl_c_stops_the_target_and_what_was_moved_once_each() {
+    let (s, wire) = open(Quirks::default());
+    let mut session = crate::session::Session::Tmcl(s);
+    session.execute("ROR 0, 1000").unwrap();
+    let report = session.stop_target();
+    assert_eq!(
+        report,
+        ["interrupted: stopped motor 0 of module A (MST)".to_string()]
+    );
+    assert_eq!(sent_text(&wire).matches("MST").count(), 1);
+}
+
+#[test]
+fn the_late_reply_of_an_echoed_request_is_known_for_what_it_is() {
+    let (mut s, wire) = open(Quirks {
+        first_gap_reply: Some(b""),
+        ..Quirks::default()
+    });
+    s.take_notices();
+    // Echoed at once, answered only after the timeout: between exchanges…
+    let e = s.execute("GAP 1, 0").unwrap_err();
+    assert!(e.to_string().contains("echoed but not answered"), "{e}");
+    wire.lock().unwrap().out.extend(b"BA 100 7777\r");
+    let before = waits(&wire);
+    assert_eq!(s.execute("GAP 4, 0").unwrap().value(), Some(0));
+    assert_eq!(waits(&wire), before, "nothing more to wait for");
+    // … or while the next request waits for its echo.
+    let (mut s, _) = open(Quirks {
+        first_gap_reply: Some(b""),
+        stale_before_echo: b"BA 100 7777\r",
+        ..Quirks::default()
+    });
+    assert!(s.execute("GAP 1, 0").is_err());
+    s.take_notices();
+    assert_eq!(s.execute("GAP 4, 0").unwrap().value(), Some(0));
+    assert_eq!(
+        s.take_notices(),
+        Vec::<String>::new(),
+        "the late answer is expected, not noise"
+    );
+    // With nothing unanswered, the same bytes are a stray reply again.
+    assert_eq!(s.execute("GAP 4, 0").unwrap().value(), Some(0));
+    assert!(
+        s.take_notices()
+            .iter()
+            .any(|n| n.contains("before the echo")),
+        "reported"
+    );
 }

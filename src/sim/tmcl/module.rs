@@ -2,14 +2,12 @@
 //! mode, and the replies to both. Lines are read with tmclsh's own command grammar, so client
 //! and simulator agree on one syntax.
 
-use std::io::Write as _;
-
 use crate::protocol::tmcl::frame::{ChecksumError, encode_version_string, hex};
 use crate::protocol::tmcl::line::{address_char, resolve};
 use crate::protocol::tmcl::syntax::parse_line;
 use crate::protocol::tmcl::{
     AsciiReply, AsciiWord, CommandFrame, FrameDecoder, InputError, Instruction, Op, ReplyFrame,
-    Status, format_instruction,
+    Status, format_instruction, host_char,
 };
 
 use super::ascii::{Context, Echo, LineInput};
@@ -238,15 +236,16 @@ impl Module {
     }
 
     fn send_line(&mut self, status: Status, value: i32, sink: &mut Sink) {
+        // The host and module characters follow the manual's rule for address characters,
+        // 0x40 + address, whatever the host address (GP 76, 0..255) is.
         let reply = AsciiReply {
-            host: address_char(self.machine.host()).unwrap_or('@'),
-            module: address_char(self.machine.address()).unwrap_or('@'),
+            host: host_char(self.machine.host()),
+            module: host_char(self.machine.address()),
             status,
             value,
         };
         sink.log(|| format!("module {} -> {:?}", self.machine.slot, reply.format()));
-        // Straight into the output: writing to a Vec cannot fail.
-        let _ = write!(sink.out, "{reply}");
+        sink.out.extend_from_slice(&reply.to_bytes());
         sink.out.extend_from_slice(sink.quirks.reply_end.bytes());
     }
 
