@@ -6,14 +6,14 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Duration;
 
+use crate::dialect::Dialect;
+use crate::dialect::smd4::protocol::PrefixStyle;
+use crate::dialect::smd4::session::{Smd4Options, Smd4Session};
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::session::TmclSession;
 use crate::exit::Exit;
 use crate::exit::ExitStatus;
 use crate::link::{Link, SerialLink, TcpLink};
-use crate::profile::Profile;
-use crate::protocol::Dialect;
-use crate::protocol::smd4::PrefixStyle;
-use crate::session::smd4::{Smd4Options, Smd4Session};
-use crate::session::tmcl::TmclSession;
 use crate::session::transcript::Header;
 use crate::session::{Session, SessionOptions, Transcript};
 

@@ -7,13 +7,13 @@ use std::sync::Arc;
 
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::asm;
+use crate::dialect::tmcl::asm;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::program;
+use crate::dialect::tmcl::protocol::Instruction;
+use crate::dialect::tmcl::session::TmclSession;
 use crate::exit::{Exit, ExitStatus};
-use crate::profile::Profile;
-use crate::program;
-use crate::protocol::tmcl::Instruction;
 use crate::session::interrupt;
-use crate::session::tmcl::TmclSession;
 
 use super::Failure;
 use super::connection::ModuleArgs;

@@ -26,8 +26,8 @@ use std::sync::Arc;
 
 use clap::{FromArgMatches, Parser, Subcommand};
 
+use crate::dialect::tmcl::profile::Profile;
 use crate::exit::Exit;
-use crate::profile::Profile;
 
 /// Terminal and scripting shell for TMCL and SMD4 stepper-motor modules.
 #[derive(Debug, Parser)]

@@ -3,9 +3,9 @@
 
 use std::io::{self, Write};
 
-use crate::profile::{Param, ParamKind, Profile};
-use crate::protocol::Dialect;
-use crate::protocol::smd4::{Smd4Spec, hints};
+use crate::dialect::Dialect;
+use crate::dialect::smd4::protocol::{Smd4Spec, hints};
+use crate::dialect::tmcl::profile::{Param, ParamKind, Profile};
 
 use super::connection::DialectArgs;
 

@@ -8,7 +8,7 @@ use clap::error::ErrorKind;
 use clap::parser::ValueSource;
 use clap::{ArgMatches, Args, Command};
 
-use crate::protocol::Dialect;
+use crate::dialect::Dialect;
 
 use super::connection::ModuleArgs;
 use super::position::{flag, leaf_matches, subcommand_mut, subcommand_path};

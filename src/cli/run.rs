@@ -4,8 +4,8 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Duration;
 
+use crate::dialect::tmcl::profile::Profile;
 use crate::exit::Exit;
-use crate::profile::Profile;
 use crate::script::limits::DEFAULT_MAX_MEMORY_MIB;
 use crate::script::{self, Limits};
 use crate::session::interrupt;

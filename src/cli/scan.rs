@@ -5,13 +5,14 @@
 use std::io::Write;
 use std::sync::Arc;
 
-use crate::commission::{scan, smd4_scan};
+use crate::dialect::Dialect;
+use crate::dialect::smd4::scan as smd4_scan;
+use crate::dialect::smd4::session::Smd4Session;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::scan;
+use crate::dialect::tmcl::session::TmclSession;
 use crate::exit::{Exit, ExitStatus};
-use crate::profile::Profile;
-use crate::protocol::Dialect;
 use crate::session::interrupt;
-use crate::session::smd4::Smd4Session;
-use crate::session::tmcl::TmclSession;
 
 use super::Failure;
 use super::connection::{Audience, ModuleArgs};

@@ -4,8 +4,8 @@
 use std::io::IsTerminal;
 use std::sync::Arc;
 
+use crate::dialect::tmcl::profile::Profile;
 use crate::exit::Exit;
-use crate::profile::Profile;
 use crate::session::Session;
 use crate::session::interrupt;
 use crate::shell::Shell;

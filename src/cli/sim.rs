@@ -6,16 +6,16 @@ use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
+use crate::clock::{Clock, ManualClock, SystemClock};
+use crate::dialect::Dialect;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::sim::{Backspace, Bus, BusOptions, FileStore, LineEnd, Quirks, Switches};
 use crate::exit::Exit;
-use crate::profile::Profile;
-use crate::protocol::Dialect;
 use crate::sim::Device;
-use crate::sim::clock::{Clock, ManualClock, SystemClock};
 use crate::sim::console::{self, Answer, Console};
 use crate::sim::fault::{Faults, Faulty};
 use crate::sim::inprocess::SharedDevice;
 use crate::sim::pacing::Paced;
-use crate::sim::tmcl::{Backspace, Bus, BusOptions, FileStore, LineEnd, Quirks, Switches};
 
 use super::Failure;
 use super::sim_smd4::Smd4SimArgs;
@@ -184,10 +184,10 @@ fn device(args: &SimArgs, profile: Arc<Profile>) -> Result<Box<dyn Device>, Fail
     let store = match &args.state {
         Some(path) => Some(Box::new(
             FileStore::open(path).map_err(|e| Failure::new(Exit::Refused, e.to_string()))?,
-        ) as Box<dyn crate::sim::tmcl::StateStore>),
+        ) as Box<dyn crate::dialect::tmcl::sim::StateStore>),
         None => None,
     };
-    let log: Option<crate::sim::tmcl::LogSink> = args
+    let log: Option<crate::dialect::tmcl::sim::LogSink> = args
         .verbose
         .then(|| Box::new(|line: &str| eprintln!("sim {line}")) as _);
     let options = BusOptions {

@@ -3,9 +3,9 @@
 
 use std::path::Path;
 
-use crate::protocol::smd4::{ErrorSpelling, FlagCase, FloatStyle, PrefixStyle};
+use crate::dialect::smd4::protocol::{ErrorSpelling, FlagCase, FloatStyle, PrefixStyle};
+use crate::dialect::smd4::sim::{PositionFormat, PrefixAcceptance, Smd4Options, Smd4Sim};
 use crate::sim::Device;
-use crate::sim::smd4::{PositionFormat, PrefixAcceptance, Smd4Options, Smd4Sim};
 
 /// Quirk switches of the simulated SMD4.
 #[derive(Debug, Clone, clap::Args)]

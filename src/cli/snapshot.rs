@@ -9,11 +9,11 @@ use std::sync::Arc;
 use crate::commission::ParamDevice;
 use crate::commission::actions::{self, RestoreOptions};
 use crate::commission::shell::param_device;
-use crate::commission::tmcl::profile_params;
+use crate::dialect::Dialect;
+use crate::dialect::smd4::protocol::Smd4Spec;
+use crate::dialect::tmcl::commission::profile_params;
+use crate::dialect::tmcl::profile::Profile;
 use crate::exit::{Exit, ExitStatus};
-use crate::profile::Profile;
-use crate::protocol::Dialect;
-use crate::protocol::smd4::Smd4Spec;
 use crate::session::{SessionError, interrupt};
 
 use super::Failure;
@@ -94,7 +94,7 @@ pub fn run(
         } => {
             let params = match module.protocol() {
                 Dialect::Tmcl => profile_params(profile),
-                Dialect::Smd4 => crate::commission::smd4::spec_params(Smd4Spec::builtin()),
+                Dialect::Smd4 => crate::dialect::smd4::commission::spec_params(Smd4Spec::builtin()),
             };
             finish(actions::diff_files(&file, &other, &params, out).map(|_| ()))
         }

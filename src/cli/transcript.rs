@@ -6,9 +6,11 @@ use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 
 use crate::commission::replay;
+use crate::dialect::Dialect;
+use crate::dialect::smd4::replay as smd4_replay;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::replay as tmcl_replay;
 use crate::exit::Exit;
-use crate::profile::Profile;
-use crate::protocol::Dialect;
 
 use super::Failure;
 
@@ -52,15 +54,15 @@ pub fn run(args: TranscriptArgs, profile: &Profile, out: &mut dyn Write) -> Resu
     );
     let script = match kind.dialect {
         Dialect::Smd4 => {
-            let spec = crate::protocol::smd4::Smd4Spec::builtin();
-            let steps = replay::smd4::steps(&entries, spec);
+            let spec = crate::dialect::smd4::protocol::Smd4Spec::builtin();
+            let steps = smd4_replay::steps(&entries, spec);
             if !steps
                 .iter()
-                .any(|s| matches!(s, replay::smd4::Step::Exchange { .. }))
+                .any(|s| matches!(s, smd4_replay::Step::Exchange { .. }))
             {
                 return Err(refused(nothing_to_replay("SMD4")));
             }
-            replay::smd4::to_rhai(&steps, spec, &name, wait)
+            smd4_replay::to_rhai(&steps, spec, &name, wait)
         }
         Dialect::Tmcl => {
             if let Some(header) = &kind.header {
@@ -74,11 +76,11 @@ pub fn run(args: TranscriptArgs, profile: &Profile, out: &mut dyn Write) -> Resu
                     )));
                 }
             }
-            let steps = replay::steps(&entries, profile);
-            if !replay::replays_something(&steps) {
+            let steps = tmcl_replay::steps(&entries, profile);
+            if !tmcl_replay::replays_something(&steps) {
                 return Err(refused(nothing_to_replay("TMCL")));
             }
-            replay::to_rhai(&steps, profile, &name, wait)
+            tmcl_replay::to_rhai(&steps, profile, &name, wait)
         }
     };
     let written = match &output {

@@ -2,7 +2,7 @@
 //! write and store them. Snapshots, watches and recordings only use this trait, so a dialect that
 //! implements it (TMCL in [`super::tmcl`], SMD4 in [`super::smd4`]) gets them all.
 
-use crate::profile::{Access, SnapshotRole};
+use crate::dialect::tmcl::profile::{Access, SnapshotRole};
 use crate::session::SessionError;
 
 use super::value::{ParamValue, Reading, Tolerance};

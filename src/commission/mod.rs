@@ -16,12 +16,8 @@ pub mod progress;
 pub mod record;
 pub mod replay;
 pub mod restore;
-pub mod scan;
 pub mod shell;
-pub mod smd4;
-pub mod smd4_scan;
 pub mod snapshot;
-pub mod tmcl;
 pub mod value;
 pub mod watch;
 

@@ -7,16 +7,16 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
+use crate::clock::SystemClock;
 use crate::session::{Session, SessionError};
-use crate::sim::clock::SystemClock;
 
 use super::actions::{self, RestoreOptions};
 use super::device::{ParamDevice, ParamRef};
 use super::plot;
 use super::record::{self, CsvFile, Recording};
-use super::scan;
-use super::smd4_scan;
 use super::watch::{self, Key, Screen, TerminalScreen};
+use crate::dialect::smd4::scan as smd4_scan;
+use crate::dialect::tmcl::scan;
 
 /// What the helpers remember between commands.
 #[derive(Debug, Default)]
@@ -122,7 +122,7 @@ fn snapshot(
 }
 
 fn scan_bus(
-    session: &mut crate::session::tmcl::TmclSession,
+    session: &mut crate::dialect::tmcl::session::TmclSession,
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
@@ -146,7 +146,7 @@ fn scan_bus(
 }
 
 fn scan_drives(
-    session: &mut crate::session::smd4::Smd4Session,
+    session: &mut crate::dialect::smd4::session::Smd4Session,
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
@@ -158,7 +158,7 @@ fn scan_drives(
             .into_iter()
             .map(u32::from)
             .collect(),
-        None => (1..=crate::protocol::smd4::MAX_ADDRESS).collect(),
+        None => (1..=crate::dialect::smd4::protocol::MAX_ADDRESS).collect(),
     };
     let per_reply = match words.get(1) {
         Some(t) => record::parse_duration(t).map_err(|e| usage(&format!("{USAGE}; {e}")))?,

@@ -2,10 +2,10 @@
 //! address character), keywords, axis parameter names for SAP/GAP/STAP/RSAP, global parameter
 //! names with their banks for SGP/GGP/STGP/RSGP, helper commands and their arguments.
 
-use crate::profile::{Param, Profile};
-use crate::protocol::Dialect;
-use crate::protocol::smd4::Smd4Spec;
-use crate::protocol::tmcl::commands::{CommandSpec, OperandKind};
+use crate::dialect::Dialect;
+use crate::dialect::smd4::protocol::Smd4Spec;
+use crate::dialect::tmcl::profile::{Param, Profile};
+use crate::dialect::tmcl::protocol::commands::{CommandSpec, OperandKind};
 use crate::shell::helpers::{self, ArgKind};
 
 /// A completion: what is shown in the list, and what replaces the word.
@@ -63,7 +63,7 @@ pub fn complete(line: &str, pos: usize, grammar: Grammar) -> Completion {
     match grammar {
         Grammar::Tmcl(profile) => complete_tmcl(before, start, word, profile),
         Grammar::Smd4(spec) => {
-            let found = crate::protocol::smd4::complete(&spec.commands, before);
+            let found = crate::dialect::smd4::protocol::complete(&spec.commands, before);
             let candidates = found
                 .candidates
                 .into_iter()

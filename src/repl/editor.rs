@@ -11,15 +11,15 @@ use rustyline::hint::Hinter;
 use rustyline::validate::Validator;
 use rustyline::{Context, Helper};
 
-use crate::profile::Profile;
-use crate::protocol::Dialect;
-use crate::protocol::smd4::{self, Request, Smd4Spec};
-use crate::protocol::tmcl::line;
-use crate::protocol::tmcl::validate::{Mode, validate};
+use crate::dialect::Dialect;
+use crate::dialect::smd4::protocol::{self as smd4, Request, Smd4Spec};
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::protocol::line;
+use crate::dialect::tmcl::protocol::validate::{Mode, validate};
 use crate::shell::helpers;
 
 use super::complete::{Completion, Grammar, complete};
-use super::hint::hint;
+use crate::dialect::tmcl::hint::hint;
 
 /// What the REPL's lines are checked against.
 pub enum Tables {

@@ -5,7 +5,6 @@
 
 pub mod complete;
 pub mod editor;
-pub mod hint;
 
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -16,10 +15,10 @@ use rustyline::error::ReadlineError;
 use rustyline::history::DefaultHistory;
 use rustyline::{CompletionType, Config, Editor};
 
+use crate::dialect::tmcl::protocol::validate::Mode;
+use crate::dialect::tmcl::session::WireMode;
 use crate::escape::escape_control;
 use crate::exit::Exit;
-use crate::protocol::tmcl::validate::Mode;
-use crate::session::tmcl::WireMode;
 use crate::session::{Session, SessionError, interrupt};
 use crate::shell::render::decode_reply;
 use crate::shell::{Flow, Shell};

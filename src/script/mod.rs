@@ -16,16 +16,15 @@ macro_rules! volatile {
             .register_into_engine($engine, $f)
     };
 }
+pub(crate) use volatile;
 
 mod commission;
-mod common;
+pub(crate) mod common;
 pub mod failure;
 pub mod limits;
 pub mod memory;
 pub mod sandbox;
-mod smd4;
-mod tmcl;
-mod waiting;
+pub(crate) mod waiting;
 
 use std::cell::RefCell;
 use std::path::Path;
@@ -35,12 +34,12 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use rhai::{Dynamic, Engine, EvalAltResult, OptimizationLevel, Position, Scope};
 
+use crate::dialect::smd4::session::Smd4Session;
+use crate::dialect::tmcl::session::TmclSession;
 use crate::escape::escape_control;
 use crate::exit::Exit;
 use crate::session::Session;
 use crate::session::interrupt;
-use crate::session::smd4::Smd4Session;
-use crate::session::tmcl::TmclSession;
 
 pub use failure::ScriptFailure;
 
@@ -112,14 +111,14 @@ fn run_in(
     match session {
         Session::Tmcl(s) => {
             let (s, result) = script.run(s, TmclSession::annotate, |engine, s, files| {
-                tmcl::register(engine, s, files);
+                crate::dialect::tmcl::script::register(engine, s, files);
                 commission::register(engine, s, files);
             });
             (Session::Tmcl(s), result)
         }
         Session::Smd4(s) => {
             let (s, result) = script.run(s, Smd4Session::annotate, |engine, s, files| {
-                smd4::register(engine, s);
+                crate::dialect::smd4::script::register(engine, s);
                 commission::register(engine, s, files);
             });
             (Session::Smd4(s), result)

@@ -2,12 +2,12 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
+use crate::clock::ManualClock;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::sim::{Bus, BusOptions};
 use crate::link::{Link, LinkError};
-use crate::profile::Profile;
 use crate::session::SessionOptions;
-use crate::sim::clock::ManualClock;
 use crate::sim::inprocess::SimLink;
-use crate::sim::tmcl::{Bus, BusOptions};
 
 use super::*;
 
@@ -50,7 +50,7 @@ fn device_functions_never_run_while_compiling_even_at_full_optimisation() {
     let shared = Rc::new(RefCell::new(session));
     let mut engine = base_engine(&Limits::default(), None, Arc::default());
     let sandbox = Rc::new(Sandbox::new([std::path::Path::new(".")], false));
-    tmcl::register(&mut engine, &shared, &sandbox);
+    crate::dialect::tmcl::script::register(&mut engine, &shared, &sandbox);
     engine.set_optimization_level(OptimizationLevel::Full);
     let before = sent.load(Ordering::SeqCst);
     let ast = engine

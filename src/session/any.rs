@@ -1,11 +1,11 @@
 //! The dialect seam: a session of either dialect, with what the faces (REPL, `-c`/stdin, scripts)
 //! need from it regardless of dialect. Dialect-specific faces match on the variant.
 
-use crate::protocol::Dialect;
+use crate::dialect::Dialect;
 
-use super::smd4::{Smd4Exchange, Smd4Session};
-use super::tmcl::{Answer, Exchange, TmclSession};
 use super::{SessionError, Transcript};
+use crate::dialect::smd4::session::{Smd4Exchange, Smd4Session};
+use crate::dialect::tmcl::session::{Answer, Exchange, TmclSession};
 
 /// An open session.
 pub enum Session {

@@ -6,8 +6,8 @@
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::interrupt;
-use super::smd4::Smd4Session;
-use super::tmcl::TmclSession;
+use crate::dialect::smd4::session::Smd4Session;
+use crate::dialect::tmcl::session::TmclSession;
 
 impl Drop for TmclSession {
     fn drop(&mut self) {

@@ -5,18 +5,16 @@
 //! Rhai scripts all go through the same session.
 
 mod any;
-mod guard;
+pub(crate) mod guard;
 pub mod interrupt;
-mod rx;
-pub mod smd4;
-pub mod tmcl;
+pub(crate) mod rx;
 pub mod transcript;
-mod wire;
+pub(crate) mod wire;
 
 use std::time::Duration;
 
+use crate::dialect::tmcl::protocol::InputError;
 use crate::exit::{Exit, ExitStatus};
-use crate::protocol::tmcl::InputError;
 
 pub use any::{Reply, Session};
 pub use transcript::Transcript;

@@ -209,8 +209,8 @@ pub fn unescape(quoted: &str) -> Option<Vec<u8>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::profile::Profile;
-    use crate::protocol::Dialect;
+    use crate::dialect::Dialect;
+    use crate::dialect::tmcl::profile::Profile;
 
     #[cfg(target_os = "linux")]
     #[test]

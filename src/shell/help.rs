@@ -3,8 +3,8 @@
 
 use std::io::{self, Write};
 
-use crate::protocol::Dialect;
-use crate::protocol::smd4::{ADDRESSING_HELP, hints};
+use crate::dialect::Dialect;
+use crate::dialect::smd4::protocol::{ADDRESSING_HELP, hints};
 use crate::session::Session;
 
 use super::helpers;

@@ -1,7 +1,7 @@
 //! Helper commands: lines starting with `:`, shared by the REPL and non-interactive use. The table
 //! drives dispatch, `:help` and completion; each helper says which dialects have it.
 
-use crate::protocol::Dialect;
+use crate::dialect::Dialect;
 
 /// What a helper's argument is, for completion.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

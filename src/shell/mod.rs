@@ -5,17 +5,15 @@ pub mod batch;
 mod help;
 pub mod helpers;
 pub mod render;
-mod smd4_helpers;
-mod tmcl_helpers;
 
 use std::io::{self, Write};
 use std::path::Path;
 
+use crate::dialect::smd4::session::drive_name;
+use crate::dialect::tmcl::protocol::line::address_char;
+use crate::dialect::tmcl::session::WireMode;
 use crate::exit::{Exit, ExitStatus};
-use crate::protocol::tmcl::line::address_char;
 use crate::script::{self, Limits};
-use crate::session::smd4::drive_name;
-use crate::session::tmcl::WireMode;
 use crate::session::transcript::Header;
 use crate::session::{Session, SessionError, Transcript, interrupt};
 
@@ -126,8 +124,12 @@ impl Shell {
             }
             "quit" => return Ok(Flow::Quit),
             name => match self.session() {
-                Session::Tmcl(session) => tmcl_helpers::run(session, helper, arg, out)?,
-                Session::Smd4(session) => smd4_helpers::run(session, name, arg, out)?,
+                Session::Tmcl(session) => {
+                    crate::dialect::tmcl::helpers::run(session, helper, arg, out)?
+                }
+                Session::Smd4(session) => {
+                    crate::dialect::smd4::helpers::run(session, name, arg, out)?
+                }
             },
         }
         Ok(Flow::Continue)

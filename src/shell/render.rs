@@ -1,12 +1,12 @@
 //! Replies decoded for people: status meaning, value, parameter name and unit.
 
-use crate::profile::Profile;
-use crate::protocol::smd4::commands::trim_number;
-use crate::protocol::smd4::{Smd4Spec, Value};
-use crate::protocol::tmcl::commands::{Field, OperandKind, ParamUse};
-use crate::protocol::tmcl::line::Op;
-use crate::session::smd4::Smd4Exchange;
-use crate::session::tmcl::{Answer, Exchange};
+use crate::dialect::smd4::protocol::commands::trim_number;
+use crate::dialect::smd4::protocol::{Smd4Spec, Value};
+use crate::dialect::smd4::session::Smd4Exchange;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::protocol::commands::{Field, OperandKind, ParamUse};
+use crate::dialect::tmcl::protocol::line::Op;
+use crate::dialect::tmcl::session::{Answer, Exchange};
 use crate::session::{Reply, Session};
 
 /// How a reply reads to a person, and whether it is good news.
@@ -169,7 +169,7 @@ pub fn application_status(value: i32) -> &'static str {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::protocol::tmcl::{Instruction, Status};
+    use crate::dialect::tmcl::protocol::{Instruction, Status};
 
     fn exchange(i: Instruction, status: Status, value: i32) -> Exchange {
         Exchange {

@@ -2,14 +2,14 @@
 
 use std::sync::Arc;
 
+use crate::dialect::Dialect;
+use crate::dialect::tmcl::profile::Profile;
 use crate::link::Link;
-use crate::profile::Profile;
-use crate::protocol::Dialect;
 
-use super::clock::SystemClock;
 use super::inprocess::SimLink;
-use super::smd4::{Smd4Options, Smd4Sim};
-use super::tmcl::{Bus, BusOptions};
+use crate::clock::SystemClock;
+use crate::dialect::smd4::sim::{Smd4Options, Smd4Sim};
+use crate::dialect::tmcl::sim::{Bus, BusOptions};
 
 /// A link to a freshly powered-up simulated module (address 1) of `profile`, or a simulated SMD4,
 /// in-process, running on the wall clock so motion takes real time.

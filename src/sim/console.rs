@@ -5,8 +5,8 @@
 use std::sync::Arc;
 use std::time::Duration;
 
-use super::clock::{Clock, ManualClock};
 use super::inprocess::SharedDevice;
+use crate::clock::{Clock, ManualClock};
 
 /// The console commands, for `--help` and `help`.
 pub const HELP: &str = "\
@@ -168,7 +168,7 @@ mod tests {
     use std::sync::Mutex;
 
     use super::*;
-    use crate::sim::tmcl::Bus;
+    use crate::dialect::tmcl::sim::Bus;
 
     fn console(manual: bool) -> (Console, Arc<ManualClock>) {
         let clock = Arc::new(ManualClock::new());

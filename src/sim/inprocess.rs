@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 use crate::link::{Link, LinkError};
 
 use super::Device;
-use super::clock::Clock;
+use crate::clock::Clock;
 
 /// A device shared between a link and whoever inspects it (tests, the console).
 pub type SharedDevice = Arc<Mutex<dyn Device>>;

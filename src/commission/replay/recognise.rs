@@ -1,11 +1,11 @@
 //! What a transcript is of: the dialect and module its headers name, checked alike across the
 //! sessions appended to one file; a file from before headers gets a reasoned guess and a notice.
 
-use crate::protocol::Dialect;
+use crate::dialect::Dialect;
 use crate::session::transcript::{Header, dialect_name};
 
 use super::parse::{Entry, Record};
-use super::smd4;
+use crate::dialect::smd4::replay as smd4;
 
 /// What a transcript is of, as read from it.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -73,7 +73,7 @@ fn helpers_and_their_arguments() {
 
 #[test]
 fn smd4_mnemonics_complete_level_by_level() {
-    let spec = crate::protocol::smd4::Smd4Spec::builtin();
+    let spec = crate::dialect::smd4::protocol::Smd4Spec::builtin();
     let Completion::Words { candidates, .. } = complete("MOTOR:VM", 8, Grammar::Smd4(spec)) else {
         panic!()
     };
@@ -109,13 +109,13 @@ proptest::proptest! {
         while !line.is_char_boundary(pos) {
             pos -= 1;
         }
-        for grammar in [Grammar::Tmcl(&profile), Grammar::Smd4(crate::protocol::smd4::Smd4Spec::builtin())] {
+        for grammar in [Grammar::Tmcl(&profile), Grammar::Smd4(crate::dialect::smd4::protocol::Smd4Spec::builtin())] {
             let _ = complete(&line, pos, grammar);
         }
-        let _ = crate::repl::hint::hint(&line[..pos], &profile);
+        let _ = crate::dialect::tmcl::hint::hint(&line[..pos], &profile);
         for tables in [
             crate::repl::editor::Tables::Tmcl(profile.clone()),
-            crate::repl::editor::Tables::Smd4(crate::protocol::smd4::Smd4Spec::builtin()),
+            crate::repl::editor::Tables::Smd4(crate::dialect::smd4::protocol::Smd4Spec::builtin()),
         ] {
             let _ = crate::repl::editor::ReplHelper::new(tables, true).is_invalid(&line);
         }

@@ -2,8 +2,8 @@
 //! (dialect, module type, profile, tmclsh version), as `key "value"` fields that later versions
 //! may add to.
 
-use crate::profile::Profile;
-use crate::protocol::Dialect;
+use crate::dialect::Dialect;
+use crate::dialect::tmcl::profile::Profile;
 
 use super::{escape_into, unescape};
 

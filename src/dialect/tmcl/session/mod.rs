@@ -1,0 +1,532 @@
+//! The TMCL session: ASCII mode by default (manual §6.6), binary direct mode after `:bin`.
+//!
+//! On open the target module is put into ASCII mode with the binary command 139 and its echo
+//! behaviour is learnt from global parameter 67; other modules on the bus are entered the first
+//! time a line addresses them. On close every module is put back in the mode it was found in.
+
+mod ascii;
+mod binary;
+mod mode;
+mod probe;
+mod stop;
+mod unanswered;
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::sync::Arc;
+
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::protocol::commands::AsciiWord;
+use crate::dialect::tmcl::protocol::line::{
+    self, Line, Op, address_char, format_instruction, format_line,
+};
+use crate::dialect::tmcl::protocol::syntax::parse_line;
+use crate::dialect::tmcl::protocol::validate::{self, Mode};
+use crate::dialect::tmcl::protocol::{Instruction, Status};
+use crate::link::Link;
+
+use crate::session::transcript::Transcript;
+use crate::session::wire::{Peer, Wire};
+use crate::session::{SessionError, SessionOptions};
+
+pub use mode::{Echo, WireMode};
+
+use unanswered::{Unanswered, harmless};
+
+/// What a module answered.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Answer {
+    /// A status and value (ASCII reply line or binary reply frame).
+    Reply {
+        /// Outcome.
+        status: Status,
+        /// Returned value.
+        value: i32,
+    },
+    /// The version string of command 136 type 0.
+    Version(String),
+    /// No reply is expected (137 factory reset, BIN without reply).
+    Nothing,
+}
+
+/// One request and its answer.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Exchange {
+    /// The module addressed.
+    pub module: u8,
+    /// The line sent, in canonical form (`AGAP 1, 0`; binary: `GAP 1, 0`).
+    pub sent: String,
+    /// What was sent, when the line resolved.
+    pub op: Option<Op>,
+    /// The answer.
+    pub answer: Answer,
+    /// The reply as the module sent it, without echo and line ending (`BA 100 -5000`).
+    pub raw: String,
+}
+
+impl Exchange {
+    /// Whether the module reported success (or nothing was expected).
+    pub fn ok(&self) -> bool {
+        match self.answer {
+            Answer::Reply { status, .. } => status.is_success(),
+            _ => true,
+        }
+    }
+
+    /// The returned value of a status reply.
+    pub fn value(&self) -> Option<i32> {
+        match self.answer {
+            Answer::Reply { value, .. } => Some(value),
+            _ => None,
+        }
+    }
+
+    /// The status of a status reply.
+    pub fn status(&self) -> Option<Status> {
+        match self.answer {
+            Answer::Reply { status, .. } => Some(status),
+            _ => None,
+        }
+    }
+
+    /// The exchange, or a device error when the module answered with an error status.
+    pub fn checked(self) -> Result<Exchange, SessionError> {
+        match self.answer {
+            Answer::Reply { status, .. } if !status.is_success() => Err(SessionError::Device {
+                module: address_char(self.module).unwrap_or('?').to_string(),
+                sent: self.sent,
+                reason: format!("status {status}"),
+            }),
+            _ => Ok(self),
+        }
+    }
+}
+
+/// A TMCL conversation with the modules on one link.
+pub struct TmclSession {
+    wire: Wire,
+    profile: Arc<Profile>,
+    options: SessionOptions,
+    target: u8,
+    modules: BTreeMap<u8, mode::ModuleState>,
+    moved: BTreeSet<u8>,
+    running: BTreeSet<u8>,
+    /// Requests go out without waiting for a suspect line to go quiet (stops, mode restores).
+    urgent: bool,
+    /// ASCII lines that failed: their echo and reply may still come.
+    unanswered: Unanswered,
+}
+
+impl TmclSession {
+    /// Opens a session: enters ASCII mode on the target module (unless `options.enter` is off)
+    /// and learns its echo behaviour.
+    pub fn open(
+        link: Box<dyn Link>,
+        profile: Arc<Profile>,
+        options: SessionOptions,
+        transcript: Option<Transcript>,
+    ) -> Result<Self, SessionError> {
+        let mut session = Self::open_idle(link, profile, options, transcript)?;
+        session.contact(session.target)?;
+        Ok(session)
+    }
+
+    /// Opens a session without contacting any module yet (a bus scan finds them first).
+    pub fn open_idle(
+        link: Box<dyn Link>,
+        profile: Arc<Profile>,
+        options: SessionOptions,
+        transcript: Option<Transcript>,
+    ) -> Result<Self, SessionError> {
+        if address_char(options.module).is_none() {
+            return Err(SessionError::Usage(format!(
+                "module address {} has no ASCII address character; use 1..26",
+                options.module
+            )));
+        }
+        let mut session = TmclSession {
+            wire: Wire::new(link, transcript),
+            profile,
+            target: options.module,
+            options,
+            modules: BTreeMap::new(),
+            moved: BTreeSet::new(),
+            running: BTreeSet::new(),
+            urgent: false,
+            unanswered: Unanswered::default(),
+        };
+        let opened = format!("session opened on {}", session.wire.link.describe());
+        session.wire.note(&opened);
+        Ok(session)
+    }
+
+    /// The profile used for validation and decoding.
+    pub fn profile(&self) -> &Arc<Profile> {
+        &self.profile
+    }
+
+    /// What the link talks to.
+    pub fn describe(&self) -> String {
+        self.wire.link.describe()
+    }
+
+    /// The module lines without an address character go to.
+    pub fn target(&self) -> u8 {
+        self.target
+    }
+
+    /// The session's settings.
+    pub fn options(&self) -> &SessionOptions {
+        &self.options
+    }
+
+    /// Changes the target module, entering ASCII mode on it if it is new.
+    pub fn set_target(&mut self, module: u8) -> Result<(), SessionError> {
+        if address_char(module).is_none() {
+            return Err(SessionError::Usage(format!(
+                "module address {module} is not in 1..26"
+            )));
+        }
+        self.contact(module)?;
+        self.target = module;
+        Ok(())
+    }
+
+    /// The wire mode and echo of a module the session has talked to.
+    pub fn module_state(&self, module: u8) -> Option<(WireMode, Echo)> {
+        self.modules.get(&module).map(|m| (m.mode, m.echo))
+    }
+
+    /// Messages gathered since the last call: validator warnings, line noise, ignored replies.
+    pub fn take_notices(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.wire.notices)
+    }
+
+    /// Adds a message for the user, shown with the session's own notices (on stderr in
+    /// non-interactive use) at the next [`take_notices`](Self::take_notices).
+    pub fn notify(&mut self, text: String) {
+        self.wire.notices.push(text);
+    }
+
+    /// Starts or stops writing the transcript.
+    pub fn set_transcript(&mut self, transcript: Option<Transcript>) {
+        self.wire.transcript = transcript;
+    }
+
+    /// The transcript being written, if any.
+    pub fn transcript(&self) -> Option<&Transcript> {
+        self.wire.transcript.as_ref()
+    }
+
+    /// Parses, validates and sends one command line; returns the module's answer. An error
+    /// status is an `Ok` exchange whose [`Exchange::ok`] is false.
+    pub fn execute(&mut self, text: &str) -> Result<Exchange, SessionError> {
+        match line::parse(text, &self.profile) {
+            Ok(line) => {
+                let module = line.address.unwrap_or(self.target);
+                self.perform(module, line.op)
+            }
+            Err(error) if self.options.validate => Err(error.into()),
+            Err(error) => {
+                // --no-validate: send what parses, in canonical spelling.
+                let raw = parse_line(text, |w| self.profile.commands.is_word(w))
+                    .map_err(|_| SessionError::Refused(error.clone()))?;
+                let module = raw
+                    .address
+                    .and_then(line::address_of)
+                    .unwrap_or(self.target);
+                self.contact(module)?;
+                self.wire.notices.push(format!("not validated: {error}"));
+                let sent = line::format_raw(&raw, self.target);
+                self.ascii_request(module, &sent, None)
+            }
+        }
+    }
+
+    /// Sends one instruction to a module (the typed path of scripts).
+    pub fn request(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<Exchange, SessionError> {
+        self.perform(module, Op::Command(instruction))
+    }
+
+    fn perform(&mut self, module: u8, op: Op) -> Result<Exchange, SessionError> {
+        let wire = self.contact(module)?;
+        let mode = match wire {
+            WireMode::Ascii => Mode::Ascii,
+            WireMode::Binary => Mode::Binary,
+        };
+        let line = Line {
+            address: Some(module),
+            op,
+        };
+        match validate::validate(&line, &self.profile, mode) {
+            Ok(warnings) => self
+                .wire
+                .notices
+                .extend(warnings.iter().map(ToString::to_string)),
+            Err(error) if self.options.validate => return Err(error.into()),
+            Err(error) => self.wire.notices.push(format!("not validated: {error}")),
+        }
+        let exchange = match (wire, op) {
+            (WireMode::Ascii, Op::Ascii(AsciiWord::Bin)) => self.leave_ascii(module)?,
+            (WireMode::Ascii, _) => {
+                let text = format_line(&line, self.target, &self.profile);
+                self.ascii_request(module, &text, Some(op))?
+            }
+            (WireMode::Binary, Op::Command(instruction)) => {
+                self.binary_request(module, instruction)?
+            }
+            (WireMode::Binary, Op::Ascii(word)) => {
+                return Err(SessionError::Usage(format!(
+                    "{} is an ASCII-mode word and module {} is in binary mode; use :ascii, :run or :stop",
+                    word.as_str(),
+                    module
+                )));
+            }
+        };
+        self.after(&exchange);
+        Ok(exchange)
+    }
+
+    /// Bookkeeping after an answer: which modules move, what echo a module now uses.
+    fn after(&mut self, exchange: &Exchange) {
+        if !exchange.ok() {
+            return;
+        }
+        match exchange.op {
+            Some(Op::Command(i)) => {
+                let spec = self.profile.commands.by_number(i.command);
+                if spec.is_some_and(|s| s.starts_motion) {
+                    self.moved.insert(exchange.module);
+                }
+                if i.command == 129 {
+                    self.running.insert(exchange.module);
+                }
+                if i.command == 128 {
+                    self.stopped_program(exchange.module);
+                }
+                if mode::changes_echo(&i) {
+                    self.relearn_echo(exchange.module);
+                }
+            }
+            Some(Op::Ascii(AsciiWord::Run)) => {
+                self.running.insert(exchange.module);
+            }
+            Some(Op::Ascii(AsciiWord::Stop)) => {
+                self.stopped_program(exchange.module);
+            }
+            _ => {}
+        }
+    }
+
+    /// A program this session started was stopped: the motion it started goes on (STOP ends the
+    /// program, not the motion), so the module counts as set moving by this session.
+    fn stopped_program(&mut self, module: u8) {
+        if self.running.remove(&module) {
+            self.moved.insert(module);
+        }
+    }
+
+    /// Whether this session started motion or a program that may still be going.
+    pub fn may_be_moving(&self) -> bool {
+        !self.moved.is_empty() || !self.running.is_empty()
+    }
+
+    /// Stores one program instruction while the module is in download mode (binary mode, after
+    /// command 132). The instruction is checked as a program instruction, not as a direct-mode
+    /// command; the module answers status 101 (stored).
+    pub fn store_instruction(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<Exchange, SessionError> {
+        if self.contact(module)? != WireMode::Binary {
+            return Err(SessionError::Usage(format!(
+                "module {module} must be in binary mode to store a program"
+            )));
+        }
+        let line = Line {
+            address: Some(module),
+            op: Op::Command(instruction),
+        };
+        match validate::validate(&line, &self.profile, Mode::Program) {
+            Ok(_) => {}
+            Err(error) if self.options.validate => return Err(error.into()),
+            Err(error) => self.wire.notices.push(format!("not validated: {error}")),
+        }
+        self.binary_request(module, instruction)
+    }
+
+    /// Starts the module's stored TMCL program: ASCII `RUN`, or command 129 in binary mode.
+    pub fn run_program(
+        &mut self,
+        module: u8,
+        address: Option<i32>,
+    ) -> Result<Exchange, SessionError> {
+        let run_from = |address: Option<i32>| {
+            Op::Command(Instruction::new(
+                129,
+                u8::from(address.is_some()),
+                0,
+                address.unwrap_or(0),
+            ))
+        };
+        match (self.contact(module)?, address) {
+            (WireMode::Ascii, None) => self.perform(module, Op::Ascii(AsciiWord::Run)),
+            // ASCII RUN has no address operand: a start address needs binary command 129.
+            (WireMode::Ascii, Some(_)) => {
+                self.in_binary(module, |s| s.perform(module, run_from(address)))
+            }
+            (WireMode::Binary, _) => self.perform(module, run_from(address)),
+        }
+    }
+
+    /// Stops the module's running TMCL program: ASCII `STOP`, or command 128 in binary mode.
+    pub fn stop_program(&mut self, module: u8) -> Result<Exchange, SessionError> {
+        let op = match self.contact(module)? {
+            WireMode::Ascii => Op::Ascii(AsciiWord::Stop),
+            WireMode::Binary => Op::Command(Instruction::new(128, 0, 0, 0)),
+        };
+        self.perform(module, op)
+    }
+
+    /// Runs `f` with the module in binary mode, returning it to ASCII mode afterwards if it was.
+    pub fn in_binary<T>(
+        &mut self,
+        module: u8,
+        f: impl FnOnce(&mut Self) -> Result<T, SessionError>,
+    ) -> Result<T, SessionError> {
+        let was_ascii = self.contact(module)? == WireMode::Ascii;
+        if was_ascii {
+            self.leave_ascii(module)?;
+        }
+        let result = f(self);
+        if was_ascii {
+            self.enter_ascii(module)?;
+        }
+        result
+    }
+
+    /// Formats an instruction the way this session would send it to `module`.
+    pub fn format(&self, module: u8, op: Op) -> String {
+        format_line(
+            &Line {
+                address: Some(module),
+                op,
+            },
+            self.target,
+            &self.profile,
+        )
+    }
+
+    /// Ends the session: every module goes back to the mode it was found in (unless
+    /// `--stay-ascii`). Returns what was done.
+    pub fn close(&mut self) -> Vec<String> {
+        if self.options.stay_ascii {
+            return Vec::new();
+        }
+        // Mode restores carry no value for anyone: they need not wait for a suspect line.
+        self.urgently(Self::restore_modes)
+    }
+
+    fn restore_modes(&mut self) -> Vec<String> {
+        let mut report = Vec::new();
+        let to_restore: Vec<u8> = self
+            .modules
+            .iter()
+            .filter(|(_, m)| m.mode == WireMode::Ascii && m.found_in == WireMode::Binary)
+            .map(|(&a, _)| a)
+            .collect();
+        for module in to_restore {
+            if let Err(e) = self.leave_ascii(module) {
+                report.push(format!(
+                    "could not return module {module} to binary mode: {e}"
+                ));
+            }
+        }
+        let back_to_ascii: Vec<u8> = self
+            .modules
+            .iter()
+            .filter(|(_, m)| m.mode == WireMode::Binary && m.found_in == WireMode::Ascii)
+            .map(|(&a, _)| a)
+            .collect();
+        for module in back_to_ascii {
+            if let Err(e) = self.enter_ascii(module) {
+                report.push(format!(
+                    "could not return module {module} to ASCII mode: {e}"
+                ));
+            }
+        }
+        self.wire.note("session closed");
+        report
+    }
+
+    /// Reopens a lost link and re-enters ASCII mode on the modules that were in it.
+    pub fn reconnect(&mut self) -> Result<(), SessionError> {
+        self.wire.link.reopen()?;
+        self.wire.reset();
+        self.wire
+            .note(&format!("link reopened: {}", self.wire.link.describe()));
+        let ascii: Vec<u8> = self
+            .modules
+            .iter()
+            .filter(|(_, m)| m.mode == WireMode::Ascii)
+            .map(|(&a, _)| a)
+            .collect();
+        for module in ascii {
+            self.enter_ascii(module)?;
+        }
+        Ok(())
+    }
+
+    /// Writes a remark into the transcript; false when no transcript is being written.
+    pub fn annotate(&mut self, text: &str) -> bool {
+        self.wire.note(text);
+        self.wire.transcript.is_some()
+    }
+
+    /// A human description of an instruction for the transcript.
+    fn describe_instruction(&self, instruction: &Instruction) -> String {
+        format_instruction(instruction, &self.profile)
+    }
+
+    /// Runs `f` with requests sent at once, without resynchronising a suspect line first.
+    fn urgently<T>(&mut self, f: impl FnOnce(&mut Self) -> T) -> T {
+        let was = std::mem::replace(&mut self.urgent, true);
+        let result = f(self);
+        self.urgent = was;
+        result
+    }
+
+    /// Runs one exchange with `module` between the wire's begin and finish, so that any failure
+    /// — whatever returns it — leaves the line suspect until it has settled. `optional` replies
+    /// (BIN) may fail to come without that.
+    fn exchange<T>(
+        &mut self,
+        module: u8,
+        optional: bool,
+        f: impl FnOnce(&mut Self) -> Result<T, SessionError>,
+    ) -> Result<T, SessionError> {
+        let timeout = self.options.timeout;
+        let peer = Peer::Module(module.into());
+        let unanswered = &mut self.unanswered;
+        let result = self
+            .wire
+            .begin(peer, self.urgent, timeout, &mut |bytes| {
+                harmless(bytes, unanswered)
+            })
+            .and_then(|()| f(self));
+        let settled = match &result {
+            Ok(_) => true,
+            Err(SessionError::Timeout { .. }) => optional,
+            Err(_) => false,
+        };
+        self.wire.finish(settled);
+        result
+    }
+}
+
+#[cfg(test)]
+mod tests;
