@@ -1,6 +1,7 @@
 //! `tmclsh download FILE.tmc|FILE.bin [CONNECTION] [--run]`: store a stand-alone program in the
 //! module, verify it, optionally start it.
 
+use crate::dialect::session::DialectSession;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;

@@ -2,6 +2,7 @@
 //! version and echo setting, SMD4 drives (`--protocol smd4`) with firmware version and serial
 //! number; each reply is awaited at most `--timeout` milliseconds.
 
+use crate::dialect::session::DialectSession;
 use std::io::Write;
 use std::sync::Arc;
 

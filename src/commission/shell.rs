@@ -2,6 +2,7 @@
 //! `:plot`. The REPL and `-c`/stdin lines share them; the ones that need keys (`:watch`, and
 //! `:record` without a duration) need a terminal.
 
+use crate::dialect::session::DialectSession;
 use std::cell::Cell;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};

@@ -1,5 +1,6 @@
 //! Protocol dialects spoken by the modules tmclsh talks to.
 
+pub mod session;
 pub mod smd4;
 pub mod tmcl;
 

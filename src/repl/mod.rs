@@ -20,7 +20,7 @@ use crate::dialect::tmcl::session::WireMode;
 use crate::escape::escape_control;
 use crate::exit::Exit;
 use crate::session::{Session, SessionError, interrupt};
-use crate::shell::render::decode_reply;
+
 use crate::shell::{Flow, Shell};
 
 use editor::{ReplHelper, Tables};
@@ -122,15 +122,15 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
         shell.helper(text, out)
     } else {
         shell.session().execute(text).map(|reply| {
-            let decoded = decode_reply(&reply, shell.session_ref());
+            let ok = reply.ok();
             let shown = if shell.raw {
-                reply.shown()
+                reply.shown
             } else {
-                decoded.text
+                reply.decoded
             };
             // Escaped before it is coloured: the colour is ours, any other sequence is the device's.
             let shown = escape_control(&shown).into_owned();
-            let shown = match (color, decoded.ok) {
+            let shown = match (color, ok) {
                 (false, _) => shown,
                 (true, true) => shown.green().to_string(),
                 (true, false) => shown.red().to_string(),

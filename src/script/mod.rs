@@ -26,6 +26,7 @@ pub mod memory;
 pub mod sandbox;
 pub(crate) mod waiting;
 
+use crate::dialect::session::DialectSession;
 use std::cell::RefCell;
 use std::path::Path;
 use std::rc::Rc;

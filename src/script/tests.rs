@@ -89,7 +89,7 @@ fn run_source_gives_the_session_back_and_reports_positions() {
         panic!("TMCL session back")
     };
     assert_eq!(
-        session.execute("GAP 6, 0").unwrap().value(),
+        session.exchange_line("GAP 6, 0").unwrap().value(),
         Some(4),
         "the session still works"
     );

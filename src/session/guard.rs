@@ -3,6 +3,7 @@
 //! [`crate::crash`] what they did. A normal drop does nothing: every face closes its session
 //! itself and reports on it.
 
+use crate::dialect::session::DialectSession;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::interrupt;

@@ -5,6 +5,7 @@
 //! Rhai scripts all go through the same session.
 
 mod any;
+pub mod core;
 pub(crate) mod guard;
 pub mod interrupt;
 pub(crate) mod rx;
@@ -16,7 +17,7 @@ use std::time::Duration;
 use crate::dialect::tmcl::protocol::InputError;
 use crate::exit::{Exit, ExitStatus};
 
-pub use any::{Reply, Session};
+pub use any::Session;
 pub use transcript::Transcript;
 
 /// How long a stop (MST, MOTOR:STOP) waits for its answer besides the exchange's wire time. Stops

@@ -153,8 +153,7 @@ fn step(
     let result = shell.session().execute(text);
     report_notices(shell, err);
     let reply = result?;
-    let shown = reply.shown();
-    let shown = escape_control(&shown);
+    let shown = escape_control(&reply.shown);
     if writeln!(out, "{shown}").and_then(|()| out.flush()).is_err() {
         // stdout closed (e.g. piped into `head`): not an error, just stop.
         return Ok(Flow::Quit);

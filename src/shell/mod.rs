@@ -4,7 +4,6 @@
 pub mod batch;
 mod help;
 pub mod helpers;
-pub mod render;
 
 use std::io::{self, Write};
 use std::path::Path;

@@ -8,6 +8,7 @@ use std::time::Duration;
 use tmclsh::clock::{Clock, ManualClock};
 use tmclsh::commission::ParamDevice;
 use tmclsh::commission::record::{self, Plan, Recording};
+use tmclsh::dialect::session::DialectSession;
 use tmclsh::dialect::tmcl::profile::Profile;
 use tmclsh::dialect::tmcl::session::TmclSession;
 use tmclsh::dialect::tmcl::sim::Bus;

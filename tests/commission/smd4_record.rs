@@ -9,6 +9,7 @@ use std::time::Duration;
 use tmclsh::clock::{Clock, ManualClock};
 use tmclsh::commission::record::{self, Plan, Recording};
 use tmclsh::commission::{ParamDevice, ParamValue, Tolerance};
+use tmclsh::dialect::session::DialectSession;
 use tmclsh::dialect::smd4::protocol::{Sflags, Smd4Spec};
 use tmclsh::dialect::smd4::session::Smd4Session;
 use tmclsh::dialect::smd4::sim::Smd4Sim;

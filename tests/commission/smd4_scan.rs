@@ -6,6 +6,7 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use tmclsh::clock::ManualClock;
+use tmclsh::dialect::session::DialectSession;
 use tmclsh::dialect::smd4::protocol::Smd4Spec;
 use tmclsh::dialect::smd4::scan as smd4_scan;
 use tmclsh::dialect::smd4::session::Smd4Session;

@@ -9,6 +9,7 @@
 //! needs standby and the precision of real values are data: the `[snapshot]` section and the
 //! `persistent` and `levels` fields of `data/smd4.toml`.
 
+use crate::dialect::session::DialectSession;
 use crate::dialect::smd4::protocol::validate::validate;
 use crate::dialect::smd4::protocol::{
     CommandSpec, ItemType, Kind, ReplyShape, Request, Response, Smd4Spec,

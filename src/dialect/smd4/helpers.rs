@@ -25,7 +25,7 @@ pub fn run(
             writeln!(out, "requests go to {}", describe(address))?;
         }
         "flags" => {
-            let reply = session.execute("SYS:FLAGS")?.checked()?;
+            let reply = session.exchange_line("SYS:FLAGS")?.checked()?;
             let (sflags, eflags) = reply
                 .response
                 .map(|r| (r.sflags.0, r.eflags.0))

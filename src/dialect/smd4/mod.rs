@@ -4,6 +4,7 @@
 pub mod commission;
 pub mod helpers;
 pub mod protocol;
+pub mod render;
 pub mod replay;
 pub mod scan;
 pub mod script;

@@ -8,6 +8,7 @@
 //! without a prefix. Every drive on the bus sees the probes, so after a scan they all must be
 //! talked to with `--address N`; the report says so.
 
+use crate::dialect::session::DialectSession;
 use std::io::{self, Write};
 use std::time::Duration;
 

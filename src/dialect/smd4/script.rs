@@ -25,7 +25,11 @@ pub type Shared = Rc<RefCell<Smd4Session>>;
 pub fn register(engine: &mut Engine, session: &Shared) {
     let s = session.clone();
     volatile!(engine, "send", move |line: &str| -> Fallible<Array> {
-        let exchange = device(s.borrow_mut().execute(line).and_then(Smd4Exchange::checked))?;
+        let exchange = device(
+            s.borrow_mut()
+                .exchange_line(line)
+                .and_then(Smd4Exchange::checked),
+        )?;
         Ok(exchange
             .response
             .map(|r| r.data_strings().into_iter().map(Dynamic::from).collect())
@@ -33,7 +37,7 @@ pub fn register(engine: &mut Engine, session: &Shared) {
     });
     let s = session.clone();
     volatile!(engine, "reply", move |line: &str| -> Fallible<Map> {
-        let exchange = device(s.borrow_mut().execute(line))?;
+        let exchange = device(s.borrow_mut().exchange_line(line))?;
         Ok(reply_map(&exchange))
     });
     let s = session.clone();
@@ -94,7 +98,7 @@ fn read_flags(session: &Shared) -> Fallible<Response> {
     let exchange = device(
         session
             .borrow_mut()
-            .execute("SYS:FLAGS")
+            .exchange_line("SYS:FLAGS")
             .and_then(Smd4Exchange::checked),
     )?;
     exchange.response.ok_or_else(|| {

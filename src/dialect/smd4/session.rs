@@ -10,7 +10,6 @@
 //! drive carry its `@N,` prefix, so a failure at one address does not hold up the others — unless
 //! the drives turn out to answer without the prefix.
 
-use std::collections::BTreeSet;
 use std::time::{Duration, Instant};
 
 use crate::dialect::smd4::protocol::{
@@ -19,9 +18,11 @@ use crate::dialect::smd4::protocol::{
 };
 use crate::link::Link;
 
+use crate::dialect::session::{DialectSession, Refusal, Reply};
+use crate::session::core::SessionCore;
 use crate::session::rx::is_line_break;
 use crate::session::transcript::{Entry, Transcript, escape_into};
-use crate::session::wire::{MAX_LINE, Peer, Settled, Wire, nothing_benign};
+use crate::session::wire::{MAX_LINE, Peer, Settled, nothing_benign};
 use crate::session::{SessionError, SessionOptions};
 
 /// The most a reply may hold, all its lines together.
@@ -79,14 +80,20 @@ impl Smd4Exchange {
 
     /// The exchange, or a device error when the reply carries an error code.
     pub fn checked(self) -> Result<Smd4Exchange, SessionError> {
-        match self.response.as_ref().and_then(|r| r.error.clone()) {
-            Some(error) => Err(SessionError::Device {
-                module: drive_name(self.request.address),
-                sent: self.sent,
-                reason: format!("error {error}"),
-            }),
+        match self.refusal() {
+            Some(refusal) => Err(refusal.into()),
             None => Ok(self),
         }
+    }
+
+    /// The error code the drive answered with, if any.
+    pub fn refusal(&self) -> Option<Refusal> {
+        let error = self.response.as_ref()?.error.as_ref()?;
+        Some(Refusal {
+            module: drive_name(self.request.address),
+            sent: self.sent.clone(),
+            reason: format!("error {error}"),
+        })
     }
 }
 
@@ -97,13 +104,9 @@ pub fn drive_name(address: Option<u32>) -> String {
 
 /// A conversation with the SMD4 drives on one link.
 pub struct Smd4Session {
-    wire: Wire,
+    core: SessionCore,
     spec: &'static Smd4Spec,
-    options: SessionOptions,
     smd4: Smd4Options,
-    moved: BTreeSet<Option<u32>>,
-    /// Requests go out without waiting for a suspect line to go quiet (stops).
-    urgent: bool,
     /// An addressed drive answered without its `@N,` prefix: replies cannot be told apart.
     unprefixed_replies: bool,
 }
@@ -117,40 +120,22 @@ impl Smd4Session {
         transcript: Option<Transcript>,
     ) -> Result<Self, SessionError> {
         let mut session = Smd4Session {
-            wire: Wire::new(link, transcript),
+            core: SessionCore::new(link, options, transcript),
             spec: Smd4Spec::builtin(),
-            options,
             smd4,
-            moved: BTreeSet::new(),
-            urgent: false,
             unprefixed_replies: false,
         };
-        let opened = format!("SMD4 session opened on {}", session.wire.link.describe());
-        session.wire.note(&opened);
+        let opened = format!(
+            "SMD4 session opened on {}",
+            session.core.wire.link.describe()
+        );
+        session.core.wire.note(&opened);
         Ok(session)
     }
 
     /// The command table, flags and errors.
     pub fn spec(&self) -> &'static Smd4Spec {
         self.spec
-    }
-
-    /// What the link talks to.
-    pub fn describe(&self) -> String {
-        self.wire.link.describe()
-    }
-
-    /// The session's settings.
-    pub fn options(&self) -> &SessionOptions {
-        &self.options
-    }
-
-    /// Runs `f` with replies awaited at most `timeout` (a bus scan's time per address).
-    pub fn with_timeout<T>(&mut self, timeout: Duration, f: impl FnOnce(&mut Self) -> T) -> T {
-        let saved = std::mem::replace(&mut self.options.timeout, timeout);
-        let result = f(self);
-        self.options.timeout = saved;
-        result
     }
 
     /// The `@N` prefix used for requests without one.
@@ -172,30 +157,9 @@ impl Smd4Session {
         self.smd4.address = address;
     }
 
-    /// Messages gathered since the last call.
-    pub fn take_notices(&mut self) -> Vec<String> {
-        std::mem::take(&mut self.wire.notices)
-    }
-
-    /// Starts or stops writing the transcript.
-    pub fn set_transcript(&mut self, transcript: Option<Transcript>) {
-        self.wire.transcript = transcript;
-    }
-
-    /// The transcript being written, if any.
-    pub fn transcript(&self) -> Option<&Transcript> {
-        self.wire.transcript.as_ref()
-    }
-
-    /// Writes a remark into the transcript; false when no transcript is being written.
-    pub fn annotate(&mut self, text: &str) -> bool {
-        self.wire.note(text);
-        self.wire.transcript.is_some()
-    }
-
     /// Parses, validates and sends one request line; an error code is an `Ok` exchange whose
     /// [`Smd4Exchange::ok`] is false.
-    pub fn execute(&mut self, line: &str) -> Result<Smd4Exchange, SessionError> {
+    pub fn exchange_line(&mut self, line: &str) -> Result<Smd4Exchange, SessionError> {
         let request = Request::parse(line).map_err(|e| SessionError::Rejected(e.to_string()))?;
         self.request(request)
     }
@@ -207,10 +171,14 @@ impl Smd4Session {
         }
         match validate(&request, &self.spec.commands) {
             Ok(_) => {}
-            Err(error) if self.options.validate => {
+            Err(error) if self.core.options.validate => {
                 return Err(SessionError::Rejected(error.to_string()));
             }
-            Err(error) => self.wire.notices.push(format!("not validated: {error}")),
+            Err(error) => self
+                .core
+                .wire
+                .notices
+                .push(format!("not validated: {error}")),
         }
         let spec = self.spec.commands.get(&request.mnemonic);
         let sent = request.format(self.smd4.prefix);
@@ -219,19 +187,20 @@ impl Smd4Session {
             Some(address) if !self.unprefixed_replies => Peer::Module(address),
             _ => Peer::Any,
         };
-        let timeout = self.options.timeout;
+        let timeout = self.core.options.timeout;
         let result = self
+            .core
             .wire
-            .begin(peer, self.urgent, timeout, &mut nothing_benign)
+            .begin(peer, self.core.urgent, timeout, &mut nothing_benign)
             .and_then(|()| self.transact(&request, silent));
-        self.wire.finish(result.is_ok());
+        self.core.wire.finish(result.is_ok());
         let exchange = Smd4Exchange {
             sent,
             request,
             response: result?,
         };
         if exchange.ok() && spec.is_some_and(|s| s.starts_motion) {
-            self.moved.insert(exchange.request.address);
+            self.core.moved.insert(exchange.request.address);
         }
         Ok(exchange)
     }
@@ -243,7 +212,7 @@ impl Smd4Session {
         request: &Request,
         silent: bool,
     ) -> Result<Option<Response>, SessionError> {
-        self.wire.send(
+        self.core.wire.send(
             &request.wire(self.smd4.prefix),
             format_args!("to {}", drive_name(request.address)),
         )?;
@@ -264,7 +233,7 @@ impl Smd4Session {
     fn receive(&mut self, request: &Request) -> Result<Response, SessionError> {
         let expect = Expectation::for_request(&self.spec.commands, request);
         let mut collector = ReplyCollector::new(expect.clone());
-        let deadline = Instant::now() + self.options.timeout;
+        let deadline = Instant::now() + self.core.options.timeout;
         // A multi-line reply's last line may come up to the deadline; its quiet gap after that.
         let multi_line_end = deadline + self.smd4.quiet_gap;
         // This reply's bytes, for the transcript.
@@ -273,38 +242,38 @@ impl Smd4Session {
         loop {
             loop {
                 if in_junk {
-                    match self.wire.rx.line_end(0) {
+                    match self.core.wire.rx.line_end(0) {
                         Some(end) => {
-                            self.wire.discard_more(end);
+                            self.core.wire.discard_more(end);
                             in_junk = false;
                         }
                         None => {
-                            let n = self.wire.rx.len();
-                            self.wire.discard_more(n);
+                            let n = self.core.wire.rx.len();
+                            self.core.wire.discard_more(n);
                             break;
                         }
                     }
                 }
-                let bytes = self.wire.rx.bytes();
+                let bytes = self.core.wire.rx.bytes();
                 let breaks = bytes.iter().take_while(|&&b| is_line_break(b)).count();
                 if breaks > 0 {
-                    reply_bytes.extend(self.wire.rx.take(breaks));
+                    reply_bytes.extend(self.core.wire.rx.take(breaks));
                     continue;
                 }
-                let Some(end) = self.wire.rx.line_end(0) else {
-                    if self.wire.rx.len() > MAX_LINE {
-                        let n = self.wire.rx.len();
-                        self.wire.discard(n, UNEXPECTED);
+                let Some(end) = self.core.wire.rx.line_end(0) else {
+                    if self.core.wire.rx.len() > MAX_LINE {
+                        let n = self.core.wire.rx.len();
+                        self.core.wire.discard(n, UNEXPECTED);
                         in_junk = true;
                     }
                     break;
                 };
                 let used = end + 1;
                 if end > MAX_LINE {
-                    self.wire.discard(used, UNEXPECTED);
+                    self.core.wire.discard(used, UNEXPECTED);
                     continue;
                 }
-                let line = String::from_utf8_lossy(&self.wire.rx.bytes()[..end]).into_owned();
+                let line = String::from_utf8_lossy(&self.core.wire.rx.bytes()[..end]).into_owned();
                 match collector.push_line(&line) {
                     Ok(Progress::Complete(reply)) if foreign(&reply, request) => {
                         let kind = format!(
@@ -312,14 +281,14 @@ impl Smd4Session {
                             drive_name(reply.address),
                             drive_name(request.address)
                         );
-                        self.wire.discard(used, &kind);
+                        self.core.wire.discard(used, &kind);
                         collector = ReplyCollector::new(expect.clone());
                     }
                     Ok(Progress::Complete(reply)) => {
                         return self.settle(*reply, reply_bytes, used, deadline, &expect, request);
                     }
                     Ok(Progress::AwaitQuiet) => {
-                        reply_bytes.extend(self.wire.rx.take(used));
+                        reply_bytes.extend(self.core.wire.rx.take(used));
                         if reply_bytes.len() > MAX_REPLY {
                             return Err(self.endless(
                                 request,
@@ -328,7 +297,7 @@ impl Smd4Session {
                             ));
                         }
                     }
-                    Err(_) => self.wire.discard(used, UNEXPECTED),
+                    Err(_) => self.core.wire.discard(used, UNEXPECTED),
                 }
             }
             let now = Instant::now();
@@ -337,7 +306,7 @@ impl Smd4Session {
                     return Err(self.endless(request, reply_bytes, "did not end in time"));
                 }
                 let gap_end = now + self.smd4.quiet_gap;
-                if !self.wire.fill(gap_end.min(multi_line_end))? {
+                if !self.core.wire.fill(gap_end.min(multi_line_end))? {
                     if gap_end > multi_line_end {
                         return Err(self.endless(request, reply_bytes, "did not end in time"));
                     }
@@ -346,18 +315,19 @@ impl Smd4Session {
                         .expect("awaiting quiet means a first line came");
                     return self.finish(reply, &reply_bytes, &expect, request);
                 }
-            } else if now >= deadline || !self.wire.fill(deadline)? {
-                let partial = self.wire.rx.clear();
+            } else if now >= deadline || !self.core.wire.fill(deadline)? {
+                let partial = self.core.wire.rx.clear();
                 reply_bytes.extend_from_slice(&partial);
                 if !reply_bytes.is_empty() {
-                    self.wire
+                    self.core
+                        .wire
                         .log(Entry::Received, &reply_bytes, "no complete reply");
                 }
                 let module = drive_name(request.address);
-                self.wire.note(&format!("no reply from {module}"));
+                self.core.wire.note(&format!("no reply from {module}"));
                 return Err(SessionError::Timeout {
                     module,
-                    timeout: self.options.timeout,
+                    timeout: self.core.options.timeout,
                     hint: timeout_hint(&partial, request.address, self.smd4.prefix),
                 });
             }
@@ -375,17 +345,17 @@ impl Smd4Session {
         expect: &Expectation,
         request: &Request,
     ) -> Result<Response, SessionError> {
-        match self.wire.settle(used, deadline, &mut |_| false)? {
+        match self.core.wire.settle(used, deadline, &mut |_| false)? {
             Settled::Clean(n) => {
-                reply_bytes.extend(self.wire.rx.take(n));
+                reply_bytes.extend(self.core.wire.rx.take(n));
                 self.finish(reply, &reply_bytes, expect, request)
             }
             Settled::Noise => {
                 let mut after = String::new();
-                let rest = &self.wire.rx.bytes()[used..];
+                let rest = &self.core.wire.rx.bytes()[used..];
                 escape_into(&rest[..rest.len().min(40)], &mut after);
-                reply_bytes.extend(self.wire.rx.clear());
-                self.wire.log(
+                reply_bytes.extend(self.core.wire.rx.clear());
+                self.core.wire.log(
                     Entry::Received,
                     &reply_bytes,
                     "a reply followed by more data: line noise, discarded",
@@ -396,7 +366,7 @@ impl Smd4Session {
                     "line noise: the reply {shown} was followed by {after}, so it may be cut short \
                      or not the answer; not taken"
                 );
-                self.wire.note(&message);
+                self.core.wire.note(&message);
                 Err(SessionError::Link(message))
             }
         }
@@ -404,8 +374,8 @@ impl Smd4Session {
 
     /// A multi-line reply that does not end: line noise.
     fn endless(&mut self, request: &Request, mut bytes: Vec<u8>, what: &str) -> SessionError {
-        bytes.extend(self.wire.rx.clear());
-        self.wire.log(
+        bytes.extend(self.core.wire.rx.clear());
+        self.core.wire.log(
             Entry::Received,
             &bytes,
             "a reply that does not end: line noise, discarded",
@@ -413,10 +383,10 @@ impl Smd4Session {
         let message = format!(
             "line noise: the reply to {} {what} (--timeout {} ms, then --quiet-gap {} ms); not taken",
             request.mnemonic,
-            self.options.timeout.as_millis(),
+            self.core.options.timeout.as_millis(),
             self.smd4.quiet_gap.as_millis()
         );
-        self.wire.note(&message);
+        self.core.wire.note(&message);
         SessionError::Link(message)
     }
 
@@ -430,7 +400,7 @@ impl Smd4Session {
         request: &Request,
     ) -> Result<Response, SessionError> {
         if let Err(noise) = check_reply(&reply, expect, request.address) {
-            self.wire.log(
+            self.core.wire.log(
                 Entry::Received,
                 consumed,
                 format_args!("line noise: {noise}"),
@@ -441,28 +411,28 @@ impl Smd4Session {
                 "line noise: {noise}, in the reply {shown} to {}",
                 request.format(self.smd4.prefix)
             );
-            self.wire.note(&message);
+            self.core.wire.note(&message);
             return Err(SessionError::Link(message));
         }
         let meaning = match &reply.error {
             Some(error) => format!("error {error}"),
             None => format!("sflags {:#06x}", reply.sflags.0),
         };
-        self.wire.log(Entry::Received, consumed, &meaning);
+        self.core.wire.log(Entry::Received, consumed, &meaning);
         Ok(reply)
     }
 
-    /// Stops every drive this session set moving (MOTOR:STOP), at once even on a line that has
-    /// not settled since a failure. Returns what was done.
-    pub fn stop_motion(&mut self) -> Vec<String> {
-        let moved: Vec<Option<u32>> = std::mem::take(&mut self.moved).into_iter().collect();
-        let was = std::mem::replace(&mut self.urgent, true);
+    /// Stops every drive this session set moving (MOTOR:STOP). Returns what was done.
+    fn stop_drives(&mut self) -> Vec<String> {
+        let moved: Vec<Option<u32>> = std::mem::take(&mut self.core.moved).into_iter().collect();
         let wire = self
+            .core
             .wire
             .link
             .byte_time()
             .map_or(Duration::ZERO, |b| b * 64);
         let wait = self
+            .core
             .options
             .timeout
             .min(crate::session::STOP_CONFIRMATION + wire);
@@ -481,38 +451,52 @@ impl Smd4Session {
                 Err(e) => report.push(format!("could not stop the motor of drive {name}: {e}")),
             }
         }
-        self.urgent = was;
         for line in &report {
-            self.wire.note(line);
+            self.core.wire.note(line);
         }
         report
     }
+}
 
-    /// Stops the session's drive (even if this session did not start it) together with every
-    /// drive this session set moving, each once (after Ctrl-C).
-    pub fn stop_motion_and_target(&mut self) -> Vec<String> {
-        self.moved.insert(self.smd4.address);
-        self.stop_motion()
+impl DialectSession for Smd4Session {
+    fn core(&self) -> &SessionCore {
+        &self.core
     }
 
-    /// Whether this session started motion that may still be going.
-    pub fn may_be_moving(&self) -> bool {
-        !self.moved.is_empty()
+    fn core_mut(&mut self) -> &mut SessionCore {
+        &mut self.core
     }
 
-    /// Ends the session (nothing to restore on an SMD4).
-    pub fn close(&mut self) -> Vec<String> {
-        self.wire.note("session closed");
+    fn execute(&mut self, line: &str) -> Result<Reply, SessionError> {
+        let exchange = self.exchange_line(line)?;
+        Ok(Reply {
+            shown: exchange.raw(),
+            decoded: super::render::decode(&exchange, self.spec).text,
+            refusal: exchange.refusal(),
+        })
+    }
+
+    /// MOTOR:STOP to every drive this session set moving.
+    fn stop_motion(&mut self) -> Vec<String> {
+        self.urgently(Self::stop_drives)
+    }
+
+    fn target_address(&self) -> Option<u32> {
+        self.smd4.address
+    }
+
+    /// Nothing to restore on an SMD4.
+    fn close(&mut self) -> Vec<String> {
+        self.core.wire.note("session closed");
         Vec::new()
     }
 
-    /// Reopens a lost link.
-    pub fn reconnect(&mut self) -> Result<(), SessionError> {
-        self.wire.link.reopen()?;
-        self.wire.reset();
-        let reopened = format!("link reopened: {}", self.wire.link.describe());
-        self.wire.note(&reopened);
-        Ok(())
+    /// `smd4>`, with the address prefix requests get.
+    fn prompt(&self) -> String {
+        match self.smd4.address {
+            Some(_) => format!("smd4 {}> ", drive_name(self.smd4.address)),
+            None => "smd4> ".to_string(),
+        }
     }
 }
 

@@ -1,6 +1,7 @@
 //! The TMCL session as a [`ParamDevice`]: GAP/SAP/STAP for axis parameters, GGP/SGP/STGP for
 //! global ones, the firmware version from command 136 (binary direct mode, there and back).
 
+use crate::dialect::session::DialectSession;
 use crate::dialect::tmcl::profile::{Param, Profile};
 use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::Op;

@@ -1,5 +1,6 @@
 //! The helper commands of TMCL modules: targets, echo, program control, download, modes.
 
+use crate::dialect::session::DialectSession;
 use std::io::Write;
 use std::path::Path;
 

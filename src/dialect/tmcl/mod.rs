@@ -9,6 +9,7 @@ pub mod hint;
 pub mod profile;
 pub mod program;
 pub mod protocol;
+pub mod render;
 pub mod replay;
 pub mod scan;
 pub mod script;

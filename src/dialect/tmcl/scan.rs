@@ -15,6 +15,7 @@
 //! Each reply is awaited at most the given time; the session puts every module it switched back
 //! in its mode when it closes, and modules only probed with binary frames are never switched.
 
+use crate::dialect::session::DialectSession;
 use std::collections::BTreeMap;
 use std::io::{self, Write};
 use std::time::Duration;

@@ -25,11 +25,11 @@ pub type Shared = Rc<RefCell<TmclSession>>;
 pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     let s = session.clone();
     volatile!(engine, "send", move |line: &str| value_of(checked(
-        s.borrow_mut().execute(line)
+        s.borrow_mut().exchange_line(line)
     )?));
     let s = session.clone();
     volatile!(engine, "reply", move |line: &str| device(
-        s.borrow_mut().execute(line)
+        s.borrow_mut().exchange_line(line)
     )
     .map(reply_map));
 

@@ -2,13 +2,14 @@
 //! verification, and program control (run, stop, step, reset, status) from ASCII mode, switching
 //! to binary mode transparently for the control functions ASCII mode lacks.
 
+use crate::dialect::session::DialectSession;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Status};
+use crate::dialect::tmcl::render::application_status;
 use crate::dialect::tmcl::session::{Exchange, TmclSession, WireMode};
 use crate::session::{SessionError, interrupt};
-use crate::shell::render::application_status;
 
 /// What a download did.
 #[derive(Debug, Clone, PartialEq, Eq)]

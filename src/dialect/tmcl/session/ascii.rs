@@ -109,8 +109,8 @@ impl TmclSession {
         let mut line = Vec::with_capacity(wire_text.len() + 1);
         line.extend_from_slice(wire_text.as_bytes());
         line.push(b'\r');
-        self.wire.send(&line, format_args!("to module {c}"))?;
-        let timeout = optional_wait.unwrap_or(self.options.timeout);
+        self.core.wire.send(&line, format_args!("to module {c}"))?;
+        let timeout = optional_wait.unwrap_or(self.core.options.timeout);
         let deadline = Instant::now() + timeout;
         let state = self.modules.get(&module);
         let echo_known = state.is_some_and(|m| m.echo_known);
@@ -131,14 +131,15 @@ impl TmclSession {
                 {
                     // Taken without an echo (the echo mode is still being learnt), but the echo
                     // of this request came after it: it was an earlier request's reply.
-                    self.wire
+                    self.core
+                        .wire
                         .discard(found.2, "a reply that came before the echo (stale?)");
                     continue;
                 }
                 let held = std::mem::take(&mut scan.held);
                 return self.accept(module, text, op, held, found, deadline);
             }
-            if Instant::now() >= deadline || !self.wire.fill(deadline)? {
+            if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
                 // After BIN the module may be in binary mode, where a CR would start a frame.
                 let resync_cr = !leaves_ascii(op, text);
                 return Err(self.timed_out(c, timeout, &mut scan, resync_cr));
@@ -156,22 +157,22 @@ impl TmclSession {
         let c = address_char(module).unwrap_or('?');
         loop {
             if scan.in_junk {
-                match self.wire.rx.line_end(0) {
+                match self.core.wire.rx.line_end(0) {
                     Some(end) => {
-                        self.wire.discard_more(end);
+                        self.core.wire.discard_more(end);
                         scan.in_junk = false;
                     }
                     None => {
-                        let n = self.wire.rx.len();
-                        self.wire.discard_more(n);
+                        let n = self.core.wire.rx.len();
+                        self.core.wire.discard_more(n);
                         return Ok(None);
                     }
                 }
             }
-            let rest = self.wire.rx.bytes();
+            let rest = self.core.wire.rx.bytes();
             let breaks = rest.iter().take_while(|&&b| is_line_break(b)).count();
             if breaks > 0 {
-                scan.hold(&mut self.wire, breaks);
+                scan.hold(&mut self.core.wire, breaks);
                 continue;
             }
             if rest.is_empty() {
@@ -180,51 +181,54 @@ impl TmclSession {
             if !scan.echo_seen {
                 if rest.starts_with(scan.sent) {
                     scan.echo_seen = true;
-                    scan.hold(&mut self.wire, scan.sent.len());
+                    scan.hold(&mut self.core.wire, scan.sent.len());
                     continue;
                 }
                 if scan.sent.starts_with(rest) {
                     return Ok(None); // the echo is still arriving
                 }
             }
-            let Some(end) = self.wire.rx.line_end(0) else {
-                if self.wire.rx.len() > MAX_LINE {
-                    let n = self.wire.rx.len();
-                    self.wire.discard(n, UNEXPECTED);
+            let Some(end) = self.core.wire.rx.line_end(0) else {
+                if self.core.wire.rx.len() > MAX_LINE {
+                    let n = self.core.wire.rx.len();
+                    self.core.wire.discard(n, UNEXPECTED);
                     scan.in_junk = true;
                 }
                 return Ok(None);
             };
             let used = end + 1;
             if end > MAX_LINE {
-                self.wire.discard(used, UNEXPECTED);
+                self.core.wire.discard(used, UNEXPECTED);
                 continue;
             }
-            let line = self.wire.rx.bytes()[..end].to_vec();
+            let line = self.core.wire.rx.bytes()[..end].to_vec();
             let acceptable = scan.echo_seen || !echo_required;
             match parse_reply_bytes(&line) {
                 Some(reply) if reply.status == Status::PositionReachedEvent => {
-                    self.wire.notices.push(format!(
+                    self.core.wire.notices.push(format!(
                         "module {}: target position reached (event)",
                         reply.module
                     ));
-                    self.wire
+                    self.core
+                        .wire
                         .discard_quietly(used, "target position reached event, not a reply");
                 }
                 Some(reply) if reply.module == c && acceptable => {
                     return Ok(Some((reply, latin1(&line), used)));
                 }
                 Some(reply) if reply.module == c && self.unanswered.reply_arrived(c) => {
-                    self.wire
+                    self.core
+                        .wire
                         .discard_quietly(used, "late reply to a request given up earlier");
                     // Every request to this module given up has now been answered: nothing
                     // more is on its way.
                     if !self.unanswered.pending(c) {
-                        self.wire.trust(Peer::Module(module.into()));
+                        self.core.wire.trust(Peer::Module(module.into()));
                     }
                 }
                 Some(reply) if reply.module == c => {
-                    self.wire
+                    self.core
+                        .wire
                         .discard(used, "a reply that came before the echo (stale?)");
                 }
                 Some(reply) => {
@@ -232,10 +236,11 @@ impl TmclSession {
                         "a reply from module {} while waiting for module {c}",
                         reply.module
                     );
-                    self.wire.discard(used, &kind);
+                    self.core.wire.discard(used, &kind);
                 }
                 None if !scan.echo_seen && self.unanswered.echo_arrived(&line) => {
-                    self.wire
+                    self.core
+                        .wire
                         .discard_quietly(used, "late echo of a request given up earlier");
                 }
                 None if !scan.echo_seen && looks_like_echo(&line, scan.sent) => {
@@ -255,7 +260,7 @@ impl TmclSession {
                     );
                     return Err(self.noise(scan, used, "not a valid reply", message));
                 }
-                None => self.wire.discard(used, UNEXPECTED),
+                None => self.core.wire.discard(used, UNEXPECTED),
             }
         }
     }
@@ -274,10 +279,10 @@ impl TmclSession {
             let rest = &rest[start..];
             !rest.is_empty() && (rest.starts_with(sent) || sent.starts_with(rest))
         };
-        if self.wire.rx.len() == *used && Instant::now() < deadline {
-            self.wire.await_more(deadline)?;
+        if self.core.wire.rx.len() == *used && Instant::now() < deadline {
+            self.core.wire.await_more(deadline)?;
         }
-        Ok(follows(self.wire.rx.bytes()))
+        Ok(follows(self.core.wire.rx.bytes()))
     }
 
     /// Takes a found reply once what follows it has been seen: nothing but line ends and events.
@@ -293,7 +298,8 @@ impl TmclSession {
         let c = reply.module;
         let mut events = Vec::new();
         let settled =
-            self.wire
+            self.core
+                .wire
                 .settle(used, deadline, &mut |line| match parse_reply_bytes(line) {
                     Some(r) if r.status == Status::PositionReachedEvent => {
                         events.push(format!(
@@ -304,12 +310,12 @@ impl TmclSession {
                     }
                     _ => false,
                 })?;
-        self.wire.notices.extend(events);
+        self.core.wire.notices.extend(events);
         match settled {
             Settled::Clean(n) => {
-                record.extend_from_slice(&self.wire.rx.bytes()[..n]);
-                self.wire.rx.consume(n);
-                self.wire.log(
+                record.extend_from_slice(&self.core.wire.rx.bytes()[..n]);
+                self.core.wire.rx.consume(n);
+                self.core.wire.log(
                     Entry::Received,
                     &record,
                     format_args!("{c}: {}, value {}", reply.status, reply.value),
@@ -327,10 +333,10 @@ impl TmclSession {
             }
             Settled::Noise => {
                 let mut after = String::new();
-                let rest = &self.wire.rx.bytes()[used..];
+                let rest = &self.core.wire.rx.bytes()[used..];
                 escape_into(&rest[..rest.len().min(40)], &mut after);
-                record.extend(self.wire.rx.clear());
-                self.wire.log(
+                record.extend(self.core.wire.rx.clear());
+                self.core.wire.log(
                     Entry::Received,
                     &record,
                     "a reply followed by more data: line noise, discarded",
@@ -339,7 +345,7 @@ impl TmclSession {
                     "line noise: the reply '{raw}' from module {c} was followed by {after}, so it \
                      may be cut short or not the answer; not taken"
                 );
-                self.wire.note(&message);
+                self.core.wire.note(&message);
                 Err(SessionError::Link(message))
             }
         }
@@ -349,13 +355,13 @@ impl TmclSession {
     /// transcript with the event.
     fn noise(&mut self, scan: &mut Scan, used: usize, what: &str, message: String) -> SessionError {
         let mut record = std::mem::take(&mut scan.held);
-        record.extend(self.wire.rx.take(used));
-        self.wire.log(
+        record.extend(self.core.wire.rx.take(used));
+        self.core.wire.log(
             Entry::Received,
             &record,
             format_args!("{what}: line noise, discarded"),
         );
-        self.wire.note(&message);
+        self.core.wire.note(&message);
         SessionError::Link(message)
     }
 
@@ -366,7 +372,7 @@ impl TmclSession {
         scan: &mut Scan,
         resync_cr: bool,
     ) -> SessionError {
-        let leftover = self.wire.rx.clear();
+        let leftover = self.core.wire.rx.clear();
         let mut partial = std::mem::take(&mut scan.held);
         partial.extend_from_slice(&leftover);
         let hint = if scan.echo_seen && leftover.iter().all(|&b| is_line_break(b)) {
@@ -379,15 +385,16 @@ impl TmclSession {
             String::new()
         };
         if !partial.is_empty() {
-            self.wire
+            self.core
+                .wire
                 .log(Entry::Received, &partial, "incomplete, no reply");
         }
         if resync_cr {
             // A CR ends whatever part of our line the module may still hold, so the next line
             // starts clean; what it provokes is discarded while the line resynchronises.
-            let _ = self.wire.send(b"\r", "resynchronise after timeout");
+            let _ = self.core.wire.send(b"\r", "resynchronise after timeout");
         }
-        self.wire.note(&format!(
+        self.core.wire.note(&format!(
             "no reply from module {module} within {} ms",
             timeout.as_millis()
         ));

@@ -34,7 +34,8 @@ impl TmclSession {
             instruction,
         }
         .encode();
-        self.wire
+        self.core
+            .wire
             .send(&frame, format_args!("{sent} to module {module} (binary)"))?;
         let exchange = |answer, raw| Exchange {
             module,
@@ -46,15 +47,16 @@ impl TmclSession {
         if instruction.command == 137 {
             return Ok(exchange(Answer::Nothing, String::new()));
         }
-        let deadline = Instant::now() + self.options.timeout;
+        let deadline = Instant::now() + self.core.options.timeout;
         loop {
-            while self.wire.rx.len() >= FRAME_LEN {
+            while self.core.wire.rx.len() >= FRAME_LEN {
                 let mut raw = [0u8; FRAME_LEN];
-                raw.copy_from_slice(&self.wire.rx.bytes()[..FRAME_LEN]);
+                raw.copy_from_slice(&self.core.wire.rx.bytes()[..FRAME_LEN]);
                 if instruction.command == 136 && instruction.type_ == 0 {
                     let (_, text) = decode_version_string(&raw);
                     self.settle_binary(module, &raw, deadline)?;
-                    self.wire
+                    self.core
+                        .wire
                         .log_received(FRAME_LEN, format_args!("version {text}"));
                     return Ok(exchange(Answer::Version(text.clone()), text));
                 }
@@ -68,11 +70,11 @@ impl TmclSession {
                     }
                 };
                 if reply.command == 138 && reply.status == Status::PositionReachedEvent {
-                    self.wire.notices.push(format!(
+                    self.core.wire.notices.push(format!(
                         "module {}: target position reached (event)",
                         reply.module
                     ));
-                    self.wire.log_received(
+                    self.core.wire.log_received(
                         FRAME_LEN,
                         "target position reached event, not a reply; discarded",
                     );
@@ -80,7 +82,7 @@ impl TmclSession {
                 }
                 if reply.module != module || reply.command != instruction.command {
                     let kind = format!("a reply frame not for module {module}'s request");
-                    self.wire.discard(FRAME_LEN, &kind);
+                    self.core.wire.discard(FRAME_LEN, &kind);
                     continue;
                 }
                 if let Status::Other(code) = reply.status {
@@ -93,7 +95,7 @@ impl TmclSession {
                     ));
                 }
                 self.settle_binary(module, &raw, deadline)?;
-                self.wire.log_received(
+                self.core.wire.log_received(
                     FRAME_LEN,
                     format_args!(
                         "from module {}: {}, value {}",
@@ -108,15 +110,16 @@ impl TmclSession {
                     binary_reply_text(&reply),
                 ));
             }
-            if Instant::now() >= deadline || !self.wire.fill(deadline)? {
-                let partial = self.wire.rx.clear();
+            if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
+                let partial = self.core.wire.rx.clear();
                 if !partial.is_empty() {
-                    self.wire
+                    self.core
+                        .wire
                         .log(Entry::Received, &partial, "incomplete frame, no reply");
                 }
                 return Err(SessionError::Timeout {
                     module: address_char(module).unwrap_or('?').to_string(),
-                    timeout: self.options.timeout,
+                    timeout: self.core.options.timeout,
                     hint: if partial.is_empty() {
                         String::new()
                     } else {
@@ -135,15 +138,15 @@ impl TmclSession {
         reply: &[u8; FRAME_LEN],
         deadline: Instant,
     ) -> Result<(), SessionError> {
-        let hard_end = deadline.max(Instant::now() + self.wire.settle_time());
+        let hard_end = deadline.max(Instant::now() + self.core.wire.settle_time());
         let mut pos = FRAME_LEN;
         loop {
-            while self.wire.rx.len() >= pos + FRAME_LEN {
+            while self.core.wire.rx.len() >= pos + FRAME_LEN {
                 let mut frame = [0u8; FRAME_LEN];
-                frame.copy_from_slice(&self.wire.rx.bytes()[pos..pos + FRAME_LEN]);
+                frame.copy_from_slice(&self.core.wire.rx.bytes()[pos..pos + FRAME_LEN]);
                 match ReplyFrame::decode(&frame) {
                     Ok(r) if r.command == 138 && r.status == Status::PositionReachedEvent => {
-                        self.wire.notices.push(format!(
+                        self.core.wire.notices.push(format!(
                             "module {}: target position reached (event)",
                             r.module
                         ));
@@ -152,8 +155,8 @@ impl TmclSession {
                     _ => return Err(self.trailing_noise(module, reply)),
                 }
             }
-            let partial = self.wire.rx.len() > pos;
-            if Instant::now() >= hard_end || !self.wire.await_more(hard_end)? {
+            let partial = self.core.wire.rx.len() > pos;
+            if Instant::now() >= hard_end || !self.core.wire.await_more(hard_end)? {
                 if partial {
                     return Err(self.trailing_noise(module, reply));
                 }
@@ -163,7 +166,7 @@ impl TmclSession {
     }
 
     fn trailing_noise(&mut self, module: u8, reply: &[u8; FRAME_LEN]) -> SessionError {
-        let rest = &self.wire.rx.bytes()[FRAME_LEN..];
+        let rest = &self.core.wire.rx.bytes()[FRAME_LEN..];
         let after = hex(&rest[..rest.len().min(3 * FRAME_LEN)]);
         self.binary_noise(
             "a reply followed by more data",
@@ -176,13 +179,13 @@ impl TmclSession {
 
     /// Ends a binary exchange on line noise, logging what was received.
     fn binary_noise(&mut self, what: &str, message: String) -> SessionError {
-        let bytes = self.wire.rx.clear();
-        self.wire.log(
+        let bytes = self.core.wire.rx.clear();
+        self.core.wire.log(
             Entry::Received,
             &bytes,
             format_args!("{what}: line noise, discarded"),
         );
-        self.wire.note(&message);
+        self.core.wire.note(&message);
         SessionError::Link(message)
     }
 }

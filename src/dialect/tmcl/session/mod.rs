@@ -11,7 +11,7 @@ mod probe;
 mod stop;
 mod unanswered;
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use crate::dialect::tmcl::profile::Profile;
@@ -24,8 +24,10 @@ use crate::dialect::tmcl::protocol::validate::{self, Mode};
 use crate::dialect::tmcl::protocol::{Instruction, Status};
 use crate::link::Link;
 
+use crate::dialect::session::{DialectSession, Refusal, Reply};
+use crate::session::core::{Addresses, SessionCore};
 use crate::session::transcript::Transcript;
-use crate::session::wire::{Peer, Wire};
+use crate::session::wire::Peer;
 use crate::session::{SessionError, SessionOptions};
 
 pub use mode::{Echo, WireMode};
@@ -90,28 +92,40 @@ impl Exchange {
 
     /// The exchange, or a device error when the module answered with an error status.
     pub fn checked(self) -> Result<Exchange, SessionError> {
+        match self.refusal() {
+            Some(refusal) => Err(refusal.into()),
+            None => Ok(self),
+        }
+    }
+
+    /// The error status the module answered with, if any.
+    pub fn refusal(&self) -> Option<Refusal> {
         match self.answer {
-            Answer::Reply { status, .. } if !status.is_success() => Err(SessionError::Device {
+            Answer::Reply { status, .. } if !status.is_success() => Some(Refusal {
                 module: address_char(self.module).unwrap_or('?').to_string(),
-                sent: self.sent,
+                sent: self.sent.clone(),
                 reason: format!("status {status}"),
             }),
-            _ => Ok(self),
+            _ => None,
+        }
+    }
+
+    /// The answer as the module sent it: the reply line without echo and line ending, or the
+    /// version string of 136.
+    pub fn shown(&self) -> String {
+        match &self.answer {
+            Answer::Version(version) => version.clone(),
+            _ => self.raw.clone(),
         }
     }
 }
 
 /// A TMCL conversation with the modules on one link.
 pub struct TmclSession {
-    wire: Wire,
+    core: SessionCore,
     profile: Arc<Profile>,
-    options: SessionOptions,
     target: u8,
     modules: BTreeMap<u8, mode::ModuleState>,
-    moved: BTreeSet<u8>,
-    running: BTreeSet<u8>,
-    /// Requests go out without waiting for a suspect line to go quiet (stops, mode restores).
-    urgent: bool,
     /// ASCII lines that failed: their echo and reply may still come.
     unanswered: Unanswered,
 }
@@ -144,18 +158,14 @@ impl TmclSession {
             )));
         }
         let mut session = TmclSession {
-            wire: Wire::new(link, transcript),
-            profile,
             target: options.module,
-            options,
+            core: SessionCore::new(link, options, transcript),
+            profile,
             modules: BTreeMap::new(),
-            moved: BTreeSet::new(),
-            running: BTreeSet::new(),
-            urgent: false,
             unanswered: Unanswered::default(),
         };
-        let opened = format!("session opened on {}", session.wire.link.describe());
-        session.wire.note(&opened);
+        let opened = format!("session opened on {}", session.core.wire.link.describe());
+        session.core.wire.note(&opened);
         Ok(session)
     }
 
@@ -164,19 +174,9 @@ impl TmclSession {
         &self.profile
     }
 
-    /// What the link talks to.
-    pub fn describe(&self) -> String {
-        self.wire.link.describe()
-    }
-
     /// The module lines without an address character go to.
     pub fn target(&self) -> u8 {
         self.target
-    }
-
-    /// The session's settings.
-    pub fn options(&self) -> &SessionOptions {
-        &self.options
     }
 
     /// Changes the target module, entering ASCII mode on it if it is new.
@@ -196,36 +196,15 @@ impl TmclSession {
         self.modules.get(&module).map(|m| (m.mode, m.echo))
     }
 
-    /// Messages gathered since the last call: validator warnings, line noise, ignored replies.
-    pub fn take_notices(&mut self) -> Vec<String> {
-        std::mem::take(&mut self.wire.notices)
-    }
-
-    /// Adds a message for the user, shown with the session's own notices (on stderr in
-    /// non-interactive use) at the next [`take_notices`](Self::take_notices).
-    pub fn notify(&mut self, text: String) {
-        self.wire.notices.push(text);
-    }
-
-    /// Starts or stops writing the transcript.
-    pub fn set_transcript(&mut self, transcript: Option<Transcript>) {
-        self.wire.transcript = transcript;
-    }
-
-    /// The transcript being written, if any.
-    pub fn transcript(&self) -> Option<&Transcript> {
-        self.wire.transcript.as_ref()
-    }
-
     /// Parses, validates and sends one command line; returns the module's answer. An error
     /// status is an `Ok` exchange whose [`Exchange::ok`] is false.
-    pub fn execute(&mut self, text: &str) -> Result<Exchange, SessionError> {
+    pub fn exchange_line(&mut self, text: &str) -> Result<Exchange, SessionError> {
         match line::parse(text, &self.profile) {
             Ok(line) => {
                 let module = line.address.unwrap_or(self.target);
                 self.perform(module, line.op)
             }
-            Err(error) if self.options.validate => Err(error.into()),
+            Err(error) if self.core.options.validate => Err(error.into()),
             Err(error) => {
                 // --no-validate: send what parses, in canonical spelling.
                 let raw = parse_line(text, |w| self.profile.commands.is_word(w))
@@ -235,7 +214,10 @@ impl TmclSession {
                     .and_then(line::address_of)
                     .unwrap_or(self.target);
                 self.contact(module)?;
-                self.wire.notices.push(format!("not validated: {error}"));
+                self.core
+                    .wire
+                    .notices
+                    .push(format!("not validated: {error}"));
                 let sent = line::format_raw(&raw, self.target);
                 self.ascii_request(module, &sent, None)
             }
@@ -263,11 +245,16 @@ impl TmclSession {
         };
         match validate::validate(&line, &self.profile, mode) {
             Ok(warnings) => self
+                .core
                 .wire
                 .notices
                 .extend(warnings.iter().map(ToString::to_string)),
-            Err(error) if self.options.validate => return Err(error.into()),
-            Err(error) => self.wire.notices.push(format!("not validated: {error}")),
+            Err(error) if self.core.options.validate => return Err(error.into()),
+            Err(error) => self
+                .core
+                .wire
+                .notices
+                .push(format!("not validated: {error}")),
         }
         let exchange = match (wire, op) {
             (WireMode::Ascii, Op::Ascii(AsciiWord::Bin)) => self.leave_ascii(module)?,
@@ -299,10 +286,10 @@ impl TmclSession {
             Some(Op::Command(i)) => {
                 let spec = self.profile.commands.by_number(i.command);
                 if spec.is_some_and(|s| s.starts_motion) {
-                    self.moved.insert(exchange.module);
+                    self.core.moved.insert(Some(exchange.module.into()));
                 }
                 if i.command == 129 {
-                    self.running.insert(exchange.module);
+                    self.core.running.insert(Some(exchange.module.into()));
                 }
                 if i.command == 128 {
                     self.stopped_program(exchange.module);
@@ -312,7 +299,7 @@ impl TmclSession {
                 }
             }
             Some(Op::Ascii(AsciiWord::Run)) => {
-                self.running.insert(exchange.module);
+                self.core.running.insert(Some(exchange.module.into()));
             }
             Some(Op::Ascii(AsciiWord::Stop)) => {
                 self.stopped_program(exchange.module);
@@ -324,14 +311,10 @@ impl TmclSession {
     /// A program this session started was stopped: the motion it started goes on (STOP ends the
     /// program, not the motion), so the module counts as set moving by this session.
     fn stopped_program(&mut self, module: u8) {
-        if self.running.remove(&module) {
-            self.moved.insert(module);
+        let module = Some(module.into());
+        if self.core.running.remove(&module) {
+            self.core.moved.insert(module);
         }
-    }
-
-    /// Whether this session started motion or a program that may still be going.
-    pub fn may_be_moving(&self) -> bool {
-        !self.moved.is_empty() || !self.running.is_empty()
     }
 
     /// Stores one program instruction while the module is in download mode (binary mode, after
@@ -353,8 +336,12 @@ impl TmclSession {
         };
         match validate::validate(&line, &self.profile, Mode::Program) {
             Ok(_) => {}
-            Err(error) if self.options.validate => return Err(error.into()),
-            Err(error) => self.wire.notices.push(format!("not validated: {error}")),
+            Err(error) if self.core.options.validate => return Err(error.into()),
+            Err(error) => self
+                .core
+                .wire
+                .notices
+                .push(format!("not validated: {error}")),
         }
         self.binary_request(module, instruction)
     }
@@ -421,16 +408,6 @@ impl TmclSession {
         )
     }
 
-    /// Ends the session: every module goes back to the mode it was found in (unless
-    /// `--stay-ascii`). Returns what was done.
-    pub fn close(&mut self) -> Vec<String> {
-        if self.options.stay_ascii {
-            return Vec::new();
-        }
-        // Mode restores carry no value for anyone: they need not wait for a suspect line.
-        self.urgently(Self::restore_modes)
-    }
-
     fn restore_modes(&mut self) -> Vec<String> {
         let mut report = Vec::new();
         let to_restore: Vec<u8> = self
@@ -459,45 +436,13 @@ impl TmclSession {
                 ));
             }
         }
-        self.wire.note("session closed");
+        self.core.wire.note("session closed");
         report
-    }
-
-    /// Reopens a lost link and re-enters ASCII mode on the modules that were in it.
-    pub fn reconnect(&mut self) -> Result<(), SessionError> {
-        self.wire.link.reopen()?;
-        self.wire.reset();
-        self.wire
-            .note(&format!("link reopened: {}", self.wire.link.describe()));
-        let ascii: Vec<u8> = self
-            .modules
-            .iter()
-            .filter(|(_, m)| m.mode == WireMode::Ascii)
-            .map(|(&a, _)| a)
-            .collect();
-        for module in ascii {
-            self.enter_ascii(module)?;
-        }
-        Ok(())
-    }
-
-    /// Writes a remark into the transcript; false when no transcript is being written.
-    pub fn annotate(&mut self, text: &str) -> bool {
-        self.wire.note(text);
-        self.wire.transcript.is_some()
     }
 
     /// A human description of an instruction for the transcript.
     fn describe_instruction(&self, instruction: &Instruction) -> String {
         format_instruction(instruction, &self.profile)
-    }
-
-    /// Runs `f` with requests sent at once, without resynchronising a suspect line first.
-    fn urgently<T>(&mut self, f: impl FnOnce(&mut Self) -> T) -> T {
-        let was = std::mem::replace(&mut self.urgent, true);
-        let result = f(self);
-        self.urgent = was;
-        result
     }
 
     /// Runs one exchange with `module` between the wire's begin and finish, so that any failure
@@ -509,12 +454,13 @@ impl TmclSession {
         optional: bool,
         f: impl FnOnce(&mut Self) -> Result<T, SessionError>,
     ) -> Result<T, SessionError> {
-        let timeout = self.options.timeout;
+        let timeout = self.core.options.timeout;
         let peer = Peer::Module(module.into());
         let unanswered = &mut self.unanswered;
         let result = self
+            .core
             .wire
-            .begin(peer, self.urgent, timeout, &mut |bytes| {
+            .begin(peer, self.core.urgent, timeout, &mut |bytes| {
                 harmless(bytes, unanswered)
             })
             .and_then(|()| f(self));
@@ -523,9 +469,76 @@ impl TmclSession {
             Err(SessionError::Timeout { .. }) => optional,
             Err(_) => false,
         };
-        self.wire.finish(settled);
+        self.core.wire.finish(settled);
         result
     }
+}
+
+impl DialectSession for TmclSession {
+    fn core(&self) -> &SessionCore {
+        &self.core
+    }
+
+    fn core_mut(&mut self) -> &mut SessionCore {
+        &mut self.core
+    }
+
+    fn execute(&mut self, line: &str) -> Result<Reply, SessionError> {
+        let exchange = self.exchange_line(line)?;
+        Ok(Reply {
+            shown: exchange.shown(),
+            decoded: super::render::decode(&exchange, &self.profile).text,
+            refusal: exchange.refusal(),
+        })
+    }
+
+    fn stop_motion(&mut self) -> Vec<String> {
+        self.urgently(Self::stop_everything)
+    }
+
+    fn target_address(&self) -> Option<u32> {
+        Some(self.target.into())
+    }
+
+    /// Every module goes back to the mode it was found in (unless `--stay-ascii`).
+    fn close(&mut self) -> Vec<String> {
+        if self.core.options.stay_ascii {
+            return Vec::new();
+        }
+        // Mode restores carry no value for anyone: they need not wait for a suspect line.
+        self.urgently(Self::restore_modes)
+    }
+
+    /// The target's address character, and `[bin]` in binary mode.
+    fn prompt(&self) -> String {
+        let c = address_char(self.target).unwrap_or('?');
+        match self.module_state(self.target) {
+            Some((WireMode::Binary, _)) => format!("{c}[bin]> "),
+            _ => format!("{c}> "),
+        }
+    }
+
+    /// Re-enters ASCII mode on the modules that were in it.
+    fn reenter(&mut self) -> Result<(), SessionError> {
+        let ascii: Vec<u8> = self
+            .modules
+            .iter()
+            .filter(|(_, m)| m.mode == WireMode::Ascii)
+            .map(|(&a, _)| a)
+            .collect();
+        for module in ascii {
+            self.enter_ascii(module)?;
+        }
+        Ok(())
+    }
+}
+
+/// The TMCL module addresses among `addresses`.
+fn modules(addresses: &Addresses) -> Vec<u8> {
+    addresses
+        .iter()
+        .filter_map(|a| a.and_then(|a| u8::try_from(a).ok()))
+        .collect()
 }
 
 #[cfg(test)]

@@ -107,7 +107,7 @@ impl TmclSession {
         if let Some(state) = self.modules.get(&module) {
             return Ok(state.mode);
         }
-        if self.options.enter {
+        if self.core.options.enter {
             self.enter_ascii(module)?;
         } else {
             self.modules.insert(
@@ -129,21 +129,22 @@ impl TmclSession {
         // A module still in binary mode has seen our ASCII traffic to others as frame bytes; it
         // finds the start of our frame only after the line was idle for its receive time-out.
         let resync = Duration::from_millis(u64::from(self.profile.sim.frame_timeout_ms) * 11 / 10);
-        self.wire.idle_for(resync)?;
+        self.core.wire.idle_for(resync)?;
         let unanswered = &mut self.unanswered;
-        self.wire
+        self.core
+            .wire
             .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))?;
         let frame = CommandFrame {
             address: module,
             instruction: Instruction::new(139, 0, 0, 0),
         };
         let bytes = frame.encode();
-        self.wire.send(
+        self.core.wire.send(
             &bytes,
             format_args!("enter ASCII mode (139) to module {module}"),
         )?;
         let found_binary = self.optional_binary_reply(module)?;
-        self.wire.send(
+        self.core.wire.send(
             b"\r",
             "end of line, clears any partial line in ASCII-mode modules",
         )?;
@@ -166,35 +167,37 @@ impl TmclSession {
     /// bytes' wire time, whatever the timeout.
     fn optional_wait(&self, bytes: u32) -> Duration {
         let wire = self
+            .core
             .wire
             .link
             .byte_time()
             .map_or(Duration::ZERO, |b| b * bytes);
-        OPTIONAL_REPLY_WAIT.min(self.options.timeout) + wire
+        OPTIONAL_REPLY_WAIT.min(self.core.options.timeout) + wire
     }
 
     /// Waits briefly for the binary reply some firmware sends to 139; true if it came.
     fn optional_binary_reply(&mut self, module: u8) -> Result<bool, SessionError> {
         let deadline = Instant::now() + self.optional_wait(2 * FRAME_LEN as u32);
-        while self.wire.rx.len() < FRAME_LEN && Instant::now() < deadline {
-            if !self.wire.fill(deadline)? {
+        while self.core.wire.rx.len() < FRAME_LEN && Instant::now() < deadline {
+            if !self.core.wire.fill(deadline)? {
                 break;
             }
         }
-        if self.wire.rx.len() < FRAME_LEN {
-            let stray = self.wire.rx.clear();
+        if self.core.wire.rx.len() < FRAME_LEN {
+            let stray = self.core.wire.rx.clear();
             if !stray.is_empty() {
-                self.wire
+                self.core
+                    .wire
                     .log(Entry::Received, &stray, "partial data after 139, discarded");
             }
             return Ok(false);
         }
-        let bytes = self.wire.rx.take(FRAME_LEN);
+        let bytes = self.core.wire.rx.take(FRAME_LEN);
         let mut frame = [0u8; FRAME_LEN];
         frame.copy_from_slice(&bytes);
         match ReplyFrame::decode(&frame) {
             Ok(reply) if reply.module == module && reply.command == 139 => {
-                self.wire.log(
+                self.core.wire.log(
                     Entry::Received,
                     &bytes,
                     format_args!("binary reply to 139: status {}", reply.status),
@@ -202,9 +205,10 @@ impl TmclSession {
                 Ok(true)
             }
             _ => {
-                self.wire
+                self.core
+                    .wire
                     .log(Entry::Received, &bytes, "not a reply to 139, discarded");
-                self.wire.notices.push(format!(
+                self.core.wire.notices.push(format!(
                     "unexpected bytes after entering ASCII mode: {}",
                     hex(&bytes)
                 ));
@@ -261,7 +265,7 @@ impl TmclSession {
                 "binary"
             }
         );
-        self.wire.note(&note);
+        self.core.wire.note(&note);
         Ok(())
     }
 
@@ -276,7 +280,7 @@ impl TmclSession {
         state.echo_known = false;
         let found = Some(state.found_in);
         if let Err(e) = self.learn_echo(module, found) {
-            self.wire.notices.push(format!(
+            self.core.wire.notices.push(format!(
                 "could not read the echo setting of module {module}: {e}"
             ));
         }
@@ -303,7 +307,8 @@ impl TmclSession {
         if let Some(state) = self.modules.get_mut(&module) {
             state.mode = WireMode::Binary;
         }
-        self.wire
+        self.core
+            .wire
             .note(&format!("module {c} left ASCII mode (binary direct mode)"));
         Ok(exchange)
     }

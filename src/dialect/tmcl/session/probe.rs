@@ -9,14 +9,6 @@ use super::{Exchange, TmclSession, WireMode};
 use crate::session::SessionError;
 
 impl TmclSession {
-    /// Runs `f` with replies awaited for at most `timeout`, then restores the session's timeout.
-    pub fn with_timeout<T>(&mut self, timeout: Duration, f: impl FnOnce(&mut Self) -> T) -> T {
-        let saved = std::mem::replace(&mut self.options.timeout, timeout);
-        let result = f(self);
-        self.options.timeout = saved;
-        result
-    }
-
     /// The mode a module was in when the session first reached it.
     pub fn found_in(&self, module: u8) -> Option<WireMode> {
         self.modules.get(&module).map(|m| m.found_in)
@@ -47,21 +39,23 @@ impl TmclSession {
     pub fn quiet(&mut self, duration: Duration) -> Result<(), SessionError> {
         let deadline = Instant::now() + duration;
         while Instant::now() < deadline {
-            if self.wire.fill(deadline)? {
-                let n = self.wire.rx.len();
-                self.wire
+            if self.core.wire.fill(deadline)? {
+                let n = self.core.wire.rx.len();
+                self.core
+                    .wire
                     .discard_quietly(n, "while the line was kept quiet");
             }
         }
-        let n = self.wire.rx.len();
-        self.wire
+        let n = self.core.wire.rx.len();
+        self.core
+            .wire
             .discard_quietly(n, "while the line was kept quiet");
         Ok(())
     }
 
     /// Sends a lone CR, which ends whatever partial line ASCII-mode modules hold.
     pub fn end_partial_line(&mut self) -> Result<(), SessionError> {
-        self.wire.send(
+        self.core.wire.send(
             b"\r",
             "end of line, clears what the probes left in line buffers",
         )

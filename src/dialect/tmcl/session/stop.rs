@@ -7,7 +7,8 @@ use std::time::Duration;
 use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::address_char;
 
-use super::{Exchange, TmclSession};
+use super::{Exchange, TmclSession, modules};
+use crate::dialect::session::DialectSession;
 use crate::session::SessionError;
 
 impl TmclSession {
@@ -26,36 +27,27 @@ impl TmclSession {
     /// that that the stop went out, however slow the interrupted reply was.
     fn stop_wait(&self) -> Duration {
         let wire = self
+            .core
             .wire
             .link
             .byte_time()
             .map_or(Duration::ZERO, |b| b * 32);
-        self.options
+        self.core
+            .options
             .timeout
             .min(crate::session::STOP_CONFIRMATION + wire)
     }
 
-    /// Stops the motors of `module` (even if this session did not start them) together with
-    /// everything this session set moving, each once (after Ctrl-C).
-    pub fn stop_motion_and(&mut self, module: u8) -> Vec<String> {
-        self.moved.insert(module);
-        self.stop_motion()
-    }
-
     /// Stops every module this session set moving or whose program it started (MST, and STOP /
     /// command 128 for programs). Returns what was done, for the user.
-    pub fn stop_motion(&mut self) -> Vec<String> {
-        self.urgently(Self::stop_everything)
-    }
-
-    fn stop_everything(&mut self) -> Vec<String> {
+    pub(super) fn stop_everything(&mut self) -> Vec<String> {
         let wait = self.stop_wait();
         self.with_timeout(wait, Self::stop_each)
     }
 
     fn stop_each(&mut self) -> Vec<String> {
         let mut report = Vec::new();
-        let programs: Vec<u8> = self.running.iter().copied().collect();
+        let programs = modules(&self.core.running);
         for module in programs {
             let c = address_char(module).unwrap_or('?');
             match self.stop_program(module) {
@@ -67,7 +59,7 @@ impl TmclSession {
                 Err(e) => report.push(format!("could not stop the program of module {c}: {e}")),
             }
         }
-        let moved: Vec<u8> = self.moved.iter().copied().collect();
+        let moved = modules(&self.core.moved);
         for module in moved {
             let c = address_char(module).unwrap_or('?');
             for (motor, result) in self.stop_motors(module) {
@@ -86,9 +78,9 @@ impl TmclSession {
                 }
             }
         }
-        self.moved.clear();
+        self.core.moved.clear();
         for line in &report {
-            self.wire.note(line);
+            self.core.wire.note(line);
         }
         report
     }

@@ -1,6 +1,7 @@
 //! Session logic against a small scripted module whose quirks each test chooses (echo mode, line
 //! endings, 139 reply, noise). The real simulator over ptys is exercised by the integration tests.
 
+use crate::dialect::session::DialectSession;
 use std::collections::VecDeque;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -286,7 +287,7 @@ fn sent_text(wire: &Arc<Mutex<Wire>>) -> String {
 fn enters_ascii_mode_reads_a_value_and_restores_binary_mode() {
     let (mut s, wire) = open(Quirks::default());
     assert_eq!(s.module_state(1), Some((WireMode::Ascii, Echo::Character)));
-    let x = s.execute("GAP actual_position, 0").unwrap();
+    let x = s.exchange_line("GAP actual_position, 0").unwrap();
     assert_eq!(x.sent, "AGAP 1, 0");
     assert_eq!(x.raw, "BA 100 -5000");
     assert_eq!(
@@ -322,12 +323,12 @@ fn every_echo_mode_with_every_line_ending() {
                 };
                 let (mut s, _) = open(quirks);
                 for round in 0..3 {
-                    let x = s.execute(&format!("SAP 1, 0, {round}")).unwrap();
+                    let x = s.exchange_line(&format!("SAP 1, 0, {round}")).unwrap();
                     assert!(
                         x.ok(),
                         "gp67={gp67:#x} echo_end={echo_ending:?} reply_end={reply_ending:?}"
                     );
-                    let x = s.execute("GAP 1, 0").unwrap();
+                    let x = s.exchange_line("GAP 1, 0").unwrap();
                     assert_eq!(
                         x.value(),
                         Some(round),
@@ -350,8 +351,8 @@ fn a_reply_arriving_byte_by_byte_is_read_without_noise_in_every_echo_mode() {
             ..Quirks::default()
         });
         for round in 0..3 {
-            assert!(s.execute(&format!("SAP 1, 0, {round}")).unwrap().ok());
-            assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(round));
+            assert!(s.exchange_line(&format!("SAP 1, 0, {round}")).unwrap().ok());
+            assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(round));
         }
         assert_eq!(s.take_notices(), Vec::<String>::new(), "gp67={gp67:#x}");
     }
@@ -365,7 +366,7 @@ fn a_stale_reply_before_a_slow_echo_is_not_taken_for_the_answer() {
         ..Quirks::default()
     });
     s.take_notices();
-    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
     let notices = s.take_notices();
     assert!(
         notices.len() == 1 && notices[0].contains("before the echo"),
@@ -382,7 +383,7 @@ fn a_module_already_in_ascii_mode_is_left_in_it() {
     };
     let (mut s, wire) = open(quirks);
     assert_eq!(s.module_state(1), Some((WireMode::Ascii, Echo::None)));
-    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
     s.close();
     assert!(
         !sent_text(&wire).contains("BIN"),
@@ -397,7 +398,7 @@ fn a_module_that_does_not_answer_139_is_still_entered_and_restored() {
         ..Quirks::default()
     };
     let (mut s, wire) = open(quirks);
-    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
     s.close();
     assert!(sent_text(&wire).ends_with("ABIN\r"));
 }
@@ -449,7 +450,7 @@ fn a_reply_from_another_module_is_reported_not_taken() {
         ..Quirks::default()
     });
     s.take_notices();
-    let x = s.execute("GAP 1, 0").unwrap();
+    let x = s.exchange_line("GAP 1, 0").unwrap();
     assert_eq!(x.value(), Some(-5000));
     let notices = s.take_notices();
     assert!(
@@ -467,7 +468,7 @@ fn garbage_before_the_reply_is_reported_and_skipped() {
         ..Quirks::default()
     });
     s.take_notices();
-    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
     let notices = s.take_notices();
     assert!(
         notices
@@ -498,10 +499,10 @@ fn an_echo_that_differs_from_what_was_sent_is_line_noise() {
 fn refused_lines_send_nothing() {
     let (mut s, wire) = open(Quirks::default());
     let before = wire.lock().unwrap().sent.len();
-    let e = s.execute("SAP 6, 0, 99").unwrap_err();
+    let e = s.exchange_line("SAP 6, 0, 99").unwrap_err();
     assert!(matches!(e, SessionError::Refused(_)), "{e}");
-    assert!(s.execute("CALC ADD, 1").is_err());
-    assert!(s.execute("GAPP 1, 0").is_err());
+    assert!(s.exchange_line("CALC ADD, 1").is_err());
+    assert!(s.exchange_line("GAPP 1, 0").is_err());
     assert_eq!(wire.lock().unwrap().sent.len(), before);
 }
 
@@ -515,9 +516,9 @@ fn no_validate_sends_what_parses_in_canonical_form() {
         },
     );
     let mut s = s.unwrap();
-    let x = s.execute("sap 6 0 99").unwrap();
+    let x = s.exchange_line("sap 6 0 99").unwrap();
     assert_eq!(x.sent, "ASAP 6, 0, 99");
-    let x = s.execute("gapp 1 0").unwrap();
+    let x = s.exchange_line("gapp 1 0").unwrap();
     assert_eq!(x.sent, "AGAPP 1, 0");
     assert_eq!(x.status(), Some(Status::InvalidCommand));
     assert!(
@@ -531,7 +532,7 @@ fn no_validate_sends_what_parses_in_canonical_form() {
 #[test]
 fn device_errors_come_back_as_unsuccessful_exchanges() {
     let (mut s, _) = open(Quirks::default());
-    let x = s.execute("GAP 200, 0").unwrap();
+    let x = s.exchange_line("GAP 200, 0").unwrap();
     assert!(!x.ok());
     assert_eq!(x.raw, "BA 3 0");
     let e = x.checked().unwrap_err();
@@ -546,18 +547,18 @@ fn changing_the_echo_setting_is_followed() {
     let (mut s, _) = open(Quirks::default());
     assert_eq!(s.set_echo(1, Echo::Line).unwrap(), Echo::Line);
     assert_eq!(s.module_state(1), Some((WireMode::Ascii, Echo::Line)));
-    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
-    s.execute("SGP 67, 0, 0x20").unwrap();
+    assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
+    s.exchange_line("SGP 67, 0, 0x20").unwrap();
     assert_eq!(s.module_state(1), Some((WireMode::Ascii, Echo::None)));
-    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
 }
 
 #[test]
 fn after_bin_lines_go_as_binary_frames() {
     let (mut s, wire) = open(Quirks::default());
-    s.execute("BIN").unwrap();
+    s.exchange_line("BIN").unwrap();
     assert_eq!(s.module_state(1).unwrap().0, WireMode::Binary);
-    let x = s.execute("GAP 1, 0").unwrap();
+    let x = s.exchange_line("GAP 1, 0").unwrap();
     assert_eq!(x.value(), Some(-5000));
     assert_eq!(x.raw, "BA 100 -5000");
     let frame = CommandFrame {
@@ -566,14 +567,17 @@ fn after_bin_lines_go_as_binary_frames() {
     }
     .encode();
     assert!(wire.lock().unwrap().sent.ends_with(&frame));
-    assert!(matches!(s.execute("RUN"), Err(SessionError::Refused(_))));
+    assert!(matches!(
+        s.exchange_line("RUN"),
+        Err(SessionError::Refused(_))
+    ));
 }
 
 #[test]
 fn stop_motion_sends_mst_to_modules_that_were_moved() {
     let (mut s, wire) = open(Quirks::default());
     assert!(s.stop_motion().is_empty());
-    s.execute("ROR 0, 1000").unwrap();
+    s.exchange_line("ROR 0, 1000").unwrap();
     assert!(s.may_be_moving());
     let report = s.stop_motion();
     assert_eq!(
@@ -596,10 +600,10 @@ fn with_an_echo_an_identical_request_after_a_failure_is_spelled_so_its_echo_is_i
             late_first_gap: true,
             ..Quirks::default()
         });
-        let e = s.execute("GAP 1, 0").unwrap_err();
+        let e = s.exchange_line("GAP 1, 0").unwrap_err();
         assert!(matches!(e, SessionError::Timeout { .. }), "{e}");
         // The first request's echo and answer (7777) come just before the second's.
-        let x = s.execute("GAP 1, 0").unwrap();
+        let x = s.exchange_line("GAP 1, 0").unwrap();
         assert_eq!(x.value(), Some(-5000), "gp67={gp67:#x}");
         assert_eq!(x.sent, "AGAP 1, 0", "the canonical line is reported");
         assert!(
@@ -613,7 +617,7 @@ fn with_an_echo_an_identical_request_after_a_failure_is_spelled_so_its_echo_is_i
         );
         // Every late answer has come: the module is trusted again without a wait.
         let before = waits(&wire);
-        let x = s.execute("GAP 1, 0").unwrap();
+        let x = s.exchange_line("GAP 1, 0").unwrap();
         assert_eq!(x.value(), Some(-5000));
         assert!(
             sent_text(&wire).ends_with("\rAGAP 1, 0\r"),
@@ -631,8 +635,8 @@ fn without_an_echo_a_reply_later_than_the_quiet_wait_is_the_one_limit() {
     });
     // From now on the module answers each line only when the next one arrives.
     wire.lock().unwrap().lagging = true;
-    assert!(s.execute("GAP 1, 0").is_err());
-    let x = s.execute("GAP 1, 0").unwrap();
+    assert!(s.exchange_line("GAP 1, 0").is_err());
+    let x = s.exchange_line("GAP 1, 0").unwrap();
     assert_eq!(
         x.value(),
         Some(7777),
@@ -647,12 +651,12 @@ fn after_a_timeout_the_next_request_waits_for_a_quiet_line_and_a_stop_does_not()
         first_gap_reply: Some(b""),
         ..Quirks::default()
     });
-    assert!(s.execute("GAP 1, 0").is_err());
+    assert!(s.exchange_line("GAP 1, 0").is_err());
     let before = waits(&wire);
     let stops = s.stop_motors(1);
     assert!(stops.iter().all(|(_, r)| r.is_ok()), "{stops:?}");
     assert_eq!(waits(&wire), before, "MST went out at once");
-    s.execute("GAP 4, 0").unwrap();
+    s.exchange_line("GAP 4, 0").unwrap();
     assert!(
         waits(&wire) > before,
         "an ordinary request resynchronised first"
@@ -671,10 +675,10 @@ fn a_reply_cut_short_by_a_corrupted_byte_is_line_noise() {
             first_gap_reply: Some(reply),
             ..Quirks::default()
         });
-        let e = s.execute("GAP 1, 0").unwrap_err();
+        let e = s.exchange_line("GAP 1, 0").unwrap_err();
         assert!(e.to_string().starts_with("line noise"), "{e}");
         assert_eq!(crate::exit::ExitStatus::exit(&e), crate::exit::Exit::Link);
-        assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+        assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
     }
 }
 
@@ -684,10 +688,10 @@ fn no_cr_follows_a_bin_that_got_no_answer() {
         bin_silent: true,
         ..Quirks::default()
     });
-    let x = s.execute("BIN").unwrap();
+    let x = s.exchange_line("BIN").unwrap();
     assert_eq!(x.answer, Answer::Nothing);
     assert!(sent_text(&wire).ends_with("ABIN\r"), "{}", sent_text(&wire));
-    assert_eq!(s.execute("GAP 1, 0").unwrap().value(), Some(-5000));
+    assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
     let frame = CommandFrame {
         address: 1,
         instruction: Instruction::new(6, 1, 0, 0),
@@ -718,11 +722,11 @@ fn the_late_reply_of_an_echoed_request_is_known_for_what_it_is() {
     });
     s.take_notices();
     // Echoed at once, answered only after the timeout: between exchanges…
-    let e = s.execute("GAP 1, 0").unwrap_err();
+    let e = s.exchange_line("GAP 1, 0").unwrap_err();
     assert!(e.to_string().contains("echoed but not answered"), "{e}");
     wire.lock().unwrap().out.extend(b"BA 100 7777\r");
     let before = waits(&wire);
-    assert_eq!(s.execute("GAP 4, 0").unwrap().value(), Some(0));
+    assert_eq!(s.exchange_line("GAP 4, 0").unwrap().value(), Some(0));
     assert_eq!(waits(&wire), before, "nothing more to wait for");
     // … or while the next request waits for its echo.
     let (mut s, _) = open(Quirks {
@@ -730,16 +734,16 @@ fn the_late_reply_of_an_echoed_request_is_known_for_what_it_is() {
         stale_before_echo: b"BA 100 7777\r",
         ..Quirks::default()
     });
-    assert!(s.execute("GAP 1, 0").is_err());
+    assert!(s.exchange_line("GAP 1, 0").is_err());
     s.take_notices();
-    assert_eq!(s.execute("GAP 4, 0").unwrap().value(), Some(0));
+    assert_eq!(s.exchange_line("GAP 4, 0").unwrap().value(), Some(0));
     assert_eq!(
         s.take_notices(),
         Vec::<String>::new(),
         "the late answer is expected, not noise"
     );
     // With nothing unanswered, the same bytes are a stray reply again.
-    assert_eq!(s.execute("GAP 4, 0").unwrap().value(), Some(0));
+    assert_eq!(s.exchange_line("GAP 4, 0").unwrap().value(), Some(0));
     assert!(
         s.take_notices()
             .iter()
