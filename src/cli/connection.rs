@@ -3,19 +3,19 @@
 //! before the subcommand behind it and `cli::relevance` can refuse those that would be ignored.
 
 use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::Duration;
 
-use crate::dialect::Dialect;
-use crate::dialect::smd4::protocol::PrefixStyle;
-use crate::dialect::smd4::session::{Smd4Options, Smd4Session};
-use crate::dialect::tmcl::profile::Profile;
-use crate::dialect::tmcl::session::TmclSession;
+use clap::{ArgMatches, Args, Command, FromArgMatches};
+
+use crate::dialect::{
+    Configured, DIALECTS, Dialect, DialectConfig, DialectSession, Opening, Purpose,
+    default_dialect, protocol_parser,
+};
 use crate::exit::Exit;
 use crate::exit::ExitStatus;
 use crate::link::{Link, SerialLink, TcpLink};
 use crate::session::transcript::Header;
-use crate::session::{Session, SessionOptions, Transcript};
+use crate::session::{SessionOptions, Transcript};
 
 use super::Failure;
 
@@ -40,42 +40,34 @@ pub struct ConnectionArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct DialectArgs {
     /// The protocol the module speaks (also selects the built-in simulated module).
-    #[arg(long, value_enum, default_value_t = Dialect::Tmcl, env = "TMCLSH_PROTOCOL")]
-    pub protocol: Dialect,
+    #[arg(long, value_parser = protocol_parser(), default_value = default_dialect().name, env = "TMCLSH_PROTOCOL")]
+    pub protocol: &'static Dialect,
 }
 
-/// Settings of the SMD4 dialect.
-#[derive(Debug, Clone, clap::Args)]
-#[command(next_help_heading = "SMD4")]
-pub struct Smd4Args {
-    /// SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=247))]
-    pub address: Option<u32>,
-    /// SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual's @3MOTOR:STOP.
-    #[arg(long)]
-    pub prefix_comma: bool,
-    /// SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have
-    /// no end marker).
-    #[arg(long, value_name = "MS", value_parser = clap::value_parser!(u64).range(1..))]
-    pub quiet_gap: Option<u64>,
+/// The session flags of every dialect (`--address` …), each dialect's under the help heading it
+/// sets (which, as with any flattened group, stays for the options after it); kept as parsed,
+/// for the chosen dialect to read its own.
+#[derive(Debug, Clone)]
+pub struct DialectFlags(ArgMatches);
+
+impl FromArgMatches for DialectFlags {
+    fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
+        Ok(DialectFlags(matches.clone()))
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
+        self.0 = matches.clone();
+        Ok(())
+    }
 }
 
-impl Smd4Args {
-    /// The SMD4 session options these flags select.
-    pub fn options(&self) -> Smd4Options {
-        let defaults = Smd4Options::default();
-        Smd4Options {
-            address: self.address,
-            prefix: if self.prefix_comma {
-                PrefixStyle::Comma
-            } else {
-                PrefixStyle::Attached
-            },
-            quiet_gap: self
-                .quiet_gap
-                .map(Duration::from_millis)
-                .unwrap_or(defaults.quiet_gap),
-        }
+impl Args for DialectFlags {
+    fn augment_args(cmd: Command) -> Command {
+        DIALECTS.iter().fold(cmd, |cmd, d| (d.session_flags)(cmd))
+    }
+
+    fn augment_args_for_update(cmd: Command) -> Command {
+        Self::augment_args(cmd)
     }
 }
 
@@ -132,11 +124,10 @@ impl ConnectionArgs {
     }
 
     /// Opens the link: the TCP connection (--tcp, which only the command line gives, wins over a
-    /// TMCLSH_PORT), the serial port, or the built-in simulated module speaking `dialect`.
+    /// TMCLSH_PORT), the serial port, or the built-in simulator of `config`'s dialect.
     pub fn open(
         &self,
-        dialect: Dialect,
-        profile: &Arc<Profile>,
+        config: &dyn DialectConfig,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
         let link: Box<dyn Link> = if let Some(address) = &self.tcp {
@@ -150,7 +141,8 @@ impl ConnectionArgs {
                     .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
             )
         } else {
-            crate::sim::builtin_link(profile, dialect)
+            let name = format!("simulated {} (built-in)", config.simulated_module());
+            crate::sim::builtin_link(config.simulator(), name)
         };
         Ok(link)
     }
@@ -169,9 +161,9 @@ pub struct ModuleArgs {
     /// How requests are sent and checked.
     #[command(flatten)]
     pub session: SessionArgs,
-    /// SMD4 settings.
+    /// The settings of each dialect.
     #[command(flatten)]
-    pub smd4: Smd4Args,
+    pub flags: DialectFlags,
 }
 
 /// Who learns that the built-in simulator answers: a command run without a terminal says so on
@@ -186,7 +178,7 @@ pub enum Audience {
 
 impl ModuleArgs {
     /// The protocol the module speaks.
-    pub fn protocol(&self) -> Dialect {
+    pub fn protocol(&self) -> &'static Dialect {
         self.dialect.protocol
     }
 
@@ -194,57 +186,39 @@ impl ModuleArgs {
     /// simulator (so nobody mistakes its answers for hardware's).
     pub fn link(
         &self,
-        profile: &Arc<Profile>,
+        config: &dyn DialectConfig,
         timeout: Duration,
         audience: Audience,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link = self.connection.open(self.protocol(), profile, timeout)?;
+        let link = self.connection.open(config, timeout)?;
         if self.connection.is_builtin() && audience == Audience::Batch {
             eprintln!(
                 "tmclsh: using the built-in simulated {}; give --port or --tcp for hardware",
-                simulated_module(self.protocol(), profile)
+                config.simulated_module()
             );
         }
         Ok(link)
     }
 
-    /// Opens a session in the dialect the flags say.
-    pub fn open(&self, profile: &Arc<Profile>, audience: Audience) -> Result<Session, Failure> {
+    /// Opens a session in the dialect the flags say, for `purpose`.
+    pub fn open(
+        &self,
+        configs: &Configured,
+        audience: Audience,
+        purpose: Purpose,
+    ) -> Result<Box<dyn DialectSession>, Failure> {
+        let config = configs.of(self.protocol());
         let options = self.session.options();
-        let header = Header::new(self.protocol(), profile);
-        let transcript = self.session.transcript(&header)?;
-        let link = self.link(profile, options.timeout, audience)?;
-        match self.protocol() {
-            Dialect::Tmcl => {
-                TmclSession::open(link, profile.clone(), options, transcript).map(Session::Tmcl)
-            }
-            Dialect::Smd4 => {
-                Smd4Session::open(link, options, self.smd4.options(), transcript).map(Session::Smd4)
-            }
-        }
-        .map_err(|e| Failure::new(e.exit(), e.to_string()))
-    }
-
-    /// Opens a TMCL session (for subcommands that only exist for TMCL modules).
-    pub fn open_tmcl(&self, profile: &Arc<Profile>) -> Result<TmclSession, Failure> {
-        if self.protocol() != Dialect::Tmcl {
-            return Err(Failure::new(
-                Exit::Refused,
-                "this subcommand works with TMCL modules only",
-            ));
-        }
-        let options = self.session.options();
-        let transcript = self.session.transcript(&Header::tmcl(profile))?;
-        let link = self.link(profile, options.timeout, Audience::Batch)?;
-        TmclSession::open(link, profile.clone(), options, transcript)
+        let transcript = self.session.transcript(&config.header())?;
+        let link = self.link(config, options.timeout, audience)?;
+        config
+            .open(Opening {
+                link,
+                options,
+                transcript,
+                flags: Some(&self.flags.0),
+                purpose,
+            })
             .map_err(|e| Failure::new(e.exit(), e.to_string()))
-    }
-}
-
-/// The name of the built-in simulated module of `dialect`: the profile's module, or the SMD4.
-pub fn simulated_module(dialect: Dialect, profile: &Profile) -> &str {
-    match dialect {
-        Dialect::Tmcl => profile.module.as_str(),
-        Dialect::Smd4 => "SMD4",
     }
 }

@@ -15,18 +15,16 @@ pub mod run;
 mod scan;
 pub mod shell;
 mod sim;
-mod sim_smd4;
 mod snapshot;
 mod transcript;
 
 use std::ffi::OsString;
 use std::io::Write;
 use std::path::PathBuf;
-use std::sync::Arc;
 
 use clap::{FromArgMatches, Parser, Subcommand};
 
-use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::Configured;
 use crate::exit::Exit;
 
 /// Terminal and scripting shell for TMCL and SMD4 stepper-motor modules.
@@ -132,20 +130,21 @@ impl Failure {
 
 /// Runs a parsed command line, printing results to `out`.
 pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
-    let profile = load_profile(&cli)?;
+    let configs = Configured::load(cli.profile.as_deref())
+        .map_err(|message| Failure::new(Exit::Refused, message))?;
     let result = match cli.command {
-        Some(Command::Params(args)) => params::run(&args, &profile, out),
+        Some(Command::Params(args)) => params::run(&args, &configs, out),
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
-        Some(Command::Run(args)) => return run::run(args, &profile),
-        Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
-        Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
-        Some(Command::Download(args)) => return download::run(args, &profile, out),
-        Some(Command::Snapshot(args)) => return snapshot::run(args, &profile, out),
-        Some(Command::Scan(args)) => return scan::run(args, &profile, out),
-        Some(Command::Transcript(args)) => return transcript::run(args, &profile, out),
-        Some(Command::Sim(args)) => return sim::run(&args, profile, out),
-        None => return shell::run(cli.shell, &profile),
+        Some(Command::Run(args)) => return run::run(args, &configs),
+        Some(Command::Asm(args)) => return asm::run(&args, tmcl_profile(&configs), out),
+        Some(Command::Disasm(args)) => return disasm::run(&args, tmcl_profile(&configs), out),
+        Some(Command::Download(args)) => return download::run(args, &configs, out),
+        Some(Command::Snapshot(args)) => return snapshot::run(args, &configs, out),
+        Some(Command::Scan(args)) => return scan::run(args, &configs, out),
+        Some(Command::Transcript(args)) => return transcript::run(args, &configs, out),
+        Some(Command::Sim(args)) => return sim::run(&args, &configs, out),
+        None => return shell::run(cli.shell, &configs),
     };
     match result {
         Ok(()) => Ok(Exit::Success),
@@ -154,13 +153,10 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
     }
 }
 
-fn load_profile(cli: &Cli) -> Result<Arc<Profile>, Failure> {
-    match &cli.profile {
-        None => Ok(Profile::builtin()),
-        Some(path) => Profile::from_file(path)
-            .map(Arc::new)
-            .map_err(|e| Failure::new(Exit::Refused, e.to_string())),
-    }
+/// The TMCL profile, for the subcommands only TMCL has (`asm`, `disasm`, `download`).
+fn tmcl_profile(configs: &Configured) -> &crate::dialect::tmcl::profile::Profile {
+    let tmcl = configs.of(&crate::dialect::tmcl::DIALECT);
+    crate::dialect::tmcl::config::profile(tmcl).expect("TMCL is configured with its profile")
 }
 
 /// The clap command, for completions and docs.

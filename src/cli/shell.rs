@@ -2,17 +2,15 @@
 //! lines or stdin lines.
 
 use std::io::IsTerminal;
-use std::sync::Arc;
 
-use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::{Configured, Purpose};
 use crate::exit::Exit;
-use crate::session::Session;
 use crate::session::interrupt;
 use crate::shell::Shell;
 use crate::shell::batch::{self, Lines};
 
 use super::Failure;
-use super::connection::{Audience, ModuleArgs, simulated_module};
+use super::connection::{Audience, ModuleArgs};
 
 /// Flags of the shell itself.
 #[derive(Debug, Clone, clap::Args)]
@@ -27,7 +25,7 @@ pub struct ShellArgs {
 }
 
 /// Runs the shell: the REPL on a terminal, otherwise the `-c` lines or stdin lines.
-pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
+pub fn run(args: ShellArgs, configs: &Configured) -> Result<Exit, Failure> {
     interrupt::install();
     let interactive = args.commands.is_empty() && std::io::stdin().is_terminal();
     let audience = if interactive {
@@ -35,10 +33,10 @@ pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     } else {
         Audience::Batch
     };
-    let session = args.module.open(profile, audience)?;
+    let session = args.module.open(configs, audience, Purpose::Talk)?;
     let mut shell = Shell::new(session);
     if interactive {
-        let banner = banner(&args.module, &shell, profile);
+        let banner = banner(&args.module, &shell, configs);
         return Ok(crate::repl::run(&mut shell, &banner));
     }
     let lines = if args.commands.is_empty() {
@@ -51,16 +49,13 @@ pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     Ok(batch::run(&mut shell, lines, &mut out, &mut err))
 }
 
-fn banner(module: &ModuleArgs, shell: &Shell, profile: &Profile) -> String {
+fn banner(module: &ModuleArgs, shell: &Shell, configs: &Configured) -> String {
     let version = env!("CARGO_PKG_VERSION");
     if module.connection.is_builtin() {
-        let module = simulated_module(module.protocol(), profile);
+        let module = configs.of(module.protocol()).simulated_module();
         format!("tmclsh {version} — simulated {module} (built-in) — use --port to talk to hardware")
     } else {
-        let module = match shell.session_ref() {
-            Session::Tmcl(s) => format!("{}, module {}", profile.module, s.target()),
-            Session::Smd4(_) => "SMD4".to_string(),
-        };
+        let module = shell.session_ref().banner();
         format!(
             "tmclsh {version} — {module} on {}",
             shell.session_ref().describe()

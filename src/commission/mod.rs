@@ -14,9 +14,10 @@ pub mod diff;
 pub mod plot;
 pub mod progress;
 pub mod record;
-pub mod replay;
+
 pub mod restore;
-pub mod shell;
+pub mod scan;
+
 pub mod snapshot;
 pub mod value;
 pub mod watch;

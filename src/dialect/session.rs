@@ -5,11 +5,17 @@
 //! folder ([`AsAny`]).
 
 use std::any::Any;
+use std::io::{self, Write};
+use std::sync::Arc;
 use std::time::Duration;
 
+use crate::commission::ParamDevice;
+use crate::script::{Report, Script};
 use crate::session::core::SessionCore;
-use crate::session::transcript::Transcript;
+use crate::session::transcript::{Header, Transcript};
 use crate::session::{SessionError, SessionOptions};
+
+use super::{Dialect, Grammar, Helper};
 
 /// A typed line's outcome, in the forms the faces show it.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -69,6 +75,17 @@ impl Reply {
     }
 }
 
+/// What a bus scan found, ready to print.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct BusScan {
+    /// How many modules answered.
+    pub found: usize,
+    /// One line: how many answered where (`3 modules answered at 1-26 …`).
+    pub summary: String,
+    /// The table of modules found, the summary line and any notes, line by line.
+    pub report: String,
+}
+
 /// Any value as [`Any`], so a dialect can get its own session type back from a trait object.
 pub trait AsAny: Any {
     /// As a reference to [`Any`].
@@ -95,6 +112,9 @@ impl<T: Any> AsAny for T {
 
 /// An open session of one dialect.
 pub trait DialectSession: AsAny {
+    /// The dialect spoken.
+    fn dialect(&self) -> &'static Dialect;
+
     /// The state every session shares.
     fn core(&self) -> &SessionCore;
 
@@ -119,6 +139,52 @@ pub trait DialectSession: AsAny {
 
     /// The REPL's prompt: which module typed lines go to, and how.
     fn prompt(&self) -> String;
+
+    /// The banner's words for what is talked to (`TMCM-142, module 1`).
+    fn banner(&self) -> String;
+
+    /// The header of this session's transcripts (`:log FILE`).
+    fn header(&self) -> Header;
+
+    /// What typed lines mean, for the line editor: a snapshot of the current state (the REPL
+    /// asks again before each prompt).
+    fn grammar(&self) -> Arc<dyn Grammar>;
+
+    /// Runs a helper command the dialect answers: one of its own ([`Dialect::helpers`]), or
+    /// `:params` and `:target`, which every dialect has in its own way.
+    fn run_helper(
+        &mut self,
+        helper: &Helper,
+        arg: &str,
+        out: &mut dyn Write,
+    ) -> Result<(), SessionError>;
+
+    /// The first lines of `:help`: how this dialect's lines are typed.
+    fn help_intro(&self, out: &mut dyn Write) -> io::Result<()>;
+
+    /// The topics `:help` names at its end (`:help COMMAND, :help exit …`).
+    fn help_more(&self) -> &'static str;
+
+    /// `:help TOPIC` for a topic of this dialect (`ascii`, `addressing`); false when `topic`
+    /// (lower case) is none of them.
+    fn help_topic(&self, topic: &str, out: &mut dyn Write) -> io::Result<bool>;
+
+    /// `:help WORD` for one of its commands; false when `word` names none.
+    fn help_command(&self, word: &str, out: &mut dyn Write) -> io::Result<bool>;
+
+    /// The module talked to, as the commissioning tools see it (snapshots, watches,
+    /// recordings).
+    fn param_device(&mut self) -> &mut dyn ParamDevice;
+
+    /// Finds the modules at `addresses`, awaiting each reply at most `per_reply`.
+    fn scan_bus(&mut self, addresses: &[u8], per_reply: Duration) -> Result<BusScan, SessionError>;
+
+    /// Runs `script` over this session, with the dialect's device functions and the
+    /// commissioning functions; gives the session back with the outcome.
+    fn run_script(
+        self: Box<Self>,
+        script: &Script,
+    ) -> (Box<dyn DialectSession>, Result<(), Report>);
 
     /// After the link was reopened: puts the modules back in the mode the session had them in.
     fn reenter(&mut self) -> Result<(), SessionError> {

@@ -15,15 +15,13 @@ use rustyline::error::ReadlineError;
 use rustyline::history::DefaultHistory;
 use rustyline::{CompletionType, Config, Editor};
 
-use crate::dialect::tmcl::protocol::validate::Mode;
-use crate::dialect::tmcl::session::WireMode;
 use crate::escape::escape_control;
 use crate::exit::Exit;
-use crate::session::{Session, SessionError, interrupt};
+use crate::session::{SessionError, interrupt};
 
 use crate::shell::{Flow, Shell};
 
-use editor::{ReplHelper, Tables};
+use editor::ReplHelper;
 
 /// Whether output may be coloured: a terminal, and NO_COLOR unset.
 pub fn color_enabled() -> bool {
@@ -52,11 +50,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
             return Exit::Link;
         }
     };
-    let tables = match shell.session_ref() {
-        Session::Tmcl(s) => Tables::Tmcl(s.profile().clone()),
-        Session::Smd4(s) => Tables::Smd4(s.spec()),
-    };
-    editor.set_helper(Some(ReplHelper::new(tables, color)));
+    editor.set_helper(Some(ReplHelper::new(shell.session_ref().grammar(), color)));
     let history = history_path();
     if let Some(path) = &history {
         let _ = editor.load_history(path);
@@ -68,15 +62,9 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         "Type :help for help, Tab to complete, Ctrl-D to leave."
     );
     loop {
-        let mode = match shell.session_ref() {
-            Session::Tmcl(s) => match s.module_state(s.target()) {
-                Some((WireMode::Binary, _)) => Mode::Binary,
-                _ => Mode::Ascii,
-            },
-            Session::Smd4(_) => Mode::Ascii,
-        };
+        // What the last command changed (TMCL :bin) shows in completion and validation.
         if let Some(helper) = editor.helper_mut() {
-            helper.mode = mode;
+            helper.grammar = shell.session_ref().grammar();
         }
         match editor.readline(&shell.prompt()) {
             Ok(text) => {

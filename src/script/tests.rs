@@ -10,6 +10,8 @@ use crate::session::SessionOptions;
 use crate::sim::inprocess::SimLink;
 
 use super::*;
+use crate::dialect::tmcl::session::TmclSession;
+use crate::shell::run_source;
 
 /// A link that counts what is sent through it.
 struct Counting {
@@ -76,7 +78,7 @@ fn run_source_gives_the_session_back_and_reports_positions() {
         "t.rhai",
         "sap(6, 0, 4);\nassert_eq(gap(6, 0), 5);",
         &[],
-        Session::Tmcl(session),
+        Box::new(session),
         Limits::default(),
     );
     let report = result.unwrap_err();
@@ -85,7 +87,7 @@ fn run_source_gives_the_session_back_and_reports_positions() {
         report.message,
         "t.rhai:2:1: assert_eq failed: left = 4, right = 5"
     );
-    let Session::Tmcl(mut session) = session else {
+    let Ok(mut session) = session.into_any().downcast::<TmclSession>() else {
         panic!("TMCL session back")
     };
     assert_eq!(
@@ -99,13 +101,7 @@ fn run_source_gives_the_session_back_and_reports_positions() {
 fn errors_inside_script_functions_keep_their_exit_code() {
     let (session, _) = session();
     let source = "fn check(v) { assert_eq(v, 2); }\ncheck(1);";
-    let (_, result) = run_source(
-        "f.rhai",
-        source,
-        &[],
-        Session::Tmcl(session),
-        Limits::default(),
-    );
+    let (_, result) = run_source("f.rhai", source, &[], Box::new(session), Limits::default());
     let report = result.unwrap_err();
     assert_eq!(report.exit, Exit::DeviceError);
     assert!(

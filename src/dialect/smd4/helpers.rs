@@ -2,18 +2,28 @@
 
 use std::io::Write;
 
+use crate::dialect::helper::{ArgKind, Helper, Section, helper};
 use crate::dialect::smd4::protocol::{MAX_ADDRESS, hints};
 use crate::dialect::smd4::session::{Smd4Session, drive_name};
 use crate::session::SessionError;
 
+/// The helpers only SMD4 drives have.
+pub const HELPERS: &[Helper] = &[helper(
+    "flags",
+    ":flags",
+    "the SFLAGS and EFLAGS bit tables with the drive's current flags",
+    ArgKind::None,
+    Section::Session,
+)];
+
 /// Runs one SMD4 helper.
 pub fn run(
     session: &mut Smd4Session,
-    name: &str,
+    helper: &Helper,
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
-    match name {
+    match helper.name {
         "params" => {
             for spec in hints::matching(&session.spec().commands, arg) {
                 writeln!(out, "{}", hints::table_row(spec))?;

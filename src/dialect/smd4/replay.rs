@@ -16,18 +16,12 @@ use crate::dialect::smd4::protocol::{
 };
 use crate::dialect::tmcl::profile::SnapshotRole;
 
-use crate::commission::replay::parse::{Entry, Record};
-use crate::commission::replay::{reply_after, rhai_string};
+use crate::dialect::replay::parse::{Entry, Record};
+use crate::dialect::replay::{nothing_to_replay, reply_after, rhai_string};
 
-/// The session's first note in an SMD4 transcript.
-const OPENED: &str = "SMD4 session opened";
-
-/// Whether `entries` are the transcript of an SMD4 session.
-pub fn is_smd4(entries: &[Entry]) -> bool {
-    entries
-        .iter()
-        .any(|e| matches!(&e.record, Record::Note(n) if n.starts_with(OPENED)))
-}
+/// The session's first note in an SMD4 transcript, which tells one written before transcripts
+/// had headers.
+pub const OPENED: &str = "SMD4 session opened";
 
 /// One thing the script does.
 #[derive(Debug, Clone, PartialEq)]
@@ -43,6 +37,16 @@ pub enum Step {
     },
     /// Kept as a comment.
     Comment(String),
+}
+
+/// The Rhai script replaying an SMD4 transcript; refused when no exchange in it replays.
+pub fn script(entries: &[Entry], name: &str, wait_ms: u64) -> Result<String, String> {
+    let spec = Smd4Spec::builtin();
+    let steps = steps(entries, spec);
+    if !steps.iter().any(|s| matches!(s, Step::Exchange { .. })) {
+        return Err(nothing_to_replay("SMD4"));
+    }
+    Ok(to_rhai(&steps, spec, name, wait_ms))
 }
 
 /// Pairs what was sent with what came back.
@@ -294,7 +298,13 @@ fn rhai_float(x: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::commission::replay::parse::parse;
+    use crate::dialect::replay::parse::parse;
+    use crate::dialect::replay::recognise;
+
+    /// What recognising a transcript without headers takes it for: SMD4 by its session note.
+    fn is_smd4(entries: &[Entry]) -> bool {
+        recognise(entries).unwrap().dialect == &crate::dialect::smd4::DIALECT
+    }
 
     const LOG: &str = r#"2026-01-01T00:00:00.000Z -- SMD4 session opened on simulated SMD4 (built-in)
 2026-01-01T00:00:00.001Z tx "MOTOR:VMAX,2000\r\n" ; to SMD4

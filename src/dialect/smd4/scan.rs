@@ -8,7 +8,6 @@
 //! without a prefix. Every drive on the bus sees the probes, so after a scan they all must be
 //! talked to with `--address N`; the report says so.
 
-use crate::dialect::session::DialectSession;
 use std::io::{self, Write};
 use std::time::Duration;
 
@@ -17,7 +16,8 @@ use crate::dialect::smd4::session::Smd4Session;
 use crate::session::SessionError;
 
 use crate::commission::progress::Progress;
-use crate::dialect::tmcl::scan::describe_addresses;
+use crate::commission::scan::describe_addresses;
+use crate::dialect::session::{BusScan, DialectSession};
 
 /// A drive that answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -94,6 +94,23 @@ fn ask(
         Err(SessionError::Timeout { .. } | SessionError::Link(_)) => Ok(None),
         Err(e) => Err(e),
     }
+}
+
+/// [`scan`] of the bus addresses `addresses`, its report ready to print.
+pub fn bus_scan(
+    session: &mut Smd4Session,
+    addresses: &[u8],
+    per_reply: Duration,
+) -> Result<BusScan, SessionError> {
+    let addresses: Vec<u32> = addresses.iter().copied().map(u32::from).collect();
+    let report = scan(session, &addresses, per_reply)?;
+    let mut text = Vec::new();
+    write_report(&report, &mut text).expect("writing to memory cannot fail");
+    Ok(BusScan {
+        found: report.found.len(),
+        summary: summary(&report),
+        report: String::from_utf8_lossy(&text).into_owned(),
+    })
 }
 
 /// Prints the table of drives found, a summary line, and what the probes left behind.

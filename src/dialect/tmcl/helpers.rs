@@ -1,18 +1,83 @@
 //! The helper commands of TMCL modules: targets, echo, program control, download, modes.
 
-use crate::dialect::session::DialectSession;
 use std::io::Write;
 use std::path::Path;
 
-use crate::cli::download;
-use crate::cli::params::write_table;
-use crate::dialect::tmcl::program;
+use crate::dialect::helper::{ArgKind, Helper, Section, helper};
+use crate::dialect::session::DialectSession;
+use crate::dialect::tmcl::params::write_table;
+use crate::dialect::tmcl::program::{self, download};
 use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::{address_char, address_of};
 use crate::dialect::tmcl::session::{Echo, Exchange, TmclSession};
 use crate::session::SessionError;
 
-use crate::shell::helpers::Helper;
+/// The helpers only TMCL modules have.
+pub const HELPERS: &[Helper] = &[
+    helper(
+        "echo",
+        ":echo char|line|none",
+        "set the module's echo (global parameter 67 bits 4/5, keeping bit 0)",
+        ArgKind::Echo,
+        Section::Session,
+    ),
+    helper(
+        "run",
+        ":run [address]",
+        "start the module's stored TMCL program (ASCII RUN, or command 129)",
+        ArgKind::Address,
+        Section::Module,
+    ),
+    helper(
+        "stop",
+        ":stop",
+        "stop the module's TMCL program (ASCII STOP, or command 128)",
+        ArgKind::None,
+        Section::Module,
+    ),
+    helper(
+        "step",
+        ":step",
+        "execute the program's next instruction (command 130)",
+        ArgKind::None,
+        Section::Module,
+    ),
+    helper(
+        "reset",
+        ":reset",
+        "program counter to 0, program stopped (command 131)",
+        ArgKind::None,
+        Section::Module,
+    ),
+    helper(
+        "status",
+        ":status",
+        "application status (135): stopped, running, stepping or reset",
+        ArgKind::None,
+        Section::Module,
+    ),
+    helper(
+        "download",
+        ":download FILE [--run]",
+        "store a program (.tmc source or .bin) in the module, verify it, optionally run it",
+        ArgKind::File,
+        Section::Module,
+    ),
+    helper(
+        "bin",
+        ":bin",
+        "leave ASCII mode; lines are then sent as binary frames (direct mode)",
+        ArgKind::None,
+        Section::Module,
+    ),
+    helper(
+        "ascii",
+        ":ascii",
+        "enter ASCII mode again (command 139)",
+        ArgKind::None,
+        Section::Module,
+    ),
+];
 
 /// Runs one TMCL helper.
 pub fn run(
@@ -94,12 +159,8 @@ pub fn run(
                 return Err(SessionError::Usage(format!("usage: {}", helper.usage)));
             }
             let profile = session.profile().clone();
-            let failed = |f: crate::cli::Failure| SessionError::Script {
-                exit: f.exit,
-                message: f.message,
-            };
-            let instructions = download::load(Path::new(path), &profile).map_err(failed)?;
-            let text = download::download_and_run(session, &instructions, run).map_err(failed)?;
+            let instructions = download::load(Path::new(path), &profile)?;
+            let text = download::download_and_run(session, &instructions, run)?;
             writeln!(out, "{text}")?;
         }
         "bin" => {

@@ -4,7 +4,7 @@
 use crate::dialect::tmcl::profile::{Param, Profile};
 use crate::dialect::tmcl::protocol::commands::{Field, OperandKind};
 
-use crate::repl::complete::spec_of;
+use super::complete::spec_of;
 
 /// The hint for `line` with the cursor at its end.
 pub fn hint(line: &str, profile: &Profile) -> Option<String> {

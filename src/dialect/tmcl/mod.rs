@@ -4,8 +4,13 @@
 
 pub mod asm;
 pub mod commission;
+pub mod complete;
+pub mod config;
+mod grammar;
+mod help;
 pub mod helpers;
 pub mod hint;
+pub mod params;
 pub mod profile;
 pub mod program;
 pub mod protocol;
@@ -15,3 +20,37 @@ pub mod scan;
 pub mod script;
 pub mod session;
 pub mod sim;
+
+pub use grammar::TmclGrammar;
+
+use crate::dialect::{Dialect, DialectSession, no_flags};
+
+use session::TmclSession;
+
+/// TMCL in the list of dialects.
+pub static DIALECT: Dialect = Dialect {
+    name: "tmcl",
+    summary: "Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`",
+    devices: "TMCL modules",
+    helpers: helpers::HELPERS,
+    configure: config::configure,
+    own_options: &["module", "no_enter", "stay_ascii", "profile"],
+    refusal: "is for TMCL modules, and the protocol is {protocol}",
+    session_flags: no_flags,
+    sim_flags: sim::flags::add,
+    sim_flag_given: sim::flags::given,
+    simulated: "TMCM-142",
+    legacy_note: None,
+    scan_addresses: "1-26",
+    scan_example: "1-26 200ms",
+};
+
+/// Whether `dialect` is TMCL (for the subcommands only TMCL has: `download`).
+pub fn is(dialect: &Dialect) -> bool {
+    *dialect == DIALECT
+}
+
+/// The TMCL session behind a session of any dialect, if it is one.
+pub fn session(session: &mut dyn DialectSession) -> Option<&mut TmclSession> {
+    session.as_any_mut().downcast_mut()
+}

@@ -22,8 +22,36 @@ use crate::dialect::tmcl::protocol::line::{self, Op, address_char, format_instru
 use crate::dialect::tmcl::protocol::reply::parse_reply;
 use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Status};
 
-use crate::commission::replay::parse::{Entry, Record};
-use crate::commission::replay::{reply_after, rhai_string};
+use crate::dialect::replay::parse::{Entry, Record};
+use crate::dialect::replay::{nothing_to_replay, reply_after, rhai_string};
+use crate::session::transcript::Header;
+
+/// The Rhai script replaying a TMCL transcript with the modules of `profile`; refused when the
+/// transcript's header names another module, or when no exchange in it replays.
+pub fn script(
+    entries: &[Entry],
+    header: Option<&Header>,
+    profile: &Profile,
+    name: &str,
+    wait_ms: u64,
+) -> Result<String, String> {
+    if let Some(header) = header {
+        if header.module != profile.module {
+            return Err(format!(
+                "a transcript of a {} (profile {}), but the profile in use is the {}'s; \
+                 give --profile",
+                header.module,
+                header.profile.as_deref().unwrap_or("unknown"),
+                profile.module
+            ));
+        }
+    }
+    let steps = steps(entries, profile);
+    if !replays_something(&steps) {
+        return Err(nothing_to_replay("TMCL"));
+    }
+    Ok(to_rhai(&steps, profile, name, wait_ms))
+}
 
 /// Whether any step is an exchange to replay (a transcript of only failed or unreadable
 /// commands replays nothing).

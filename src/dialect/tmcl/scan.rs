@@ -15,17 +15,18 @@
 //! Each reply is awaited at most the given time; the session puts every module it switched back
 //! in its mode when it closes, and modules only probed with binary frames are never switched.
 
-use crate::dialect::session::DialectSession;
 use std::collections::BTreeMap;
 use std::io::{self, Write};
 use std::time::Duration;
 
 use crate::dialect::tmcl::protocol::Instruction;
-use crate::dialect::tmcl::protocol::line::{address_char, address_of};
+use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::session::{Answer, Echo, TmclSession, WireMode};
 use crate::session::SessionError;
 
 use crate::commission::progress::Progress;
+use crate::commission::scan::describe_addresses;
+use crate::dialect::session::{BusScan, DialectSession};
 
 /// A module that answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -124,6 +125,23 @@ pub fn scan(
     })
 }
 
+/// [`scan`] with the quiet time of the session's profile, its report ready to print.
+pub fn bus_scan(
+    session: &mut TmclSession,
+    addresses: &[u8],
+    per_reply: Duration,
+) -> Result<BusScan, SessionError> {
+    let quiet = quiet_time(session.profile());
+    let report = scan(session, addresses, per_reply, quiet)?;
+    let mut text = Vec::new();
+    write_report(&report, &mut text).expect("writing to memory cannot fail");
+    Ok(BusScan {
+        found: report.found.len(),
+        summary: summary(&report),
+        report: String::from_utf8_lossy(&text).into_owned(),
+    })
+}
+
 /// How long the line stays quiet before binary frames follow ASCII lines: twice the frame timeout
 /// after which the module's receiver drops a partial frame (best knowledge, in the profile).
 pub fn quiet_time(profile: &crate::dialect::tmcl::profile::Profile) -> Duration {
@@ -207,70 +225,6 @@ fn version_text(answer: &Answer) -> Option<String> {
     }
 }
 
-/// Parses an address list: numbers 1..255 and letters A..Z, single or as ranges, comma separated
-/// (`1-26`, `A-Z`, `A,C,30-40`).
-pub fn parse_addresses(text: &str) -> Result<Vec<u8>, String> {
-    let one = |word: &str| -> Result<u8, String> {
-        let word = word.trim();
-        if let Ok(n) = word.parse::<u8>() {
-            if n >= 1 {
-                return Ok(n);
-            }
-        }
-        let mut chars = word.chars();
-        match (
-            chars
-                .next()
-                .and_then(|c| address_of(c.to_ascii_uppercase())),
-            chars.next(),
-        ) {
-            (Some(a), None) => Ok(a),
-            _ => Err(format!("'{word}' is not a bus address (1..255 or A..Z)")),
-        }
-    };
-    let mut addresses = Vec::new();
-    for part in text.split(',') {
-        let (lo, hi) = match part.split_once('-') {
-            Some((lo, hi)) => (one(lo)?, one(hi)?),
-            None => {
-                let a = one(part)?;
-                (a, a)
-            }
-        };
-        if lo > hi {
-            return Err(format!("the range '{}' runs backwards", part.trim()));
-        }
-        for a in lo..=hi {
-            if !addresses.contains(&a) {
-                addresses.push(a);
-            }
-        }
-    }
-    addresses.sort_unstable();
-    Ok(addresses)
-}
-
-/// The addresses as a short text (`1-26`, `1-3, 7`).
-pub fn describe_addresses(addresses: &[u8]) -> String {
-    let mut parts: Vec<String> = Vec::new();
-    let mut i = 0;
-    while i < addresses.len() {
-        let start = addresses[i];
-        let mut end = start;
-        while i + 1 < addresses.len() && addresses[i + 1] == end + 1 {
-            i += 1;
-            end = addresses[i];
-        }
-        parts.push(if start == end {
-            start.to_string()
-        } else {
-            format!("{start}-{end}")
-        });
-        i += 1;
-    }
-    parts.join(", ")
-}
-
 /// Prints the table of modules found and a summary line.
 pub fn write_report(report: &Report, out: &mut dyn Write) -> io::Result<()> {
     if !report.found.is_empty() {
@@ -311,38 +265,6 @@ pub fn summary(report: &Report) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn address_lists_take_numbers_letters_and_ranges() {
-        assert_eq!(
-            parse_addresses("1-26").unwrap(),
-            (1..=26).collect::<Vec<u8>>()
-        );
-        assert_eq!(
-            parse_addresses("A-Z").unwrap(),
-            (1..=26).collect::<Vec<u8>>()
-        );
-        assert_eq!(parse_addresses("c, a,30-32").unwrap(), [1, 3, 30, 31, 32]);
-        assert_eq!(parse_addresses("255").unwrap(), [255]);
-        assert!(
-            parse_addresses("0")
-                .unwrap_err()
-                .contains("'0' is not a bus address")
-        );
-        assert!(
-            parse_addresses("5-2")
-                .unwrap_err()
-                .contains("runs backwards")
-        );
-        assert!(parse_addresses("AA").is_err());
-        assert!(parse_addresses("256").is_err());
-    }
-
-    #[test]
-    fn addresses_are_described_as_ranges() {
-        assert_eq!(describe_addresses(&[1, 2, 3, 7, 9, 10]), "1-3, 7, 9-10");
-        assert_eq!(describe_addresses(&(1..=26).collect::<Vec<u8>>()), "1-26");
-    }
 
     #[test]
     fn the_table_lists_each_module_with_mode_firmware_and_echo() {

@@ -116,10 +116,9 @@ fn tests_reach_the_bus_typed_or_by_control_commands() {
 
 #[test]
 fn the_builtin_link_answers_on_the_system_clock() {
-    let mut link = crate::sim::builtin_link(
-        &crate::dialect::tmcl::profile::Profile::builtin(),
-        crate::dialect::Dialect::Tmcl,
-    );
+    let config = (crate::dialect::tmcl::DIALECT.configure)(None).unwrap();
+    let name = format!("simulated {} (built-in)", config.simulated_module());
+    let mut link = crate::sim::builtin_link(config.simulator(), name);
     assert_eq!(link.describe(), "simulated TMCM-142 (built-in)");
     link.send(&frame(6, 4, 0)).unwrap();
     assert_eq!(

@@ -16,6 +16,7 @@
 pub mod config;
 mod control;
 mod exec;
+pub mod flags;
 pub mod motion;
 pub mod options;
 mod reply;

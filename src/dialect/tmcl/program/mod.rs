@@ -2,6 +2,8 @@
 //! verification, and program control (run, stop, step, reset, status) from ASCII mode, switching
 //! to binary mode transparently for the control functions ASCII mode lacks.
 
+pub mod download;
+
 use crate::dialect::session::DialectSession;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 

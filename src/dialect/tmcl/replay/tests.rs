@@ -1,9 +1,10 @@
 //! Transcript to script, on transcripts written the way the session writes them.
 
 use super::*;
-use crate::commission::replay::parse;
-use crate::commission::replay::{Recognised, recognise};
-use crate::dialect::Dialect;
+use crate::dialect::replay::parse;
+use crate::dialect::replay::{Recognised, recognise};
+use crate::dialect::smd4::config::header as smd4_header;
+use crate::dialect::tmcl::config::header as tmcl_header;
 use crate::dialect::tmcl::protocol::frame::encode_version_string;
 use crate::session::transcript::{Header, escape_into};
 
@@ -229,20 +230,26 @@ impl Log {
 #[test]
 fn the_header_says_what_a_transcript_is_of() {
     let mut log = Log::default();
-    log.header(&Header::smd4()).tx("MOTOR:STOP");
+    log.header(&smd4_header()).tx("MOTOR:STOP");
     let kind = log.recognised().unwrap();
-    assert_eq!((kind.dialect, kind.notice), (Dialect::Smd4, None));
+    assert_eq!(
+        (kind.dialect, kind.notice),
+        (&crate::dialect::smd4::DIALECT, None)
+    );
     // The same session again, appended: still one kind.
-    log.header(&Header::smd4()).tx("SYS:FW");
-    assert_eq!(log.recognised().unwrap().dialect, Dialect::Smd4);
+    log.header(&smd4_header()).tx("SYS:FW");
+    assert_eq!(
+        log.recognised().unwrap().dialect,
+        &crate::dialect::smd4::DIALECT
+    );
 }
 
 #[test]
 fn sessions_of_different_modules_in_one_file_are_refused() {
     let mut log = Log::default();
-    log.header(&Header::tmcl(&Profile::builtin()))
+    log.header(&tmcl_header(&Profile::builtin()))
         .exchange("AGAP 4, 0", 100, 5)
-        .header(&Header::smd4());
+        .header(&smd4_header());
     let error = log.recognised().unwrap_err();
     assert!(
         error.contains("TMCL TMCM-142 (line 1) and SMD4 SMD4 (line 4)"),
@@ -256,12 +263,15 @@ fn a_file_from_before_headers_is_read_with_a_notice() {
     log.note("SMD4 session opened on simulator")
         .tx("MOTOR:STOP");
     let kind = log.recognised().unwrap();
-    assert_eq!(kind.dialect, Dialect::Smd4);
+    assert_eq!(kind.dialect, &crate::dialect::smd4::DIALECT);
     assert!(kind.notice.unwrap().contains("read as SMD4"));
     let mut log = Log::default();
     log.exchange("AGAP 4, 0", 100, 5);
-    assert_eq!(log.recognised().unwrap().dialect, Dialect::Tmcl);
-    log.header(&Header::tmcl(&Profile::builtin()));
+    assert_eq!(
+        log.recognised().unwrap().dialect,
+        &crate::dialect::tmcl::DIALECT
+    );
+    log.header(&tmcl_header(&Profile::builtin()));
     let kind = log.recognised().unwrap();
     assert!(
         kind.notice

@@ -6,6 +6,7 @@
 
 mod ascii;
 mod binary;
+mod faces;
 mod mode;
 mod probe;
 mod stop;
@@ -24,7 +25,7 @@ use crate::dialect::tmcl::protocol::validate::{self, Mode};
 use crate::dialect::tmcl::protocol::{Instruction, Status};
 use crate::link::Link;
 
-use crate::dialect::session::{DialectSession, Refusal, Reply};
+use crate::dialect::session::Refusal;
 use crate::session::core::{Addresses, SessionCore};
 use crate::session::transcript::Transcript;
 use crate::session::wire::Peer;
@@ -120,6 +121,13 @@ impl Exchange {
     }
 }
 
+/// A line the parser or validator refuses is refused before sending (exit 2).
+impl From<crate::dialect::tmcl::protocol::InputError> for SessionError {
+    fn from(error: crate::dialect::tmcl::protocol::InputError) -> Self {
+        SessionError::Refused(error.to_string())
+    }
+}
+
 /// A TMCL conversation with the modules on one link.
 pub struct TmclSession {
     core: SessionCore,
@@ -208,7 +216,7 @@ impl TmclSession {
             Err(error) => {
                 // --no-validate: send what parses, in canonical spelling.
                 let raw = parse_line(text, |w| self.profile.commands.is_word(w))
-                    .map_err(|_| SessionError::Refused(error.clone()))?;
+                    .map_err(|_| SessionError::Refused(error.to_string()))?;
                 let module = raw
                     .address
                     .and_then(line::address_of)
@@ -471,65 +479,6 @@ impl TmclSession {
         };
         self.core.wire.finish(settled);
         result
-    }
-}
-
-impl DialectSession for TmclSession {
-    fn core(&self) -> &SessionCore {
-        &self.core
-    }
-
-    fn core_mut(&mut self) -> &mut SessionCore {
-        &mut self.core
-    }
-
-    fn execute(&mut self, line: &str) -> Result<Reply, SessionError> {
-        let exchange = self.exchange_line(line)?;
-        Ok(Reply {
-            shown: exchange.shown(),
-            decoded: super::render::decode(&exchange, &self.profile).text,
-            refusal: exchange.refusal(),
-        })
-    }
-
-    fn stop_motion(&mut self) -> Vec<String> {
-        self.urgently(Self::stop_everything)
-    }
-
-    fn target_address(&self) -> Option<u32> {
-        Some(self.target.into())
-    }
-
-    /// Every module goes back to the mode it was found in (unless `--stay-ascii`).
-    fn close(&mut self) -> Vec<String> {
-        if self.core.options.stay_ascii {
-            return Vec::new();
-        }
-        // Mode restores carry no value for anyone: they need not wait for a suspect line.
-        self.urgently(Self::restore_modes)
-    }
-
-    /// The target's address character, and `[bin]` in binary mode.
-    fn prompt(&self) -> String {
-        let c = address_char(self.target).unwrap_or('?');
-        match self.module_state(self.target) {
-            Some((WireMode::Binary, _)) => format!("{c}[bin]> "),
-            _ => format!("{c}> "),
-        }
-    }
-
-    /// Re-enters ASCII mode on the modules that were in it.
-    fn reenter(&mut self) -> Result<(), SessionError> {
-        let ascii: Vec<u8> = self
-            .modules
-            .iter()
-            .filter(|(_, m)| m.mode == WireMode::Ascii)
-            .map(|(&a, _)| a)
-            .collect();
-        for module in ascii {
-            self.enter_ascii(module)?;
-        }
-        Ok(())
     }
 }
 

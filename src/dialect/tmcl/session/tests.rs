@@ -704,7 +704,7 @@ fn no_cr_follows_a_bin_that_got_no_answer() {
 #[test]
 fn ctrl_c_stops_the_target_and_what_was_moved_once_each() {
     let (s, wire) = open(Quirks::default());
-    let mut session = crate::session::Session::Tmcl(s);
+    let mut session: Box<dyn DialectSession> = Box::new(s);
     session.execute("ROR 0, 1000").unwrap();
     let report = session.stop_target();
     assert_eq!(

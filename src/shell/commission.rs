@@ -2,22 +2,20 @@
 //! `:plot`. The REPL and `-c`/stdin lines share them; the ones that need keys (`:watch`, and
 //! `:record` without a duration) need a terminal.
 
-use crate::dialect::session::DialectSession;
 use std::cell::Cell;
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use crate::clock::SystemClock;
-use crate::session::{Session, SessionError};
-
-use super::actions::{self, RestoreOptions};
-use super::device::{ParamDevice, ParamRef};
-use super::plot;
-use super::record::{self, CsvFile, Recording};
-use super::watch::{self, Key, Screen, TerminalScreen};
-use crate::dialect::smd4::scan as smd4_scan;
-use crate::dialect::tmcl::scan;
+use crate::commission::actions::{self, RestoreOptions};
+use crate::commission::device::{ParamDevice, ParamRef};
+use crate::commission::plot;
+use crate::commission::record::{self, CsvFile, Recording};
+use crate::commission::scan::parse_addresses;
+use crate::commission::watch::{self, Key, Screen, TerminalScreen};
+use crate::dialect::DialectSession;
+use crate::session::SessionError;
 
 /// What the helpers remember between commands.
 #[derive(Debug, Default)]
@@ -28,21 +26,18 @@ pub struct State {
 
 /// Runs `:NAME ARG` for the commissioning helpers.
 pub fn helper(
-    session: &mut Session,
+    session: &mut dyn DialectSession,
     state: &mut State,
     name: &str,
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
     match name {
-        "snapshot" => snapshot(param_device(session), arg, out),
-        "scan" => match session {
-            Session::Tmcl(s) => scan_bus(s, arg, out),
-            Session::Smd4(s) => scan_drives(s, arg, out),
-        },
-        "watch" => watch(param_device(session), arg, out),
+        "snapshot" => snapshot(session.param_device(), arg, out),
+        "scan" => scan(session, arg, out),
+        "watch" => watch(session.param_device(), arg, out),
         "record" => {
-            let (path, recording) = record(param_device(session), arg, out)?;
+            let (path, recording) = record(session.param_device(), arg, out)?;
             state.last_recording = Some((path, recording));
             Ok(())
         }
@@ -50,14 +45,6 @@ pub fn helper(
         other => Err(SessionError::Usage(format!(
             "no commissioning helper :{other}"
         ))),
-    }
-}
-
-/// The session's module as a [`ParamDevice`]; every dialect's session implements it.
-pub fn param_device(session: &mut Session) -> &mut dyn ParamDevice {
-    match session {
-        Session::Tmcl(s) => s,
-        Session::Smd4(s) => s,
     }
 }
 
@@ -122,54 +109,29 @@ fn snapshot(
     }
 }
 
-fn scan_bus(
-    session: &mut crate::dialect::tmcl::session::TmclSession,
+/// `:scan [ADDRESSES] [TIME PER REPLY]`: the dialect's scan of the bus, its table printed.
+fn scan(
+    session: &mut dyn DialectSession,
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
-    const USAGE: &str = ":scan [ADDRESSES] [TIME PER REPLY]  (e.g. :scan 1-26 200ms)";
+    let dialect = session.dialect();
+    let usage_text = format!(
+        ":scan [ADDRESSES] [TIME PER REPLY]  (e.g. :scan {})",
+        dialect.scan_example
+    );
     let words: Vec<&str> = arg.split_whitespace().collect();
-    let addresses = match words.first() {
-        Some(a) => scan::parse_addresses(a).map_err(|e| usage(&format!("{USAGE}; {e}")))?,
-        None => (1..=26).collect(),
-    };
+    let addresses = parse_addresses(words.first().copied().unwrap_or(dialect.scan_addresses))
+        .map_err(|e| usage(&format!("{usage_text}; {e}")))?;
     let per_reply = match words.get(1) {
-        Some(t) => record::parse_duration(t).map_err(|e| usage(&format!("{USAGE}; {e}")))?,
+        Some(t) => record::parse_duration(t).map_err(|e| usage(&format!("{usage_text}; {e}")))?,
         None => session.options().timeout,
     };
     if words.len() > 2 {
-        return Err(usage(USAGE));
+        return Err(usage(&usage_text));
     }
-    let quiet = scan::quiet_time(session.profile());
-    let report = scan::scan(session, &addresses, per_reply, quiet)?;
-    scan::write_report(&report, out)?;
-    Ok(())
-}
-
-fn scan_drives(
-    session: &mut crate::dialect::smd4::session::Smd4Session,
-    arg: &str,
-    out: &mut dyn Write,
-) -> Result<(), SessionError> {
-    const USAGE: &str = ":scan [ADDRESSES] [TIME PER REPLY]  (e.g. :scan 1-247 50ms)";
-    let words: Vec<&str> = arg.split_whitespace().collect();
-    let addresses: Vec<u32> = match words.first() {
-        Some(a) => scan::parse_addresses(a)
-            .map_err(|e| usage(&format!("{USAGE}; {e}")))?
-            .into_iter()
-            .map(u32::from)
-            .collect(),
-        None => (1..=crate::dialect::smd4::protocol::MAX_ADDRESS).collect(),
-    };
-    let per_reply = match words.get(1) {
-        Some(t) => record::parse_duration(t).map_err(|e| usage(&format!("{USAGE}; {e}")))?,
-        None => session.options().timeout,
-    };
-    if words.len() > 2 {
-        return Err(usage(USAGE));
-    }
-    let report = smd4_scan::scan(session, &addresses, per_reply)?;
-    smd4_scan::write_report(&report, out)?;
+    let scan = session.scan_bus(&addresses, per_reply)?;
+    out.write_all(scan.report.as_bytes())?;
     Ok(())
 }
 

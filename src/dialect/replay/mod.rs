@@ -2,6 +2,7 @@
 //! back ([`parse`]), telling what it is a transcript of ([`recognise`]), and the pieces each
 //! dialect's replay builds its Rhai script from. The replays themselves live with their dialects.
 
+mod header;
 pub mod parse;
 mod recognise;
 
@@ -45,4 +46,12 @@ pub fn rhai_string(text: &str) -> String {
     }
     out.push('"');
     out
+}
+
+/// Why a transcript of `dialect` replays nothing.
+pub fn nothing_to_replay(dialect: &str) -> String {
+    format!(
+        "no {dialect} exchange to replay: no command in it got a reply that could be read \
+         (a transcript of another dialect, or of a session that only failed?)"
+    )
 }

@@ -3,14 +3,18 @@
 
 use std::path::Path;
 
+use clap::{ArgMatches, Args, Command, FromArgMatches};
+
+use crate::dialect::SimFlags;
 use crate::dialect::smd4::protocol::{ErrorSpelling, FlagCase, FloatStyle, PrefixStyle};
-use crate::dialect::smd4::sim::{PositionFormat, PrefixAcceptance, Smd4Options, Smd4Sim};
 use crate::sim::Device;
+
+use super::{PositionFormat, PrefixAcceptance, Smd4Options, Smd4Sim};
 
 /// Quirk switches of the simulated SMD4.
 #[derive(Debug, Clone, clap::Args)]
 #[command(next_help_heading = "SMD4 quirks (with --protocol smd4)")]
-pub struct Smd4SimArgs {
+pub struct QuirkFlags {
     /// Hex case of the flag words: upper (0x088E, the text) or lower (0x088e, many examples).
     #[arg(long, value_name = "CASE", default_value = "upper", value_parser = ["upper", "lower"])]
     pub flag_case: String,
@@ -53,7 +57,7 @@ fn positive(text: &str) -> Result<f64, String> {
         .ok_or_else(|| format!("'{text}' is not a positive number"))
 }
 
-impl Smd4SimArgs {
+impl QuirkFlags {
     /// The options these switches select; `state` keeps STORE'd settings across restarts.
     pub fn options(&self, state: Option<&Path>) -> Smd4Options {
         Smd4Options {
@@ -98,4 +102,28 @@ impl Smd4SimArgs {
             Box::new(sim)
         }
     }
+}
+
+/// Adds the flags of `group` to `tmclsh sim`.
+pub fn add(group: SimFlags, cmd: Command) -> Command {
+    match group {
+        SimFlags::Quirks => QuirkFlags::augment_args(cmd),
+        SimFlags::Bus | SimFlags::Module => cmd,
+    }
+}
+
+/// The quirk switches are not refused with another simulator: each has a default, and none
+/// changes what another simulator does.
+pub fn given(_: &ArgMatches) -> Option<&'static str> {
+    None
+}
+
+/// The simulated drive the quirk switches describe.
+pub fn served(
+    matches: &ArgMatches,
+    state: Option<&Path>,
+    verbose: bool,
+) -> Result<Box<dyn Device>, String> {
+    let flags = QuirkFlags::from_arg_matches(matches).map_err(|e| e.to_string())?;
+    Ok(flags.device(state, verbose))
 }

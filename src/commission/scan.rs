@@ -1,0 +1,105 @@
+//! Bus addresses as users write them for a scan (`1-26`, `A-Z`, `A,C,30-40`) and as a scan
+//! report shows them: what every dialect's scan shares.
+
+/// Parses an address list: numbers 1..255 and letters A..Z, single or as ranges, comma separated
+/// (`1-26`, `A-Z`, `A,C,30-40`).
+pub fn parse_addresses(text: &str) -> Result<Vec<u8>, String> {
+    let one = |word: &str| -> Result<u8, String> {
+        let word = word.trim();
+        if let Ok(n) = word.parse::<u8>() {
+            if n >= 1 {
+                return Ok(n);
+            }
+        }
+        let mut chars = word.chars();
+        match (chars.next().and_then(letter), chars.next()) {
+            (Some(a), None) => Ok(a),
+            _ => Err(format!("'{word}' is not a bus address (1..255 or A..Z)")),
+        }
+    };
+    let mut addresses = Vec::new();
+    for part in text.split(',') {
+        let (lo, hi) = match part.split_once('-') {
+            Some((lo, hi)) => (one(lo)?, one(hi)?),
+            None => {
+                let a = one(part)?;
+                (a, a)
+            }
+        };
+        if lo > hi {
+            return Err(format!("the range '{}' runs backwards", part.trim()));
+        }
+        for a in lo..=hi {
+            if !addresses.contains(&a) {
+                addresses.push(a);
+            }
+        }
+    }
+    addresses.sort_unstable();
+    Ok(addresses)
+}
+
+/// A letter as an address: A is 1 … Z is 26 (TMCL's address characters; any dialect may take
+/// them).
+fn letter(c: char) -> Option<u8> {
+    let upper = c.to_ascii_uppercase();
+    upper.is_ascii_uppercase().then(|| upper as u8 - b'A' + 1)
+}
+
+/// The addresses as a short text (`1-26`, `1-3, 7`).
+pub fn describe_addresses(addresses: &[u8]) -> String {
+    let mut parts: Vec<String> = Vec::new();
+    let mut i = 0;
+    while i < addresses.len() {
+        let start = addresses[i];
+        let mut end = start;
+        while i + 1 < addresses.len() && addresses[i + 1] == end + 1 {
+            i += 1;
+            end = addresses[i];
+        }
+        parts.push(if start == end {
+            start.to_string()
+        } else {
+            format!("{start}-{end}")
+        });
+        i += 1;
+    }
+    parts.join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn address_lists_take_numbers_letters_and_ranges() {
+        assert_eq!(
+            parse_addresses("1-26").unwrap(),
+            (1..=26).collect::<Vec<u8>>()
+        );
+        assert_eq!(
+            parse_addresses("A-Z").unwrap(),
+            (1..=26).collect::<Vec<u8>>()
+        );
+        assert_eq!(parse_addresses("c, a,30-32").unwrap(), [1, 3, 30, 31, 32]);
+        assert_eq!(parse_addresses("255").unwrap(), [255]);
+        assert!(
+            parse_addresses("0")
+                .unwrap_err()
+                .contains("'0' is not a bus address")
+        );
+        assert!(
+            parse_addresses("5-2")
+                .unwrap_err()
+                .contains("runs backwards")
+        );
+        assert!(parse_addresses("AA").is_err());
+        assert!(parse_addresses("256").is_err());
+    }
+
+    #[test]
+    fn addresses_are_described_as_ranges() {
+        assert_eq!(describe_addresses(&[1, 2, 3, 7, 9, 10]), "1-3, 7, 9-10");
+        assert_eq!(describe_addresses(&(1..=26).collect::<Vec<u8>>()), "1-26");
+    }
+}
