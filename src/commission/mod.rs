@@ -16,6 +16,7 @@ pub mod progress;
 pub mod record;
 
 pub mod restore;
+pub mod rules;
 pub mod scan;
 
 pub mod snapshot;
@@ -25,6 +26,7 @@ pub mod watch;
 #[cfg(test)]
 mod fake;
 
-pub use device::{ParamDevice, ParamRef, Scope, StoreStep};
+pub use device::{Access, ParamDevice, ParamRef, Scope, StoreStep};
+pub use rules::{SnapshotRole, SnapshotRules};
 pub use snapshot::Snapshot;
 pub use value::{ParamValue, Reading, Tolerance};

@@ -20,7 +20,7 @@ pub mod check;
 use std::collections::BTreeSet;
 use std::io::{self, Write};
 
-use crate::dialect::tmcl::profile::SnapshotRole;
+use crate::commission::SnapshotRole;
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, ParamRef, Scope};

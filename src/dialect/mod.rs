@@ -9,6 +9,7 @@
 
 mod config;
 pub mod grammar;
+pub mod guard;
 pub mod helper;
 pub mod replay;
 pub mod session;

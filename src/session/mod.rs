@@ -5,7 +5,6 @@
 //! Rhai scripts all go through the same session.
 
 pub mod core;
-pub(crate) mod guard;
 pub mod interrupt;
 pub(crate) mod rx;
 pub mod transcript;

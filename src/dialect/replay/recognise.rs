@@ -68,9 +68,7 @@ fn without_header(entries: &[Entry]) -> Recognised {
             .iter()
             .any(|e| matches!(&e.record, Record::Note(n) if n.starts_with(note)))
     };
-    let found = DIALECTS
-        .iter()
-        .find(|d| d.legacy_note.is_some_and(&noted));
+    let found = DIALECTS.iter().find(|d| d.legacy_note.is_some_and(&noted));
     let (dialect, why) = match found {
         Some(d) => (*d, format!("its {} session note", d.name.to_uppercase())),
         None => {

@@ -9,6 +9,7 @@
 //! needs standby and the precision of real values are data: the `[snapshot]` section and the
 //! `persistent` and `levels` fields of `data/smd4.toml`.
 
+use crate::commission::Access;
 use crate::dialect::session::DialectSession;
 use crate::dialect::smd4::protocol::validate::validate;
 use crate::dialect::smd4::protocol::{
@@ -16,7 +17,6 @@ use crate::dialect::smd4::protocol::{
 };
 use crate::dialect::smd4::protocol::{Value, items::DataItem};
 use crate::dialect::smd4::session::{Smd4Exchange, Smd4Session};
-use crate::dialect::tmcl::profile::Access;
 use crate::session::SessionError;
 
 use crate::commission::actions::failed;
@@ -188,7 +188,7 @@ fn param_ref(spec: &Smd4Spec, command: &CommandSpec) -> ParamRef {
     let writable = command.writable && command.kind == Kind::Setting && command.arg.is_some();
     let mut role = rules.role_of(&command.mnemonic, writable);
     if writable && !command.persistent {
-        role = crate::dialect::tmcl::profile::SnapshotRole::Live;
+        role = crate::commission::SnapshotRole::Live;
     }
     ParamRef {
         scope: Scope::Drive,
@@ -321,8 +321,8 @@ fn store_mnemonic(spec: &Smd4Spec) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::commission::SnapshotRole;
     use crate::dialect::smd4::protocol::{Expectation, parse_response};
-    use crate::dialect::tmcl::profile::SnapshotRole;
 
     fn spec() -> &'static Smd4Spec {
         Smd4Spec::builtin()

@@ -3,6 +3,7 @@
 
 pub mod commission;
 pub mod config;
+mod exit;
 pub mod flags;
 mod grammar;
 mod help;

@@ -10,11 +10,11 @@
 
 use std::fmt::Write as _;
 
+use crate::commission::SnapshotRole;
 use crate::dialect::smd4::commission::spec_params;
 use crate::dialect::smd4::protocol::{
     Expectation, ReplyShape, Request, Response, Smd4Spec, Value, parse_response,
 };
-use crate::dialect::tmcl::profile::SnapshotRole;
 
 use crate::dialect::replay::parse::{Entry, Record};
 use crate::dialect::replay::{nothing_to_replay, reply_after, rhai_string};

@@ -144,7 +144,7 @@ pub(crate) fn param_ref(profile: &Profile, p: &Param, scope: Scope) -> ParamRef 
         number: Some(p.number.into()),
         unit: p.unit.clone(),
         access: p.access,
-        role: profile.snapshot.role(p),
+        role: profile.snapshot.role_of(&p.ident, p.access.write),
         rank: profile.snapshot.rank(&p.ident),
         tolerance: Tolerance::Exact,
     }

@@ -3,8 +3,8 @@
 //! global parameter names with their banks for SGP/GGP/STGP/RSGP.
 
 use crate::dialect::grammar::{Candidate, Completion};
+use crate::dialect::tmcl::profile::commands::{CommandSpec, OperandKind};
 use crate::dialect::tmcl::profile::{Param, Profile};
-use crate::dialect::tmcl::protocol::commands::{CommandSpec, OperandKind};
 
 /// Completes the word ending at `pos` in the TMCL line `line`.
 pub fn complete(line: &str, pos: usize, profile: &Profile) -> Completion {

@@ -1,8 +1,8 @@
 //! Hints while typing: the usage of the command, or — once a parameter is named — its number,
 //! unit, range, access and one-line description.
 
+use crate::dialect::tmcl::profile::commands::{Field, OperandKind};
 use crate::dialect::tmcl::profile::{Param, Profile};
-use crate::dialect::tmcl::protocol::commands::{Field, OperandKind};
 
 use super::complete::spec_of;
 

@@ -2,7 +2,7 @@
 
 use crate::dialect::session::Decoded;
 use crate::dialect::tmcl::profile::Profile;
-use crate::dialect::tmcl::protocol::commands::{Field, OperandKind, ParamUse};
+use crate::dialect::tmcl::profile::commands::{Field, OperandKind, ParamUse};
 use crate::dialect::tmcl::protocol::line::Op;
 use crate::dialect::tmcl::session::{Answer, Exchange};
 

@@ -217,7 +217,7 @@ pub fn is_live(i: &Instruction, profile: &Profile) -> bool {
     let role = |p: Option<&crate::dialect::tmcl::profile::Param>| {
         p.is_none_or(|p| {
             matches!(
-                profile.snapshot.role(p),
+                profile.snapshot.role_of(&p.ident, p.access.write),
                 SnapshotRole::Live | SnapshotRole::ReadOnly
             )
         })

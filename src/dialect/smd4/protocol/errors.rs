@@ -1,7 +1,5 @@
 //! The error codes a drive puts in a reply instead of data, with their meanings from the data.
 
-use crate::exit::{Exit, ExitStatus};
-
 use super::Smd4Spec;
 
 /// An error code from a reply; codes the document does not list are kept as [`ErrorCode::Other`].
@@ -113,16 +111,10 @@ fn meaning_suffix(code: ErrorCode) -> String {
     format!(": {}", code.meaning())
 }
 
-impl ExitStatus for DeviceError {
-    /// A device error code means exit 1.
-    fn exit(&self) -> Exit {
-        Exit::DeviceError
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::exit::{Exit, ExitStatus};
 
     #[test]
     fn codes_round_trip_and_have_names_from_the_data() {

@@ -36,7 +36,7 @@ pub(crate) struct SimulationRow {
 #[derive(Debug, Default, Deserialize)]
 pub(crate) struct SnapshotRow {
     #[serde(flatten)]
-    pub rules: crate::dialect::tmcl::profile::SnapshotRules,
+    pub rules: crate::commission::SnapshotRules,
     #[serde(default)]
     pub needs_standby: bool,
     pub float_digits: Option<u32>,

@@ -9,8 +9,6 @@ use nom::character::complete::{char, digit1, satisfy};
 use nom::combinator::{opt, recognize};
 use nom::{IResult, Parser};
 
-use crate::exit::{Exit, ExitStatus};
-
 /// The request terminator.
 pub const TERMINATOR: &str = "\r\n";
 
@@ -63,13 +61,6 @@ pub enum RequestError {
     /// A control or non-ASCII character.
     #[error("character {0:?} cannot be sent: requests are printable ASCII")]
     BadCharacter(char),
-}
-
-impl ExitStatus for RequestError {
-    /// Refused before sending: exit 2.
-    fn exit(&self) -> Exit {
-        Exit::Refused
-    }
 }
 
 impl Request {

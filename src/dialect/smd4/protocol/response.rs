@@ -11,8 +11,6 @@ use nom::character::complete::{char, digit1, one_of};
 use nom::combinator::opt;
 use nom::{IResult, Parser};
 
-use crate::exit::{Exit, ExitStatus};
-
 use super::commands::{CommandSpec, CommandTable, ReplyShape};
 use super::errors::{DeviceError, ErrorCode};
 use super::flags::{Eflags, Sflags};
@@ -76,13 +74,6 @@ pub struct ResponseError {
     pub line: String,
     /// What is wrong with it.
     pub why: &'static str,
-}
-
-impl ExitStatus for ResponseError {
-    /// Garbage from the link is a link failure: exit 3.
-    fn exit(&self) -> Exit {
-        Exit::Link
-    }
 }
 
 /// What a reply to a given command should carry; [`Expectation::unknown`] guesses.

@@ -9,7 +9,7 @@ use super::commands::CommandTable;
 use super::errors::ErrorInfo;
 use super::flags::FlagTable;
 use super::load::Smd4File;
-use crate::dialect::tmcl::profile::SnapshotRules;
+use crate::commission::SnapshotRules;
 
 /// The data file, kept in the repository as the single source of truth and built into the binary.
 pub const BUILTIN_TOML: &str = include_str!("../../../../data/smd4.toml");

@@ -2,7 +2,6 @@
 //! answer with −103, −3, −102, −101 or −2 are refused locally with a message that says what to do
 //! (exit code 2). What only the drive can know (standby, mode, latched errors) is left to it.
 
-use crate::exit::{Exit, ExitStatus};
 use crate::suggest::did_you_mean;
 
 use super::commands::{ArgProblem, CommandSpec, CommandTable};
@@ -119,13 +118,6 @@ fn unit_suffix(unit: &str) -> String {
         String::new()
     } else {
         format!(" {unit}")
-    }
-}
-
-impl ExitStatus for ValidationError {
-    /// Refused before sending: exit 2.
-    fn exit(&self) -> Exit {
-        Exit::Refused
     }
 }
 

@@ -121,3 +121,10 @@ impl DialectSession for Smd4Session {
         (Box::new(session), result)
     }
 }
+
+/// An SMD4 session dropped during a panic stops its drives (see [`crate::dialect::guard`]).
+impl Drop for Smd4Session {
+    fn drop(&mut self) {
+        crate::dialect::guard::on_panic(self, |session| session.close());
+    }
+}

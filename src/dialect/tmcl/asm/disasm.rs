@@ -9,7 +9,7 @@
 use std::collections::BTreeSet;
 
 use crate::dialect::tmcl::profile::Profile;
-use crate::dialect::tmcl::protocol::commands::{CommandSpec, Field, OperandKind};
+use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
 use crate::dialect::tmcl::protocol::validate::{Mode, validate_instruction};
 use crate::dialect::tmcl::protocol::{InputError, Instruction};
 

@@ -4,7 +4,7 @@
 //! (`Mode::Program`), so a program is held to exactly the rules a typed command is.
 
 use crate::dialect::tmcl::profile::Profile;
-use crate::dialect::tmcl::protocol::commands::{CommandSpec, Field, OperandKind};
+use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
 use crate::dialect::tmcl::protocol::line::{byte, count_text, word32};
 use crate::dialect::tmcl::protocol::validate::{Mode, validate, validate_instruction};
 use crate::dialect::tmcl::protocol::{InputError, Instruction, Line, Op, Warning};

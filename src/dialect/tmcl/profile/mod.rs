@@ -5,51 +5,20 @@
 //! table with the same schema, so a new module needs no new release.
 
 mod check;
+pub mod commands;
 pub(crate) mod load;
-mod snapshot;
 
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 
-use crate::dialect::tmcl::protocol::commands::CommandTable;
 use crate::suggest;
+use commands::CommandTable;
 use load::{ParamRow, ProfileFile};
 
-pub use snapshot::{SnapshotRole, SnapshotRules};
+pub use crate::commission::{Access, SnapshotRole, SnapshotRules};
 
 /// The built-in profile's source text, kept in the repository as the single source of truth.
 pub const BUILTIN_TOML: &str = include_str!("../../../../data/tmcm142.toml");
-
-/// Whether a parameter can be read (GAP/GGP), written (SAP/SGP) and stored (STAP/RSAP, STGP/RSGP).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct Access {
-    /// Readable with GAP/GGP.
-    pub read: bool,
-    /// Writable with SAP/SGP.
-    pub write: bool,
-    /// Storable to and restorable from EEPROM.
-    pub store: bool,
-}
-
-impl Access {
-    fn from_letters(letters: &str) -> Self {
-        let has = |c| letters.to_ascii_uppercase().contains(c);
-        Access {
-            read: has('R'),
-            write: has('W'),
-            store: has('E'),
-        }
-    }
-
-    /// The letters as printed in the manual's tables (`RWE`).
-    pub fn letters(&self) -> String {
-        [(self.read, 'R'), (self.write, 'W'), (self.store, 'E')]
-            .iter()
-            .filter(|(on, _)| *on)
-            .map(|(_, c)| *c)
-            .collect()
-    }
-}
 
 /// Axis parameters belong to a motor; global parameters to a bank.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -296,7 +265,7 @@ impl Profile {
         axis.sort_by_key(|p| p.number);
         global.sort_by_key(|p| (p.bank(), p.number));
         file.snapshot
-            .check(&axis.iter().chain(&global).collect::<Vec<_>>())
+            .check_names(|ident| axis.iter().chain(&global).any(|p| p.ident == ident))
             .map_err(|message| at(vec![check::Step::Key("snapshot")], message))?;
         let sim = file.simulation.as_ref();
         Ok(Profile {

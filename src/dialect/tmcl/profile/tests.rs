@@ -131,3 +131,37 @@ fn every_power_up_value_lies_in_its_range() {
         );
     }
 }
+
+#[cfg(test)]
+mod snapshot_rules {
+    use super::*;
+    use crate::commission::SnapshotRole;
+
+    #[test]
+    fn the_builtin_profile_classifies_settings_live_values_and_link_settings() {
+        let profile = Profile::builtin();
+        let rules = &profile.snapshot;
+        let role = |ident: &str| {
+            let p = profile
+                .find_axis(ident)
+                .or_else(|_| profile.find_global(ident))
+                .unwrap();
+            rules.role_of(&p.ident, p.access.write)
+        };
+        assert_eq!(role("max_current"), SnapshotRole::Setting);
+        assert_eq!(role("actual_position"), SnapshotRole::Live);
+        assert_eq!(role("serial_address"), SnapshotRole::Manual);
+        assert_eq!(role("target_position_reached"), SnapshotRole::ReadOnly);
+        assert_eq!(role("user_variable_3"), SnapshotRole::Setting);
+        assert_eq!(rules.rank("unit_conversion_mode"), 0);
+        assert!(rules.rank("max_current") < rules.rank("standby_current"));
+    }
+
+    #[test]
+    fn a_rule_naming_no_parameter_is_refused() {
+        let text = "[meta]\nmodule = \"X\"\n[[axis_parameter]]\nnumber = 1\nname = \"A\"\nident = \"a\"\naccess = \"RW\"\n[snapshot]\nlive = [\"b\"]\n";
+        let builtin = Profile::builtin();
+        let error = Profile::from_toml(text, Some(&builtin.commands)).unwrap_err();
+        assert!(error.contains("[snapshot] live names 'b'"), "{error}");
+    }
+}

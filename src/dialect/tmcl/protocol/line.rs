@@ -4,10 +4,12 @@
 use crate::dialect::tmcl::profile::Profile;
 use crate::suggest;
 
-use super::commands::{AsciiWord, CommandSpec, Field, Operand, OperandKind};
 use super::error::InputError;
 use super::instruction::Instruction;
 use super::syntax::{Arg, RawLine, Word, parse_line};
+use crate::dialect::tmcl::profile::commands::{
+    AsciiWord, CommandSpec, Field, Operand, OperandKind,
+};
 
 /// What a line asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -1,7 +1,7 @@
 //! The TMCL protocol of Trinamic modules: binary frames, the ASCII interface's line and reply
-//! grammar, the command table and validation. Pure code: bytes and text in, values out.
+//! grammar, and validation against the profile's tables ([`super::profile`], which holds the
+//! command table). Pure code: bytes and text in, values out.
 
-pub mod commands;
 pub mod error;
 pub mod frame;
 pub mod instruction;
@@ -11,7 +11,7 @@ pub mod status;
 pub mod syntax;
 pub mod validate;
 
-pub use commands::{AsciiWord, CommandSpec, CommandTable};
+pub use crate::dialect::tmcl::profile::commands::{AsciiWord, CommandSpec, CommandTable};
 pub use error::{InputError, Warning};
 pub use frame::{CommandFrame, FrameDecoder, ReplyFrame};
 pub use instruction::Instruction;

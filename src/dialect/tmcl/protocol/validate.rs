@@ -4,10 +4,12 @@
 
 use crate::dialect::tmcl::profile::{Param, ParamKind, Profile};
 
-use super::commands::{AsciiWord, CommandSpec, Field, OperandKind, ParamUse};
 use super::error::{InputError, Warning};
 use super::instruction::Instruction;
 use super::line::{Line, Op, format_instruction};
+use crate::dialect::tmcl::profile::commands::{
+    AsciiWord, CommandSpec, Field, OperandKind, ParamUse,
+};
 
 /// Where a line is going to be used.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

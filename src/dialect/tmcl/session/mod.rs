@@ -7,6 +7,7 @@
 mod ascii;
 mod binary;
 mod faces;
+mod guard;
 mod mode;
 mod probe;
 mod stop;
@@ -16,7 +17,7 @@ use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use crate::dialect::tmcl::profile::Profile;
-use crate::dialect::tmcl::protocol::commands::AsciiWord;
+use crate::dialect::tmcl::profile::commands::AsciiWord;
 use crate::dialect::tmcl::protocol::line::{
     self, Line, Op, address_char, format_instruction, format_line,
 };

@@ -6,7 +6,7 @@
 //! keyword number (the type byte) answers 3 (wrong type); a value out of range or a motor other
 //! than 0 answers 4 (invalid value).
 
-use crate::dialect::tmcl::protocol::commands::{CommandSpec, Field, OperandKind};
+use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
 use crate::dialect::tmcl::protocol::{Instruction, Status};
 
 use super::machine::Machine;

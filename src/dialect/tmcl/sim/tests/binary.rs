@@ -1,7 +1,7 @@
 //! Binary TMCL: every command of the table, status codes, addressing, checksums.
 
 use crate::dialect::tmcl::profile::Profile;
-use crate::dialect::tmcl::protocol::commands::{CommandSpec, OperandKind};
+use crate::dialect::tmcl::profile::commands::{CommandSpec, OperandKind};
 use crate::dialect::tmcl::protocol::frame::decode_version_string;
 use crate::dialect::tmcl::protocol::{CommandFrame, Instruction, ReplyFrame, Status};
 

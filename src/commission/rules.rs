@@ -4,8 +4,6 @@
 
 use serde::Deserialize;
 
-use super::Param;
-
 /// The `[snapshot]` table of a profile file: parameter identifiers in three lists.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Deserialize)]
 pub struct SnapshotRules {
@@ -38,11 +36,6 @@ pub enum SnapshotRole {
 }
 
 impl SnapshotRules {
-    /// The role of `param` under these rules.
-    pub fn role(&self, param: &Param) -> SnapshotRole {
-        self.role_of(&param.ident, param.access.write)
-    }
-
     /// The role of the parameter `ident`, writable or not, under these rules.
     pub fn role_of(&self, ident: &str, writable: bool) -> SnapshotRole {
         let listed = |list: &[String]| list.iter().any(|i| i == ident);
@@ -69,13 +62,8 @@ impl SnapshotRules {
         }
     }
 
-    /// Checks that every listed identifier names a parameter (a typo would silently not apply).
-    pub(crate) fn check(&self, params: &[&Param]) -> Result<(), String> {
-        self.check_names(|ident| params.iter().any(|p| p.ident == ident))
-    }
-
-    /// Checks every listed identifier with `known`.
-    pub(crate) fn check_names(&self, known: impl Fn(&str) -> bool) -> Result<(), String> {
+    /// Checks every listed identifier with `known` (a typo would silently not apply).
+    pub fn check_names(&self, known: impl Fn(&str) -> bool) -> Result<(), String> {
         let lists = [
             ("live", &self.live),
             ("first", &self.first),
@@ -92,39 +80,5 @@ impl SnapshotRules {
             }
         }
         Ok(())
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::dialect::tmcl::profile::Profile;
-
-    #[test]
-    fn the_builtin_profile_classifies_settings_live_values_and_link_settings() {
-        let profile = Profile::builtin();
-        let rules = &profile.snapshot;
-        let role = |ident: &str| {
-            let p = profile
-                .find_axis(ident)
-                .or_else(|_| profile.find_global(ident))
-                .unwrap();
-            rules.role(p)
-        };
-        assert_eq!(role("max_current"), SnapshotRole::Setting);
-        assert_eq!(role("actual_position"), SnapshotRole::Live);
-        assert_eq!(role("serial_address"), SnapshotRole::Manual);
-        assert_eq!(role("target_position_reached"), SnapshotRole::ReadOnly);
-        assert_eq!(role("user_variable_3"), SnapshotRole::Setting);
-        assert_eq!(rules.rank("unit_conversion_mode"), 0);
-        assert!(rules.rank("max_current") < rules.rank("standby_current"));
-    }
-
-    #[test]
-    fn a_rule_naming_no_parameter_is_refused() {
-        let text = "[meta]\nmodule = \"X\"\n[[axis_parameter]]\nnumber = 1\nname = \"A\"\nident = \"a\"\naccess = \"RW\"\n[snapshot]\nlive = [\"b\"]\n";
-        let builtin = Profile::builtin();
-        let error = Profile::from_toml(text, Some(&builtin.commands)).unwrap_err();
-        assert!(error.contains("[snapshot] live names 'b'"), "{error}");
     }
 }

@@ -1,7 +1,7 @@
 //! The TMCL command table: numbers, mnemonics, operand layouts, keywords and where each command
 //! may be used. Built from the profile data; nothing here lists commands by hand.
 
-use crate::dialect::tmcl::profile::load::{CommandRow, KeywordRow};
+use super::load::{CommandRow, KeywordRow};
 
 /// What an operand in mnemonic form means, and so which instruction field it fills.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
