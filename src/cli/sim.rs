@@ -21,7 +21,7 @@ use super::Failure;
 
 /// Arguments of `sim`.
 #[derive(Debug, clap::Args)]
-#[command(after_long_help = console::HELP)]
+#[command(after_long_help = console_help())]
 pub struct SimArgs {
     /// The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4).
     #[arg(long, value_parser = protocol_parser(), default_value = default_dialect().name)]
@@ -137,6 +137,11 @@ impl<const G: u8> Args for SimFlagGroup<G> {
     }
 }
 
+/// The console commands of every dialect's simulator.
+fn console_help() -> String {
+    console::help(DIALECTS.iter().map(|d| d.console_help))
+}
+
 fn rate(text: &str) -> Result<f64, String> {
     text.parse::<f64>()
         .ok()
@@ -218,7 +223,7 @@ pub fn run(args: &SimArgs, configs: &Configured, out: &mut dyn Write) -> Result<
         }
         None => None,
     };
-    let console = Console::new(device, clock, manual);
+    let console = Console::new(device, clock, manual, console_help());
     std::thread::spawn(move || {
         for line in std::io::stdin().lock().lines() {
             let Ok(line) = line else { break };

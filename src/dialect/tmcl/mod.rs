@@ -40,6 +40,7 @@ pub static DIALECT: Dialect = Dialect {
     sim_flags: sim::flags::add,
     sim_flag_given: sim::flags::given,
     simulated: "TMCM-142",
+    console_help: CONSOLE_HELP,
     legacy_note: None,
     scan_addresses: "1-26",
     scan_example: "1-26 200ms",
@@ -54,3 +55,12 @@ pub fn is(dialect: &Dialect) -> bool {
 pub fn session(session: &mut dyn DialectSession) -> Option<&mut TmclSession> {
     session.as_any_mut().downcast_mut()
 }
+
+/// The commands of its simulator's console (`tmclsh sim --help`).
+const CONSOLE_HELP: &str = " TMCL module bus (--protocol tmcl):
+  input PORT 0|1                     set a digital input (GIO bank 0)
+  analog PORT VALUE                  set an analog input (GIO bank 1, 0..1023)
+  switch left|right|home POS|off     move a virtual switch (physical microsteps) or disconnect it
+  output PORT                        show an output (SIO bank 2)
+  motor                              show position, target, velocity, target reached
+  @N COMMAND                         any of the above for the module with factory address N";

@@ -6,6 +6,7 @@
 
 mod ascii;
 mod binary;
+mod exchange;
 mod faces;
 mod guard;
 mod mode;
@@ -18,116 +19,23 @@ use std::sync::Arc;
 
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::commands::AsciiWord;
+use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::{
     self, Line, Op, address_char, format_instruction, format_line,
 };
 use crate::dialect::tmcl::protocol::syntax::parse_line;
 use crate::dialect::tmcl::protocol::validate::{self, Mode};
-use crate::dialect::tmcl::protocol::{Instruction, Status};
 use crate::link::Link;
 
-use crate::dialect::session::Refusal;
 use crate::session::core::{Addresses, SessionCore};
 use crate::session::transcript::Transcript;
 use crate::session::wire::Peer;
 use crate::session::{SessionError, SessionOptions};
 
+pub use exchange::{Answer, Exchange};
 pub use mode::{Echo, WireMode};
 
 use unanswered::{Unanswered, harmless};
-
-/// What a module answered.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Answer {
-    /// A status and value (ASCII reply line or binary reply frame).
-    Reply {
-        /// Outcome.
-        status: Status,
-        /// Returned value.
-        value: i32,
-    },
-    /// The version string of command 136 type 0.
-    Version(String),
-    /// No reply is expected (137 factory reset, BIN without reply).
-    Nothing,
-}
-
-/// One request and its answer.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Exchange {
-    /// The module addressed.
-    pub module: u8,
-    /// The line sent, in canonical form (`AGAP 1, 0`; binary: `GAP 1, 0`).
-    pub sent: String,
-    /// What was sent, when the line resolved.
-    pub op: Option<Op>,
-    /// The answer.
-    pub answer: Answer,
-    /// The reply as the module sent it, without echo and line ending (`BA 100 -5000`).
-    pub raw: String,
-}
-
-impl Exchange {
-    /// Whether the module reported success (or nothing was expected).
-    pub fn ok(&self) -> bool {
-        match self.answer {
-            Answer::Reply { status, .. } => status.is_success(),
-            _ => true,
-        }
-    }
-
-    /// The returned value of a status reply.
-    pub fn value(&self) -> Option<i32> {
-        match self.answer {
-            Answer::Reply { value, .. } => Some(value),
-            _ => None,
-        }
-    }
-
-    /// The status of a status reply.
-    pub fn status(&self) -> Option<Status> {
-        match self.answer {
-            Answer::Reply { status, .. } => Some(status),
-            _ => None,
-        }
-    }
-
-    /// The exchange, or a device error when the module answered with an error status.
-    pub fn checked(self) -> Result<Exchange, SessionError> {
-        match self.refusal() {
-            Some(refusal) => Err(refusal.into()),
-            None => Ok(self),
-        }
-    }
-
-    /// The error status the module answered with, if any.
-    pub fn refusal(&self) -> Option<Refusal> {
-        match self.answer {
-            Answer::Reply { status, .. } if !status.is_success() => Some(Refusal {
-                module: address_char(self.module).unwrap_or('?').to_string(),
-                sent: self.sent.clone(),
-                reason: format!("status {status}"),
-            }),
-            _ => None,
-        }
-    }
-
-    /// The answer as the module sent it: the reply line without echo and line ending, or the
-    /// version string of 136.
-    pub fn shown(&self) -> String {
-        match &self.answer {
-            Answer::Version(version) => version.clone(),
-            _ => self.raw.clone(),
-        }
-    }
-}
-
-/// A line the parser or validator refuses is refused before sending (exit 2).
-impl From<crate::dialect::tmcl::protocol::InputError> for SessionError {
-    fn from(error: crate::dialect::tmcl::protocol::InputError) -> Self {
-        SessionError::Refused(error.to_string())
-    }
-}
 
 /// A TMCL conversation with the modules on one link.
 pub struct TmclSession {
