@@ -43,9 +43,9 @@ fn params_without_filter_lists_axis_and_global_parameters() {
 }
 
 #[test]
-fn params_with_a_filter_that_matches_nothing_says_so() {
+fn params_with_a_filter_that_matches_nothing_says_so_and_exits_1() {
     let out = run(&["params", "no_such_thing"]);
-    assert_eq!(code(&out), 0);
+    assert_eq!(code(&out), 1);
     assert!(stdout(&out).is_empty());
     assert!(stderr(&out).contains("no TMCM-142 parameter matches 'no_such_thing'"));
 }

@@ -134,7 +134,7 @@ impl Failure {
 pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
     let profile = load_profile(&cli)?;
     let result = match cli.command {
-        Some(Command::Params(args)) => params::run(&args, &profile, out),
+        Some(Command::Params(args)) => return finish_io(params::run(&args, &profile, out)),
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
         Some(Command::Run(args)) => return run::run(args, &profile),
@@ -147,8 +147,13 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Sim(args)) => return sim::run(&args, profile, out),
         None => return shell::run(cli.shell, &profile),
     };
+    finish_io(result.map(|()| Exit::Success))
+}
+
+/// The exit code of a command that only writes output: a closed pipe (`| head`) is no failure.
+fn finish_io(result: std::io::Result<Exit>) -> Result<Exit, Failure> {
     match result {
-        Ok(()) => Ok(Exit::Success),
+        Ok(exit) => Ok(exit),
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
         Err(e) => Err(Failure::new(Exit::Link, e.to_string())),
     }
