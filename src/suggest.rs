@@ -85,7 +85,14 @@ mod tests {
 
     #[test]
     fn two_swapped_letters_are_one_edit() {
-        let names = ["GAP", "SAP", "GGP", "MVP", "actual_position", "actual_speed"];
+        let names = [
+            "GAP",
+            "SAP",
+            "GGP",
+            "MVP",
+            "actual_position",
+            "actual_speed",
+        ];
         assert_eq!(nearest("GPA", names).as_deref(), Some("GAP"));
         assert_eq!(nearest("SPA", names).as_deref(), Some("SAP"));
         assert_eq!(nearest("VMP", names).as_deref(), Some("MVP"));

@@ -143,12 +143,24 @@ fn the_readme_usage_block_is_the_real_help() {
 fn a_transposition_is_suggested_wherever_names_are() {
     for (args, suggestion) in [
         (&["-c", "GPA 1, 0"][..], "did you mean GAP?"),
-        (&["-c", "GAP acutal_position, 0"], "did you mean actual_position?"),
+        (
+            &["-c", "GAP acutal_position, 0"],
+            "did you mean actual_position?",
+        ),
         (&["-c", ":prmas"], "did you mean :params?"),
-        (&["--protocol", "smd4", "-c", "MOTRO:VMAX"], "did you mean MOTOR:VMAX?"),
+        (
+            &["--protocol", "smd4", "-c", "MOTRO:VMAX"],
+            "did you mean MOTOR:VMAX?",
+        ),
     ] {
         let out = run(args);
         assert_eq!(code(&out), 2, "{args:?}: {}", stderr(&out));
-        assert!(stderr(&out).contains(suggestion), "{args:?}: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains(suggestion),
+            "{args:?}: {}",
+            stderr(&out)
+        );
     }
 }
+
+mod snapshot_save;
