@@ -164,3 +164,4 @@ fn a_transposition_is_suggested_wherever_names_are() {
 }
 
 mod snapshot_save;
+mod words;

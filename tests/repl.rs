@@ -8,7 +8,7 @@ use rexpect::session::{PtySession, spawn_command};
 use crate::util::{bin, tempdir};
 
 /// The REPL on the built-in simulator, with its own history directory.
-fn repl(extra: &[&str]) -> (PtySession, std::path::PathBuf) {
+pub(crate) fn repl(extra: &[&str]) -> (PtySession, std::path::PathBuf) {
     let data = tempdir();
     let mut command = Command::new(bin());
     command
@@ -23,7 +23,7 @@ fn repl(extra: &[&str]) -> (PtySession, std::path::PathBuf) {
 }
 
 /// Types text without Enter (rexpect buffers until flushed).
-fn type_in(p: &mut PtySession, text: &str) {
+pub(crate) fn type_in(p: &mut PtySession, text: &str) {
     p.send(text).unwrap();
     p.flush().unwrap();
 }

@@ -22,6 +22,7 @@ use crate::protocol::tmcl::validate::Mode;
 use crate::session::tmcl::WireMode;
 use crate::session::{Session, SessionError, interrupt};
 use crate::shell::render::decode_reply;
+use crate::shell::words::{Everyday, everyday};
 use crate::shell::{Flow, Shell};
 
 use editor::{ReplHelper, Tables};
@@ -81,7 +82,15 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         }
         match editor.readline(&shell.prompt()) {
             Ok(text) => {
-                if handle(shell, text.trim(), color, &mut out) == Flow::Quit {
+                let flow = match everyday(&text) {
+                    Some(Everyday::Clear) => {
+                        let _ = editor.clear_screen();
+                        Flow::Continue
+                    }
+                    Some(Everyday::Helper(line)) => handle(shell, &line, color, &mut out),
+                    None => handle(shell, text.trim(), color, &mut out),
+                };
+                if flow == Flow::Quit {
                     break;
                 }
             }

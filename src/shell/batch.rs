@@ -18,6 +18,7 @@ use crate::escape::escape_control;
 use crate::exit::{Exit, ExitStatus};
 use crate::session::{SessionError, interrupt};
 
+use super::words::{Everyday, everyday};
 use super::{Flow, Shell};
 use lines::{LineError, LineReader, MAX_LINE};
 
@@ -145,8 +146,19 @@ fn step(
     if interrupt::pending() {
         return Err(SessionError::Interrupted);
     }
-    if text.starts_with(':') {
-        let flow = shell.helper(text, out);
+    let helper = match everyday(text) {
+        Some(Everyday::Helper(line)) => Some(line),
+        Some(Everyday::Clear) => {
+            diagnose(
+                err,
+                "clear: there is no screen to clear outside the interactive shell",
+            );
+            return Ok(Flow::Continue);
+        }
+        None => text.starts_with(':').then(|| text.to_string()),
+    };
+    if let Some(line) = helper {
+        let flow = shell.helper(&line, out);
         report_notices(shell, err);
         return flow;
     }

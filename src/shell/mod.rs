@@ -7,6 +7,7 @@ pub mod helpers;
 pub mod render;
 mod smd4_helpers;
 mod tmcl_helpers;
+pub mod words;
 
 use std::io::{self, Write};
 use std::path::Path;
