@@ -163,5 +163,6 @@ fn a_transposition_is_suggested_wherever_names_are() {
     }
 }
 
+mod history;
 mod snapshot_save;
 mod words;

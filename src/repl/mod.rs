@@ -6,9 +6,9 @@
 pub mod complete;
 pub mod editor;
 pub mod hint;
+mod history;
 
 use std::io::{IsTerminal, Write};
-use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use crossterm::style::Stylize;
@@ -30,11 +30,6 @@ use editor::{ReplHelper, Tables};
 /// Whether output may be coloured: a terminal, and NO_COLOR unset.
 pub fn color_enabled() -> bool {
     std::env::var_os("NO_COLOR").is_none() && std::io::stdout().is_terminal()
-}
-
-/// Where the history lives: the user's data directory.
-fn history_path() -> Option<PathBuf> {
-    dirs::data_dir().map(|d| d.join("tmclsh").join("history"))
 }
 
 /// Runs the REPL until `:quit` or Ctrl-D; the session is closed (modules restored) at the end.
@@ -59,10 +54,8 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         Session::Smd4(s) => Tables::Smd4(s.spec()),
     };
     editor.set_helper(Some(ReplHelper::new(tables, color)));
-    let history = history_path();
-    if let Some(path) = &history {
-        let _ = editor.load_history(path);
-    }
+    let dialect = shell.session_ref().dialect();
+    history::load(&mut editor, dialect);
     let mut out = std::io::stdout();
     let _ = writeln!(out, "{banner}");
     let _ = writeln!(
@@ -109,12 +102,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
             }
         }
     }
-    if let Some(path) = &history {
-        if let Some(dir) = path.parent() {
-            let _ = std::fs::create_dir_all(dir);
-        }
-        let _ = editor.save_history(path);
-    }
+    history::save(&mut editor, dialect);
     for message in shell.session().close() {
         let _ = writeln!(out, "{}", escape_control(&message));
     }
