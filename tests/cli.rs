@@ -164,5 +164,6 @@ fn a_transposition_is_suggested_wherever_names_are() {
 }
 
 mod history;
+mod output;
 mod snapshot_save;
 mod words;

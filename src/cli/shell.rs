@@ -9,7 +9,7 @@ use crate::profile::Profile;
 use crate::session::Session;
 use crate::session::interrupt;
 use crate::shell::Shell;
-use crate::shell::batch::{self, Lines};
+use crate::shell::batch::{self, Lines, Output};
 
 use super::Failure;
 use super::connection::{Audience, ModuleArgs, simulated_module};
@@ -21,6 +21,18 @@ pub struct ShellArgs {
     /// stdin when it is not a terminal.
     #[arg(short = 'c', value_name = "LINE")]
     pub commands: Vec<String>,
+    /// With -c or piped lines: print only each reply's value (TMCL: -5000 of BA 100 -5000;
+    /// SMD4: the data items), an empty line for a line that failed.
+    #[arg(long, conflicts_with = "json")]
+    pub value: bool,
+    /// With -c or piped lines: print one JSON object per line (status, value or items, raw
+    /// reply, module, exit code).
+    #[arg(long)]
+    pub json: bool,
+    /// With -c or piped lines: go on past a failing line; the exit code is then the worst
+    /// failure's (130 before 3 before 1 before 2).
+    #[arg(long)]
+    pub keep_going: bool,
     /// Which module, and how to talk to it.
     #[command(flatten)]
     pub module: ModuleArgs,
@@ -30,6 +42,17 @@ pub struct ShellArgs {
 pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     interrupt::install();
     let interactive = args.commands.is_empty() && std::io::stdin().is_terminal();
+    let options = batch::Options {
+        output: match (args.value, args.json) {
+            (true, _) => Output::Value,
+            (_, true) => Output::Json,
+            _ => Output::Reply,
+        },
+        keep_going: args.keep_going,
+    };
+    if interactive {
+        refuse_batch_flags(&args)?;
+    }
     let audience = if interactive {
         Audience::Interactive
     } else {
@@ -48,7 +71,29 @@ pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     };
     let mut out = std::io::stdout().lock();
     let mut err = std::io::stderr().lock();
-    Ok(batch::run(&mut shell, lines, &mut out, &mut err))
+    Ok(batch::run(&mut shell, lines, options, &mut out, &mut err))
+}
+
+/// The output flags shape -c and piped lines; the interactive shell has neither.
+fn refuse_batch_flags(args: &ShellArgs) -> Result<(), Failure> {
+    let given: Vec<&str> = [
+        (args.value, "--value"),
+        (args.json, "--json"),
+        (args.keep_going, "--keep-going"),
+    ]
+    .into_iter()
+    .filter_map(|(set, flag)| set.then_some(flag))
+    .collect();
+    if given.is_empty() {
+        return Ok(());
+    }
+    Err(Failure::new(
+        Exit::Refused,
+        format!(
+            "{} shape the output of -c and piped lines; the interactive shell shows decoded replies",
+            given.join(", ")
+        ),
+    ))
 }
 
 fn banner(module: &ModuleArgs, shell: &Shell, profile: &Profile) -> String {
