@@ -27,6 +27,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
@@ -52,6 +53,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
+            cand config 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user''s config.toml, or built in'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;params'= {
@@ -78,6 +80,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
@@ -116,6 +119,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
@@ -145,6 +149,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
@@ -165,6 +170,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
@@ -184,6 +190,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
@@ -224,6 +231,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
@@ -295,6 +303,26 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
+        &'tmclsh;config'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
         &'tmclsh;help'= {
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
@@ -307,6 +335,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
+            cand config 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user''s config.toml, or built in'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;help;params'= {
@@ -342,6 +371,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;transcript;to-rhai'= {
         }
         &'tmclsh;help;sim'= {
+        }
+        &'tmclsh;help;config'= {
         }
         &'tmclsh;help;help'= {
         }

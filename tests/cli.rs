@@ -163,6 +163,7 @@ fn a_transposition_is_suggested_wherever_names_are() {
     }
 }
 
+mod config;
 mod history;
 mod output;
 mod snapshot_save;

@@ -13,9 +13,9 @@ use crate::profile::Profile;
 use crate::protocol::Dialect;
 use crate::protocol::smd4::PrefixStyle;
 use crate::session::smd4::{Smd4Options, Smd4Session};
-use crate::session::tmcl::TmclSession;
+use crate::session::tmcl::{Echo, TmclSession};
 use crate::session::transcript::Header;
-use crate::session::{Session, SessionOptions, Transcript};
+use crate::session::{Session, SessionError, SessionOptions, Transcript};
 
 use super::Failure;
 
@@ -83,11 +83,15 @@ impl Smd4Args {
 #[derive(Debug, Clone, clap::Args)]
 pub struct SessionArgs {
     /// Address of the target module (1 = address character A).
-    #[arg(long, short = 'm', value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
+    #[arg(long, short = 'm', value_name = "N", env = "TMCLSH_MODULE", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
     pub module: u8,
     /// Milliseconds to wait for a reply before giving up (exit code 3).
-    #[arg(long, value_name = "MS", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "MS", env = "TMCLSH_TIMEOUT", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
     pub timeout: u64,
+    /// Set the target module's echo on opening: char, line (every reply attributed to its
+    /// request) or none (global parameter 67 in RAM; it stays after tmclsh ends).
+    #[arg(long, value_enum, value_name = "MODE")]
+    pub echo: Option<EchoMode>,
     /// Append every byte sent and received, timestamped and decoded, to FILE.
     #[arg(long, value_name = "FILE")]
     pub log: Option<PathBuf>,
@@ -100,6 +104,28 @@ pub struct SessionArgs {
     /// Leave the modules in ASCII mode on exit instead of restoring the mode they were found in.
     #[arg(long)]
     pub stay_ascii: bool,
+}
+
+/// The echo modes of a TMCL module, as `--echo` and `:echo` name them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum EchoMode {
+    /// Every character echoed as it arrives.
+    Char,
+    /// The whole line echoed after its end.
+    Line,
+    /// No echo, only the reply.
+    None,
+}
+
+impl EchoMode {
+    /// The session's echo mode.
+    pub fn echo(self) -> Echo {
+        match self {
+            EchoMode::Char => Echo::Character,
+            EchoMode::Line => Echo::Line,
+            EchoMode::None => Echo::None,
+        }
+    }
 }
 
 impl SessionArgs {
@@ -215,9 +241,9 @@ impl ModuleArgs {
         let transcript = self.session.transcript(&header)?;
         let link = self.link(profile, options.timeout, audience)?;
         match self.protocol() {
-            Dialect::Tmcl => {
-                TmclSession::open(link, profile.clone(), options, transcript).map(Session::Tmcl)
-            }
+            Dialect::Tmcl => TmclSession::open(link, profile.clone(), options, transcript)
+                .and_then(|s| self.set_echo(s))
+                .map(Session::Tmcl),
             Dialect::Smd4 => {
                 Smd4Session::open(link, options, self.smd4.options(), transcript).map(Session::Smd4)
             }
@@ -237,7 +263,17 @@ impl ModuleArgs {
         let transcript = self.session.transcript(&Header::tmcl(profile))?;
         let link = self.link(profile, options.timeout, Audience::Batch)?;
         TmclSession::open(link, profile.clone(), options, transcript)
+            .and_then(|s| self.set_echo(s))
             .map_err(|e| Failure::new(e.exit(), e.to_string()))
+    }
+
+    /// Sets the target's echo mode when `--echo` (or a configuration file) asks for one.
+    fn set_echo(&self, mut session: TmclSession) -> Result<TmclSession, SessionError> {
+        if let Some(mode) = self.session.echo {
+            let target = session.target();
+            session.set_echo(target, mode.echo())?;
+        }
+        Ok(session)
     }
 }
 

@@ -47,17 +47,14 @@ pub fn save(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: Dialect) {
     let _ = editor.save_history(Path::new(&path));
 }
 
-/// Whether a line of the shared history was typed in `dialect`: SMD4 mnemonics have a colon
-/// inside their first word (`MOTOR:VMAX`, `@3SYS:FW`), TMCL lines none; helper lines (`:help`)
-/// belong to both.
+/// Whether a line of the shared history was typed in `dialect`: SMD4 mnemonics have colons
+/// (`MOTOR:VMAX`, `@3,SYS:FW`), TMCL lines none; helper lines (`:help`) belong to both.
 fn belongs(line: &str, dialect: Dialect) -> bool {
     let line = line.trim_start();
     if line.starts_with(':') {
         return true;
     }
-    let first = line.split([' ', ',']).next().unwrap_or("");
-    let smd4 = first.contains(':');
-    smd4 == (dialect == Dialect::Smd4)
+    line.contains(':') == (dialect == Dialect::Smd4)
 }
 
 #[cfg(test)]
