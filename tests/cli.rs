@@ -166,5 +166,6 @@ fn a_transposition_is_suggested_wherever_names_are() {
 mod config;
 mod history;
 mod output;
+mod ports;
 mod snapshot_save;
 mod words;

@@ -8,7 +8,7 @@ use std::time::Duration;
 
 use crate::exit::Exit;
 use crate::exit::ExitStatus;
-use crate::link::{Link, SerialLink, TcpLink};
+use crate::link::Link;
 use crate::profile::Profile;
 use crate::protocol::Dialect;
 use crate::protocol::smd4::PrefixStyle;
@@ -18,6 +18,7 @@ use crate::session::transcript::Header;
 use crate::session::{Session, SessionError, SessionOptions, Transcript};
 
 use super::Failure;
+use super::target::{Target, is_log_dir, log_file};
 
 /// Where the module is: a serial port, a TCP address, or (neither) the built-in simulator.
 #[derive(Debug, Clone, clap::Args)]
@@ -92,8 +93,9 @@ pub struct SessionArgs {
     /// request) or none (global parameter 67 in RAM; it stays after tmclsh ends).
     #[arg(long, value_enum, value_name = "MODE")]
     pub echo: Option<EchoMode>,
-    /// Append every byte sent and received, timestamped and decoded, to FILE.
-    #[arg(long, value_name = "FILE")]
+    /// Append every byte sent and received, timestamped and decoded, to FILE; given a
+    /// directory (or a path ending in /), write a new file there named by device and date.
+    #[arg(long, value_name = "FILE", value_hint = clap::ValueHint::AnyPath)]
     pub log: Option<PathBuf>,
     /// Send lines the validator would refuse (still canonicalised where they parse).
     #[arg(long)]
@@ -140,14 +142,25 @@ impl SessionArgs {
         }
     }
 
-    /// Opens the transcript, if asked for, starting it with `header`.
-    pub fn transcript(&self, header: &Header) -> Result<Option<Transcript>, Failure> {
-        self.log
-            .as_deref()
-            .map(|path| {
-                Transcript::open(path, header).map_err(|e| Failure::new(e.exit(), e.to_string()))
-            })
-            .transpose()
+    /// Opens the transcript, if asked for, starting it with `header`; a `--log` directory gets
+    /// a new file named by `device` and the date.
+    pub fn transcript(&self, header: &Header, device: &str) -> Result<Option<Transcript>, Failure> {
+        let Some(path) = self.log.as_deref() else {
+            return Ok(None);
+        };
+        let failed =
+            |e: crate::session::transcript::TranscriptError| Failure::new(e.exit(), e.to_string());
+        if !is_log_dir(path) {
+            return Transcript::open(path, header).map(Some).map_err(failed);
+        }
+        std::fs::create_dir_all(path).map_err(|e| {
+            Failure::new(
+                Exit::Refused,
+                format!("cannot create the log directory {}: {e}", path.display()),
+            )
+        })?;
+        let file = log_file(path, device, std::time::SystemTime::now());
+        Transcript::open(&file, header).map(Some).map_err(failed)
     }
 }
 
@@ -155,6 +168,11 @@ impl ConnectionArgs {
     /// Whether the built-in simulator is meant.
     pub fn is_builtin(&self) -> bool {
         self.port.is_none() && self.tcp.is_none()
+    }
+
+    /// Where the link goes (a `usb:` name resolved to its device file).
+    pub fn target(&self) -> Result<Target, Failure> {
+        Target::of(self.port.as_deref(), self.tcp.as_deref())
     }
 
     /// Opens the link: the TCP connection (--tcp, which only the command line gives, wins over a
@@ -165,20 +183,7 @@ impl ConnectionArgs {
         profile: &Arc<Profile>,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link: Box<dyn Link> = if let Some(address) = &self.tcp {
-            Box::new(
-                TcpLink::connect(address, timeout)
-                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
-            )
-        } else if let Some(path) = &self.port {
-            Box::new(
-                SerialLink::open(path, self.baud)
-                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
-            )
-        } else {
-            crate::sim::builtin_link(profile, dialect)
-        };
-        Ok(link)
+        self.target()?.open(self.baud, dialect, profile, timeout)
     }
 }
 
@@ -224,8 +229,34 @@ impl ModuleArgs {
         timeout: Duration,
         audience: Audience,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link = self.connection.open(self.protocol(), profile, timeout)?;
-        if self.connection.is_builtin() && audience == Audience::Batch {
+        let target = self.connection.target()?;
+        self.link_to(&target, profile, timeout, audience)
+    }
+
+    /// Opens the transcript (named by the target in a `--log` directory), then the link.
+    pub fn connect(
+        &self,
+        header: &Header,
+        profile: &Arc<Profile>,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<(Option<Transcript>, Box<dyn Link>), Failure> {
+        let target = self.connection.target()?;
+        let device = target.file_name(self.protocol());
+        let transcript = self.session.transcript(header, &device)?;
+        let link = self.link_to(&target, profile, timeout, audience)?;
+        Ok((transcript, link))
+    }
+
+    fn link_to(
+        &self,
+        target: &Target,
+        profile: &Arc<Profile>,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<Box<dyn Link>, Failure> {
+        let link = target.open(self.connection.baud, self.protocol(), profile, timeout)?;
+        if *target == Target::Builtin && audience == Audience::Batch {
             eprintln!(
                 "tmclsh: using the built-in simulated {}; give --port or --tcp for hardware",
                 simulated_module(self.protocol(), profile)
@@ -238,8 +269,7 @@ impl ModuleArgs {
     pub fn open(&self, profile: &Arc<Profile>, audience: Audience) -> Result<Session, Failure> {
         let options = self.session.options();
         let header = Header::new(self.protocol(), profile);
-        let transcript = self.session.transcript(&header)?;
-        let link = self.link(profile, options.timeout, audience)?;
+        let (transcript, link) = self.connect(&header, profile, options.timeout, audience)?;
         match self.protocol() {
             Dialect::Tmcl => TmclSession::open(link, profile.clone(), options, transcript)
                 .and_then(|s| self.set_echo(s))
@@ -260,8 +290,9 @@ impl ModuleArgs {
             ));
         }
         let options = self.session.options();
-        let transcript = self.session.transcript(&Header::tmcl(profile))?;
-        let link = self.link(profile, options.timeout, Audience::Batch)?;
+        let header = Header::tmcl(profile);
+        let (transcript, link) =
+            self.connect(&header, profile, options.timeout, Audience::Batch)?;
         TmclSession::open(link, profile.clone(), options, transcript)
             .and_then(|s| self.set_echo(s))
             .map_err(|e| Failure::new(e.exit(), e.to_string()))

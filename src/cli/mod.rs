@@ -18,6 +18,7 @@ pub mod shell;
 mod sim;
 mod sim_smd4;
 mod snapshot;
+mod target;
 mod transcript;
 
 use std::ffi::OsString;

@@ -9,6 +9,7 @@ use clap::error::{ContextKind, ContextValue};
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
+use super::super::ports::usb::UsbSpec;
 use super::{KEYS, Key, Kind};
 
 /// Which file a value comes from.
@@ -120,7 +121,12 @@ fn checked(
         (_, DeValue::String(s)) if s.is_empty() => {
             return Err(format!("{name} is empty ({})", key.example));
         }
-        (Kind::Text, DeValue::String(s)) => s.to_string(),
+        (Kind::Text, DeValue::String(s)) => {
+            if let Some(Err(why)) = UsbSpec::parse(s) {
+                return Err(why);
+            }
+            s.to_string()
+        }
         (Kind::Path | Kind::Dir, DeValue::String(s)) => {
             let path = dir.join(expand_home(s));
             match key.kind {
