@@ -133,7 +133,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
                 (true, true) => shown.green().to_string(),
                 (true, false) => shown.red().to_string(),
             };
-            let _ = writeln!(out, "{shown}");
+            let _ = writeln!(out, "{}{shown}", stamp(shell));
             Flow::Continue
         })
     };
@@ -160,9 +160,19 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
         }
         Err(e) => {
             let line = format!("error: {}", escape_control(&e.to_string()));
-            let _ = writeln!(out, "{}", if color { line.red().to_string() } else { line });
+            let line = if color { line.red().to_string() } else { line };
+            let _ = writeln!(out, "{}{line}", stamp(shell));
             Flow::Continue
         }
+    }
+}
+
+/// The time of day before a reply when `:log time on` asked for it.
+fn stamp(shell: &Shell) -> String {
+    if shell.timestamps {
+        format!("{} ", crate::shell::time_of_day())
+    } else {
+        String::new()
     }
 }
 

@@ -233,10 +233,18 @@ fn step(
         }
     };
     let exit = reply.clone().checked().err().map_or(0, |e| e.exit().code());
+    let time = shell.timestamps.then(super::time_of_day);
+    let stamp = time.as_ref().map(|t| format!("{t} ")).unwrap_or_default();
     let shown = match output {
-        Output::Reply => escape_control(&reply.shown()).into_owned(),
-        Output::Value => escape_control(&format::value(&reply)).into_owned(),
-        Output::Json => format::json_line(&format::reply_json(number, text, &reply, exit)),
+        Output::Reply => format!("{stamp}{}", escape_control(&reply.shown())),
+        Output::Value => format!("{stamp}{}", escape_control(&format::value(&reply))),
+        Output::Json => {
+            let mut object = format::reply_json(number, text, &reply, exit);
+            if let Some(time) = time {
+                object["time"] = serde_json::Value::String(time);
+            }
+            format::json_line(&object)
+        }
     };
     if writeln!(out, "{shown}").and_then(|()| out.flush()).is_err() {
         // stdout closed (e.g. piped into `head`): not an error, just stop.

@@ -178,6 +178,23 @@ fn every_key_takes_effect_from_a_file() {
     assert_eq!(stdout(&out).trim(), "BA 100 16", "GP 67 bit 4: line echo");
     let transcript = std::fs::read_to_string(&log).unwrap();
     assert!(transcript.contains("SGP 67, 0, 16"), "{transcript}");
+
+    // A log directory, relative to the file, made when missing; a transcript per session.
+    place.project_file("log_dir = \"logs\"\n");
+    for _ in 0..2 {
+        let out = place.run(&["-c", "GAP 1, 0"], &[]);
+        assert_eq!(code(&out), 0, "{}", stderr(&out));
+    }
+    let logs: Vec<_> = std::fs::read_dir(place.project.join("logs"))
+        .unwrap()
+        .collect();
+    assert!(
+        !logs.is_empty(),
+        "no transcript in the configured directory"
+    );
+    // --log on the command line wins.
+    let out = place.run(&["-c", "GAP 1, 0", "--log", log.to_str().unwrap()], &[]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
 }
 
 #[test]
