@@ -48,6 +48,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('params', 'params', [CompletionResultType]::ParameterValue, 'Print the module''s axis and global parameters (those matching FILTER)')
             [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports of this machine')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
+            [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the manual page (roff; man/tmclsh.1 in the source)')
             [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)')
             [CompletionResult]::new('asm', 'asm', [CompletionResultType]::ParameterValue, 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)')
             [CompletionResult]::new('disasm', 'disasm', [CompletionResultType]::ParameterValue, 'Turn a program file back into TMCL source')
@@ -74,6 +75,12 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;completions' {
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
+            break
+        }
+        'tmclsh;man' {
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
@@ -355,6 +362,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('params', 'params', [CompletionResultType]::ParameterValue, 'Print the module''s axis and global parameters (those matching FILTER)')
             [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports of this machine')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
+            [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the manual page (roff; man/tmclsh.1 in the source)')
             [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)')
             [CompletionResult]::new('asm', 'asm', [CompletionResultType]::ParameterValue, 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)')
             [CompletionResult]::new('disasm', 'disasm', [CompletionResultType]::ParameterValue, 'Turn a program file back into TMCL source')
@@ -374,6 +382,9 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;help;completions' {
+            break
+        }
+        'tmclsh;help;man' {
             break
         }
         'tmclsh;help;run' {

@@ -34,6 +34,9 @@ _tmclsh() {
             tmclsh,help)
                 cmd="tmclsh__subcmd__help"
                 ;;
+            tmclsh,man)
+                cmd="tmclsh__subcmd__man"
+                ;;
             tmclsh,params)
                 cmd="tmclsh__subcmd__params"
                 ;;
@@ -72,6 +75,9 @@ _tmclsh() {
                 ;;
             tmclsh__subcmd__help,help)
                 cmd="tmclsh__subcmd__help__subcmd__help"
+                ;;
+            tmclsh__subcmd__help,man)
+                cmd="tmclsh__subcmd__help__subcmd__man"
                 ;;
             tmclsh__subcmd__help,params)
                 cmd="tmclsh__subcmd__help__subcmd__params"
@@ -149,7 +155,7 @@ _tmclsh() {
 
     case "${cmd}" in
         tmclsh)
-            opts="-c -m -h -V --profile --value --json --keep-going --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --help --version params ports completions run asm disasm download snapshot scan transcript sim config help"
+            opts="-c -m -h -V --profile --value --json --keep-going --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --help --version params ports completions man run asm disasm download snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -401,7 +407,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__help)
-            opts="params ports completions run asm disasm download snapshot scan transcript sim config help"
+            opts="params ports completions man run asm disasm download snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -485,6 +491,20 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__help__subcmd__help)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        tmclsh__subcmd__help__subcmd__man)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -645,6 +665,24 @@ _tmclsh() {
                 return 0
             fi
             case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        tmclsh__subcmd__man)
+            opts="-h --profile --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1317,8 +1355,44 @@ _tmclsh() {
     esac
 }
 
+# Added to clap's script: serial devices after --port, and only the files a subcommand
+# takes (run: *.rhai, download: *.tmc and *.bin, asm: *.tmc, disasm: *.bin).
+_tmclsh_with_files() {
+    local cur="${COMP_WORDS[COMP_CWORD]}" prev="${COMP_WORDS[COMP_CWORD-1]}"
+    local word port extension
+    local -a extensions=()
+    if [[ "$prev" == "--port" ]]; then
+        COMPREPLY=()
+        for port in /dev/ttyUSB* /dev/ttyACM* /dev/ttyAMA* /dev/serial/by-id/* /dev/cu.*; do
+            [[ -e "$port" && "$port" == "$cur"* ]] && COMPREPLY+=("$port")
+        done
+        return 0
+    fi
+    for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do
+        case "$word" in
+            --) extensions=(); break ;;
+            run) extensions=('*.rhai') ;;
+            download) extensions=('*.tmc' '*.bin') ;;
+            asm) extensions=('*.tmc') ;;
+            disasm) extensions=('*.bin') ;;
+        esac
+    done
+    case "$prev" in
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--echo|--echo-end|--error-spelling|--fault-seed|--flag-case|--float-decimals|--hangup-after|--home-switch|--left-switch|--listen|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reply-end|--right-switch|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+    esac
+    if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
+        compopt -o filenames 2>/dev/null
+        COMPREPLY=( $(compgen -d -- "$cur") )
+        for extension in "${extensions[@]}"; do
+            COMPREPLY+=( $(compgen -f -X "!$extension" -- "$cur") )
+        done
+        return 0
+    fi
+    _tmclsh "$@"
+}
+
 if [[ "${BASH_VERSINFO[0]}" -eq 4 && "${BASH_VERSINFO[1]}" -ge 4 || "${BASH_VERSINFO[0]}" -gt 4 ]]; then
-    complete -F _tmclsh -o nosort -o bashdefault -o default tmclsh
+    complete -F _tmclsh_with_files -o nosort -o bashdefault -o default tmclsh
 else
-    complete -F _tmclsh -o bashdefault -o default tmclsh
+    complete -F _tmclsh_with_files -o bashdefault -o default tmclsh
 fi

@@ -45,6 +45,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
+            cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
@@ -68,6 +69,11 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help'
         }
         &'tmclsh;completions'= {
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
+        &'tmclsh;man'= {
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
             cand -h 'Print help'
             cand --help 'Print help'
@@ -327,6 +333,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
+            cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
@@ -343,6 +350,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;ports'= {
         }
         &'tmclsh;help;completions'= {
+        }
+        &'tmclsh;help;man'= {
         }
         &'tmclsh;help;run'= {
         }

@@ -51,6 +51,7 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -s V -l version -d 'Print ve
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "ports" -d 'List the serial ports of this machine'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "completions" -d 'Print a shell completion script'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "man" -d 'Print the manual page (roff; man/tmclsh.1 in the source)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "disasm" -d 'Turn a program file back into TMCL source'
@@ -69,6 +70,8 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l profile -d 'Modu
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand man" -l profile -d 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand man" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
@@ -281,20 +284,33 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l no-enter -d 'Do
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "ports" -d 'List the serial ports of this machine'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "completions" -d 'Print a shell completion script'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "disasm" -d 'Turn a program file back into TMCL source'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "download" -d 'Store a program (source or program file) in the module, verify it, optionally run it'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "snapshot" -d 'Save the module\'s parameters to a TOML file, compare with one, or write one back'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "scan" -d 'Find the modules on the bus, with firmware versions and echo settings'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "transcript" -d 'Turn a --log transcript into a replayable Rhai script'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "sim" -d 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "config" -d 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user\'s config.toml, or built in'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions run asm disasm download snapshot scan transcript sim config help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "ports" -d 'List the serial ports of this machine'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "completions" -d 'Print a shell completion script'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "man" -d 'Print the manual page (roff; man/tmclsh.1 in the source)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "asm" -d 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "disasm" -d 'Turn a program file back into TMCL source'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "download" -d 'Store a program (source or program file) in the module, verify it, optionally run it'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "snapshot" -d 'Save the module\'s parameters to a TOML file, compare with one, or write one back'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "scan" -d 'Find the modules on the bus, with firmware versions and echo settings'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "transcript" -d 'Turn a --log transcript into a replayable Rhai script'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "sim" -d 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "config" -d 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user\'s config.toml, or built in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from snapshot" -f -a "save" -d 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from snapshot" -f -a "diff" -d 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from snapshot" -f -a "restore" -d 'Write FILE\'s settings back (unit mode and limits first; SMD4: resolution, currents and frequencies first, the mode last, only while the motor stands still), verifying each by reading it back; read-only, live and link settings are skipped and listed'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and __fish_seen_subcommand_from transcript" -f -a "to-rhai" -d 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
+# Added to clap's script: serial devices after --port, and only the files a subcommand
+# takes.
+function __fish_tmclsh_serial_ports
+    for port in /dev/ttyUSB* /dev/ttyACM* /dev/ttyAMA* /dev/serial/by-id/* /dev/cu.*
+        test -e $port; and echo $port
+    end
+end
+complete -c tmclsh -l port -x -a "(__fish_tmclsh_serial_ports)" -d 'serial port'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -f -a "(__fish_complete_suffix .rhai)"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -f -a "(__fish_complete_suffix .tmc; __fish_complete_suffix .bin)"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -f -a "(__fish_complete_suffix .tmc)"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -f -a "(__fish_complete_suffix .bin)"

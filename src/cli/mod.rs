@@ -8,6 +8,7 @@ pub mod config;
 pub mod connection;
 mod disasm;
 pub mod download;
+pub mod man;
 pub(crate) mod params;
 mod ports;
 mod position;
@@ -54,6 +55,8 @@ enum Command {
     Ports,
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
+    /// Print the manual page (roff; man/tmclsh.1 in the source).
+    Man,
     /// Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link).
     Run(run::RunArgs),
     /// Assemble a stand-alone TMCL program (check it, list it, write FILE.bin).
@@ -159,6 +162,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Params(args)) => return finish_io(params::run(&args, &profile, out)),
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
+        Some(Command::Man) => man::run(out),
         Some(Command::Run(args)) => return run::run(args, &profile),
         Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
         Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),

@@ -71,7 +71,7 @@ const SMD4_ONLY: &[&str] = &["address", "prefix_comma", "quiet_gap"];
 const SHOWS_ALL: &str = "config";
 
 /// Subcommands that read no module tables (`--profile` is global, so every one receives it).
-const NO_TABLES: &[&str] = &["ports", "completions"];
+const NO_TABLES: &[&str] = &["ports", "completions", "man"];
 
 /// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
 /// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).
