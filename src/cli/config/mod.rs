@@ -298,3 +298,50 @@ pub fn run(args: &ConfigArgs, out: &mut dyn Write) -> io::Result<Exit> {
     }
     Ok(Exit::Success)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_key_sets_a_long_option_of_the_shell() {
+        let cmd = super::super::command();
+        for key in KEYS {
+            let arg = cmd
+                .get_arguments()
+                .find(|a| a.get_id() == key.id)
+                .unwrap_or_else(|| panic!("{} sets no option", key.name));
+            assert!(arg.get_long().is_some(), "{}", key.name);
+            assert!(arg.get_action().takes_values(), "{}", key.name);
+        }
+    }
+
+    #[test]
+    fn defaults_reach_nested_subcommands_but_not_the_simulator() {
+        let place = std::env::temp_dir().join(format!("tmclsh-config-unit-{}", std::process::id()));
+        std::fs::create_dir_all(&place).unwrap();
+        let file = place.join("tmclsh.toml");
+        std::fs::write(&file, "baud = 300\nprotocol = \"smd4\"\n").unwrap();
+        let cmd = super::super::command();
+        let entries = file::read(&file, Scope::Project, &cmd).unwrap();
+        let defaults = Defaults {
+            entries,
+            ..Defaults::none()
+        };
+        let applied = defaults.apply(cmd);
+        let default_of = |path: &[&str], id: &str| {
+            let sub = path
+                .iter()
+                .try_fold(&applied, |c, name| c.find_subcommand(name))
+                .unwrap();
+            sub.get_arguments()
+                .find(|a| a.get_id() == id)
+                .map(|a| a.get_default_values().to_vec())
+        };
+        assert_eq!(default_of(&[], "baud").unwrap(), ["300"]);
+        assert_eq!(default_of(&["snapshot", "save"], "baud").unwrap(), ["300"]);
+        assert_eq!(default_of(&["params"], "protocol").unwrap(), ["smd4"]);
+        assert_eq!(default_of(&["sim"], "protocol").unwrap(), ["tmcl"]);
+        std::fs::remove_dir_all(&place).unwrap();
+    }
+}
