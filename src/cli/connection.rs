@@ -8,16 +8,17 @@ use std::time::Duration;
 
 use crate::exit::Exit;
 use crate::exit::ExitStatus;
-use crate::link::{Link, SerialLink, TcpLink};
+use crate::link::Link;
 use crate::profile::Profile;
 use crate::protocol::Dialect;
 use crate::protocol::smd4::PrefixStyle;
 use crate::session::smd4::{Smd4Options, Smd4Session};
-use crate::session::tmcl::TmclSession;
+use crate::session::tmcl::{Echo, TmclSession};
 use crate::session::transcript::Header;
-use crate::session::{Session, SessionOptions, Transcript};
+use crate::session::{Session, SessionError, SessionOptions, Transcript};
 
 use super::Failure;
+use super::target::{Target, is_log_dir, log_file};
 
 /// Where the module is: a serial port, a TCP address, or (neither) the built-in simulator.
 #[derive(Debug, Clone, clap::Args)]
@@ -83,13 +84,18 @@ impl Smd4Args {
 #[derive(Debug, Clone, clap::Args)]
 pub struct SessionArgs {
     /// Address of the target module (1 = address character A).
-    #[arg(long, short = 'm', value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
+    #[arg(long, short = 'm', value_name = "N", env = "TMCLSH_MODULE", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
     pub module: u8,
     /// Milliseconds to wait for a reply before giving up (exit code 3).
-    #[arg(long, value_name = "MS", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "MS", env = "TMCLSH_TIMEOUT", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
     pub timeout: u64,
-    /// Append every byte sent and received, timestamped and decoded, to FILE.
-    #[arg(long, value_name = "FILE")]
+    /// Set the target module's echo on opening: char, line (every reply attributed to its
+    /// request) or none (global parameter 67 in RAM; it stays after tmclsh ends).
+    #[arg(long, value_enum, value_name = "MODE")]
+    pub echo: Option<EchoMode>,
+    /// Append every byte sent and received, timestamped and decoded, to FILE; given a
+    /// directory (or a path ending in /), write a new file there named by device and date.
+    #[arg(long, value_name = "FILE", value_hint = clap::ValueHint::AnyPath)]
     pub log: Option<PathBuf>,
     /// Send lines the validator would refuse (still canonicalised where they parse).
     #[arg(long)]
@@ -100,6 +106,28 @@ pub struct SessionArgs {
     /// Leave the modules in ASCII mode on exit instead of restoring the mode they were found in.
     #[arg(long)]
     pub stay_ascii: bool,
+}
+
+/// The echo modes of a TMCL module, as `--echo` and `:echo` name them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum EchoMode {
+    /// Every character echoed as it arrives.
+    Char,
+    /// The whole line echoed after its end.
+    Line,
+    /// No echo, only the reply.
+    None,
+}
+
+impl EchoMode {
+    /// The session's echo mode.
+    pub fn echo(self) -> Echo {
+        match self {
+            EchoMode::Char => Echo::Character,
+            EchoMode::Line => Echo::Line,
+            EchoMode::None => Echo::None,
+        }
+    }
 }
 
 impl SessionArgs {
@@ -114,14 +142,25 @@ impl SessionArgs {
         }
     }
 
-    /// Opens the transcript, if asked for, starting it with `header`.
-    pub fn transcript(&self, header: &Header) -> Result<Option<Transcript>, Failure> {
-        self.log
-            .as_deref()
-            .map(|path| {
-                Transcript::open(path, header).map_err(|e| Failure::new(e.exit(), e.to_string()))
-            })
-            .transpose()
+    /// Opens the transcript, if asked for, starting it with `header`; a `--log` directory gets
+    /// a new file named by `device` and the date.
+    pub fn transcript(&self, header: &Header, device: &str) -> Result<Option<Transcript>, Failure> {
+        let Some(path) = self.log.as_deref() else {
+            return Ok(None);
+        };
+        let failed =
+            |e: crate::session::transcript::TranscriptError| Failure::new(e.exit(), e.to_string());
+        if !is_log_dir(path) {
+            return Transcript::open(path, header).map(Some).map_err(failed);
+        }
+        std::fs::create_dir_all(path).map_err(|e| {
+            Failure::new(
+                Exit::Refused,
+                format!("cannot create the log directory {}: {e}", path.display()),
+            )
+        })?;
+        let file = log_file(path, device, std::time::SystemTime::now());
+        Transcript::open(&file, header).map(Some).map_err(failed)
     }
 }
 
@@ -129,6 +168,11 @@ impl ConnectionArgs {
     /// Whether the built-in simulator is meant.
     pub fn is_builtin(&self) -> bool {
         self.port.is_none() && self.tcp.is_none()
+    }
+
+    /// Where the link goes (a `usb:` name resolved to its device file).
+    pub fn target(&self) -> Result<Target, Failure> {
+        Target::of(self.port.as_deref(), self.tcp.as_deref())
     }
 
     /// Opens the link: the TCP connection (--tcp, which only the command line gives, wins over a
@@ -139,20 +183,7 @@ impl ConnectionArgs {
         profile: &Arc<Profile>,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link: Box<dyn Link> = if let Some(address) = &self.tcp {
-            Box::new(
-                TcpLink::connect(address, timeout)
-                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
-            )
-        } else if let Some(path) = &self.port {
-            Box::new(
-                SerialLink::open(path, self.baud)
-                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
-            )
-        } else {
-            crate::sim::builtin_link(profile, dialect)
-        };
-        Ok(link)
+        self.target()?.open(self.baud, dialect, profile, timeout)
     }
 }
 
@@ -198,8 +229,34 @@ impl ModuleArgs {
         timeout: Duration,
         audience: Audience,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link = self.connection.open(self.protocol(), profile, timeout)?;
-        if self.connection.is_builtin() && audience == Audience::Batch {
+        let target = self.connection.target()?;
+        self.link_to(&target, profile, timeout, audience)
+    }
+
+    /// Opens the transcript (named by the target in a `--log` directory), then the link.
+    pub fn connect(
+        &self,
+        header: &Header,
+        profile: &Arc<Profile>,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<(Option<Transcript>, Box<dyn Link>), Failure> {
+        let target = self.connection.target()?;
+        let device = target.file_name(self.protocol());
+        let transcript = self.session.transcript(header, &device)?;
+        let link = self.link_to(&target, profile, timeout, audience)?;
+        Ok((transcript, link))
+    }
+
+    fn link_to(
+        &self,
+        target: &Target,
+        profile: &Arc<Profile>,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<Box<dyn Link>, Failure> {
+        let link = target.open(self.connection.baud, self.protocol(), profile, timeout)?;
+        if *target == Target::Builtin && audience == Audience::Batch {
             eprintln!(
                 "tmclsh: using the built-in simulated {}; give --port or --tcp for hardware",
                 simulated_module(self.protocol(), profile)
@@ -212,12 +269,11 @@ impl ModuleArgs {
     pub fn open(&self, profile: &Arc<Profile>, audience: Audience) -> Result<Session, Failure> {
         let options = self.session.options();
         let header = Header::new(self.protocol(), profile);
-        let transcript = self.session.transcript(&header)?;
-        let link = self.link(profile, options.timeout, audience)?;
+        let (transcript, link) = self.connect(&header, profile, options.timeout, audience)?;
         match self.protocol() {
-            Dialect::Tmcl => {
-                TmclSession::open(link, profile.clone(), options, transcript).map(Session::Tmcl)
-            }
+            Dialect::Tmcl => TmclSession::open(link, profile.clone(), options, transcript)
+                .and_then(|s| self.set_echo(s))
+                .map(Session::Tmcl),
             Dialect::Smd4 => {
                 Smd4Session::open(link, options, self.smd4.options(), transcript).map(Session::Smd4)
             }
@@ -234,10 +290,21 @@ impl ModuleArgs {
             ));
         }
         let options = self.session.options();
-        let transcript = self.session.transcript(&Header::tmcl(profile))?;
-        let link = self.link(profile, options.timeout, Audience::Batch)?;
+        let header = Header::tmcl(profile);
+        let (transcript, link) =
+            self.connect(&header, profile, options.timeout, Audience::Batch)?;
         TmclSession::open(link, profile.clone(), options, transcript)
+            .and_then(|s| self.set_echo(s))
             .map_err(|e| Failure::new(e.exit(), e.to_string()))
+    }
+
+    /// Sets the target's echo mode when `--echo` (or a configuration file) asks for one.
+    fn set_echo(&self, mut session: TmclSession) -> Result<TmclSession, SessionError> {
+        if let Some(mode) = self.session.echo {
+            let target = session.target();
+            session.set_echo(target, mode.echo())?;
+        }
+        Ok(session)
     }
 }
 

@@ -3,6 +3,7 @@
 
 use std::io::{self, Write};
 
+use crate::exit::Exit;
 use crate::profile::{Param, ParamKind, Profile};
 use crate::protocol::Dialect;
 use crate::protocol::smd4::{Smd4Spec, hints};
@@ -20,7 +21,9 @@ pub struct ParamsArgs {
     pub dialect: DialectArgs,
 }
 
-pub fn run(args: &ParamsArgs, profile: &Profile, out: &mut dyn Write) -> io::Result<()> {
+/// Prints the table; a filter that matches nothing says so on stderr and exits 1 (as `grep`
+/// does), so a script can test whether a parameter exists.
+pub fn run(args: &ParamsArgs, profile: &Profile, out: &mut dyn Write) -> io::Result<Exit> {
     let filter = args.filter.as_deref().unwrap_or("");
     if args.dialect.protocol == Dialect::Smd4 {
         return write_smd4(filter, out);
@@ -28,21 +31,23 @@ pub fn run(args: &ParamsArgs, profile: &Profile, out: &mut dyn Write) -> io::Res
     let rows: Vec<&Param> = profile.matching(filter).collect();
     if rows.is_empty() {
         eprintln!("no {} parameter matches '{filter}'", profile.module);
-        return Ok(());
+        return Ok(Exit::DeviceError);
     }
-    write_table(&rows, out)
+    write_table(&rows, out)?;
+    Ok(Exit::Success)
 }
 
 /// The SMD4 commands matching `filter`, one row each, as the shell's `:params` shows them.
-fn write_smd4(filter: &str, out: &mut dyn Write) -> io::Result<()> {
+fn write_smd4(filter: &str, out: &mut dyn Write) -> io::Result<Exit> {
     let mut rows = hints::matching(&Smd4Spec::builtin().commands, filter).peekable();
     if rows.peek().is_none() {
         eprintln!("no SMD4 command matches '{filter}'");
+        return Ok(Exit::DeviceError);
     }
     for spec in rows {
         writeln!(out, "{}", hints::table_row(spec))?;
     }
-    Ok(())
+    Ok(Exit::Success)
 }
 
 /// Prints parameters as an aligned table (shared with the REPL's `:params`).

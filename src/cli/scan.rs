@@ -42,8 +42,9 @@ pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Resul
     let options = args.module.session.options();
     let per_reply = options.timeout;
     let header = crate::session::transcript::Header::new(args.module.protocol(), profile);
-    let transcript = args.module.session.transcript(&header)?;
-    let link = args.module.link(profile, per_reply, Audience::Batch)?;
+    let (transcript, link) = args
+        .module
+        .connect(&header, profile, per_reply, Audience::Batch)?;
     let failed = |e: crate::session::SessionError| Failure::new(e.exit(), e.to_string());
     if smd4 {
         let mut session = Smd4Session::open(link, options, args.module.smd4.options(), transcript)

@@ -51,10 +51,20 @@ pub fn write_help(topic: &str, session: &Session, out: &mut dyn Write) -> io::Re
         return writeln!(out, "\nMore: {more}");
     }
     match (topic.to_ascii_lowercase().as_str(), session) {
-        ("exit", _) => writeln!(
-            out,
-            "Exit codes: 0 success, 1 device error or failed assertion, 2 refused before sending, 3 connection/timeout/lost link, 130 Ctrl-C."
-        ),
+        ("exit", _) => {
+            writeln!(
+                out,
+                "Leave with :quit (or quit, exit) or Ctrl-D; the modules go back to the mode they were found in."
+            )?;
+            writeln!(
+                out,
+                "Ctrl-C stops a command and the motor; at the prompt it stops the motors this session set moving."
+            )?;
+            writeln!(
+                out,
+                "Exit codes: 0 success, 1 device error or failed assertion, 2 refused before sending, 3 connection/timeout/lost link, 130 Ctrl-C."
+            )
+        }
         ("params", Session::Tmcl(_)) => {
             writeln!(
                 out,

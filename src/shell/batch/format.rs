@@ -1,0 +1,173 @@
+//! How `-c` and piped lines show their replies on stdout: the reply line as the module sent it
+//! (the default), only the value (`--value`), or one JSON object per line (`--json`).
+//!
+//! JSON is written by serde_json (every control character escaped as JSON requires) through a
+//! formatter that also writes every non-ASCII character as `\uXXXX`: the output is plain ASCII,
+//! so device text can neither move the cursor nor reorder the terminal's text (bidirectional
+//! overrides), and a JSON reader gets the exact text back.
+
+use std::io;
+
+use serde_json::{Map, Value, json};
+
+use crate::session::Reply;
+use crate::session::tmcl::Answer;
+
+/// What stdout gets for each line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Output {
+    /// The reply as the module sent it (`BA 100 -5000`).
+    #[default]
+    Reply,
+    /// Only the value (`-5000`; SMD4: the data items).
+    Value,
+    /// One JSON object per line.
+    Json,
+}
+
+/// Only the value of a reply: TMCL the number (or the version string of 136), SMD4 the data items
+/// as received, comma-separated, with any further lines of a listing after them. Empty when the
+/// module sends no reply.
+pub fn value(reply: &Reply) -> String {
+    match reply {
+        Reply::Tmcl(x) => match &x.answer {
+            Answer::Reply { value, .. } => value.to_string(),
+            Answer::Version(version) => version.clone(),
+            Answer::Nothing => String::new(),
+        },
+        Reply::Smd4(x) => match &x.response {
+            None => String::new(),
+            Some(r) => {
+                let mut text = r.data_strings().join(",");
+                for line in &r.lines {
+                    text.push('\n');
+                    text.push_str(line);
+                }
+                text
+            }
+        },
+    }
+}
+
+/// The JSON object of a line that got a reply: where it went, whether it succeeded, the status
+/// (TMCL) or flags and error (SMD4), the value or items, and the reply as received.
+pub fn reply_json(number: usize, input: &str, reply: &Reply, exit: u8) -> Value {
+    let mut object = head(number, input);
+    match reply {
+        Reply::Tmcl(x) => {
+            let (status, value) = match &x.answer {
+                Answer::Reply { status, value } => (json!(status.code()), json!(value)),
+                Answer::Version(version) => (Value::Null, json!(version)),
+                Answer::Nothing => (Value::Null, Value::Null),
+            };
+            object.insert("module".into(), json!(x.module));
+            object.insert("sent".into(), json!(x.sent));
+            object.insert("ok".into(), json!(x.ok()));
+            object.insert("status".into(), status);
+            object.insert("value".into(), value);
+            object.insert("raw".into(), json!(x.raw));
+        }
+        Reply::Smd4(x) => {
+            let response = x.response.as_ref();
+            let error = response.and_then(|r| r.error.as_ref()).map(|e| {
+                json!({
+                    "code": e.code.code(),
+                    "meaning": e.code.meaning(),
+                    "text": e.text,
+                })
+            });
+            object.insert("module".into(), json!(x.request.address));
+            object.insert("sent".into(), json!(x.sent));
+            object.insert("ok".into(), json!(x.ok()));
+            object.insert("sflags".into(), json!(response.map(|r| r.sflags.0)));
+            object.insert("eflags".into(), json!(response.map(|r| r.eflags.0)));
+            object.insert("error".into(), error.unwrap_or(Value::Null));
+            object.insert(
+                "items".into(),
+                json!(response.map(|r| r.data_strings()).unwrap_or_default()),
+            );
+            object.insert(
+                "lines".into(),
+                json!(response.map(|r| r.lines.clone()).unwrap_or_default()),
+            );
+            object.insert("raw".into(), json!(x.raw()));
+        }
+    }
+    object.insert("exit".into(), json!(exit));
+    Value::Object(object)
+}
+
+/// The JSON object of a line that failed without a reply (refused, no reply, link lost).
+pub fn failure_json(number: usize, input: &str, message: &str, exit: u8) -> Value {
+    let mut object = head(number, input);
+    object.insert("ok".into(), json!(false));
+    object.insert("failure".into(), json!(message));
+    object.insert("exit".into(), json!(exit));
+    Value::Object(object)
+}
+
+/// The JSON object of a helper line (`:params`, `:help`): its text output.
+pub fn helper_json(number: usize, input: &str, output: &str) -> Value {
+    let mut object = head(number, input);
+    object.insert("ok".into(), json!(true));
+    object.insert("output".into(), json!(output));
+    object.insert("exit".into(), json!(0));
+    Value::Object(object)
+}
+
+fn head(number: usize, input: &str) -> Map<String, Value> {
+    let mut object = Map::new();
+    object.insert("line".into(), json!(number));
+    object.insert("input".into(), json!(input));
+    object
+}
+
+/// `value` as one line of ASCII JSON.
+pub fn json_line(value: &Value) -> String {
+    let mut bytes = Vec::new();
+    let mut serializer = serde_json::Serializer::with_formatter(&mut bytes, AsciiFormatter);
+    serde::Serialize::serialize(value, &mut serializer).expect("a JSON value serialises");
+    String::from_utf8(bytes).expect("the formatter writes ASCII")
+}
+
+/// serde_json's compact output, with every character beyond ASCII written as `\uXXXX`.
+struct AsciiFormatter;
+
+impl serde_json::ser::Formatter for AsciiFormatter {
+    fn write_string_fragment<W: ?Sized + io::Write>(
+        &mut self,
+        writer: &mut W,
+        fragment: &str,
+    ) -> io::Result<()> {
+        for c in fragment.chars() {
+            if c.is_ascii() {
+                writer.write_all(&[c as u8])?;
+            } else {
+                let mut units = [0u16; 2];
+                for unit in c.encode_utf16(&mut units) {
+                    write!(writer, "\\u{unit:04x}")?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn json_is_ascii_and_round_trips() {
+        let text = "BA 100 \u{1b}[2J \u{202e}evil \u{1F600} \"q\" \\";
+        let line = json_line(&json!({ "raw": text }));
+        assert!(line.is_ascii(), "{line}");
+        assert!(!line.contains('\u{1b}'));
+        assert!(
+            line.contains("\\u202e") && line.contains("\\ud83d\\ude00"),
+            "{line}"
+        );
+        let back: Value = serde_json::from_str(&line).unwrap();
+        assert_eq!(back["raw"], text);
+    }
+}
