@@ -22,6 +22,9 @@ _tmclsh() {
             tmclsh,completions)
                 cmd="tmclsh__subcmd__completions"
                 ;;
+            tmclsh,config)
+                cmd="tmclsh__subcmd__config"
+                ;;
             tmclsh,disasm)
                 cmd="tmclsh__subcmd__disasm"
                 ;;
@@ -30,6 +33,9 @@ _tmclsh() {
                 ;;
             tmclsh,help)
                 cmd="tmclsh__subcmd__help"
+                ;;
+            tmclsh,man)
+                cmd="tmclsh__subcmd__man"
                 ;;
             tmclsh,params)
                 cmd="tmclsh__subcmd__params"
@@ -58,6 +64,9 @@ _tmclsh() {
             tmclsh__subcmd__help,completions)
                 cmd="tmclsh__subcmd__help__subcmd__completions"
                 ;;
+            tmclsh__subcmd__help,config)
+                cmd="tmclsh__subcmd__help__subcmd__config"
+                ;;
             tmclsh__subcmd__help,disasm)
                 cmd="tmclsh__subcmd__help__subcmd__disasm"
                 ;;
@@ -66,6 +75,9 @@ _tmclsh() {
                 ;;
             tmclsh__subcmd__help,help)
                 cmd="tmclsh__subcmd__help__subcmd__help"
+                ;;
+            tmclsh__subcmd__help,man)
+                cmd="tmclsh__subcmd__help__subcmd__man"
                 ;;
             tmclsh__subcmd__help,params)
                 cmd="tmclsh__subcmd__help__subcmd__params"
@@ -143,7 +155,7 @@ _tmclsh() {
 
     case "${cmd}" in
         tmclsh)
-            opts="-c -m -h -V --profile --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --help --version params ports completions run asm disasm download snapshot scan transcript sim help"
+            opts="-c -m -h -V --profile --value --json --keep-going --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --help --version params ports completions man run asm disasm download snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -183,6 +195,10 @@ _tmclsh() {
                     ;;
                 --timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
                     return 0
                     ;;
                 --log)
@@ -248,26 +264,8 @@ _tmclsh() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
-        tmclsh__subcmd__disasm)
-            opts="-h --profile --help"
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        tmclsh__subcmd__download)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-enter --stay-ascii --run --no-validate --address --prefix-comma --quiet-gap --profile --help"
+        tmclsh__subcmd__config)
+            opts="-m -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -301,6 +299,90 @@ _tmclsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
+                    return 0
+                    ;;
+                --log)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --address)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --quiet-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        tmclsh__subcmd__disasm)
+            opts="-h --profile --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        tmclsh__subcmd__download)
+            opts="-m -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --run --no-validate --address --prefix-comma --quiet-gap --profile --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --protocol)
+                    COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --module)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
+                    return 0
+                    ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -325,7 +407,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__help)
-            opts="params ports completions run asm disasm download snapshot scan transcript sim help"
+            opts="params ports completions man run asm disasm download snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -353,6 +435,20 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__help__subcmd__completions)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        tmclsh__subcmd__help__subcmd__config)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -395,6 +491,20 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__help__subcmd__help)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        tmclsh__subcmd__help__subcmd__man)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -562,6 +672,24 @@ _tmclsh() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        tmclsh__subcmd__man)
+            opts="-h --profile --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         tmclsh__subcmd__params)
             opts="-h --protocol --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
@@ -603,7 +731,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__run)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --profile --help"
+            opts="-m -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -635,6 +763,10 @@ _tmclsh() {
                     ;;
                 --timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
                     return 0
                     ;;
                 --log)
@@ -681,7 +813,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__scan)
-            opts="-m -h --addresses --port --baud --tcp --protocol --timeout --log --prefix-comma --module --address --no-enter --stay-ascii --no-validate --quiet-gap --profile --help"
+            opts="-m -h --addresses --port --baud --tcp --protocol --timeout --log --prefix-comma --module --address --no-enter --stay-ascii --echo --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -725,6 +857,10 @@ _tmclsh() {
                     ;;
                 --address)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
                     return 0
                     ;;
                 --quiet-gap)
@@ -871,7 +1007,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__diff)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-enter --stay-ascii --address --prefix-comma --no-validate --quiet-gap --profile --help"
+            opts="-m -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --address --prefix-comma --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -903,6 +1039,10 @@ _tmclsh() {
                     ;;
                 --timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
                     return 0
                     ;;
                 --log)
@@ -999,7 +1139,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__restore)
-            opts="-m -h --store --yes --dry-run --force --port --baud --tcp --protocol --module --timeout --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -h --store --yes --dry-run --force --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1031,6 +1171,10 @@ _tmclsh() {
                     ;;
                 --timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
                     return 0
                     ;;
                 --log)
@@ -1057,7 +1201,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__save)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --log --no-enter --stay-ascii --address --prefix-comma --no-validate --quiet-gap --profile --help"
+            opts="-m -h --force --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --address --prefix-comma --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1089,6 +1233,10 @@ _tmclsh() {
                     ;;
                 --timeout)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
                     return 0
                     ;;
                 --log)
@@ -1207,8 +1355,44 @@ _tmclsh() {
     esac
 }
 
+# Added to clap's script: serial devices after --port, and only the files a subcommand
+# takes (run: *.rhai, download: *.tmc and *.bin, asm: *.tmc, disasm: *.bin).
+_tmclsh_with_files() {
+    local cur="${COMP_WORDS[COMP_CWORD]}" prev="${COMP_WORDS[COMP_CWORD-1]}"
+    local word port extension
+    local -a extensions=()
+    if [[ "$prev" == "--port" ]]; then
+        COMPREPLY=()
+        for port in /dev/ttyUSB* /dev/ttyACM* /dev/ttyAMA* /dev/serial/by-id/* /dev/cu.*; do
+            [[ -e "$port" && "$port" == "$cur"* ]] && COMPREPLY+=("$port")
+        done
+        return 0
+    fi
+    for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do
+        case "$word" in
+            --) extensions=(); break ;;
+            run) extensions=('*.rhai') ;;
+            download) extensions=('*.tmc' '*.bin') ;;
+            asm) extensions=('*.tmc') ;;
+            disasm) extensions=('*.bin') ;;
+        esac
+    done
+    case "$prev" in
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--echo|--echo-end|--error-spelling|--fault-seed|--flag-case|--float-decimals|--hangup-after|--home-switch|--left-switch|--listen|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reply-end|--right-switch|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+    esac
+    if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
+        compopt -o filenames 2>/dev/null
+        COMPREPLY=( $(compgen -d -- "$cur") )
+        for extension in "${extensions[@]}"; do
+            COMPREPLY+=( $(compgen -f -X "!$extension" -- "$cur") )
+        done
+        return 0
+    fi
+    _tmclsh "$@"
+}
+
 if [[ "${BASH_VERSINFO[0]}" -eq 4 && "${BASH_VERSINFO[1]}" -ge 4 || "${BASH_VERSINFO[0]}" -gt 4 ]]; then
-    complete -F _tmclsh -o nosort -o bashdefault -o default tmclsh
+    complete -F _tmclsh_with_files -o nosort -o bashdefault -o default tmclsh
 else
-    complete -F _tmclsh -o bashdefault -o default tmclsh
+    complete -F _tmclsh_with_files -o bashdefault -o default tmclsh
 fi

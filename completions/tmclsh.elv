@@ -27,9 +27,13 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --value 'With -c or piped lines: print only each reply''s value (TMCL: -5000 of BA 100 -5000; SMD4: the data items), an empty line for a line that failed'
+            cand --json 'With -c or piped lines: print one JSON object per line (status, value or items, raw reply, module, exit code)'
+            cand --keep-going 'With -c or piped lines: go on past a failing line; the exit code is then the worst failure''s (130 before 3 before 1 before 2)'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
@@ -41,6 +45,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
+            cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
@@ -49,6 +54,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
+            cand config 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user''s config.toml, or built in'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;params'= {
@@ -67,6 +73,11 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -h 'Print help'
             cand --help 'Print help'
         }
+        &'tmclsh;man'= {
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
         &'tmclsh;run'= {
             cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
             cand --baud 'Serial bit rate (8N1)'
@@ -75,7 +86,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --max-operations 'Operations after which a runaway script is stopped (0: no limit)'
@@ -113,7 +125,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
@@ -142,10 +155,12 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --force 'Replace FILE if it exists'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
@@ -161,7 +176,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
@@ -180,7 +196,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
@@ -216,10 +233,11 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
@@ -291,10 +309,31 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
+        &'tmclsh;config'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
         &'tmclsh;help'= {
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
+            cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
@@ -303,6 +342,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
+            cand config 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user''s config.toml, or built in'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;help;params'= {
@@ -310,6 +350,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;ports'= {
         }
         &'tmclsh;help;completions'= {
+        }
+        &'tmclsh;help;man'= {
         }
         &'tmclsh;help;run'= {
         }
@@ -338,6 +380,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;transcript;to-rhai'= {
         }
         &'tmclsh;help;sim'= {
+        }
+        &'tmclsh;help;config'= {
         }
         &'tmclsh;help;help'= {
         }

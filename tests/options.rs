@@ -156,6 +156,32 @@ fn module() {
 }
 
 #[test]
+fn echo() {
+    table(
+        &["--echo", "line"],
+        &[
+            ShellC,
+            ShellStdin,
+            Run,
+            Download,
+            SnapshotSave,
+            SnapshotDiff,
+            SnapshotRestore,
+        ],
+        &|_| Setup::tmcl().with(&["--log", &fresh("echo.log")]),
+        &|face, out, cell| {
+            finished(face, out)?;
+            let log = read(value_of(cell, "--log"));
+            // GP 67 bit 4: line echo, written on opening.
+            expect(log.contains("SGP 67, 0, 16"), || {
+                format!("the transcript does not show the echo being set:\n{log}")
+            })
+        },
+        &no_special,
+    );
+}
+
+#[test]
 fn timeout() {
     // Accepts connections (the backlog) and never answers.
     let silent = TcpListener::bind("127.0.0.1:0").unwrap();

@@ -13,11 +13,12 @@ use crate::dialect::{
 };
 use crate::exit::Exit;
 use crate::exit::ExitStatus;
-use crate::link::{Link, SerialLink, TcpLink};
+use crate::link::Link;
 use crate::session::transcript::Header;
 use crate::session::{SessionOptions, Transcript};
 
 use super::Failure;
+use super::target::{Target, is_log_dir, log_file};
 
 /// Where the module is: a serial port, a TCP address, or (neither) the built-in simulator.
 #[derive(Debug, Clone, clap::Args)]
@@ -44,19 +45,45 @@ pub struct DialectArgs {
     pub protocol: &'static Dialect,
 }
 
-/// The session flags of every dialect (`--address` …), each dialect's under the help heading it
-/// sets (which, as with any flattened group, stays for the options after it); kept as parsed,
-/// for the chosen dialect to read its own.
+/// The command line as given, kept whole for the chosen dialect to read its own options from
+/// (SMD4's `--address`, TMCL's `--echo`). It adds no options; flattened first into
+/// [`ModuleArgs`], it is taken before the groups after it take their values out.
 #[derive(Debug, Clone)]
-pub struct DialectFlags(ArgMatches);
+pub struct CommandLine(ArgMatches);
 
-impl FromArgMatches for DialectFlags {
+impl FromArgMatches for CommandLine {
     fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
-        Ok(DialectFlags(matches.clone()))
+        Ok(CommandLine(matches.clone()))
     }
 
     fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
         self.0 = matches.clone();
+        Ok(())
+    }
+}
+
+impl Args for CommandLine {
+    fn augment_args(cmd: Command) -> Command {
+        cmd
+    }
+
+    fn augment_args_for_update(cmd: Command) -> Command {
+        cmd
+    }
+}
+
+/// The session flags of every dialect (`--address` …), each dialect's under the help heading it
+/// sets (which, as with any flattened group, stays for the options after it). Their values are
+/// read by the dialect from the [`CommandLine`].
+#[derive(Debug, Clone)]
+pub struct DialectFlags;
+
+impl FromArgMatches for DialectFlags {
+    fn from_arg_matches(_: &ArgMatches) -> Result<Self, clap::Error> {
+        Ok(DialectFlags)
+    }
+
+    fn update_from_arg_matches(&mut self, _: &ArgMatches) -> Result<(), clap::Error> {
         Ok(())
     }
 }
@@ -75,13 +102,18 @@ impl Args for DialectFlags {
 #[derive(Debug, Clone, clap::Args)]
 pub struct SessionArgs {
     /// Address of the target module (1 = address character A).
-    #[arg(long, short = 'm', value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
+    #[arg(long, short = 'm', value_name = "N", env = "TMCLSH_MODULE", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
     pub module: u8,
     /// Milliseconds to wait for a reply before giving up (exit code 3).
-    #[arg(long, value_name = "MS", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "MS", env = "TMCLSH_TIMEOUT", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
     pub timeout: u64,
-    /// Append every byte sent and received, timestamped and decoded, to FILE.
-    #[arg(long, value_name = "FILE")]
+    /// Set the target module's echo on opening: char, line (every reply attributed to its
+    /// request) or none (global parameter 67 in RAM; it stays after tmclsh ends).
+    #[arg(long, value_enum, value_name = "MODE")]
+    pub echo: Option<EchoMode>,
+    /// Append every byte sent and received, timestamped and decoded, to FILE; given a
+    /// directory (or a path ending in /), write a new file there named by device and date.
+    #[arg(long, value_name = "FILE", value_hint = clap::ValueHint::AnyPath)]
     pub log: Option<PathBuf>,
     /// Send lines the validator would refuse (still canonicalised where they parse).
     #[arg(long)]
@@ -92,6 +124,18 @@ pub struct SessionArgs {
     /// Leave the modules in ASCII mode on exit instead of restoring the mode they were found in.
     #[arg(long)]
     pub stay_ascii: bool,
+}
+
+/// The echo modes of a TMCL module, as `--echo` and `:echo` name them; the TMCL session reads
+/// the word given (see `dialect::tmcl::config`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum EchoMode {
+    /// Every character echoed as it arrives.
+    Char,
+    /// The whole line echoed after its end.
+    Line,
+    /// No echo, only the reply.
+    None,
 }
 
 impl SessionArgs {
@@ -106,14 +150,25 @@ impl SessionArgs {
         }
     }
 
-    /// Opens the transcript, if asked for, starting it with `header`.
-    pub fn transcript(&self, header: &Header) -> Result<Option<Transcript>, Failure> {
-        self.log
-            .as_deref()
-            .map(|path| {
-                Transcript::open(path, header).map_err(|e| Failure::new(e.exit(), e.to_string()))
-            })
-            .transpose()
+    /// Opens the transcript, if asked for, starting it with `header`; a `--log` directory gets
+    /// a new file named by `device` and the date.
+    pub fn transcript(&self, header: &Header, device: &str) -> Result<Option<Transcript>, Failure> {
+        let Some(path) = self.log.as_deref() else {
+            return Ok(None);
+        };
+        let failed =
+            |e: crate::session::transcript::TranscriptError| Failure::new(e.exit(), e.to_string());
+        if !is_log_dir(path) {
+            return Transcript::open(path, header).map(Some).map_err(failed);
+        }
+        std::fs::create_dir_all(path).map_err(|e| {
+            Failure::new(
+                Exit::Refused,
+                format!("cannot create the log directory {}: {e}", path.display()),
+            )
+        })?;
+        let file = log_file(path, device, std::time::SystemTime::now());
+        Transcript::open(&file, header).map(Some).map_err(failed)
     }
 }
 
@@ -123,6 +178,11 @@ impl ConnectionArgs {
         self.port.is_none() && self.tcp.is_none()
     }
 
+    /// Where the link goes (a `usb:` name resolved to its device file).
+    pub fn target(&self) -> Result<Target, Failure> {
+        Target::of(self.port.as_deref(), self.tcp.as_deref())
+    }
+
     /// Opens the link: the TCP connection (--tcp, which only the command line gives, wins over a
     /// TMCLSH_PORT), the serial port, or the built-in simulator of `config`'s dialect.
     pub fn open(
@@ -130,21 +190,7 @@ impl ConnectionArgs {
         config: &dyn DialectConfig,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link: Box<dyn Link> = if let Some(address) = &self.tcp {
-            Box::new(
-                TcpLink::connect(address, timeout)
-                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
-            )
-        } else if let Some(path) = &self.port {
-            Box::new(
-                SerialLink::open(path, self.baud)
-                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
-            )
-        } else {
-            let name = format!("simulated {} (built-in)", config.simulated_module());
-            crate::sim::builtin_link(config.simulator(), name)
-        };
-        Ok(link)
+        self.target()?.open(self.baud, config, timeout)
     }
 }
 
@@ -152,6 +198,9 @@ impl ConnectionArgs {
 /// and every subcommand that opens a session in either dialect.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ModuleArgs {
+    /// The command line as given, for the dialect's own options.
+    #[command(flatten)]
+    pub command_line: CommandLine,
     /// Where the module is.
     #[command(flatten)]
     pub connection: ConnectionArgs,
@@ -190,8 +239,33 @@ impl ModuleArgs {
         timeout: Duration,
         audience: Audience,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link = self.connection.open(config, timeout)?;
-        if self.connection.is_builtin() && audience == Audience::Batch {
+        let target = self.connection.target()?;
+        self.link_to(&target, config, timeout, audience)
+    }
+
+    /// Opens the transcript (named by the target in a `--log` directory), then the link.
+    pub fn connect(
+        &self,
+        config: &dyn DialectConfig,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<(Option<Transcript>, Box<dyn Link>), Failure> {
+        let target = self.connection.target()?;
+        let device = target.file_name(self.protocol());
+        let transcript = self.session.transcript(&config.header(), &device)?;
+        let link = self.link_to(&target, config, timeout, audience)?;
+        Ok((transcript, link))
+    }
+
+    fn link_to(
+        &self,
+        target: &Target,
+        config: &dyn DialectConfig,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<Box<dyn Link>, Failure> {
+        let link = target.open(self.connection.baud, config, timeout)?;
+        if *target == Target::Builtin && audience == Audience::Batch {
             eprintln!(
                 "tmclsh: using the built-in simulated {}; give --port or --tcp for hardware",
                 config.simulated_module()
@@ -209,14 +283,13 @@ impl ModuleArgs {
     ) -> Result<Box<dyn DialectSession>, Failure> {
         let config = configs.of(self.protocol());
         let options = self.session.options();
-        let transcript = self.session.transcript(&config.header())?;
-        let link = self.link(config, options.timeout, audience)?;
+        let (transcript, link) = self.connect(config, options.timeout, audience)?;
         config
             .open(Opening {
                 link,
                 options,
                 transcript,
-                flags: Some(&self.flags.0),
+                flags: Some(&self.command_line.0),
                 purpose,
             })
             .map_err(|e| Failure::new(e.exit(), e.to_string()))

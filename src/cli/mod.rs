@@ -4,9 +4,11 @@
 
 mod asm;
 mod completions;
+pub mod config;
 pub mod connection;
 mod disasm;
 pub mod download;
+pub mod man;
 pub(crate) mod params;
 mod ports;
 mod position;
@@ -16,6 +18,7 @@ mod scan;
 pub mod shell;
 mod sim;
 mod snapshot;
+mod target;
 mod transcript;
 
 use std::ffi::OsString;
@@ -50,6 +53,8 @@ enum Command {
     Ports,
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
+    /// Print the manual page (roff; man/tmclsh.1 in the source).
+    Man,
     /// Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link).
     Run(run::RunArgs),
     /// Assemble a stand-alone TMCL program (check it, list it, write FILE.bin).
@@ -66,11 +71,21 @@ enum Command {
     Transcript(transcript::TranscriptArgs),
     /// Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin.
     Sim(sim::SimArgs),
+    /// Show the settings in effect (port, baud, protocol, …) and where each comes from: the
+    /// command line, the environment, tmclsh.toml, the user's config.toml, or built in.
+    Config(config::ConfigArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
 pub fn main() -> Exit {
-    let cli = match parse(std::env::args_os().collect()) {
+    let defaults = match config::Defaults::load() {
+        Ok(defaults) => defaults,
+        Err(message) => {
+            diagnose(&format!("configuration refused: {message}"));
+            return Exit::Refused;
+        }
+    };
+    let cli = match parse_with(std::env::args_os().collect(), &defaults) {
         Ok(cli) => cli,
         Err(e) => {
             let _ = e.print();
@@ -92,16 +107,26 @@ pub fn main() -> Exit {
     }
 }
 
-/// Parses a command line (program name first): options written before the subcommand are
-/// handed to it, and options it has no use for are refused.
+/// Parses a command line (program name first) without configuration files.
 pub fn parse(argv: Vec<OsString>) -> Result<Cli, clap::Error> {
-    let mut cmd = command();
+    parse_with(argv, &config::Defaults::none())
+}
+
+/// Parses a command line (program name first) over the defaults of the configuration files:
+/// options written before the subcommand are handed to it, and options given on the command line
+/// that it has no use for are refused.
+pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cli, clap::Error> {
+    let mut cmd = defaults.apply(command());
     cmd.build();
     let first = cmd.try_get_matches_from_mut(argv.clone())?;
     let argv = position::behind_subcommand(&mut cmd, &first, argv)?;
     let matches = cmd.try_get_matches_from_mut(argv)?;
     relevance::check(&mut cmd, &matches)?;
-    Cli::from_arg_matches(&matches)
+    let mut cli = Cli::from_arg_matches(&matches)?;
+    if let Some(Command::Config(args)) = &mut cli.command {
+        config::explain(args, &matches, defaults);
+    }
+    Ok(cli)
 }
 
 /// One line of diagnostics on stderr, its device and input text escaped.
@@ -133,9 +158,10 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
     let configs = Configured::load(cli.profile.as_deref())
         .map_err(|message| Failure::new(Exit::Refused, message))?;
     let result = match cli.command {
-        Some(Command::Params(args)) => params::run(&args, &configs, out),
+        Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
+        Some(Command::Man) => man::run(out),
         Some(Command::Run(args)) => return run::run(args, &configs),
         Some(Command::Asm(args)) => return asm::run(&args, tmcl_profile(&configs), out),
         Some(Command::Disasm(args)) => return disasm::run(&args, tmcl_profile(&configs), out),
@@ -144,10 +170,16 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Scan(args)) => return scan::run(args, &configs, out),
         Some(Command::Transcript(args)) => return transcript::run(args, &configs, out),
         Some(Command::Sim(args)) => return sim::run(&args, &configs, out),
+        Some(Command::Config(args)) => return finish_io(config::run(&args, out)),
         None => return shell::run(cli.shell, &configs),
     };
+    finish_io(result.map(|()| Exit::Success))
+}
+
+/// The exit code of a command that only writes output: a closed pipe (`| head`) is no failure.
+fn finish_io(result: std::io::Result<Exit>) -> Result<Exit, Failure> {
     match result {
-        Ok(()) => Ok(Exit::Success),
+        Ok(exit) => Ok(exit),
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
         Err(e) => Err(Failure::new(Exit::Link, e.to_string())),
     }

@@ -4,6 +4,7 @@
 use std::io::{self, Write};
 
 use crate::dialect::Configured;
+use crate::exit::Exit;
 
 use super::connection::DialectArgs;
 
@@ -18,7 +19,16 @@ pub struct ParamsArgs {
     pub dialect: DialectArgs,
 }
 
-pub fn run(args: &ParamsArgs, configs: &Configured, out: &mut dyn Write) -> io::Result<()> {
+/// Prints the table; a filter that matches nothing says so on stderr and exits 1 (as `grep`
+/// does), so a script can test whether a parameter exists.
+pub fn run(args: &ParamsArgs, configs: &Configured, out: &mut dyn Write) -> io::Result<Exit> {
     let filter = args.filter.as_deref().unwrap_or("");
-    configs.of(args.dialect.protocol).write_params(filter, out)
+    let matched = configs
+        .of(args.dialect.protocol)
+        .write_params(filter, out)?;
+    Ok(if matched {
+        Exit::Success
+    } else {
+        Exit::DeviceError
+    })
 }

@@ -38,6 +38,11 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
     ),
     (
         "scan",
+        &["echo"],
+        "a scan reads the echo of every module and leaves it as found",
+    ),
+    (
+        "scan",
         &["no_validate", "quiet_gap"],
         "it sends no typed lines",
     ),
@@ -61,8 +66,11 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
 /// Subcommands that only one dialect has: (subcommand, dialect name).
 const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl")];
 
+/// The subcommand that takes every shared option to show what it would set (`tmclsh config`).
+const SHOWS_ALL: &str = "config";
+
 /// Subcommands that read no module tables (`--profile` is global, so every one receives it).
-const NO_TABLES: &[&str] = &["ports", "completions"];
+const NO_TABLES: &[&str] = &["ports", "completions", "man"];
 
 /// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
 /// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).
@@ -95,6 +103,9 @@ fn in_subcommand(cmd: Command, words: &[&str], f: &dyn Fn(Command) -> Command) -
 /// parsed command has no use for. `cmd` is the built command `matches` came from.
 pub fn check(cmd: &mut Command, matches: &ArgMatches) -> Result<(), clap::Error> {
     let path = subcommand_path(matches).unwrap_or_default();
+    if path == [SHOWS_ALL] {
+        return Ok(());
+    }
     let refusals = refusals(&path.join(" "), leaf_matches(matches));
     if refusals.is_empty() {
         return Ok(());

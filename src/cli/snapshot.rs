@@ -26,8 +26,11 @@ enum Action {
     /// Read every readable parameter into FILE (TOML, keyed by parameter name).
     Save {
         /// The snapshot file to write.
-        #[arg(value_name = "FILE")]
+        #[arg(value_name = "FILE", value_hint = clap::ValueHint::FilePath)]
         file: PathBuf,
+        /// Replace FILE if it exists.
+        #[arg(long)]
+        force: bool,
         #[command(flatten)]
         module: ModuleArgs,
     },
@@ -75,9 +78,17 @@ enum Action {
 pub fn run(args: SnapshotArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
     interrupt::install();
     match args.action {
-        Action::Save { file, module } => with_device(&module, configs, |d| {
-            actions::save(d, &file, out).map(|_| ())
-        }),
+        Action::Save {
+            file,
+            force,
+            module,
+        } => {
+            // Refused before the link is opened: nothing is sent for a save that cannot be kept.
+            actions::check_new(&file, force).map_err(|e| Failure::new(e.exit(), e.to_string()))?;
+            with_device(&module, configs, |d| {
+                actions::save_new(d, &file, force, out).map(|_| ())
+            })
+        }
         Action::Diff {
             file,
             other: Some(other),

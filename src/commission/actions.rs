@@ -31,6 +31,29 @@ pub fn save(
     save_with(device, &label, &mut |snapshot| snapshot.save(path), out)
 }
 
+/// [`save`], refusing (exit 2, before the module is read) to replace an existing file unless
+/// `force` says so: a snapshot is often the only record of a module's working settings.
+pub fn save_new(
+    device: &mut dyn ParamDevice,
+    path: &Path,
+    force: bool,
+    out: &mut dyn Write,
+) -> Result<Snapshot, SessionError> {
+    check_new(path, force)?;
+    save(device, path, out)
+}
+
+/// Refuses an existing `path` (exit 2) unless `force` says to replace it.
+pub fn check_new(path: &Path, force: bool) -> Result<(), SessionError> {
+    if !force && path.symlink_metadata().is_ok() {
+        return Err(SessionError::Usage(format!(
+            "{} exists; add --force to replace it (or save to another file)",
+            path.display()
+        )));
+    }
+    Ok(())
+}
+
 /// Reads the module and hands the snapshot to `write` (which stores it where `label` says);
 /// fails (exit 1) after writing when some parameters could not be read.
 pub fn save_with(

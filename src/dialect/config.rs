@@ -66,8 +66,9 @@ pub trait DialectConfig: AsAny {
     /// Opens a session.
     fn open(&self, opening: Opening<'_>) -> Result<Box<dyn DialectSession>, SessionError>;
 
-    /// Prints its parameters (`tmclsh params FILTER`); says on stderr when none matches.
-    fn write_params(&self, filter: &str, out: &mut dyn Write) -> io::Result<()>;
+    /// Prints its parameters matching `filter` (`tmclsh params FILTER`); when none matches, says
+    /// so on stderr and returns false.
+    fn write_params(&self, filter: &str, out: &mut dyn Write) -> io::Result<bool>;
 
     /// Every parameter a snapshot of its modules holds (to compare two files offline).
     fn snapshot_params(&self) -> Vec<ParamRef>;

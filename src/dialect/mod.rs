@@ -63,6 +63,9 @@ pub struct Dialect {
     /// The note that opens its sessions in a transcript written before transcripts had headers;
     /// a file with none of these notes is read as the default dialect's.
     pub legacy_note: Option<&'static str>,
+    /// Whether a line (not a helper line) of the history file earlier versions shared between
+    /// the dialects was typed in this one, from its look.
+    pub typed_here: fn(&str) -> bool,
     /// What `:scan` and `tmclsh scan` try by default (`1-26`).
     pub scan_addresses: &'static str,
     /// The example in the usage of `:scan`.

@@ -5,6 +5,7 @@
 //! folder ([`AsAny`]).
 
 use std::any::Any;
+use std::fmt;
 use std::io::{self, Write};
 use std::sync::Arc;
 use std::time::Duration;
@@ -18,7 +19,7 @@ use crate::session::{SessionError, SessionOptions};
 use super::{Dialect, Grammar, Helper};
 
 /// A typed line's outcome, in the forms the faces show it.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone)]
 pub struct Reply {
     /// The answer as the module sent it, for stdout in non-interactive use: the reply line
     /// without echo and line ending, the version string of TMCL command 136, the lines of an
@@ -28,6 +29,20 @@ pub struct Reply {
     pub decoded: String,
     /// The error status or code the module answered with, if any.
     pub refusal: Option<Refusal>,
+    /// The forms of the output modes (`--value`, `--json`), made when asked for.
+    pub forms: Arc<dyn ReplyForms>,
+}
+
+/// A reply in the output modes of non-interactive use, made from the dialect's own exchange only
+/// when a mode asks for it.
+pub trait ReplyForms: fmt::Debug + Send + Sync {
+    /// Only the value (`--value`): TMCL the number (or the version string of 136), SMD4 the data
+    /// items as received; empty when the module sends no reply.
+    fn value(&self) -> String;
+
+    /// The dialect's fields of the line's JSON object (`--json`): where it went, whether it
+    /// succeeded, status or flags and error, value or items, the reply as received.
+    fn json_fields(&self) -> Vec<(&'static str, serde_json::Value)>;
 }
 
 /// How a reply reads to a person, and whether it is good news.

@@ -38,7 +38,7 @@ impl ReplHelper {
     /// Whether a typed line would be refused (helper lines: whether the helper exists).
     pub fn is_invalid(&self, text: &str) -> bool {
         let text = text.trim();
-        if text.is_empty() {
+        if text.is_empty() || crate::shell::words::everyday(text).is_some() {
             return false;
         }
         if let Some(rest) = text.strip_prefix(':') {

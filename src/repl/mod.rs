@@ -5,9 +5,9 @@
 
 pub mod complete;
 pub mod editor;
+mod history;
 
 use std::io::{IsTerminal, Write};
-use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use crossterm::style::Stylize;
@@ -18,7 +18,7 @@ use rustyline::{CompletionType, Config, Editor};
 use crate::escape::escape_control;
 use crate::exit::Exit;
 use crate::session::{SessionError, interrupt};
-
+use crate::shell::words::{Everyday, everyday};
 use crate::shell::{Flow, Shell};
 
 use editor::ReplHelper;
@@ -26,11 +26,6 @@ use editor::ReplHelper;
 /// Whether output may be coloured: a terminal, and NO_COLOR unset.
 pub fn color_enabled() -> bool {
     std::env::var_os("NO_COLOR").is_none() && std::io::stdout().is_terminal()
-}
-
-/// Where the history lives: the user's data directory.
-fn history_path() -> Option<PathBuf> {
-    dirs::data_dir().map(|d| d.join("tmclsh").join("history"))
 }
 
 /// Runs the REPL until `:quit` or Ctrl-D; the session is closed (modules restored) at the end.
@@ -51,10 +46,8 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         }
     };
     editor.set_helper(Some(ReplHelper::new(shell.session_ref().grammar(), color)));
-    let history = history_path();
-    if let Some(path) = &history {
-        let _ = editor.load_history(path);
-    }
+    let dialect = shell.session_ref().dialect();
+    history::load(&mut editor, dialect);
     let mut out = std::io::stdout();
     let _ = writeln!(out, "{banner}");
     let _ = writeln!(
@@ -68,7 +61,15 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         }
         match editor.readline(&shell.prompt()) {
             Ok(text) => {
-                if handle(shell, text.trim(), color, &mut out) == Flow::Quit {
+                let flow = match everyday(&text) {
+                    Some(Everyday::Clear) => {
+                        let _ = editor.clear_screen();
+                        Flow::Continue
+                    }
+                    Some(Everyday::Helper(line)) => handle(shell, &line, color, &mut out),
+                    None => handle(shell, text.trim(), color, &mut out),
+                };
+                if flow == Flow::Quit {
                     break;
                 }
             }
@@ -87,12 +88,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
             }
         }
     }
-    if let Some(path) = &history {
-        if let Some(dir) = path.parent() {
-            let _ = std::fs::create_dir_all(dir);
-        }
-        let _ = editor.save_history(path);
-    }
+    history::save(&mut editor, dialect);
     for message in shell.session().close() {
         let _ = writeln!(out, "{}", escape_control(&message));
     }
@@ -123,7 +119,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
                 (true, true) => shown.green().to_string(),
                 (true, false) => shown.red().to_string(),
             };
-            let _ = writeln!(out, "{shown}");
+            let _ = writeln!(out, "{}{shown}", stamp(shell));
             Flow::Continue
         })
     };
@@ -150,9 +146,19 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
         }
         Err(e) => {
             let line = format!("error: {}", escape_control(&e.to_string()));
-            let _ = writeln!(out, "{}", if color { line.red().to_string() } else { line });
+            let line = if color { line.red().to_string() } else { line };
+            let _ = writeln!(out, "{}{line}", stamp(shell));
             Flow::Continue
         }
+    }
+}
+
+/// The time of day before a reply when `:log time on` asked for it.
+fn stamp(shell: &Shell) -> String {
+    if shell.timestamps {
+        format!("{} ", crate::shell::time_of_day())
+    } else {
+        String::new()
     }
 }
 

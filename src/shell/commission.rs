@@ -57,7 +57,7 @@ fn snapshot(
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
-    const USAGE: &str = ":snapshot save FILE | diff FILE [FILE2] | restore FILE [--dry-run] [--force] [--store --yes]";
+    const USAGE: &str = ":snapshot save FILE [--force] | diff FILE [FILE2] | restore FILE [--dry-run] [--force] [--store --yes]";
     let words: Vec<&str> = arg.split_whitespace().collect();
     let flags: Vec<&str> = words
         .iter()
@@ -79,8 +79,8 @@ fn snapshot(
         )));
     }
     match files.as_slice() {
-        ["save", file] if flags.is_empty() => {
-            actions::save(session, Path::new(file), out).map(|_| ())
+        ["save", file] if flags.iter().all(|f| *f == "--force") => {
+            actions::save_new(session, Path::new(file), flag("--force"), out).map(|_| ())
         }
         ["diff", file] if flags.is_empty() => {
             actions::diff(session, Path::new(file), out).map(|_| ())

@@ -25,6 +25,14 @@ pub fn write_help(
     }
     let word = topic.to_ascii_lowercase();
     if word == "exit" {
+        writeln!(
+            out,
+            "Leave with :quit (or quit, exit) or Ctrl-D; the modules go back to the mode they were found in."
+        )?;
+        writeln!(
+            out,
+            "Ctrl-C stops a command and the motor; at the prompt it stops the motors this session set moving."
+        )?;
         return writeln!(
             out,
             "Exit codes: 0 success, 1 device error or failed assertion, 2 refused before sending, 3 connection/timeout/lost link, 130 Ctrl-C."

@@ -30,8 +30,8 @@ pub const SHARED: &[Helper] = &[
     ),
     helper(
         "log",
-        ":log FILE|off",
-        "append a transcript of every byte to FILE, or stop",
+        ":log FILE|off|time [on|off]",
+        "append a transcript of every byte to FILE, or stop; time: the time before each reply",
         ArgKind::File,
         Section::Output,
     ),

@@ -6,6 +6,7 @@ pub mod commission;
 mod help;
 pub mod helpers;
 mod script;
+pub mod words;
 
 use std::io::Write;
 use std::path::Path;
@@ -32,6 +33,8 @@ pub struct Shell {
     session: Option<Box<dyn DialectSession>>,
     /// Show replies exactly as received (`:raw`).
     pub raw: bool,
+    /// Put the time before each reply on screen (`:log time on`).
+    pub timestamps: bool,
     /// What the commissioning helpers remember (the last recording).
     pub commission: commission::State,
 }
@@ -42,6 +45,7 @@ impl Shell {
         Shell {
             session: Some(session),
             raw: false,
+            timestamps: false,
             commission: Default::default(),
         }
     }
@@ -133,8 +137,17 @@ impl Shell {
     }
 
     fn set_log(&mut self, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
+        if let Some(timestamps) = timestamps_arg(arg, self.timestamps)? {
+            self.timestamps = timestamps;
+            let state = if timestamps { "on" } else { "off" };
+            writeln!(out, "timestamps on screen {state}")?;
+            return Ok(());
+        }
+        let timestamps = self.timestamps;
         let session = self.session();
         if arg.is_empty() {
+            let state = if timestamps { "on" } else { "off" };
+            writeln!(out, "timestamps on screen {state} (:log time on|off)")?;
             match session.transcript() {
                 Some(t) => match t.failure() {
                     Some(failure) => writeln!(out, "not logging: {failure}; :log FILE starts")?,
@@ -157,4 +170,26 @@ impl Shell {
         }
         Ok(())
     }
+}
+
+/// `:log time [on|off]`: the new setting (a bare `time` toggles), or `None` for other arguments.
+fn timestamps_arg(arg: &str, now: bool) -> Result<Option<bool>, SessionError> {
+    let mut words = arg.split_whitespace();
+    if words.next() != Some("time") {
+        return Ok(None);
+    }
+    match (words.next(), words.next()) {
+        (None, _) => Ok(Some(!now)),
+        (Some("on"), None) => Ok(Some(true)),
+        (Some("off"), None) => Ok(Some(false)),
+        _ => Err(SessionError::Usage("usage: :log time [on|off]".into())),
+    }
+}
+
+/// The time of day to put before a line on screen (`:log time on`): UTC with milliseconds, the
+/// clock of the transcript's timestamps, so the two can be read side by side.
+pub fn time_of_day() -> String {
+    let now = humantime::format_rfc3339_millis(std::time::SystemTime::now()).to_string();
+    now.split_once('T')
+        .map_or(now.clone(), |(_, time)| time.to_string())
 }

@@ -166,6 +166,6 @@ fn the_smd4_params_table_is_the_shells() {
     assert!(stdout(&cli).contains("MOTOR:VMAX"), "{}", stdout(&cli));
     assert_eq!(stdout(&cli), stdout(&shell));
     let out = run(&["params", "--protocol", "smd4", "NOTHING_LIKE_IT"]);
-    assert_eq!(code(&out), 0);
+    assert_eq!(code(&out), 1);
     assert!(stderr(&out).contains("no SMD4 command matches 'NOTHING_LIKE_IT'"));
 }

@@ -67,7 +67,7 @@ impl DialectConfig for Smd4Config {
         Ok(Box::new(session))
     }
 
-    fn write_params(&self, filter: &str, out: &mut dyn Write) -> io::Result<()> {
+    fn write_params(&self, filter: &str, out: &mut dyn Write) -> io::Result<bool> {
         super::params::write_params(filter, out)
     }
 

@@ -8,6 +8,7 @@ pub mod flags;
 mod grammar;
 mod help;
 pub mod helpers;
+mod output;
 pub mod params;
 pub mod protocol;
 pub mod render;
@@ -36,9 +37,16 @@ pub static DIALECT: Dialect = Dialect {
     simulated: "SMD4",
     console_help: CONSOLE_HELP,
     legacy_note: Some(replay::OPENED),
+    typed_here,
     scan_addresses: "1-247",
     scan_example: "1-247 50ms",
 };
+
+/// SMD4 mnemonics have colons (`MOTOR:VMAX`, `@3,SYS:FW`): how the history of earlier versions,
+/// shared with TMCL, is split.
+fn typed_here(line: &str) -> bool {
+    line.contains(':')
+}
 
 /// The commands of its simulator's console (`tmclsh sim --help`).
 const CONSOLE_HELP: &str = " SMD4 drive (--protocol smd4):

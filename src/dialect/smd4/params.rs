@@ -5,14 +5,16 @@ use std::io::{self, Write};
 
 use super::protocol::{Smd4Spec, hints};
 
-/// The SMD4 commands matching `filter`, one row each, as the shell's `:params` shows them.
-pub fn write_params(filter: &str, out: &mut dyn Write) -> io::Result<()> {
+/// The SMD4 commands matching `filter`, one row each, as the shell's `:params` shows them; when
+/// none matches, says so on stderr and returns false.
+pub fn write_params(filter: &str, out: &mut dyn Write) -> io::Result<bool> {
     let mut rows = hints::matching(&Smd4Spec::builtin().commands, filter).peekable();
     if rows.peek().is_none() {
         eprintln!("no SMD4 command matches '{filter}'");
+        return Ok(false);
     }
     for spec in rows {
         writeln!(out, "{}", hints::table_row(spec))?;
     }
-    Ok(())
+    Ok(true)
 }

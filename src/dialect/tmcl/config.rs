@@ -15,7 +15,7 @@ use crate::session::transcript::Header;
 use crate::sim::Device;
 
 use super::profile::Profile;
-use super::session::TmclSession;
+use super::session::{Echo, TmclSession};
 use super::sim::{Bus, BusOptions};
 
 /// TMCL with the profile of its modules.
@@ -55,6 +55,12 @@ pub fn header(profile: &Profile) -> Header {
     }
 }
 
+/// The echo `--echo` (or a configuration file) asks the target module to use, by its word.
+fn echo_flag(flags: Option<&ArgMatches>) -> Option<Echo> {
+    let mut words = flags?.try_get_raw("echo").ok().flatten()?;
+    words.next().and_then(|w| Echo::parse(&w.to_string_lossy()))
+}
+
 impl DialectConfig for TmclConfig {
     fn dialect(&self) -> &'static Dialect {
         &super::DIALECT
@@ -81,23 +87,31 @@ impl DialectConfig for TmclConfig {
         super::sim::flags::served(&self.profile, flags, state, verbose)
     }
 
+    /// For a conversation, the target module is contacted and its echo set as `--echo` asks.
     fn open(&self, opening: Opening<'_>) -> Result<Box<dyn DialectSession>, SessionError> {
         let Opening {
             link,
             options,
             transcript,
+            flags,
             purpose,
-            ..
         } = opening;
         let profile = self.profile.clone();
         let session = match purpose {
-            Purpose::Talk => TmclSession::open(link, profile, options, transcript)?,
+            Purpose::Talk => {
+                let mut session = TmclSession::open(link, profile, options, transcript)?;
+                if let Some(echo) = echo_flag(flags) {
+                    let target = session.target();
+                    session.set_echo(target, echo)?;
+                }
+                session
+            }
             Purpose::Scan => TmclSession::open_idle(link, profile, options, transcript)?,
         };
         Ok(Box::new(session))
     }
 
-    fn write_params(&self, filter: &str, out: &mut dyn Write) -> io::Result<()> {
+    fn write_params(&self, filter: &str, out: &mut dyn Write) -> io::Result<bool> {
         super::params::write_params(&self.profile, filter, out)
     }
 

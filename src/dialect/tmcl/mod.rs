@@ -10,6 +10,7 @@ mod grammar;
 mod help;
 pub mod helpers;
 pub mod hint;
+mod output;
 pub mod params;
 pub mod profile;
 pub mod program;
@@ -34,7 +35,7 @@ pub static DIALECT: Dialect = Dialect {
     devices: "TMCL modules",
     helpers: helpers::HELPERS,
     configure: config::configure,
-    own_options: &["module", "no_enter", "stay_ascii", "profile"],
+    own_options: &["module", "no_enter", "stay_ascii", "profile", "echo"],
     refusal: "is for TMCL modules, and the protocol is {protocol}",
     session_flags: no_flags,
     sim_flags: sim::flags::add,
@@ -42,6 +43,7 @@ pub static DIALECT: Dialect = Dialect {
     simulated: "TMCM-142",
     console_help: CONSOLE_HELP,
     legacy_note: None,
+    typed_here,
     scan_addresses: "1-26",
     scan_example: "1-26 200ms",
 };
@@ -54,6 +56,12 @@ pub fn is(dialect: &Dialect) -> bool {
 /// The TMCL session behind a session of any dialect, if it is one.
 pub fn session(session: &mut dyn DialectSession) -> Option<&mut TmclSession> {
     session.as_any_mut().downcast_mut()
+}
+
+/// TMCL lines have no colons (SMD4 mnemonics do): how the history of earlier versions, shared
+/// with SMD4, is split.
+fn typed_here(line: &str) -> bool {
+    !line.contains(':')
 }
 
 /// The commands of its simulator's console (`tmclsh sim --help`).

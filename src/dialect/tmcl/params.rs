@@ -4,14 +4,16 @@ use std::io::{self, Write};
 
 use super::profile::{Param, ParamKind, Profile};
 
-/// The parameters of `profile` matching `filter`, as a table; says on stderr when none matches.
-pub fn write_params(profile: &Profile, filter: &str, out: &mut dyn Write) -> io::Result<()> {
+/// The parameters of `profile` matching `filter`, as a table; when none matches, says so on
+/// stderr and returns false.
+pub fn write_params(profile: &Profile, filter: &str, out: &mut dyn Write) -> io::Result<bool> {
     let rows: Vec<&Param> = profile.matching(filter).collect();
     if rows.is_empty() {
         eprintln!("no {} parameter matches '{filter}'", profile.module);
-        return Ok(());
+        return Ok(false);
     }
-    write_table(&rows, out)
+    write_table(&rows, out)?;
+    Ok(true)
 }
 
 /// Prints parameters as an aligned table (shared with the REPL's `:params`).

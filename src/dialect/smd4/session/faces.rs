@@ -35,6 +35,7 @@ impl DialectSession for Smd4Session {
             shown: exchange.raw(),
             decoded: render::decode(&exchange, self.spec).text,
             refusal: exchange.refusal(),
+            forms: Arc::new(exchange),
         })
     }
 

@@ -37,6 +37,7 @@ impl DialectSession for TmclSession {
             shown: exchange.shown(),
             decoded: render::decode(&exchange, &self.profile).text,
             refusal: exchange.refusal(),
+            forms: Arc::new(exchange),
         })
     }
 
