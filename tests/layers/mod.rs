@@ -213,7 +213,7 @@ fn the_checks_see_an_upward_use_and_a_dialect_crossing() {
     let session = made_up(
         "src/session/x.rs",
         &["session", "x"],
-        "use crate::cli::Failure;\nuse super::super::dialect::DialectSession;\n// crate::repl\nlet s = \"crate::shell\";",
+        "use crate::cli::Failure;\nuse super::super::dialect::DialectSession;\n// crate::repl\nlet s = \"crate::shell\";\nlet q = '\\'';\nlet r = r#\"crate::repl\"#;",
     );
     let wrong = upward_uses(&[session], &layers);
     assert_eq!(wrong.len(), 2, "{wrong:?}");

@@ -148,7 +148,8 @@ fn char_literal(rest: &str) -> Option<usize> {
     let mut chars = body.char_indices();
     let (_, first) = chars.next()?;
     let end = if first == '\\' {
-        body[1..].find('\'').map(|j| j + 1)?
+        // The escaped character may itself be a quote (`'\''`).
+        body.get(2..)?.find('\'').map(|j| j + 2)?
     } else {
         let (j, c) = chars.next()?;
         (c == '\'').then_some(j)?
