@@ -10,6 +10,7 @@ mod commission;
 mod hardware;
 mod hostile;
 mod inputs;
+mod layers;
 mod options;
 mod profiles;
 mod program;

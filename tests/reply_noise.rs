@@ -11,14 +11,14 @@ use std::sync::mpsc;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use tmclsh::protocol::smd4::{Expectation, Smd4Spec, check_reply, parse_response};
-use tmclsh::protocol::tmcl::{CommandFrame, Instruction};
+use tmclsh::clock::SystemClock;
+use tmclsh::dialect::smd4::protocol::{Expectation, Smd4Spec, check_reply, parse_response};
+use tmclsh::dialect::smd4::sim::{Smd4Options, Smd4Sim};
+use tmclsh::dialect::tmcl::protocol::{CommandFrame, Instruction};
+use tmclsh::dialect::tmcl::sim::{Bus, BusOptions};
 use tmclsh::sim::Device;
-use tmclsh::sim::clock::SystemClock;
 use tmclsh::sim::inprocess::SharedDevice;
 use tmclsh::sim::serve::{Server, wake_pair};
-use tmclsh::sim::smd4::{Smd4Options, Smd4Sim};
-use tmclsh::sim::tmcl::{Bus, BusOptions};
 
 use crate::sim::PATIENCE;
 use crate::smd4::{BOTH, Via, assert_exit, client};
@@ -113,7 +113,10 @@ fn smd4_drive_via(via: Via, rules: &[(&str, &[u8])]) -> Vec<String> {
 /// A simulated TMCM-142 already in ASCII mode (char echo) behind `rules`; the connection flags
 /// of a client that neither enters nor leaves ASCII mode.
 fn tmcl_module(rules: &[(&str, &[u8])]) -> Vec<String> {
-    let mut bus = Bus::new(tmclsh::profile::Profile::builtin(), BusOptions::default());
+    let mut bus = Bus::new(
+        tmclsh::dialect::tmcl::profile::Profile::builtin(),
+        BusOptions::default(),
+    );
     let enter = CommandFrame {
         address: 1,
         instruction: Instruction::new(139, 0, 0, 0),

@@ -11,7 +11,7 @@ use std::process::Command;
 
 use rexpect::process::WaitStatus;
 use rexpect::session::{PtySession, spawn_command};
-use tmclsh::protocol::tmcl::Status;
+use tmclsh::dialect::tmcl::protocol::Status;
 
 use crate::sim::Sim;
 use crate::smd4::{Drive, Via};

@@ -7,12 +7,12 @@
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use tmclsh::escape::escape_control;
-use tmclsh::profile::Profile;
-use tmclsh::protocol::smd4::{Expectation, Smd4Spec, check_reply, parse_response};
-use tmclsh::protocol::tmcl::{
+use tmclsh::dialect::smd4::protocol::{Expectation, Smd4Spec, check_reply, parse_response};
+use tmclsh::dialect::tmcl::profile::Profile;
+use tmclsh::dialect::tmcl::protocol::{
     CommandFrame, FrameDecoder, Instruction, ReplyFrame, Status, format_line, parse, parse_reply,
 };
+use tmclsh::escape::escape_control;
 
 /// One timed case.
 pub struct Case {

@@ -3,19 +3,19 @@
 //! before the subcommand behind it and `cli::relevance` can refuse those that would be ignored.
 
 use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::Duration;
 
+use clap::{ArgMatches, Args, Command, FromArgMatches};
+
+use crate::dialect::{
+    Configured, DIALECTS, Dialect, DialectConfig, DialectSession, Opening, Purpose,
+    default_dialect, protocol_parser,
+};
 use crate::exit::Exit;
 use crate::exit::ExitStatus;
 use crate::link::Link;
-use crate::profile::Profile;
-use crate::protocol::Dialect;
-use crate::protocol::smd4::PrefixStyle;
-use crate::session::smd4::{Smd4Options, Smd4Session};
-use crate::session::tmcl::{Echo, TmclSession};
 use crate::session::transcript::Header;
-use crate::session::{Session, SessionError, SessionOptions, Transcript};
+use crate::session::{SessionOptions, Transcript};
 
 use super::Failure;
 use super::target::{Target, is_log_dir, log_file};
@@ -41,42 +41,60 @@ pub struct ConnectionArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct DialectArgs {
     /// The protocol the module speaks (also selects the built-in simulated module).
-    #[arg(long, value_enum, default_value_t = Dialect::Tmcl, env = "TMCLSH_PROTOCOL")]
-    pub protocol: Dialect,
+    #[arg(long, value_parser = protocol_parser(), default_value = default_dialect().name, env = "TMCLSH_PROTOCOL")]
+    pub protocol: &'static Dialect,
 }
 
-/// Settings of the SMD4 dialect.
-#[derive(Debug, Clone, clap::Args)]
-#[command(next_help_heading = "SMD4")]
-pub struct Smd4Args {
-    /// SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=247))]
-    pub address: Option<u32>,
-    /// SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual's @3MOTOR:STOP.
-    #[arg(long)]
-    pub prefix_comma: bool,
-    /// SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have
-    /// no end marker).
-    #[arg(long, value_name = "MS", value_parser = clap::value_parser!(u64).range(1..))]
-    pub quiet_gap: Option<u64>,
+/// The command line as given, kept whole for the chosen dialect to read its own options from
+/// (SMD4's `--address`, TMCL's `--echo`). It adds no options; flattened first into
+/// [`ModuleArgs`], it is taken before the groups after it take their values out.
+#[derive(Debug, Clone)]
+pub struct CommandLine(ArgMatches);
+
+impl FromArgMatches for CommandLine {
+    fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
+        Ok(CommandLine(matches.clone()))
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
+        self.0 = matches.clone();
+        Ok(())
+    }
 }
 
-impl Smd4Args {
-    /// The SMD4 session options these flags select.
-    pub fn options(&self) -> Smd4Options {
-        let defaults = Smd4Options::default();
-        Smd4Options {
-            address: self.address,
-            prefix: if self.prefix_comma {
-                PrefixStyle::Comma
-            } else {
-                PrefixStyle::Attached
-            },
-            quiet_gap: self
-                .quiet_gap
-                .map(Duration::from_millis)
-                .unwrap_or(defaults.quiet_gap),
-        }
+impl Args for CommandLine {
+    fn augment_args(cmd: Command) -> Command {
+        cmd
+    }
+
+    fn augment_args_for_update(cmd: Command) -> Command {
+        cmd
+    }
+}
+
+/// The session flags of every dialect (`--address` …), each dialect's under the help heading it
+/// sets (which, as with any flattened group, stays for the options after it). Their values are
+/// read by the dialect from the [`CommandLine`].
+#[derive(Debug, Clone)]
+pub struct DialectFlags;
+
+impl FromArgMatches for DialectFlags {
+    fn from_arg_matches(_: &ArgMatches) -> Result<Self, clap::Error> {
+        Ok(DialectFlags)
+    }
+
+    fn update_from_arg_matches(&mut self, _: &ArgMatches) -> Result<(), clap::Error> {
+        Ok(())
+    }
+}
+
+impl Args for DialectFlags {
+    fn augment_args(cmd: Command) -> Command {
+        DIALECTS.iter().fold(cmd, |cmd, d| (d.session_flags)(cmd))
+    }
+
+    fn augment_args_for_update(cmd: Command) -> Command {
+        Self::augment_args(cmd)
     }
 }
 
@@ -108,7 +126,8 @@ pub struct SessionArgs {
     pub stay_ascii: bool,
 }
 
-/// The echo modes of a TMCL module, as `--echo` and `:echo` name them.
+/// The echo modes of a TMCL module, as `--echo` and `:echo` name them; the TMCL session reads
+/// the word given (see `dialect::tmcl::config`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum EchoMode {
     /// Every character echoed as it arrives.
@@ -117,17 +136,6 @@ pub enum EchoMode {
     Line,
     /// No echo, only the reply.
     None,
-}
-
-impl EchoMode {
-    /// The session's echo mode.
-    pub fn echo(self) -> Echo {
-        match self {
-            EchoMode::Char => Echo::Character,
-            EchoMode::Line => Echo::Line,
-            EchoMode::None => Echo::None,
-        }
-    }
 }
 
 impl SessionArgs {
@@ -176,14 +184,13 @@ impl ConnectionArgs {
     }
 
     /// Opens the link: the TCP connection (--tcp, which only the command line gives, wins over a
-    /// TMCLSH_PORT), the serial port, or the built-in simulated module speaking `dialect`.
+    /// TMCLSH_PORT), the serial port, or the built-in simulator of `config`'s dialect.
     pub fn open(
         &self,
-        dialect: Dialect,
-        profile: &Arc<Profile>,
+        config: &dyn DialectConfig,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
-        self.target()?.open(self.baud, dialect, profile, timeout)
+        self.target()?.open(self.baud, config, timeout)
     }
 }
 
@@ -191,6 +198,9 @@ impl ConnectionArgs {
 /// and every subcommand that opens a session in either dialect.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ModuleArgs {
+    /// The command line as given, for the dialect's own options.
+    #[command(flatten)]
+    pub command_line: CommandLine,
     /// Where the module is.
     #[command(flatten)]
     pub connection: ConnectionArgs,
@@ -200,9 +210,9 @@ pub struct ModuleArgs {
     /// How requests are sent and checked.
     #[command(flatten)]
     pub session: SessionArgs,
-    /// SMD4 settings.
+    /// The settings of each dialect.
     #[command(flatten)]
-    pub smd4: Smd4Args,
+    pub flags: DialectFlags,
 }
 
 /// Who learns that the built-in simulator answers: a command run without a terminal says so on
@@ -217,7 +227,7 @@ pub enum Audience {
 
 impl ModuleArgs {
     /// The protocol the module speaks.
-    pub fn protocol(&self) -> Dialect {
+    pub fn protocol(&self) -> &'static Dialect {
         self.dialect.protocol
     }
 
@@ -225,93 +235,63 @@ impl ModuleArgs {
     /// simulator (so nobody mistakes its answers for hardware's).
     pub fn link(
         &self,
-        profile: &Arc<Profile>,
+        config: &dyn DialectConfig,
         timeout: Duration,
         audience: Audience,
     ) -> Result<Box<dyn Link>, Failure> {
         let target = self.connection.target()?;
-        self.link_to(&target, profile, timeout, audience)
+        self.link_to(&target, config, timeout, audience)
     }
 
     /// Opens the transcript (named by the target in a `--log` directory), then the link.
     pub fn connect(
         &self,
-        header: &Header,
-        profile: &Arc<Profile>,
+        config: &dyn DialectConfig,
         timeout: Duration,
         audience: Audience,
     ) -> Result<(Option<Transcript>, Box<dyn Link>), Failure> {
         let target = self.connection.target()?;
         let device = target.file_name(self.protocol());
-        let transcript = self.session.transcript(header, &device)?;
-        let link = self.link_to(&target, profile, timeout, audience)?;
+        let transcript = self.session.transcript(&config.header(), &device)?;
+        let link = self.link_to(&target, config, timeout, audience)?;
         Ok((transcript, link))
     }
 
     fn link_to(
         &self,
         target: &Target,
-        profile: &Arc<Profile>,
+        config: &dyn DialectConfig,
         timeout: Duration,
         audience: Audience,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link = target.open(self.connection.baud, self.protocol(), profile, timeout)?;
+        let link = target.open(self.connection.baud, config, timeout)?;
         if *target == Target::Builtin && audience == Audience::Batch {
             eprintln!(
                 "tmclsh: using the built-in simulated {}; give --port or --tcp for hardware",
-                simulated_module(self.protocol(), profile)
+                config.simulated_module()
             );
         }
         Ok(link)
     }
 
-    /// Opens a session in the dialect the flags say.
-    pub fn open(&self, profile: &Arc<Profile>, audience: Audience) -> Result<Session, Failure> {
+    /// Opens a session in the dialect the flags say, for `purpose`.
+    pub fn open(
+        &self,
+        configs: &Configured,
+        audience: Audience,
+        purpose: Purpose,
+    ) -> Result<Box<dyn DialectSession>, Failure> {
+        let config = configs.of(self.protocol());
         let options = self.session.options();
-        let header = Header::new(self.protocol(), profile);
-        let (transcript, link) = self.connect(&header, profile, options.timeout, audience)?;
-        match self.protocol() {
-            Dialect::Tmcl => TmclSession::open(link, profile.clone(), options, transcript)
-                .and_then(|s| self.set_echo(s))
-                .map(Session::Tmcl),
-            Dialect::Smd4 => {
-                Smd4Session::open(link, options, self.smd4.options(), transcript).map(Session::Smd4)
-            }
-        }
-        .map_err(|e| Failure::new(e.exit(), e.to_string()))
-    }
-
-    /// Opens a TMCL session (for subcommands that only exist for TMCL modules).
-    pub fn open_tmcl(&self, profile: &Arc<Profile>) -> Result<TmclSession, Failure> {
-        if self.protocol() != Dialect::Tmcl {
-            return Err(Failure::new(
-                Exit::Refused,
-                "this subcommand works with TMCL modules only",
-            ));
-        }
-        let options = self.session.options();
-        let header = Header::tmcl(profile);
-        let (transcript, link) =
-            self.connect(&header, profile, options.timeout, Audience::Batch)?;
-        TmclSession::open(link, profile.clone(), options, transcript)
-            .and_then(|s| self.set_echo(s))
+        let (transcript, link) = self.connect(config, options.timeout, audience)?;
+        config
+            .open(Opening {
+                link,
+                options,
+                transcript,
+                flags: Some(&self.command_line.0),
+                purpose,
+            })
             .map_err(|e| Failure::new(e.exit(), e.to_string()))
-    }
-
-    /// Sets the target's echo mode when `--echo` (or a configuration file) asks for one.
-    fn set_echo(&self, mut session: TmclSession) -> Result<TmclSession, SessionError> {
-        if let Some(mode) = self.session.echo {
-            let target = session.target();
-            session.set_echo(target, mode.echo())?;
-        }
-        Ok(session)
-    }
-}
-
-/// The name of the built-in simulated module of `dialect`: the profile's module, or the SMD4.
-pub fn simulated_module(dialect: Dialect, profile: &Profile) -> &str {
-    match dialect {
-        Dialect::Tmcl => profile.module.as_str(),
-        Dialect::Smd4 => "SMD4",
     }
 }

@@ -3,9 +3,9 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use crate::asm;
+use crate::dialect::tmcl::asm;
+use crate::dialect::tmcl::profile::Profile;
 use crate::exit::Exit;
-use crate::profile::Profile;
 
 use super::Failure;
 

@@ -17,7 +17,6 @@ pub mod run;
 mod scan;
 pub mod shell;
 mod sim;
-mod sim_smd4;
 mod snapshot;
 mod target;
 mod transcript;
@@ -25,12 +24,11 @@ mod transcript;
 use std::ffi::OsString;
 use std::io::Write;
 use std::path::PathBuf;
-use std::sync::Arc;
 
 use clap::{FromArgMatches, Parser, Subcommand};
 
+use crate::dialect::Configured;
 use crate::exit::Exit;
-use crate::profile::Profile;
 
 /// Terminal and scripting shell for TMCL and SMD4 stepper-motor modules.
 #[derive(Debug, Parser)]
@@ -157,22 +155,23 @@ impl Failure {
 
 /// Runs a parsed command line, printing results to `out`.
 pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
-    let profile = load_profile(&cli)?;
+    let configs = Configured::load(cli.profile.as_deref())
+        .map_err(|message| Failure::new(Exit::Refused, message))?;
     let result = match cli.command {
-        Some(Command::Params(args)) => return finish_io(params::run(&args, &profile, out)),
+        Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports) => ports::run(out),
         Some(Command::Completions(args)) => completions::run(&args, out),
         Some(Command::Man) => man::run(out),
-        Some(Command::Run(args)) => return run::run(args, &profile),
-        Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
-        Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
-        Some(Command::Download(args)) => return download::run(args, &profile, out),
-        Some(Command::Snapshot(args)) => return snapshot::run(args, &profile, out),
-        Some(Command::Scan(args)) => return scan::run(args, &profile, out),
-        Some(Command::Transcript(args)) => return transcript::run(args, &profile, out),
-        Some(Command::Sim(args)) => return sim::run(&args, profile, out),
+        Some(Command::Run(args)) => return run::run(args, &configs),
+        Some(Command::Asm(args)) => return asm::run(&args, tmcl_profile(&configs), out),
+        Some(Command::Disasm(args)) => return disasm::run(&args, tmcl_profile(&configs), out),
+        Some(Command::Download(args)) => return download::run(args, &configs, out),
+        Some(Command::Snapshot(args)) => return snapshot::run(args, &configs, out),
+        Some(Command::Scan(args)) => return scan::run(args, &configs, out),
+        Some(Command::Transcript(args)) => return transcript::run(args, &configs, out),
+        Some(Command::Sim(args)) => return sim::run(&args, &configs, out),
         Some(Command::Config(args)) => return finish_io(config::run(&args, out)),
-        None => return shell::run(cli.shell, &profile),
+        None => return shell::run(cli.shell, &configs),
     };
     finish_io(result.map(|()| Exit::Success))
 }
@@ -186,13 +185,10 @@ fn finish_io(result: std::io::Result<Exit>) -> Result<Exit, Failure> {
     }
 }
 
-fn load_profile(cli: &Cli) -> Result<Arc<Profile>, Failure> {
-    match &cli.profile {
-        None => Ok(Profile::builtin()),
-        Some(path) => Profile::from_file(path)
-            .map(Arc::new)
-            .map_err(|e| Failure::new(Exit::Refused, e.to_string())),
-    }
+/// The TMCL profile, for the subcommands only TMCL has (`asm`, `disasm`, `download`).
+fn tmcl_profile(configs: &Configured) -> &crate::dialect::tmcl::profile::Profile {
+    let tmcl = configs.of(&crate::dialect::tmcl::DIALECT);
+    crate::dialect::tmcl::config::profile(tmcl).expect("TMCL is configured with its profile")
 }
 
 /// The clap command, for completions and docs.

@@ -8,7 +8,7 @@ use clap::error::ErrorKind;
 use clap::parser::ValueSource;
 use clap::{ArgMatches, Args, Command};
 
-use crate::protocol::Dialect;
+use crate::dialect::{DIALECTS, Dialect};
 
 use super::connection::ModuleArgs;
 use super::position::{flag, leaf_matches, subcommand_mut, subcommand_path};
@@ -63,9 +63,8 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
     ),
 ];
 
-/// Options of one dialect, refused when the session speaks the other.
-const TMCL_ONLY: &[&str] = &["module", "no_enter", "stay_ascii", "profile", "echo"];
-const SMD4_ONLY: &[&str] = &["address", "prefix_comma", "quiet_gap"];
+/// Subcommands that only one dialect has: (subcommand, dialect name).
+const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl")];
 
 /// The subcommand that takes every shared option to show what it would set (`tmclsh config`).
 const SHOWS_ALL: &str = "config";
@@ -150,17 +149,22 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
             refuse(ids, format!("does not apply to {named}: {why}"));
         }
     }
-    match dialect(leaf) {
-        Some(Dialect::Smd4) => refuse(
-            TMCL_ONLY,
-            "is for TMCL modules, and the protocol is smd4".into(),
-        ),
-        Some(Dialect::Tmcl) => refuse(SMD4_ONLY, "is for SMD4 drives (--protocol smd4)".into()),
-        None => {}
-    }
-    if words == "download" && dialect(leaf) == Some(Dialect::Smd4) {
-        let why = format!("smd4 does not apply to {named}: it works with TMCL modules only");
-        refuse(&["protocol"], why);
+    if let Some(chosen) = dialect(leaf) {
+        for other in DIALECTS.iter().filter(|d| !std::ptr::eq(**d, chosen)) {
+            let why = other.refusal.replace("{protocol}", chosen.name);
+            let ids = own_options(other);
+            refuse(&ids.iter().map(String::as_str).collect::<Vec<_>>(), why);
+        }
+        for (at, owner) in ONE_DIALECT {
+            let owner = crate::dialect::by_name(owner).expect("a listed dialect");
+            if *at == words && owner != chosen {
+                let why = format!(
+                    "{} does not apply to {named}: it works with {} only",
+                    chosen.name, owner.devices
+                );
+                refuse(&["protocol"], why);
+            }
+        }
     }
     if given("port") && given("tcp") {
         refuse(&["tcp"], "and --port name two links; give one".into());
@@ -188,12 +192,23 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
 }
 
 /// The protocol in effect, for commands that have the option.
-fn dialect(matches: &ArgMatches) -> Option<Dialect> {
+fn dialect(matches: &ArgMatches) -> Option<&'static Dialect> {
     matches
-        .try_get_one::<Dialect>("protocol")
+        .try_get_one::<&'static Dialect>("protocol")
         .ok()
         .flatten()
         .copied()
+}
+
+/// The options only `dialect` uses: those of the shared group it lists, and its own flags.
+fn own_options(dialect: &Dialect) -> Vec<String> {
+    let flags = (dialect.session_flags)(Command::new("flags"));
+    dialect
+        .own_options
+        .iter()
+        .map(|id| id.to_string())
+        .chain(flags.get_arguments().map(|a| a.get_id().to_string()))
+        .collect()
 }
 
 /// Whether `id` has a value from anywhere (command line or environment).
@@ -233,8 +248,8 @@ mod tests {
     #[test]
     fn the_dialect_options_are_options_of_the_shell() {
         let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
-        for id in TMCL_ONLY.iter().chain(SMD4_ONLY) {
-            assert!(cmd.get_arguments().any(|a| a.get_id() == id), "{id}");
+        for id in DIALECTS.iter().flat_map(|d| own_options(d)) {
+            assert!(cmd.get_arguments().any(|a| a.get_id() == &id), "{id}");
         }
         for path in NO_TABLES {
             assert!(cmd.find_subcommand(path).is_some(), "{path}");

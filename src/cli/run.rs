@@ -1,11 +1,10 @@
 //! `tmclsh run SCRIPT [CONNECTION] [-- ARGS...]`: run a Rhai script; the exit code is the verdict.
 
 use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::Duration;
 
+use crate::dialect::{Configured, Purpose};
 use crate::exit::Exit;
-use crate::profile::Profile;
 use crate::script::limits::DEFAULT_MAX_MEMORY_MIB;
 use crate::script::{self, Limits};
 use crate::session::interrupt;
@@ -50,7 +49,7 @@ pub struct RunArgs {
 
 /// Runs the script; on any failure or Ctrl-C the modules it moved are stopped (MST) and every
 /// module is put back in the mode it was found in before exiting.
-pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
+pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
     interrupt::install();
     script::check_file(&args.script).map_err(|r| Failure::new(r.exit, r.message))?;
     for dir in &args.allow_dir {
@@ -61,7 +60,7 @@ pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
             ));
         }
     }
-    let session = args.module.open(profile, Audience::Batch)?;
+    let session = args.module.open(configs, Audience::Batch, Purpose::Talk)?;
     let limits = Limits {
         max_operations: args.max_operations,
         max_call_depth: args.max_call_depth,
@@ -70,7 +69,7 @@ pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
         allow_dirs: args.allow_dir.clone(),
         overwrite: args.overwrite,
     };
-    let (mut session, outcome) = script::run_file(&args.script, &args.args, session, limits);
+    let (mut session, outcome) = crate::shell::run_file(&args.script, &args.args, session, limits);
     for notice in session.take_notices() {
         super::diagnose(&notice);
     }

@@ -2,18 +2,16 @@
 //! lines or stdin lines.
 
 use std::io::IsTerminal;
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+use crate::dialect::{Configured, DialectSession, Purpose};
 use crate::exit::Exit;
-use crate::profile::Profile;
-use crate::session::Session;
 use crate::session::interrupt;
 use crate::shell::Shell;
 use crate::shell::batch::{self, Lines, Output};
 
 use super::Failure;
-use super::connection::{Audience, ModuleArgs, simulated_module};
+use super::connection::{Audience, ModuleArgs};
 use super::ports;
 
 /// Flags of the shell itself.
@@ -41,7 +39,7 @@ pub struct ShellArgs {
 }
 
 /// Runs the shell: the REPL on a terminal, otherwise the `-c` lines or stdin lines.
-pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
+pub fn run(args: ShellArgs, configs: &Configured) -> Result<Exit, Failure> {
     interrupt::install();
     let interactive = args.commands.is_empty() && std::io::stdin().is_terminal();
     let options = batch::Options {
@@ -63,15 +61,15 @@ pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     let session = if interactive {
         match wait_for_port(&args.module)? {
             Waited::GaveUp => return Ok(Exit::Interrupted),
-            Waited::No => args.module.open(profile, audience)?,
-            Waited::Appeared => open_when_ready(&args.module, profile, audience)?,
+            Waited::No => args.module.open(configs, audience, Purpose::Talk)?,
+            Waited::Appeared => open_when_ready(&args.module, configs, audience)?,
         }
     } else {
-        args.module.open(profile, audience)?
+        args.module.open(configs, audience, Purpose::Talk)?
     };
     let mut shell = Shell::new(session);
     if interactive {
-        let banner = banner(&args.module, &shell, profile);
+        let banner = banner(&args.module, &shell, configs);
         return Ok(crate::repl::run(&mut shell, &banner));
     }
     let lines = if args.commands.is_empty() {
@@ -155,12 +153,12 @@ fn wait_for_port(module: &ModuleArgs) -> Result<Waited, Failure> {
 /// Opens a port that has just appeared, trying again while it settles.
 fn open_when_ready(
     module: &ModuleArgs,
-    profile: &Arc<Profile>,
+    configs: &Configured,
     audience: Audience,
-) -> Result<Session, Failure> {
+) -> Result<Box<dyn DialectSession>, Failure> {
     let since = Instant::now();
     loop {
-        match module.open(profile, audience) {
+        match module.open(configs, audience, Purpose::Talk) {
             Err(failure) if failure.exit == Exit::Link && since.elapsed() < SETTLING => {
                 if interrupt::take() {
                     return Err(Failure::new(Exit::Interrupted, "interrupted"));
@@ -172,16 +170,13 @@ fn open_when_ready(
     }
 }
 
-fn banner(module: &ModuleArgs, shell: &Shell, profile: &Profile) -> String {
+fn banner(module: &ModuleArgs, shell: &Shell, configs: &Configured) -> String {
     let version = env!("CARGO_PKG_VERSION");
     if module.connection.is_builtin() {
-        let module = simulated_module(module.protocol(), profile);
+        let module = configs.of(module.protocol()).simulated_module();
         format!("tmclsh {version} — simulated {module} (built-in) — use --port to talk to hardware")
     } else {
-        let module = match shell.session_ref() {
-            Session::Tmcl(s) => format!("{}, module {}", profile.module, s.target()),
-            Session::Smd4(_) => "SMD4".to_string(),
-        };
+        let module = shell.session_ref().banner();
         format!(
             "tmclsh {version} — {module} on {}",
             shell.session_ref().describe()

@@ -4,16 +4,11 @@
 
 use std::io::{BufRead, IsTerminal, Write};
 use std::path::PathBuf;
-use std::sync::Arc;
 
 use crate::commission::ParamDevice;
 use crate::commission::actions::{self, RestoreOptions};
-use crate::commission::shell::param_device;
-use crate::commission::tmcl::profile_params;
+use crate::dialect::{Configured, Purpose};
 use crate::exit::{Exit, ExitStatus};
-use crate::profile::Profile;
-use crate::protocol::Dialect;
-use crate::protocol::smd4::Smd4Spec;
 use crate::session::{SessionError, interrupt};
 
 use super::Failure;
@@ -80,11 +75,7 @@ enum Action {
 }
 
 /// Runs `snapshot`.
-pub fn run(
-    args: SnapshotArgs,
-    profile: &Arc<Profile>,
-    out: &mut dyn Write,
-) -> Result<Exit, Failure> {
+pub fn run(args: SnapshotArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
     interrupt::install();
     match args.action {
         Action::Save {
@@ -94,7 +85,7 @@ pub fn run(
         } => {
             // Refused before the link is opened: nothing is sent for a save that cannot be kept.
             actions::check_new(&file, force).map_err(|e| Failure::new(e.exit(), e.to_string()))?;
-            with_device(&module, profile, |d| {
+            with_device(&module, configs, |d| {
                 actions::save_new(d, &file, force, out).map(|_| ())
             })
         }
@@ -103,17 +94,14 @@ pub fn run(
             other: Some(other),
             module,
         } => {
-            let params = match module.protocol() {
-                Dialect::Tmcl => profile_params(profile),
-                Dialect::Smd4 => crate::commission::smd4::spec_params(Smd4Spec::builtin()),
-            };
+            let params = configs.of(module.protocol()).snapshot_params();
             finish(actions::diff_files(&file, &other, &params, out).map(|_| ()))
         }
         Action::Diff {
             file,
             other: None,
             module,
-        } => with_device(&module, profile, |d| {
+        } => with_device(&module, configs, |d| {
             actions::diff(d, &file, out).map(|_| ())
         }),
         Action::Restore {
@@ -137,7 +125,7 @@ pub fn run(
                 force,
                 redact: false,
             };
-            with_device(&module, profile, |d| {
+            with_device(&module, configs, |d| {
                 let mut confirm = |question: &str| {
                     if ask {
                         confirm_store(question)
@@ -155,11 +143,11 @@ pub fn run(
 /// (TMCL modules back in their modes) whatever happened.
 fn with_device(
     module: &ModuleArgs,
-    profile: &Arc<Profile>,
+    configs: &Configured,
     f: impl FnOnce(&mut dyn ParamDevice) -> Result<(), SessionError>,
 ) -> Result<Exit, Failure> {
-    let mut session = module.open(profile, Audience::Batch)?;
-    let result = f(param_device(&mut session));
+    let mut session = module.open(configs, Audience::Batch, Purpose::Talk)?;
+    let result = f(session.param_device());
     for notice in session.take_notices() {
         super::diagnose(&notice);
     }

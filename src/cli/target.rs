@@ -3,13 +3,11 @@
 //! file name in a `--log` directory comes from it too.
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 use std::time::{Duration, SystemTime};
 
+use crate::dialect::{Dialect, DialectConfig};
 use crate::exit::Exit;
 use crate::link::{Link, SerialLink, TcpLink};
-use crate::profile::Profile;
-use crate::protocol::Dialect;
 
 use super::Failure;
 use super::ports::usb::{UsbSpec, find};
@@ -48,24 +46,26 @@ impl Target {
         }
     }
 
-    /// Opens the link.
+    /// Opens the link; the built-in simulator is `config`'s dialect's.
     pub fn open(
         &self,
         baud: u32,
-        dialect: Dialect,
-        profile: &Arc<Profile>,
+        config: &dyn DialectConfig,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
         let failed = |e: crate::link::LinkError| Failure::new(Exit::Link, e.to_string());
         Ok(match self {
             Target::Tcp(address) => Box::new(TcpLink::connect(address, timeout).map_err(failed)?),
             Target::Serial(path) => Box::new(SerialLink::open(path, baud).map_err(failed)?),
-            Target::Builtin => crate::sim::builtin_link(profile, dialect),
+            Target::Builtin => {
+                let name = format!("simulated {} (built-in)", config.simulated_module());
+                crate::sim::builtin_link(config.simulator(), name)
+            }
         })
     }
 
     /// A short name for file names: `ttyUSB0`, `pts-3`, `tcp-127.0.0.1-4001`, `sim-tmcl`.
-    pub fn file_name(&self, dialect: Dialect) -> String {
+    pub fn file_name(&self, dialect: &Dialect) -> String {
         let name = match self {
             Target::Tcp(address) => format!("tcp-{address}"),
             Target::Serial(path) => {
@@ -78,7 +78,7 @@ impl Target {
                         .unwrap_or_else(|| "serial".into()),
                 }
             }
-            Target::Builtin => format!("sim-{}", dialect_word(dialect)),
+            Target::Builtin => format!("sim-{}", dialect.name),
         };
         name.chars()
             .map(|c| match c {
@@ -86,13 +86,6 @@ impl Target {
                 _ => '-',
             })
             .collect()
-    }
-}
-
-fn dialect_word(dialect: Dialect) -> &'static str {
-    match dialect {
-        Dialect::Tmcl => "tmcl",
-        Dialect::Smd4 => "smd4",
     }
 }
 
@@ -120,7 +113,7 @@ mod tests {
 
     #[test]
     fn devices_name_their_files() {
-        let serial = |p: &str| Target::Serial(p.into()).file_name(Dialect::Tmcl);
+        let serial = |p: &str| Target::Serial(p.into()).file_name(&crate::dialect::tmcl::DIALECT);
         assert_eq!(serial("/dev/ttyUSB0"), "ttyUSB0");
         assert_eq!(serial("/dev/pts/3"), "pts-3");
         assert_eq!(
@@ -129,10 +122,13 @@ mod tests {
         );
         assert_eq!(serial("COM3"), "COM3");
         assert_eq!(
-            Target::Tcp("127.0.0.1:4001".into()).file_name(Dialect::Tmcl),
+            Target::Tcp("127.0.0.1:4001".into()).file_name(&crate::dialect::tmcl::DIALECT),
             "tcp-127.0.0.1-4001"
         );
-        assert_eq!(Target::Builtin.file_name(Dialect::Smd4), "sim-smd4");
+        assert_eq!(
+            Target::Builtin.file_name(&crate::dialect::smd4::DIALECT),
+            "sim-smd4"
+        );
     }
 
     #[test]

@@ -5,10 +5,8 @@
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 
-use crate::commission::replay;
+use crate::dialect::{Configured, replay};
 use crate::exit::Exit;
-use crate::profile::Profile;
-use crate::protocol::Dialect;
 
 use super::Failure;
 
@@ -37,7 +35,11 @@ enum Action {
 }
 
 /// Runs `transcript`.
-pub fn run(args: TranscriptArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub fn run(
+    args: TranscriptArgs,
+    configs: &Configured,
+    out: &mut dyn Write,
+) -> Result<Exit, Failure> {
     let Action::ToRhai { log, output, wait } = args.action;
     let refused = |what: String| Failure::new(Exit::Refused, format!("{}: {what}", log.display()));
     let text = read_transcript(&log).map_err(refused)?;
@@ -50,37 +52,10 @@ pub fn run(args: TranscriptArgs, profile: &Profile, out: &mut dyn Write) -> Resu
         || log.display().to_string(),
         |n| n.to_string_lossy().escape_debug().to_string(),
     );
-    let script = match kind.dialect {
-        Dialect::Smd4 => {
-            let spec = crate::protocol::smd4::Smd4Spec::builtin();
-            let steps = replay::smd4::steps(&entries, spec);
-            if !steps
-                .iter()
-                .any(|s| matches!(s, replay::smd4::Step::Exchange { .. }))
-            {
-                return Err(refused(nothing_to_replay("SMD4")));
-            }
-            replay::smd4::to_rhai(&steps, spec, &name, wait)
-        }
-        Dialect::Tmcl => {
-            if let Some(header) = &kind.header {
-                if header.module != profile.module {
-                    return Err(refused(format!(
-                        "a transcript of a {} (profile {}), but the profile in use is the {}'s; \
-                         give --profile",
-                        header.module,
-                        header.profile.as_deref().unwrap_or("unknown"),
-                        profile.module
-                    )));
-                }
-            }
-            let steps = replay::steps(&entries, profile);
-            if !replay::replays_something(&steps) {
-                return Err(refused(nothing_to_replay("TMCL")));
-            }
-            replay::to_rhai(&steps, profile, &name, wait)
-        }
-    };
+    let script = configs
+        .of(kind.dialect)
+        .replay(&entries, kind.header.as_ref(), &name, wait)
+        .map_err(refused)?;
     let written = match &output {
         Some(path) => std::fs::write(path, &script),
         None => out.write_all(script.as_bytes()),
@@ -119,11 +94,4 @@ fn read_transcript(path: &Path) -> Result<String, String> {
             + 1;
         format!("line {line}: not text (transcripts escape every byte they record)")
     })
-}
-
-fn nothing_to_replay(dialect: &str) -> String {
-    format!(
-        "no {dialect} exchange to replay: no command in it got a reply that could be read \
-         (a transcript of another dialect, or of a session that only failed?)"
-    )
 }

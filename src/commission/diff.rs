@@ -3,7 +3,7 @@
 
 use std::io::{self, Write};
 
-use crate::profile::SnapshotRole;
+use crate::commission::SnapshotRole;
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, ParamRef, Scope};

@@ -4,13 +4,13 @@
 
 use std::collections::BTreeMap;
 
-use crate::profile::Profile;
-use crate::protocol::tmcl::Status;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::protocol::Status;
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, ParamRef, Scope, StoreStep};
-use super::tmcl::param_ref;
 use super::value::{ParamValue, Reading};
+use crate::dialect::tmcl::commission::param_ref;
 
 pub struct FakeDevice {
     pub params: Vec<ParamRef>,
@@ -137,7 +137,7 @@ impl ParamDevice for FakeDevice {
     }
 
     fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
-        super::tmcl::check_write(&Profile::builtin(), param, value)
+        crate::dialect::tmcl::commission::check_write(&Profile::builtin(), param, value)
     }
 
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {

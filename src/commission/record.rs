@@ -14,8 +14,8 @@
 use std::io::{self, Write};
 use std::time::Duration;
 
+use crate::clock::Clock;
 use crate::session::{SessionError, interrupt};
-use crate::sim::clock::Clock;
 
 use super::device::{ParamDevice, ParamRef};
 use super::value::ParamValue;
@@ -267,7 +267,7 @@ mod tests {
     use super::super::fake::FakeDevice;
     use super::super::value::Reading;
     use super::*;
-    use crate::sim::clock::ManualClock;
+    use crate::clock::ManualClock;
 
     fn plan(device: &FakeDevice, names: &[&str], interval_ms: u64, duration_ms: u64) -> Plan {
         Plan {

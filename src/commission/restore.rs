@@ -20,7 +20,7 @@ pub mod check;
 use std::collections::BTreeSet;
 use std::io::{self, Write};
 
-use crate::profile::SnapshotRole;
+use crate::commission::SnapshotRole;
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, ParamRef, Scope};
@@ -157,9 +157,9 @@ fn file_problems(
     let module = device.module_name();
     let drive = |scope: &Scope| *scope == Scope::Drive;
     let file_is_drive = snapshot.entries.iter().any(|e| drive(&e.scope));
-    let file_is_tmcl = snapshot.entries.iter().any(|e| !drive(&e.scope));
+    let file_has_motors_or_banks = snapshot.entries.iter().any(|e| !drive(&e.scope));
     let device_is_drive = params.iter().any(|p| drive(&p.scope));
-    if (device_is_drive && file_is_tmcl) || (!device_is_drive && file_is_drive) {
+    if (device_is_drive && file_has_motors_or_banks) || (!device_is_drive && file_is_drive) {
         let (file, target) = if device_is_drive {
             ("TMCL axis and global parameters", "an SMD4 drive")
         } else {

@@ -7,22 +7,19 @@ use std::path::{Path, PathBuf};
 use rustyline::Editor;
 use rustyline::history::{DefaultHistory, History};
 
-use crate::protocol::Dialect;
+use crate::dialect::Dialect;
 
 use super::editor::ReplHelper;
 
-/// The history file of `dialect`, in the user's data directory.
-pub fn path(dialect: Dialect) -> Option<PathBuf> {
-    let name = match dialect {
-        Dialect::Tmcl => "history-tmcl",
-        Dialect::Smd4 => "history-smd4",
-    };
+/// The history file of `dialect`, in the user's data directory (`history-NAME`).
+pub fn path(dialect: &Dialect) -> Option<PathBuf> {
+    let name = format!("history-{}", dialect.name);
     dirs::data_dir().map(|d| d.join("tmclsh").join(name))
 }
 
 /// Loads `dialect`'s history into the editor (from the shared file of earlier versions, keeping
 /// this dialect's lines, when it has none yet). A missing or unreadable file is an empty history.
-pub fn load(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: Dialect) {
+pub fn load(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Dialect) {
     let Some(path) = path(dialect) else { return };
     if path.exists() {
         let _ = editor.load_history(&path);
@@ -39,7 +36,7 @@ pub fn load(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: Dialect) {
 }
 
 /// Saves the editor's history as `dialect`'s.
-pub fn save(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: Dialect) {
+pub fn save(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Dialect) {
     let Some(path) = path(dialect) else { return };
     if let Some(dir) = path.parent() {
         let _ = std::fs::create_dir_all(dir);
@@ -47,30 +44,29 @@ pub fn save(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: Dialect) {
     let _ = editor.save_history(Path::new(&path));
 }
 
-/// Whether a line of the shared history was typed in `dialect`: SMD4 mnemonics have colons
-/// (`MOTOR:VMAX`, `@3,SYS:FW`), TMCL lines none; helper lines (`:help`) belong to both.
-fn belongs(line: &str, dialect: Dialect) -> bool {
+/// Whether a line of the shared history was typed in `dialect` (its descriptor says, from the
+/// line's look); helper lines (`:help`) belong to every dialect.
+fn belongs(line: &str, dialect: &Dialect) -> bool {
     let line = line.trim_start();
-    if line.starts_with(':') {
-        return true;
-    }
-    line.contains(':') == (dialect == Dialect::Smd4)
+    line.starts_with(':') || (dialect.typed_here)(line)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dialect::smd4::DIALECT as SMD4;
+    use crate::dialect::tmcl::DIALECT as TMCL;
 
     #[test]
     fn lines_of_the_shared_history_go_to_their_dialect() {
         for line in ["GAP 1, 0", "AMVP ABS, 0, 5", "136 0", "C GAP 4, 0"] {
-            assert!(belongs(line, Dialect::Tmcl), "{line}");
-            assert!(!belongs(line, Dialect::Smd4), "{line}");
+            assert!(belongs(line, &TMCL), "{line}");
+            assert!(!belongs(line, &SMD4), "{line}");
         }
         for line in ["MOTOR:RUNA", "MOTOR:VMAX,2000", "@3SYS:FW", "@3,MOTOR:STOP"] {
-            assert!(belongs(line, Dialect::Smd4), "{line}");
-            assert!(!belongs(line, Dialect::Tmcl), "{line}");
+            assert!(belongs(line, &SMD4), "{line}");
+            assert!(!belongs(line, &TMCL), "{line}");
         }
-        assert!(belongs(":help", Dialect::Tmcl) && belongs(":help", Dialect::Smd4));
+        assert!(belongs(":help", &TMCL) && belongs(":help", &SMD4));
     }
 }

@@ -5,7 +5,6 @@
 
 pub mod complete;
 pub mod editor;
-pub mod hint;
 mod history;
 
 use std::io::{IsTerminal, Write};
@@ -18,14 +17,11 @@ use rustyline::{CompletionType, Config, Editor};
 
 use crate::escape::escape_control;
 use crate::exit::Exit;
-use crate::protocol::tmcl::validate::Mode;
-use crate::session::tmcl::WireMode;
-use crate::session::{Session, SessionError, interrupt};
-use crate::shell::render::decode_reply;
+use crate::session::{SessionError, interrupt};
 use crate::shell::words::{Everyday, everyday};
 use crate::shell::{Flow, Shell};
 
-use editor::{ReplHelper, Tables};
+use editor::ReplHelper;
 
 /// Whether output may be coloured: a terminal, and NO_COLOR unset.
 pub fn color_enabled() -> bool {
@@ -49,11 +45,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
             return Exit::Link;
         }
     };
-    let tables = match shell.session_ref() {
-        Session::Tmcl(s) => Tables::Tmcl(s.profile().clone()),
-        Session::Smd4(s) => Tables::Smd4(s.spec()),
-    };
-    editor.set_helper(Some(ReplHelper::new(tables, color)));
+    editor.set_helper(Some(ReplHelper::new(shell.session_ref().grammar(), color)));
     let dialect = shell.session_ref().dialect();
     history::load(&mut editor, dialect);
     let mut out = std::io::stdout();
@@ -63,15 +55,9 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         "Type :help for help, Tab to complete, Ctrl-D to leave."
     );
     loop {
-        let mode = match shell.session_ref() {
-            Session::Tmcl(s) => match s.module_state(s.target()) {
-                Some((WireMode::Binary, _)) => Mode::Binary,
-                _ => Mode::Ascii,
-            },
-            Session::Smd4(_) => Mode::Ascii,
-        };
+        // What the last command changed (TMCL :bin) shows in completion and validation.
         if let Some(helper) = editor.helper_mut() {
-            helper.mode = mode;
+            helper.grammar = shell.session_ref().grammar();
         }
         match editor.readline(&shell.prompt()) {
             Ok(text) => {
@@ -120,15 +106,15 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
         shell.helper(text, out)
     } else {
         shell.session().execute(text).map(|reply| {
-            let decoded = decode_reply(&reply, shell.session_ref());
+            let ok = reply.ok();
             let shown = if shell.raw {
-                reply.shown()
+                reply.shown
             } else {
-                decoded.text
+                reply.decoded
             };
             // Escaped before it is coloured: the colour is ours, any other sequence is the device's.
             let shown = escape_control(&shown).into_owned();
-            let shown = match (color, decoded.ok) {
+            let shown = match (color, ok) {
                 (false, _) => shown,
                 (true, true) => shown.green().to_string(),
                 (true, false) => shown.red().to_string(),

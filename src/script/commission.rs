@@ -9,11 +9,11 @@ use std::time::Duration;
 
 use rhai::{Array, Dynamic, Engine, INT, Map};
 
+use crate::clock::SystemClock;
 use crate::commission::actions::{self, RestoreOptions};
 use crate::commission::diff::{self, Side};
 use crate::commission::record::{self, CsvFile};
 use crate::commission::{ParamDevice, ParamValue, Snapshot};
-use crate::sim::clock::SystemClock;
 
 use super::common::duration;
 use super::failure::{Fallible, device, refused};

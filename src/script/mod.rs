@@ -16,16 +16,15 @@ macro_rules! volatile {
             .register_into_engine($engine, $f)
     };
 }
+pub(crate) use volatile;
 
-mod commission;
-mod common;
+pub mod commission;
+pub(crate) mod common;
 pub mod failure;
 pub mod limits;
 pub mod memory;
 pub mod sandbox;
-mod smd4;
-mod tmcl;
-mod waiting;
+pub(crate) mod waiting;
 
 use std::cell::RefCell;
 use std::path::Path;
@@ -37,10 +36,7 @@ use rhai::{Dynamic, Engine, EvalAltResult, OptimizationLevel, Position, Scope};
 
 use crate::escape::escape_control;
 use crate::exit::Exit;
-use crate::session::Session;
 use crate::session::interrupt;
-use crate::session::smd4::Smd4Session;
-use crate::session::tmcl::TmclSession;
 
 pub use failure::ScriptFailure;
 
@@ -57,92 +53,59 @@ pub struct Report {
     pub message: String,
 }
 
-/// Runs the script at `path` with `args` over `session`; returns the session and the outcome.
-/// Its file functions reach the script's directory, the working directory and
-/// `limits.allow_dirs`.
-pub fn run_file(
-    path: &Path,
-    args: &[String],
-    session: Session,
-    limits: Limits,
-) -> (Session, Result<(), Report>) {
-    let name = path.display().to_string();
-    let sandbox = Sandbox::for_script(path, &limits.allow_dirs, limits.overwrite);
-    match std::fs::read_to_string(path) {
-        Ok(source) => run_in(&name, &source, args, session, limits, sandbox),
-        Err(e) => (
-            session,
-            Err(Report {
-                exit: Exit::Refused,
-                message: format!("cannot read script {name}: {e}"),
-            }),
-        ),
-    }
-}
-
-/// Runs script text; `name` labels messages. Its file functions reach the working directory and
-/// `limits.allow_dirs`.
-pub fn run_source(
-    name: &str,
-    source: &str,
-    args: &[String],
-    session: Session,
-    limits: Limits,
-) -> (Session, Result<(), Report>) {
-    let dirs = std::iter::once(Path::new(".")).chain(limits.allow_dirs.iter().map(|d| d.as_path()));
-    let sandbox = Sandbox::new(dirs, limits.overwrite);
-    run_in(name, source, args, session, limits, sandbox)
-}
-
-fn run_in(
-    name: &str,
-    source: &str,
-    args: &[String],
-    session: Session,
-    limits: Limits,
-    sandbox: Sandbox,
-) -> (Session, Result<(), Report>) {
-    let script = Script {
-        name,
-        source,
-        args,
-        limits,
-        sandbox: Rc::new(sandbox),
-    };
-    match session {
-        Session::Tmcl(s) => {
-            let (s, result) = script.run(s, TmclSession::annotate, |engine, s, files| {
-                tmcl::register(engine, s, files);
-                commission::register(engine, s, files);
-            });
-            (Session::Tmcl(s), result)
-        }
-        Session::Smd4(s) => {
-            let (s, result) = script.run(s, Smd4Session::annotate, |engine, s, files| {
-                smd4::register(engine, s);
-                commission::register(engine, s, files);
-            });
-            (Session::Smd4(s), result)
-        }
-    }
-}
-
-/// The functions a dialect adds to the engine: over the session, with the sandbox for files.
-type Registrar<S> = fn(&mut Engine, &Rc<RefCell<S>>, &Rc<Sandbox>);
-
-/// A script about to run.
-struct Script<'a> {
-    name: &'a str,
-    source: &'a str,
-    args: &'a [String],
+/// A script ready to run: its text, its arguments, its limits and the files it may reach.
+pub struct Script {
+    name: String,
+    source: String,
+    args: Vec<String>,
     limits: Limits,
     sandbox: Rc<Sandbox>,
 }
 
-impl Script<'_> {
-    /// Runs over a session of type `S`: the engine holds the session for the run and gives it
-    /// back when dropped.
-    fn run<S: 'static>(
+/// The functions a dialect adds to the engine: over the session, with the sandbox for files.
+pub type Registrar<S> = fn(&mut Engine, &Rc<RefCell<S>>, &Rc<Sandbox>);
+
+impl Script {
+    /// The script at `path` with `args`; its file functions reach the script's directory, the
+    /// working directory and `limits.allow_dirs`.
+    pub fn from_file(path: &Path, args: &[String], limits: Limits) -> Result<Script, Report> {
+        let name = path.display().to_string();
+        let sandbox = Sandbox::for_script(path, &limits.allow_dirs, limits.overwrite);
+        match std::fs::read_to_string(path) {
+            Ok(source) => Ok(Script {
+                name,
+                source,
+                args: args.to_vec(),
+                limits,
+                sandbox: Rc::new(sandbox),
+            }),
+            Err(e) => Err(Report {
+                exit: Exit::Refused,
+                message: format!("cannot read script {name}: {e}"),
+            }),
+        }
+    }
+
+    /// Script text; `name` labels messages. Its file functions reach the working directory and
+    /// `limits.allow_dirs`.
+    pub fn from_source(name: &str, source: &str, args: &[String], limits: Limits) -> Script {
+        let dirs =
+            std::iter::once(Path::new(".")).chain(limits.allow_dirs.iter().map(|d| d.as_path()));
+        let sandbox = Sandbox::new(dirs, limits.overwrite);
+        Script {
+            name: name.to_string(),
+            source: source.to_string(),
+            args: args.to_vec(),
+            limits,
+            sandbox: Rc::new(sandbox),
+        }
+    }
+
+    /// Runs over a session of type `S`, with the functions `register` adds (a dialect's device
+    /// functions) besides those every script has; `log` lines go to the transcript through
+    /// `annotate` (to stderr when none is written). The engine holds the session for the run
+    /// and gives it back when dropped.
+    pub fn run<S: 'static>(
         &self,
         session: S,
         annotate: fn(&mut S, &str) -> bool,
@@ -160,7 +123,7 @@ impl Script<'_> {
                 }
             });
             register(&mut engine, &shared, &self.sandbox);
-            execute(&engine, self.name, self.source, self.args)
+            execute(&engine, &self.name, &self.source, &self.args)
         };
         let result = if watchdog.stop(result.is_ok()) && result.is_err() {
             Err(Report {

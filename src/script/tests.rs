@@ -2,14 +2,16 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
+use crate::clock::ManualClock;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::sim::{Bus, BusOptions};
 use crate::link::{Link, LinkError};
-use crate::profile::Profile;
 use crate::session::SessionOptions;
-use crate::sim::clock::ManualClock;
 use crate::sim::inprocess::SimLink;
-use crate::sim::tmcl::{Bus, BusOptions};
 
 use super::*;
+use crate::dialect::tmcl::session::TmclSession;
+use crate::shell::run_source;
 
 /// A link that counts what is sent through it.
 struct Counting {
@@ -50,7 +52,7 @@ fn device_functions_never_run_while_compiling_even_at_full_optimisation() {
     let shared = Rc::new(RefCell::new(session));
     let mut engine = base_engine(&Limits::default(), None, Arc::default());
     let sandbox = Rc::new(Sandbox::new([std::path::Path::new(".")], false));
-    tmcl::register(&mut engine, &shared, &sandbox);
+    crate::dialect::tmcl::script::register(&mut engine, &shared, &sandbox);
     engine.set_optimization_level(OptimizationLevel::Full);
     let before = sent.load(Ordering::SeqCst);
     let ast = engine
@@ -76,7 +78,7 @@ fn run_source_gives_the_session_back_and_reports_positions() {
         "t.rhai",
         "sap(6, 0, 4);\nassert_eq(gap(6, 0), 5);",
         &[],
-        Session::Tmcl(session),
+        Box::new(session),
         Limits::default(),
     );
     let report = result.unwrap_err();
@@ -85,11 +87,11 @@ fn run_source_gives_the_session_back_and_reports_positions() {
         report.message,
         "t.rhai:2:1: assert_eq failed: left = 4, right = 5"
     );
-    let Session::Tmcl(mut session) = session else {
+    let Ok(mut session) = session.into_any().downcast::<TmclSession>() else {
         panic!("TMCL session back")
     };
     assert_eq!(
-        session.execute("GAP 6, 0").unwrap().value(),
+        session.exchange_line("GAP 6, 0").unwrap().value(),
         Some(4),
         "the session still works"
     );
@@ -99,13 +101,7 @@ fn run_source_gives_the_session_back_and_reports_positions() {
 fn errors_inside_script_functions_keep_their_exit_code() {
     let (session, _) = session();
     let source = "fn check(v) { assert_eq(v, 2); }\ncheck(1);";
-    let (_, result) = run_source(
-        "f.rhai",
-        source,
-        &[],
-        Session::Tmcl(session),
-        Limits::default(),
-    );
+    let (_, result) = run_source("f.rhai", source, &[], Box::new(session), Limits::default());
     let report = result.unwrap_err();
     assert_eq!(report.exit, Exit::DeviceError);
     assert!(

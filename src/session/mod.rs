@@ -4,21 +4,16 @@
 //! stopping motors it set moving when a run is aborted. The REPL, `-c` lines, piped stdin and
 //! Rhai scripts all go through the same session.
 
-mod any;
-mod guard;
+pub mod core;
 pub mod interrupt;
-mod rx;
-pub mod smd4;
-pub mod tmcl;
+pub(crate) mod rx;
 pub mod transcript;
-mod wire;
+pub(crate) mod wire;
 
 use std::time::Duration;
 
 use crate::exit::{Exit, ExitStatus};
-use crate::protocol::tmcl::InputError;
 
-pub use any::{Reply, Session};
 pub use transcript::Transcript;
 
 /// How long a stop (MST, MOTOR:STOP) waits for its answer besides the exchange's wire time. Stops
@@ -56,9 +51,9 @@ impl Default for SessionOptions {
 /// Why a request failed.
 #[derive(Debug, thiserror::Error)]
 pub enum SessionError {
-    /// The line was refused before sending.
+    /// The line was refused before sending (TMCL's parser or validator says why).
     #[error("{0}")]
-    Refused(#[from] InputError),
+    Refused(String),
     /// A helper command or argument was wrong.
     #[error("{0}")]
     Usage(String),
@@ -128,5 +123,13 @@ impl From<crate::link::LinkError> for SessionError {
             LinkError::Open(message) => SessionError::Link(message),
             LinkError::Timeout => SessionError::Link("timed out".into()),
         }
+    }
+}
+
+/// Output that cannot be written (a helper's table, a report) ends the command as a link
+/// failure: the user can see nothing more of it.
+impl From<std::io::Error> for SessionError {
+    fn from(e: std::io::Error) -> Self {
+        SessionError::Link(format!("output: {e}"))
     }
 }

@@ -22,7 +22,7 @@ use crate::exit::{Exit, ExitStatus};
 
 mod header;
 
-pub use header::{HEADER_TAG, Header, dialect_name, split_quoted};
+pub use header::{HEADER_TAG, HEADER_TITLE, Header, split_quoted};
 
 /// Direction or kind of a transcript line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -209,13 +209,14 @@ pub fn unescape(quoted: &str) -> Option<Vec<u8>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::profile::Profile;
-    use crate::protocol::Dialect;
+    use crate::dialect::smd4::config::header as smd4_header;
+    use crate::dialect::tmcl::config::header as tmcl_header;
+    use crate::dialect::tmcl::profile::Profile;
 
     #[cfg(target_os = "linux")]
     #[test]
     fn a_transcript_that_cannot_be_written_says_so_once() {
-        let header = Header::new(Dialect::Tmcl, &Profile::builtin());
+        let header = tmcl_header(&Profile::builtin());
         let error = Transcript::open(Path::new("/dev/full"), &header).unwrap_err();
         assert_eq!(error.exit(), Exit::Link);
         assert!(
@@ -243,7 +244,7 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("t.log");
         let _ = std::fs::remove_file(&path);
-        let header = Header::new(Dialect::Tmcl, &Profile::builtin());
+        let header = tmcl_header(&Profile::builtin());
         let mut t = Transcript::open(&path, &header).unwrap();
         t.record(Entry::Sent, b"AGAP 1, 0\r", "GAP 1, 0 to module A")
             .unwrap();
@@ -251,7 +252,7 @@ mod tests {
             .unwrap();
         t.record(Entry::Note, b"", "entered ASCII mode").unwrap();
         drop(t);
-        let smd4 = Header::new(Dialect::Smd4, &Profile::builtin());
+        let smd4 = smd4_header();
         let mut again = Transcript::open(&path, &smd4).unwrap();
         again.record(Entry::Note, b"", "second session").unwrap();
         let text = std::fs::read_to_string(&path).unwrap();

@@ -236,7 +236,7 @@ fn step(
     let time = shell.timestamps.then(super::time_of_day);
     let stamp = time.as_ref().map(|t| format!("{t} ")).unwrap_or_default();
     let shown = match output {
-        Output::Reply => format!("{stamp}{}", escape_control(&reply.shown())),
+        Output::Reply => format!("{stamp}{}", escape_control(&reply.shown)),
         Output::Value => format!("{stamp}{}", escape_control(&format::value(&reply))),
         Output::Json => {
             let mut object = format::reply_json(number, text, &reply, exit);

@@ -1,24 +1,22 @@
-//! What the REPL and non-interactive use share: a session of either dialect plus display
-//! settings, and the helper commands (`:help`, `:target`, `:run` …).
+//! What the REPL and non-interactive use share: a session of any dialect plus display settings,
+//! and the helper commands (`:help`, `:target`, `:run` …).
 
 pub mod batch;
+pub mod commission;
 mod help;
 pub mod helpers;
-pub mod render;
-mod smd4_helpers;
-mod tmcl_helpers;
+mod script;
 pub mod words;
 
-use std::io::{self, Write};
+use std::io::Write;
 use std::path::Path;
 
+use crate::dialect::DialectSession;
 use crate::exit::{Exit, ExitStatus};
-use crate::protocol::tmcl::line::address_char;
-use crate::script::{self, Limits};
-use crate::session::smd4::drive_name;
-use crate::session::tmcl::WireMode;
-use crate::session::transcript::Header;
-use crate::session::{Session, SessionError, Transcript, interrupt};
+use crate::script::Limits;
+use crate::session::{SessionError, Transcript, interrupt};
+
+pub use script::{run_file, run_source};
 
 /// Whether to go on after a helper command.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -32,18 +30,18 @@ pub enum Flow {
 /// A session and how its results are shown.
 pub struct Shell {
     /// The conversation with the modules; lent out while a script runs (`:source`).
-    session: Option<Session>,
+    session: Option<Box<dyn DialectSession>>,
     /// Show replies exactly as received (`:raw`).
     pub raw: bool,
     /// Put the time before each reply on screen (`:log time on`).
     pub timestamps: bool,
     /// What the commissioning helpers remember (the last recording).
-    pub commission: crate::commission::shell::State,
+    pub commission: commission::State,
 }
 
 impl Shell {
     /// A shell over an open session.
-    pub fn new(session: Session) -> Self {
+    pub fn new(session: Box<dyn DialectSession>) -> Self {
         Shell {
             session: Some(session),
             raw: false,
@@ -53,21 +51,24 @@ impl Shell {
     }
 
     /// The session.
-    pub fn session(&mut self) -> &mut Session {
+    pub fn session(&mut self) -> &mut dyn DialectSession {
         self.session
-            .as_mut()
+            .as_deref_mut()
             .expect("the session is back after every script run")
     }
 
     /// The session, read-only.
-    pub fn session_ref(&self) -> &Session {
+    pub fn session_ref(&self) -> &dyn DialectSession {
         self.session
-            .as_ref()
+            .as_deref()
             .expect("the session is back after every script run")
     }
 
     /// Lends the session to `f` by value (scripts own the session while they run).
-    pub fn lend<T>(&mut self, f: impl FnOnce(Session) -> (Session, T)) -> T {
+    pub fn lend<T>(
+        &mut self,
+        f: impl FnOnce(Box<dyn DialectSession>) -> (Box<dyn DialectSession>, T),
+    ) -> T {
         let session = self
             .session
             .take()
@@ -77,22 +78,9 @@ impl Shell {
         result
     }
 
-    /// The prompt: TMCL shows the target's address character and binary mode; SMD4 the prefix.
+    /// The prompt: which module typed lines go to, and how (the dialect says).
     pub fn prompt(&self) -> String {
-        match self.session_ref() {
-            Session::Tmcl(session) => {
-                let target = session.target();
-                let c = address_char(target).unwrap_or('?');
-                match session.module_state(target) {
-                    Some((WireMode::Binary, _)) => format!("{c}[bin]> "),
-                    _ => format!("{c}> "),
-                }
-            }
-            Session::Smd4(session) => match session.address() {
-                Some(_) => format!("smd4 {}> ", drive_name(session.address())),
-                None => "smd4> ".to_string(),
-            },
-        }
+        self.session_ref().prompt()
     }
 
     /// Runs a helper command line (starting with `:`), writing its output to `out`.
@@ -104,7 +92,7 @@ impl Shell {
         };
         let dialect = self.session_ref().dialect();
         let helper = helpers::find(name, dialect).map_err(SessionError::Usage)?;
-        if helper.arg == helpers::ArgKind::None && !arg.is_empty() {
+        if helper.arg == crate::dialect::ArgKind::None && !arg.is_empty() {
             return Err(SessionError::Usage(format!(
                 "{} takes no argument",
                 helper.usage
@@ -119,20 +107,11 @@ impl Shell {
             }
             "source" => self.source(arg, out)?,
             "snapshot" | "scan" | "watch" | "record" | "plot" => {
-                let session = self.session.as_mut().expect("the session is back");
-                crate::commission::shell::helper(
-                    session,
-                    &mut self.commission,
-                    helper.name,
-                    arg,
-                    out,
-                )?
+                let session = self.session.as_deref_mut().expect("the session is back");
+                commission::helper(session, &mut self.commission, helper.name, arg, out)?
             }
             "quit" => return Ok(Flow::Quit),
-            name => match self.session() {
-                Session::Tmcl(session) => tmcl_helpers::run(session, helper, arg, out)?,
-                Session::Smd4(session) => smd4_helpers::run(session, name, arg, out)?,
-            },
+            _ => self.session().run_helper(helper, arg, out)?,
         }
         Ok(Flow::Continue)
     }
@@ -144,8 +123,8 @@ impl Shell {
             .next()
             .ok_or_else(|| SessionError::Usage("usage: :source SCRIPT.rhai [ARGS...]".into()))?;
         let args: Vec<String> = words.map(String::from).collect();
-        let outcome = self
-            .lend(|session| script::run_file(Path::new(path), &args, session, Limits::default()));
+        let outcome =
+            self.lend(|session| run_file(Path::new(path), &args, session, Limits::default()));
         let Err(report) = outcome else { return Ok(()) };
         interrupt::take();
         for message in self.session().stop_motion() {
@@ -180,10 +159,7 @@ impl Shell {
             session.set_transcript(None);
             writeln!(out, "transcript stopped")?;
         } else {
-            let header = match session {
-                Session::Tmcl(s) => Header::tmcl(s.profile()),
-                Session::Smd4(_) => Header::smd4(),
-            };
+            let header = session.header();
             let transcript =
                 Transcript::open(Path::new(arg), &header).map_err(|e| match e.exit() {
                     Exit::Refused => SessionError::Usage(e.to_string()),
@@ -216,10 +192,4 @@ pub fn time_of_day() -> String {
     let now = humantime::format_rfc3339_millis(std::time::SystemTime::now()).to_string();
     now.split_once('T')
         .map_or(now.clone(), |(_, time)| time.to_string())
-}
-
-impl From<io::Error> for SessionError {
-    fn from(e: io::Error) -> Self {
-        SessionError::Link(format!("output: {e}"))
-    }
 }

@@ -34,8 +34,8 @@ const WORDS: &[&str] = &["help", "exit", "quit", "clear", "cls"];
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::profile::Profile;
-    use crate::protocol::smd4::Smd4Spec;
+    use crate::dialect::smd4::protocol::Smd4Spec;
+    use crate::dialect::tmcl::profile::Profile;
 
     #[test]
     fn the_words_mean_their_helpers() {

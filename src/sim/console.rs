@@ -5,30 +5,14 @@
 use std::sync::Arc;
 use std::time::Duration;
 
-use super::clock::{Clock, ManualClock};
 use super::inprocess::SharedDevice;
+use crate::clock::{Clock, ManualClock};
 
-/// The console commands, for `--help` and `help`.
-pub const HELP: &str = "\
-Console commands (one per line on stdin; each is answered by one line, `ok ...` or `error: ...`):
- TMCL module bus (--protocol tmcl):
-  input PORT 0|1                     set a digital input (GIO bank 0)
-  analog PORT VALUE                  set an analog input (GIO bank 1, 0..1023)
-  switch left|right|home POS|off     move a virtual switch (physical microsteps) or disconnect it
-  output PORT                        show an output (SIO bank 2)
-  motor                              show position, target, velocity, target reached
-  @N COMMAND                         any of the above for the module with factory address N
- SMD4 drive (--protocol smd4):
-  limit pos|neg 0|1                  set the level of a limit input (active after LIMIT:POL+/-)
-  exten 0|1                          set the external enable input
-  joystick 0|1                       plug a joystick in or out
-  fault BIT|NAME                     latch an EFLAGS bit (e.g. 2 or TempOver); the motor stops
-  flash-failure on|off               make STORE fail with -5 (worn-out flash) or work again
-  power-cycle                        restart from the stored configuration
-  motor                              show position, velocity, standby, target velocity reached
-  flags                              show SFLAGS, EFLAGS and whether addressing mode is on
-  setting MNEMONIC                   show a working setting (e.g. COMS:SERIAL:SLAVEADDR)
- Both:
+/// What every console says before the commands of its simulator.
+const HELP_TITLE: &str = "Console commands (one per line on stdin; each is answered by one line, `ok ...` or `error: ...`):";
+
+/// The commands every simulator's console has (faults, time, quitting).
+const SHARED_HELP: &str = " Both:
   drop RATE | corrupt RATE           drop or corrupt replies from now on (RATE 0..1)
   delay RATE MS                      hold replies back by MS milliseconds
   silent on|off                      stop or resume answering (commands still execute)
@@ -36,6 +20,17 @@ Console commands (one per line on stdin; each is answered by one line, `ok ...` 
   advance DURATION                   with --manual-clock: let time pass (2s, 250ms, 1.5; plain = s)
   time                               show the simulation time
   quit                               end the simulator";
+
+/// The console commands, for `tmclsh sim --help` and `help`: those of each simulator (a dialect's
+/// section: a heading line, then two-space indented commands), then those every console has.
+pub fn help<'a>(sections: impl IntoIterator<Item = &'a str>) -> String {
+    let mut text = HELP_TITLE.to_string();
+    for section in sections.into_iter().chain([SHARED_HELP]) {
+        text.push('\n');
+        text.push_str(section);
+    }
+    text
+}
 
 /// What a console line asks for.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -65,19 +60,24 @@ pub struct Console {
     device: SharedDevice,
     clock: Arc<dyn Clock>,
     manual: Option<Arc<ManualClock>>,
+    /// The text of [`help`], whose command names `help` lists.
+    help: String,
 }
 
 impl Console {
-    /// `manual` is the clock when time only moves on `advance`.
+    /// `manual` is the clock when time only moves on `advance`; `help` is the text [`help`]
+    /// made, whose command names the console's `help` lists.
     pub fn new(
         device: SharedDevice,
         clock: Arc<dyn Clock>,
         manual: Option<Arc<ManualClock>>,
+        help: String,
     ) -> Self {
         Console {
             device,
             clock,
             manual,
+            help,
         }
     }
 
@@ -87,7 +87,7 @@ impl Console {
         match words.as_slice() {
             [] => Answer::Ok(String::new()),
             ["quit" | "exit"] => Answer::Quit,
-            ["help"] => Answer::Ok(summary()),
+            ["help"] => Answer::Ok(summary(&self.help)),
             ["time"] => Answer::Ok(format!("{:.6} s", self.clock.now().as_secs_f64())),
             ["advance", amount] => match (&self.manual, parse_duration(amount)) {
                 (None, _) => Answer::Error("advance needs --manual-clock".into()),
@@ -112,9 +112,9 @@ impl Console {
 
 /// The answer to `help`: the command names on one line (the console answers every command with
 /// one line; `tmclsh sim --help` describes them).
-fn summary() -> String {
+fn summary(help: &str) -> String {
     let mut names: Vec<&str> = Vec::new();
-    for line in HELP.lines().filter(|l| l.starts_with("  ")) {
+    for line in help.lines().filter(|l| l.starts_with("  ")) {
         let syntax = line.trim().split("  ").next().unwrap_or_default();
         for form in syntax.split(" | ") {
             let name = form.split_whitespace().next().unwrap_or_default();
@@ -168,12 +168,18 @@ mod tests {
     use std::sync::Mutex;
 
     use super::*;
-    use crate::sim::tmcl::Bus;
+    use crate::dialect::tmcl::sim::Bus;
 
     fn console(manual: bool) -> (Console, Arc<ManualClock>) {
         let clock = Arc::new(ManualClock::new());
         let device: SharedDevice = Arc::new(Mutex::new(Bus::builtin()));
-        let console = Console::new(device, clock.clone(), manual.then(|| clock.clone()));
+        let sections = crate::dialect::DIALECTS.iter().map(|d| d.console_help);
+        let console = Console::new(
+            device,
+            clock.clone(),
+            manual.then(|| clock.clone()),
+            help(sections),
+        );
         (console, clock)
     }
 

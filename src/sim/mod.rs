@@ -6,15 +6,12 @@
 //! [`crate::link::Link`]; decorators add line pacing and fault injection to any device.
 
 mod builtin;
-pub mod clock;
 pub mod console;
 pub mod fault;
 pub mod inprocess;
 pub mod pacing;
 #[cfg(unix)]
 pub mod serve;
-pub mod smd4;
-pub mod tmcl;
 
 pub use builtin::builtin_link;
 

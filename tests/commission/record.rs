@@ -5,14 +5,15 @@
 use std::sync::Arc;
 use std::time::Duration;
 
+use tmclsh::clock::{Clock, ManualClock};
 use tmclsh::commission::ParamDevice;
 use tmclsh::commission::record::{self, Plan, Recording};
-use tmclsh::profile::Profile;
+use tmclsh::dialect::session::DialectSession;
+use tmclsh::dialect::tmcl::profile::Profile;
+use tmclsh::dialect::tmcl::session::TmclSession;
+use tmclsh::dialect::tmcl::sim::Bus;
 use tmclsh::session::SessionOptions;
-use tmclsh::session::tmcl::TmclSession;
-use tmclsh::sim::clock::{Clock, ManualClock};
 use tmclsh::sim::inprocess::SimLink;
-use tmclsh::sim::tmcl::Bus;
 
 use super::{arg, expect};
 use crate::sim::Sim;

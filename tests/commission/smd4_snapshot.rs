@@ -8,7 +8,7 @@ use std::path::Path;
 use std::process::Output;
 
 use tmclsh::commission::{ParamValue, Scope, Snapshot, Tolerance};
-use tmclsh::protocol::smd4::{CommandSpec, Smd4Spec};
+use tmclsh::dialect::smd4::protocol::{CommandSpec, Smd4Spec};
 
 use super::arg;
 use crate::smd4::{Drive, Via, assert_exit, client, lines};

@@ -12,10 +12,10 @@ use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use tmclsh::profile::Profile;
+use tmclsh::dialect::smd4::sim::{Smd4Options, Smd4Sim};
+use tmclsh::dialect::tmcl::profile::Profile;
+use tmclsh::dialect::tmcl::sim::{Bus, BusOptions};
 use tmclsh::sim::Device;
-use tmclsh::sim::smd4::{Smd4Options, Smd4Sim};
-use tmclsh::sim::tmcl::{Bus, BusOptions};
 
 use super::HANG_GUARD;
 

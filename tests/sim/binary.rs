@@ -1,7 +1,7 @@
 //! Binary TMCL over a real pty and over loopback TCP.
 
-use tmclsh::protocol::tmcl::Status;
-use tmclsh::protocol::tmcl::frame::decode_version_string;
+use tmclsh::dialect::tmcl::protocol::Status;
+use tmclsh::dialect::tmcl::protocol::frame::decode_version_string;
 
 use super::{Sim, decode, frame};
 

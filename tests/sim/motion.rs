@@ -1,7 +1,7 @@
 //! Motion over a pty with a manual clock: time passes only when the console says so, so
 //! positions and durations are exact.
 
-use tmclsh::protocol::tmcl::Status;
+use tmclsh::dialect::tmcl::protocol::Status;
 
 use super::{Sim, decode};
 

@@ -10,8 +10,7 @@ use std::io;
 
 use serde_json::{Map, Value, json};
 
-use crate::session::Reply;
-use crate::session::tmcl::Answer;
+use crate::dialect::Reply;
 
 /// What stdout gets for each line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -25,73 +24,18 @@ pub enum Output {
     Json,
 }
 
-/// Only the value of a reply: TMCL the number (or the version string of 136), SMD4 the data items
-/// as received, comma-separated, with any further lines of a listing after them. Empty when the
-/// module sends no reply.
+/// Only the value of a reply (the dialect says what that is: TMCL the number, SMD4 the items).
 pub fn value(reply: &Reply) -> String {
-    match reply {
-        Reply::Tmcl(x) => match &x.answer {
-            Answer::Reply { value, .. } => value.to_string(),
-            Answer::Version(version) => version.clone(),
-            Answer::Nothing => String::new(),
-        },
-        Reply::Smd4(x) => match &x.response {
-            None => String::new(),
-            Some(r) => {
-                let mut text = r.data_strings().join(",");
-                for line in &r.lines {
-                    text.push('\n');
-                    text.push_str(line);
-                }
-                text
-            }
-        },
-    }
+    reply.forms.value()
 }
 
-/// The JSON object of a line that got a reply: where it went, whether it succeeded, the status
-/// (TMCL) or flags and error (SMD4), the value or items, and the reply as received.
+/// The JSON object of a line that got a reply: its number and input, the dialect's fields (where
+/// it went, whether it succeeded, status or flags, value or items, the reply as received), and
+/// the exit code it means.
 pub fn reply_json(number: usize, input: &str, reply: &Reply, exit: u8) -> Value {
     let mut object = head(number, input);
-    match reply {
-        Reply::Tmcl(x) => {
-            let (status, value) = match &x.answer {
-                Answer::Reply { status, value } => (json!(status.code()), json!(value)),
-                Answer::Version(version) => (Value::Null, json!(version)),
-                Answer::Nothing => (Value::Null, Value::Null),
-            };
-            object.insert("module".into(), json!(x.module));
-            object.insert("sent".into(), json!(x.sent));
-            object.insert("ok".into(), json!(x.ok()));
-            object.insert("status".into(), status);
-            object.insert("value".into(), value);
-            object.insert("raw".into(), json!(x.raw));
-        }
-        Reply::Smd4(x) => {
-            let response = x.response.as_ref();
-            let error = response.and_then(|r| r.error.as_ref()).map(|e| {
-                json!({
-                    "code": e.code.code(),
-                    "meaning": e.code.meaning(),
-                    "text": e.text,
-                })
-            });
-            object.insert("module".into(), json!(x.request.address));
-            object.insert("sent".into(), json!(x.sent));
-            object.insert("ok".into(), json!(x.ok()));
-            object.insert("sflags".into(), json!(response.map(|r| r.sflags.0)));
-            object.insert("eflags".into(), json!(response.map(|r| r.eflags.0)));
-            object.insert("error".into(), error.unwrap_or(Value::Null));
-            object.insert(
-                "items".into(),
-                json!(response.map(|r| r.data_strings()).unwrap_or_default()),
-            );
-            object.insert(
-                "lines".into(),
-                json!(response.map(|r| r.lines.clone()).unwrap_or_default()),
-            );
-            object.insert("raw".into(), json!(x.raw()));
-        }
+    for (key, value) in reply.forms.json_fields() {
+        object.insert(key.into(), value);
     }
     object.insert("exit".into(), json!(exit));
     Value::Object(object)

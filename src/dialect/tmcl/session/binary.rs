@@ -1,0 +1,208 @@
+//! One binary exchange in direct mode: a 9-byte command frame out, a 9-byte reply frame back
+//! (or the version string of 136 type 0, or nothing after 137).
+
+use std::time::Instant;
+
+use crate::dialect::tmcl::protocol::frame::{
+    CommandFrame, FRAME_LEN, ReplyFrame, decode_version_string, hex,
+};
+use crate::dialect::tmcl::protocol::line::{Op, address_char};
+use crate::dialect::tmcl::protocol::{Instruction, Status};
+
+use super::{Answer, Exchange, TmclSession};
+use crate::session::SessionError;
+use crate::session::transcript::Entry;
+
+impl TmclSession {
+    /// Sends one instruction as a binary frame and reads its reply.
+    pub(super) fn binary_request(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<Exchange, SessionError> {
+        self.exchange(module, false, |s| s.binary_exchange(module, instruction))
+    }
+
+    fn binary_exchange(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<Exchange, SessionError> {
+        let sent = self.describe_instruction(&instruction);
+        let frame = CommandFrame {
+            address: module,
+            instruction,
+        }
+        .encode();
+        self.core
+            .wire
+            .send(&frame, format_args!("{sent} to module {module} (binary)"))?;
+        let exchange = |answer, raw| Exchange {
+            module,
+            sent: sent.clone(),
+            op: Some(Op::Command(instruction)),
+            answer,
+            raw,
+        };
+        if instruction.command == 137 {
+            return Ok(exchange(Answer::Nothing, String::new()));
+        }
+        let deadline = Instant::now() + self.core.options.timeout;
+        loop {
+            while self.core.wire.rx.len() >= FRAME_LEN {
+                let mut raw = [0u8; FRAME_LEN];
+                raw.copy_from_slice(&self.core.wire.rx.bytes()[..FRAME_LEN]);
+                if instruction.command == 136 && instruction.type_ == 0 {
+                    let (_, text) = decode_version_string(&raw);
+                    self.settle_binary(module, &raw, deadline)?;
+                    self.core
+                        .wire
+                        .log_received(FRAME_LEN, format_args!("version {text}"));
+                    return Ok(exchange(Answer::Version(text.clone()), text));
+                }
+                let reply = match ReplyFrame::decode(&raw) {
+                    Ok(reply) => reply,
+                    Err(e) => {
+                        return Err(self.binary_noise(
+                            "bad checksum",
+                            format!("corrupted reply from module {module}: {e}"),
+                        ));
+                    }
+                };
+                if reply.command == 138 && reply.status == Status::PositionReachedEvent {
+                    self.core.wire.notices.push(format!(
+                        "module {}: target position reached (event)",
+                        reply.module
+                    ));
+                    self.core.wire.log_received(
+                        FRAME_LEN,
+                        "target position reached event, not a reply; discarded",
+                    );
+                    continue;
+                }
+                if reply.module != module || reply.command != instruction.command {
+                    let kind = format!("a reply frame not for module {module}'s request");
+                    self.core.wire.discard(FRAME_LEN, &kind);
+                    continue;
+                }
+                if let Status::Other(code) = reply.status {
+                    return Err(self.binary_noise(
+                        "unknown status",
+                        format!(
+                            "line noise: module {module} answered with status {code}, which no \
+                             module sends; not taken"
+                        ),
+                    ));
+                }
+                self.settle_binary(module, &raw, deadline)?;
+                self.core.wire.log_received(
+                    FRAME_LEN,
+                    format_args!(
+                        "from module {}: {}, value {}",
+                        reply.module, reply.status, reply.value
+                    ),
+                );
+                return Ok(exchange(
+                    Answer::Reply {
+                        status: reply.status,
+                        value: reply.value,
+                    },
+                    binary_reply_text(&reply),
+                ));
+            }
+            if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
+                let partial = self.core.wire.rx.clear();
+                if !partial.is_empty() {
+                    self.core
+                        .wire
+                        .log(Entry::Received, &partial, "incomplete frame, no reply");
+                }
+                return Err(SessionError::Timeout {
+                    module: address_char(module).unwrap_or('?').to_string(),
+                    timeout: self.core.options.timeout,
+                    hint: if partial.is_empty() {
+                        String::new()
+                    } else {
+                        format!(" (received only {})", hex(&partial))
+                    },
+                });
+            }
+        }
+    }
+
+    /// Checks what follows the reply frame at the front of the buffer: nothing, or whole event
+    /// frames. Anything else — a frame that is longer than nine bytes, a second reply — is noise.
+    fn settle_binary(
+        &mut self,
+        module: u8,
+        reply: &[u8; FRAME_LEN],
+        deadline: Instant,
+    ) -> Result<(), SessionError> {
+        let hard_end = deadline.max(Instant::now() + self.core.wire.settle_time());
+        let mut pos = FRAME_LEN;
+        loop {
+            while self.core.wire.rx.len() >= pos + FRAME_LEN {
+                let mut frame = [0u8; FRAME_LEN];
+                frame.copy_from_slice(&self.core.wire.rx.bytes()[pos..pos + FRAME_LEN]);
+                match ReplyFrame::decode(&frame) {
+                    Ok(r) if r.command == 138 && r.status == Status::PositionReachedEvent => {
+                        self.core.wire.notices.push(format!(
+                            "module {}: target position reached (event)",
+                            r.module
+                        ));
+                        pos += FRAME_LEN;
+                    }
+                    _ => return Err(self.trailing_noise(module, reply)),
+                }
+            }
+            let partial = self.core.wire.rx.len() > pos;
+            if Instant::now() >= hard_end || !self.core.wire.await_more(hard_end)? {
+                if partial {
+                    return Err(self.trailing_noise(module, reply));
+                }
+                return Ok(());
+            }
+        }
+    }
+
+    fn trailing_noise(&mut self, module: u8, reply: &[u8; FRAME_LEN]) -> SessionError {
+        let rest = &self.core.wire.rx.bytes()[FRAME_LEN..];
+        let after = hex(&rest[..rest.len().min(3 * FRAME_LEN)]);
+        self.binary_noise(
+            "a reply followed by more data",
+            format!(
+                "line noise: the reply {} from module {module} was followed by {after}; not taken",
+                hex(reply)
+            ),
+        )
+    }
+
+    /// Ends a binary exchange on line noise, logging what was received.
+    fn binary_noise(&mut self, what: &str, message: String) -> SessionError {
+        let bytes = self.core.wire.rx.clear();
+        self.core.wire.log(
+            Entry::Received,
+            &bytes,
+            format_args!("{what}: line noise, discarded"),
+        );
+        self.core.wire.note(&message);
+        SessionError::Link(message)
+    }
+}
+
+/// A binary reply in the ASCII reply format (`BA 100 -5000`), so one-shot output looks the same in
+/// both modes; addresses without a letter are shown as numbers.
+pub fn binary_reply_text(reply: &ReplyFrame) -> String {
+    let name = |a: u8| {
+        address_char(a)
+            .map(String::from)
+            .unwrap_or_else(|| format!("<{a}>"))
+    };
+    format!(
+        "{}{} {} {}",
+        name(reply.host),
+        name(reply.module),
+        reply.status.code(),
+        reply.value
+    )
+}
