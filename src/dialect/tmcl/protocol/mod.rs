@@ -1,11 +1,13 @@
 //! The TMCL protocol of Trinamic modules: binary frames, the ASCII interface's line and reply
-//! grammar, and validation against the profile's tables ([`super::profile`], which holds the
-//! command table). Pure code: bytes and text in, values out.
+//! grammar, the operand grammar typed lines and programs share, and validation against the
+//! profile's tables ([`super::profile`], which holds the command table). Pure code: bytes and
+//! text in, values out.
 
 pub mod error;
 pub mod frame;
 pub mod instruction;
 pub mod line;
+pub mod operands;
 pub mod reply;
 pub mod status;
 pub mod syntax;
