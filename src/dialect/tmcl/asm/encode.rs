@@ -254,10 +254,7 @@ fn raw(
             .into(),
         ));
     }
-    let mut out = Instruction {
-        command,
-        ..Instruction::default()
-    };
+    let mut out = Instruction::new(command, 0, 0, 0);
     let fields = [
         (Field::Type, "<type>"),
         (Field::Motor, "<motor>"),

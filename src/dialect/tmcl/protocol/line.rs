@@ -149,7 +149,10 @@ fn write_instruction(out: &mut String, instruction: &Instruction, profile: &Prof
         let _ = write!(
             out,
             "{} {}, {}, {}",
-            instruction.command, instruction.type_, instruction.motor, instruction.value
+            instruction.command.number(),
+            instruction.type_,
+            instruction.motor,
+            instruction.value
         );
         return;
     };

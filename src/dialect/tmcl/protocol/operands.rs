@@ -86,7 +86,7 @@ pub fn encode<O: OperandText>(
         error,
     })?;
     let mut out = Instruction {
-        command: spec.number,
+        command: spec.number.into(),
         ..Instruction::default()
     };
     let mut named_bank = None;

@@ -7,7 +7,7 @@ use crate::dialect::tmcl::protocol::frame::{
     CommandFrame, FRAME_LEN, ReplyFrame, decode_version_string, hex,
 };
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
-use crate::dialect::tmcl::protocol::{Instruction, Status};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
 use super::{Answer, Exchange, TmclSession};
 use crate::session::SessionError;
@@ -44,7 +44,7 @@ impl TmclSession {
             answer,
             raw,
         };
-        if instruction.command == 137 {
+        if instruction.command == Opcode::FactoryDefaults {
             return Ok(exchange((Answer::Nothing, String::new())));
         }
         let deadline = Instant::now() + self.core.options.timeout;
@@ -77,7 +77,7 @@ impl TmclSession {
         raw: &[u8; FRAME_LEN],
         deadline: Instant,
     ) -> Result<Option<(Answer, String)>, SessionError> {
-        if instruction.command == 136 && instruction.type_ == 0 {
+        if instruction.command == Opcode::FirmwareVersion && instruction.type_ == 0 {
             let (_, text) = decode_version_string(raw);
             self.settle_binary(module, raw, deadline)?;
             self.core
@@ -91,7 +91,7 @@ impl TmclSession {
                 format!("corrupted reply from module {module}: {e}"),
             )
         })?;
-        if is_event(&reply) {
+        if reply.is_position_event() {
             self.note_event(reply.module);
             self.core.wire.log_received(
                 FRAME_LEN,
@@ -170,7 +170,7 @@ impl TmclSession {
                 let mut frame = [0u8; FRAME_LEN];
                 frame.copy_from_slice(&self.core.wire.rx.bytes()[pos..pos + FRAME_LEN]);
                 match ReplyFrame::decode(&frame) {
-                    Ok(r) if is_event(&r) => {
+                    Ok(r) if r.is_position_event() => {
                         self.note_event(r.module);
                         pos += FRAME_LEN;
                     }
@@ -210,11 +210,6 @@ impl TmclSession {
         self.core.wire.note(&message);
         SessionError::Link(message)
     }
-}
-
-/// Whether a frame is the delayed position-reached event of command 138, not a reply.
-fn is_event(reply: &ReplyFrame) -> bool {
-    reply.command == 138 && reply.status == Status::PositionReachedEvent
 }
 
 /// A binary reply in the ASCII reply format (`BA 100 -5000`), so one-shot output looks the same in
