@@ -63,7 +63,7 @@ pub fn run() -> Vec<Case> {
         host: 2,
         module: 1,
         status: Status::Ok,
-        command: 6,
+        command: 6.into(),
         value: -5000,
     }
     .encode();

@@ -50,7 +50,7 @@ fn the_second_reply_of_138_comes_on_arrival() {
     assert!(sim.console("advance 1s").starts_with("ok"));
     let event = decode(&port.read_n(9));
     assert_eq!(
-        (event.status, event.command),
+        (event.status, event.command.number()),
         (Status::PositionReachedEvent, 138)
     );
 }

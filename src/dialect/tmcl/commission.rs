@@ -3,9 +3,9 @@
 
 use crate::dialect::session::DialectSession;
 use crate::dialect::tmcl::profile::{Param, Profile};
-use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::Op;
 use crate::dialect::tmcl::protocol::validate::{Mode, validate_instruction};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 use crate::dialect::tmcl::session::{Answer, TmclSession};
 use crate::session::SessionError;
 
@@ -33,7 +33,7 @@ impl ParamDevice for TmclSession {
         let target = self.target();
         let exchange = self
             .in_binary(target, |s| {
-                s.request(target, Instruction::new(136, 0, 0, 0))
+                s.request(target, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0))
             })
             .ok()?;
         match exchange.answer {
@@ -68,7 +68,7 @@ impl ParamDevice for TmclSession {
     }
 
     fn read(&mut self, param: &ParamRef) -> Result<Reading, SessionError> {
-        let instruction = instruction(param, [6, 10], 0);
+        let instruction = instruction(param, [Opcode::Gap, Opcode::Ggp], 0);
         let exchange = self.request(self.target(), instruction)?.checked()?;
         exchange
             .value()
@@ -78,7 +78,7 @@ impl ParamDevice for TmclSession {
 
     fn write(&mut self, param: &ParamRef, value: &ParamValue) -> Result<(), SessionError> {
         let value = word(param, value)?;
-        let instruction = instruction(param, [5, 9], value);
+        let instruction = instruction(param, [Opcode::Sap, Opcode::Sgp], value);
         self.request(self.target(), instruction)?.checked()?;
         Ok(())
     }
@@ -93,7 +93,7 @@ impl ParamDevice for TmclSession {
 
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
         let value = word(param, value).unwrap_or(i32::MAX);
-        let op = Op::Command(instruction(param, [5, 9], value));
+        let op = Op::Command(instruction(param, [Opcode::Sap, Opcode::Sgp], value));
         self.format(self.target(), op)
     }
 
@@ -101,7 +101,7 @@ impl ParamDevice for TmclSession {
         params
             .iter()
             .map(|&param| {
-                let op = Op::Command(instruction(param, [7, 11], 0));
+                let op = Op::Command(instruction(param, [Opcode::Stap, Opcode::Stgp], 0));
                 StoreStep {
                     line: self.format(self.target(), op),
                     params: vec![param.clone()],
@@ -113,7 +113,7 @@ impl ParamDevice for TmclSession {
 
     fn store(&mut self, step: &StoreStep) -> Result<(), SessionError> {
         for param in &step.params {
-            let instruction = instruction(param, [7, 11], 0);
+            let instruction = instruction(param, [Opcode::Stap, Opcode::Stgp], 0);
             self.request(self.target(), instruction)?.checked()?;
         }
         Ok(())
@@ -158,14 +158,14 @@ pub(crate) fn check_write(
     value: &ParamValue,
 ) -> Result<(), String> {
     let value = word(param, value).map_err(|e| e.to_string())?;
-    let instruction = instruction(param, [5, 9], value);
+    let instruction = instruction(param, [Opcode::Sap, Opcode::Sgp], value);
     validate_instruction(&instruction, profile, Mode::Ascii)
         .map(|_| ())
         .map_err(|e| e.to_string())
 }
 
 /// The instruction for `param`: `commands[0]` for axis parameters, `commands[1]` for global ones.
-fn instruction(param: &ParamRef, commands: [u8; 2], value: i32) -> Instruction {
+fn instruction(param: &ParamRef, commands: [Opcode; 2], value: i32) -> Instruction {
     let number = param
         .number
         .and_then(|n| u8::try_from(n).ok())

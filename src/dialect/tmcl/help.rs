@@ -53,7 +53,7 @@ pub fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
 /// when `word` names no command of the profile.
 pub fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io::Result<bool> {
     let spec = profile.commands.by_mnemonic(word).or_else(|| {
-        word.parse()
+        word.parse::<u8>()
             .ok()
             .and_then(|n| profile.commands.by_number(n))
     });

@@ -7,8 +7,8 @@ use crate::dialect::helper::{ArgKind, Helper, Section, helper};
 use crate::dialect::session::DialectSession;
 use crate::dialect::tmcl::params::write_table;
 use crate::dialect::tmcl::program::{self, download};
-use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::{address_char, address_of};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 use crate::dialect::tmcl::session::{Echo, Exchange, TmclSession};
 use crate::session::SessionError;
 
@@ -129,9 +129,9 @@ pub fn run(
         }
         "step" | "reset" | "status" => {
             let command = match helper.name {
-                "step" => 130,
-                "reset" => 131,
-                _ => 135,
+                "step" => Opcode::StepApplication,
+                "reset" => Opcode::ResetApplication,
+                _ => Opcode::ApplicationStatus,
             };
             let exchange = program::control(session, target, Instruction::new(command, 0, 0, 0))?;
             let mode = program::mode_text(session, target);

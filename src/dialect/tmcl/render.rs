@@ -3,6 +3,7 @@
 use crate::dialect::session::Decoded;
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::commands::{Field, OperandKind, ParamUse};
+use crate::dialect::tmcl::protocol::Opcode;
 use crate::dialect::tmcl::protocol::line::Op;
 use crate::dialect::tmcl::session::{Answer, Exchange};
 
@@ -44,16 +45,18 @@ pub fn decode(exchange: &Exchange, profile: &Profile) -> Decoded {
             match (reads, param, i.command) {
                 (true, Some(p), _) => format!("{} = {value}{}", p.ident, unit(&p.unit)),
                 (true, None, _) => format!("parameter {} = {value}", i.type_),
-                (_, _, 13) if i.type_ == 2 => {
+                (_, _, Opcode::Rfs) if i.type_ == 2 => {
                     if value == 0 {
                         "reference search done (not running)".into()
                     } else {
                         format!("reference search running ({value})")
                     }
                 }
-                (_, _, 135) => format!("application {}", application_status(value)),
-                (_, _, 15) => format!("input {} of bank {} = {value}", i.type_, i.motor),
-                (_, _, 31) => format!("coordinate {} = {value}", i.type_),
+                (_, _, Opcode::ApplicationStatus) => {
+                    format!("application {}", application_status(value))
+                }
+                (_, _, Opcode::Gio) => format!("input {} of bank {} = {value}", i.type_, i.motor),
+                (_, _, Opcode::Gco) => format!("coordinate {} = {value}", i.type_),
                 _ if value != 0 => format!("ok, value {value}"),
                 _ => "ok".into(),
             }

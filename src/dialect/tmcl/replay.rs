@@ -20,7 +20,7 @@ use crate::dialect::tmcl::protocol::frame::{
 };
 use crate::dialect::tmcl::protocol::line::{self, Op, address_char, format_instruction};
 use crate::dialect::tmcl::protocol::reply::parse_reply;
-use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Status};
+use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Opcode, Status};
 
 use crate::dialect::replay::parse::{Entry, Record};
 use crate::dialect::replay::{nothing_to_replay, reply_after, rhai_string};
@@ -160,7 +160,7 @@ fn ascii_step(text: &str, reply: Option<&[u8]>, profile: &Profile) -> Option<Ste
 fn binary_step(frame: &[u8; FRAME_LEN], reply: Option<&[u8]>, profile: &Profile) -> Option<Step> {
     let command = CommandFrame::decode(frame).ok()?;
     let i = command.instruction;
-    if i.command == 139 {
+    if i.command == Opcode::EnterAscii {
         return None; // entering ASCII mode
     }
     let sent = format_instruction(&i, profile);
@@ -168,7 +168,7 @@ fn binary_step(frame: &[u8; FRAME_LEN], reply: Option<&[u8]>, profile: &Profile)
     let Some(reply) = reply else {
         return Some(Step::Comment(format!("no reply to {sent} (binary)")));
     };
-    if i.command == 136 && i.type_ == 0 {
+    if i.command == Opcode::FirmwareVersion && i.type_ == 0 {
         let (_, text) = decode_version_string(&reply);
         return Some(Step::Version {
             module: command.address,
@@ -204,7 +204,7 @@ fn is_echo_probe(step: &Step, rest: &[Entry]) -> bool {
     else {
         return false;
     };
-    if (i.command, i.type_, i.motor) != (10, 67, 0) {
+    if (i.command, i.type_, i.motor) != (Opcode::Ggp, 67, 0) {
         return false;
     }
     rest.iter()
@@ -223,10 +223,10 @@ pub fn is_live(i: &Instruction, profile: &Profile) -> bool {
         })
     };
     match i.command {
-        6 => role(profile.axis_param(i.type_)),
-        10 => role(profile.global_param(i.motor, i.type_)),
-        15 => true,
-        13 => i.type_ == 2,
+        Opcode::Gap => role(profile.axis_param(i.type_)),
+        Opcode::Ggp => role(profile.global_param(i.motor, i.type_)),
+        Opcode::Gio => true,
+        Opcode::Rfs => i.type_ == 2,
         _ => false,
     }
 }
@@ -237,7 +237,7 @@ fn only_reads(step: &Step) -> bool {
         Step::Exchange {
             instruction: Some(i),
             ..
-        } => matches!(i.command, 6 | 10 | 15 | 31) || (i.command == 13 && i.type_ == 2),
+        } => i.reads_value(),
         Step::Exchange { .. } => false,
         Step::Version { .. } | Step::Comment(_) => true,
     }
@@ -334,8 +334,10 @@ fn settled(steps: &[Step], k: usize) -> bool {
 
 fn param_name(i: &Instruction, profile: &Profile) -> Option<String> {
     let p = match i.command {
-        5..=8 => profile.axis_param(i.type_),
-        9..=12 => profile.global_param(i.motor, i.type_),
+        Opcode::Sap | Opcode::Gap | Opcode::Stap | Opcode::Rsap => profile.axis_param(i.type_),
+        Opcode::Sgp | Opcode::Ggp | Opcode::Stgp | Opcode::Rsgp => {
+            profile.global_param(i.motor, i.type_)
+        }
         _ => None,
     }?;
     Some(p.ident.clone())

@@ -19,8 +19,8 @@ use std::collections::BTreeMap;
 use std::io::{self, Write};
 use std::time::Duration;
 
-use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::address_char;
+use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 use crate::dialect::tmcl::session::{Answer, Echo, TmclSession, WireMode};
 use crate::session::SessionError;
 
@@ -161,17 +161,18 @@ fn probe_binary(session: &mut TmclSession, address: u8) -> Result<Option<Found>,
     if session.module_state(address).is_some() {
         return Ok(None); // already reached by this session: round 2 reports it
     }
-    match session.probe_binary(address, Instruction::new(136, 1, 0, 0)) {
+    match session.probe_binary(address, Instruction::new(Opcode::FirmwareVersion, 1, 0, 0)) {
         Ok(x) if x.value().is_some() => {}
         Ok(_) => return Ok(None),
         Err(e) if absent(&e) => return Ok(None),
         Err(e) => return Err(e),
     }
-    let firmware = match session.probe_binary(address, Instruction::new(136, 0, 0, 0)) {
-        Ok(x) => version_text(&x.answer),
-        Err(e) if absent(&e) => None,
-        Err(e) => return Err(e),
-    };
+    let firmware =
+        match session.probe_binary(address, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0)) {
+            Ok(x) => version_text(&x.answer),
+            Err(e) if absent(&e) => None,
+            Err(e) => return Err(e),
+        };
     Ok(Some(Found {
         address,
         mode: WireMode::Binary,
@@ -193,7 +194,7 @@ fn probe_ascii(session: &mut TmclSession, address: u8) -> Result<Option<Found>, 
     session.set_found_in(address, mode);
     let echo = session.module_state(address).map(|(_, echo)| echo);
     let version = session.in_binary(address, |s| {
-        s.request(address, Instruction::new(136, 0, 0, 0))
+        s.request(address, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0))
     });
     let firmware = match version {
         Ok(x) => version_text(&x.answer),
@@ -210,7 +211,7 @@ fn probe_ascii(session: &mut TmclSession, address: u8) -> Result<Option<Found>, 
 
 /// Round 3: global parameter 67 over a binary frame.
 fn read_echo_binary(session: &mut TmclSession, address: u8) -> Result<Option<Echo>, SessionError> {
-    match session.probe_binary(address, Instruction::new(10, 67, 0, 0)) {
+    match session.probe_binary(address, Instruction::new(Opcode::Ggp, 67, 0, 0)) {
         Ok(x) if x.ok() => Ok(x.value().map(Echo::from_gp67)),
         Ok(_) => Ok(None),
         Err(e) if absent(&e) => Ok(None),

@@ -9,7 +9,7 @@ use rhai::{Dynamic, Engine, INT, Map};
 
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::protocol::line::address_of;
-use crate::dialect::tmcl::protocol::{Instruction, Status};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 use crate::dialect::tmcl::session::{Answer, Exchange, TmclSession};
 
 use crate::script::common::duration;
@@ -36,7 +36,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     let s = session.clone();
     volatile!(engine, "gap", move |param: Dynamic, motor: INT| {
         let p = axis(&s, &param)?;
-        request(&s, 6, p, byte("motor", motor)?, 0)
+        request(&s, Opcode::Gap, p, byte("motor", motor)?, 0)
     });
     let s = session.clone();
     volatile!(
@@ -44,23 +44,30 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         "sap",
         move |param: Dynamic, motor: INT, value: INT| {
             let p = axis(&s, &param)?;
-            request(&s, 5, p, byte("motor", motor)?, word("value", value)?).map(|_| ())
+            request(
+                &s,
+                Opcode::Sap,
+                p,
+                byte("motor", motor)?,
+                word("value", value)?,
+            )
+            .map(|_| ())
         }
     );
     let s = session.clone();
     volatile!(engine, "stap", move |param: Dynamic, motor: INT| {
         let p = axis(&s, &param)?;
-        request(&s, 7, p, byte("motor", motor)?, 0).map(|_| ())
+        request(&s, Opcode::Stap, p, byte("motor", motor)?, 0).map(|_| ())
     });
     let s = session.clone();
     volatile!(engine, "rsap", move |param: Dynamic, motor: INT| {
         let p = axis(&s, &param)?;
-        request(&s, 8, p, byte("motor", motor)?, 0).map(|_| ())
+        request(&s, Opcode::Rsap, p, byte("motor", motor)?, 0).map(|_| ())
     });
     let s = session.clone();
     volatile!(engine, "ggp", move |param: Dynamic, bank: INT| {
         let p = global(&s, &param, bank)?;
-        request(&s, 10, p, byte("bank", bank)?, 0)
+        request(&s, Opcode::Ggp, p, byte("bank", bank)?, 0)
     });
     let s = session.clone();
     volatile!(
@@ -68,27 +75,34 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         "sgp",
         move |param: Dynamic, bank: INT, value: INT| {
             let p = global(&s, &param, bank)?;
-            request(&s, 9, p, byte("bank", bank)?, word("value", value)?).map(|_| ())
+            request(
+                &s,
+                Opcode::Sgp,
+                p,
+                byte("bank", bank)?,
+                word("value", value)?,
+            )
+            .map(|_| ())
         }
     );
     let s = session.clone();
     volatile!(engine, "stgp", move |param: Dynamic, bank: INT| {
         let p = global(&s, &param, bank)?;
-        request(&s, 11, p, byte("bank", bank)?, 0).map(|_| ())
+        request(&s, Opcode::Stgp, p, byte("bank", bank)?, 0).map(|_| ())
     });
     let s = session.clone();
     volatile!(engine, "rsgp", move |param: Dynamic, bank: INT| {
         let p = global(&s, &param, bank)?;
-        request(&s, 12, p, byte("bank", bank)?, 0).map(|_| ())
+        request(&s, Opcode::Rsgp, p, byte("bank", bank)?, 0).map(|_| ())
     });
 
     // Motion: (name, command, type).
     for (name, command, type_) in [
-        ("mvp_abs", 4, 0),
-        ("mvp_rel", 4, 1),
-        ("mvp_coord", 4, 2),
-        ("ror", 1, 0),
-        ("rol", 2, 0),
+        ("mvp_abs", Opcode::Mvp, 0),
+        ("mvp_rel", Opcode::Mvp, 1),
+        ("mvp_coord", Opcode::Mvp, 2),
+        ("ror", Opcode::Ror, 0),
+        ("rol", Opcode::Rol, 0),
     ] {
         let s = session.clone();
         volatile!(engine, name, move |motor: INT, value: INT| {
@@ -105,7 +119,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     let s = session.clone();
     volatile!(engine, "mst", move |motor: INT| request(
         &s,
-        3,
+        Opcode::Mst,
         0,
         byte("motor", motor)?,
         0
@@ -115,7 +129,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         let s = session.clone();
         volatile!(engine, name, move |motor: INT| request(
             &s,
-            13,
+            Opcode::Rfs,
             type_,
             byte("motor", motor)?,
             0
@@ -125,7 +139,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     let s = session.clone();
     volatile!(engine, "rfs_status", move |motor: INT| request(
         &s,
-        13,
+        Opcode::Rfs,
         2,
         byte("motor", motor)?,
         0
@@ -135,7 +149,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     volatile!(engine, "sio", move |port: INT, bank: INT, value: INT| {
         request(
             &s,
-            14,
+            Opcode::Sio,
             byte("port", port)?,
             byte("bank", bank)?,
             word("value", value)?,
@@ -145,7 +159,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     let s = session.clone();
     volatile!(engine, "gio", move |port: INT, bank: INT| request(
         &s,
-        15,
+        Opcode::Gio,
         byte("port", port)?,
         byte("bank", bank)?,
         0
@@ -154,7 +168,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     volatile!(engine, "sco", move |n: INT, motor: INT, position: INT| {
         request(
             &s,
-            30,
+            Opcode::Sco,
             byte("coordinate", n)?,
             byte("motor", motor)?,
             word("position", position)?,
@@ -164,7 +178,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     let s = session.clone();
     volatile!(engine, "gco", move |n: INT, motor: INT| request(
         &s,
-        31,
+        Opcode::Gco,
         byte("coordinate", n)?,
         byte("motor", motor)?,
         0
@@ -175,7 +189,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         let motor = byte("motor", motor)?;
         let what = format!("motor {motor} to reach its target position");
         waiting::until(&what, duration(timeout_ms)?, || {
-            Ok(request(&s, 6, 8, motor, 0)? == 1)
+            Ok(request(&s, Opcode::Gap, 8, motor, 0)? == 1)
         })
     });
 
@@ -190,7 +204,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         let target = s.borrow().target();
         let mut session = s.borrow_mut();
         let exchange = checked(session.in_binary(target, |x| {
-            x.request(target, Instruction::new(136, 0, 0, 0))
+            x.request(target, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0))
         }))?;
         Ok(match exchange.answer {
             Answer::Version(text) => text,
@@ -230,7 +244,7 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
 }
 
 /// Sends one instruction to the target module; returns the reply value, throwing on errors.
-fn request(session: &Shared, command: u8, type_: u8, motor: u8, value: i32) -> Fallible<INT> {
+fn request(session: &Shared, command: Opcode, type_: u8, motor: u8, value: i32) -> Fallible<INT> {
     let target = session.borrow().target();
     let instruction = Instruction::new(command, type_, motor, value);
     value_of(checked(session.borrow_mut().request(target, instruction))?)

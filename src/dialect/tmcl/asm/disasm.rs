@@ -145,7 +145,10 @@ fn mnemonic_text(
 fn raw_text(instruction: &Instruction) -> String {
     format!(
         "{} {}, {}, {}",
-        instruction.command, instruction.type_, instruction.motor, instruction.value
+        instruction.command.number(),
+        instruction.type_,
+        instruction.motor,
+        instruction.value
     )
 }
 

@@ -1,11 +1,13 @@
-//! One instruction line to its 7-byte instruction: the command table says which field each operand
-//! fills and which words are keywords; names resolve to keywords, parameters, labels or constants;
-//! the validator of the interactive commands then checks the result for a stand-alone program
-//! (`Mode::Program`), so a program is held to exactly the rules a typed command is.
+//! One instruction line to its 7-byte instruction. A mnemonic's operands go through the operand
+//! grammar of typed lines ([`operands::encode`]), which knows the command table's keywords and
+//! parameter names; what a program has beyond a typed line — constants, labels and expressions —
+//! is evaluated to a number here. A command given by number takes raw fields. The validator of
+//! the interactive commands then checks the result for a stand-alone program (`Mode::Program`),
+//! so a program is held to exactly the rules a typed command is.
 
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
-use crate::dialect::tmcl::protocol::line::{byte, count_text, word32};
+use crate::dialect::tmcl::protocol::operands::{self, Number, OperandText, Refused, byte};
 use crate::dialect::tmcl::protocol::validate::{Mode, validate, validate_instruction};
 use crate::dialect::tmcl::protocol::{InputError, Instruction, Line, Op, Warning};
 use crate::suggest;
@@ -32,7 +34,7 @@ pub(super) struct Encoded {
 
 /// Where the operand of each field was written, to point errors at it.
 #[derive(Debug, Clone, Copy)]
-struct Columns {
+pub(super) struct Columns {
     head: usize,
     type_: Option<usize>,
     motor: Option<usize>,
@@ -41,6 +43,26 @@ struct Columns {
 }
 
 impl Columns {
+    /// The columns of `statement`'s operands, which fill `fields` in order.
+    fn new(statement: &Statement, fields: impl Iterator<Item = Field>) -> Columns {
+        let mut columns = Columns {
+            head: statement.at.column,
+            type_: None,
+            motor: None,
+            value: None,
+            coordinate_in_type: false,
+        };
+        for (field, operand) in fields.zip(&statement.operands) {
+            let column = Some(operand.column);
+            match field {
+                Field::Type => columns.type_ = column,
+                Field::Motor => columns.motor = column,
+                Field::Value => columns.value = column,
+            }
+        }
+        columns
+    }
+
     fn of(&self, field: Field) -> usize {
         let column = match field {
             Field::Type => self.type_,
@@ -48,14 +70,6 @@ impl Columns {
             Field::Value => self.value,
         };
         column.unwrap_or(self.head)
-    }
-
-    fn set(&mut self, field: Field, column: usize) {
-        match field {
-            Field::Type => self.type_ = Some(column),
-            Field::Motor => self.motor = Some(column),
-            Field::Value => self.value = Some(column),
-        }
     }
 
     /// The operand a validation error is about.
@@ -87,26 +101,7 @@ pub(super) fn encode(
         line: statement.at.line,
         column,
     };
-    let mut columns = Columns {
-        head: statement.at.column,
-        type_: None,
-        motor: None,
-        value: None,
-        coordinate_in_type: false,
-    };
-    let fields = |columns: &mut Columns| -> Result<Instruction, Refusal> {
-        match &statement.head {
-            Head::Number(number) => raw(*number, statement, symbols, columns),
-            Head::Mnemonic(word) => {
-                let spec = command(word, profile).map_err(|p| Refusal::At(statement.at, p))?;
-                columns.coordinate_in_type = spec
-                    .operand_for(Field::Type)
-                    .is_some_and(|o| o.kind == OperandKind::Coord);
-                operands(spec, statement, symbols, profile, columns)
-            }
-        }
-    };
-    let instruction = fields(&mut columns)?;
+    let (instruction, columns) = instruction(statement, symbols, profile)?;
     let warnings = validate_instruction(&instruction, profile, Mode::Program)
         .map_err(|e| Refusal::At(at(columns.for_error(&e)), e.into()))?;
     Ok(Encoded {
@@ -116,6 +111,102 @@ pub(super) fn encode(
             .map(|w| (at(columns.of(Field::Type)), w))
             .collect(),
     })
+}
+
+/// The instruction a line makes, before validation, and where each field was written.
+pub(super) fn instruction(
+    statement: &Statement,
+    symbols: &Symbols,
+    profile: &Profile,
+) -> Result<(Instruction, Columns), Refusal> {
+    match &statement.head {
+        Head::Number(number) => raw(*number, statement, symbols),
+        Head::Mnemonic(word) => {
+            let spec = command(word, profile).map_err(|p| Refusal::At(statement.at, p))?;
+            mnemonic(spec, statement, symbols, profile)
+        }
+    }
+}
+
+/// The operands of a mnemonic, through the operand grammar.
+fn mnemonic(
+    spec: &CommandSpec,
+    statement: &Statement,
+    symbols: &Symbols,
+    profile: &Profile,
+) -> Result<(Instruction, Columns), Refusal> {
+    let line = statement.at.line;
+    let texts: Vec<ProgramOperand> = statement
+        .operands
+        .iter()
+        .map(|operand| ProgramOperand {
+            operand,
+            symbols,
+            line,
+        })
+        .collect();
+    let instruction = operands::encode(spec, &texts, profile).map_err(|refused| match refused {
+        Refused::Table { operand, error } => {
+            let column = operand.map_or(statement.at.column, |i| statement.operands[i].column);
+            Refusal::At(Position { line, column }, error.into())
+        }
+        Refused::Operand(refusal) => refusal,
+    })?;
+    let mut columns = Columns::new(statement, spec.operands.iter().map(|o| o.kind.field()));
+    columns.coordinate_in_type = spec
+        .operand_for(Field::Type)
+        .is_some_and(|o| o.kind == OperandKind::Coord);
+    Ok((instruction, columns))
+}
+
+/// An operand of a program line: the names the program defines are its constants and labels,
+/// evaluated to numbers; every other name is for the command table.
+struct ProgramOperand<'a> {
+    operand: &'a Operand,
+    symbols: &'a Symbols,
+    line: usize,
+}
+
+impl ProgramOperand<'_> {
+    fn evaluate(&self, expect: Expect) -> Result<Number, Refusal> {
+        let value = self
+            .symbols
+            .eval(&self.operand.expr, expect)
+            .map_err(|e| match e {
+                EvalError::At(column, problem) => Refusal::At(
+                    Position {
+                        line: self.line,
+                        column,
+                    },
+                    problem,
+                ),
+                EvalError::Reported => Refusal::Reported,
+            })?;
+        Ok(Number {
+            value,
+            hex: self.operand.expr.is_hex_literal(),
+        })
+    }
+}
+
+impl OperandText for ProgramOperand<'_> {
+    type Error = Refusal;
+
+    fn name(&self) -> Option<&str> {
+        self.operand.expr.as_name()
+    }
+
+    fn table_name(&self) -> Option<&str> {
+        self.name().filter(|name| !self.symbols.contains(name))
+    }
+
+    fn number(&self, kind: OperandKind) -> Result<Option<Number>, Refusal> {
+        let expect = match kind {
+            OperandKind::Address => Expect::Label,
+            _ => Expect::Value,
+        };
+        self.evaluate(expect).map(Some)
+    }
 }
 
 /// The command a mnemonic names.
@@ -148,8 +239,7 @@ fn raw(
     number: i64,
     statement: &Statement,
     symbols: &Symbols,
-    columns: &mut Columns,
-) -> Result<Instruction, Refusal> {
+) -> Result<(Instruction, Columns), Refusal> {
     let at = statement.at;
     let command = byte("the command number", number).map_err(|e| Refusal::At(at, e.into()))?;
     if statement.operands.len() > 3 {
@@ -164,170 +254,30 @@ fn raw(
             .into(),
         ));
     }
-    let mut out = Instruction {
-        command,
-        ..Instruction::default()
-    };
+    let mut out = Instruction::new(command, 0, 0, 0);
     let fields = [
         (Field::Type, "<type>"),
         (Field::Motor, "<motor>"),
         (Field::Value, "<value>"),
     ];
     for ((field, what), operand) in fields.into_iter().zip(&statement.operands) {
-        let value = evaluate(operand, symbols, Expect::Value, at.line)?;
-        store(&mut out, field, what, value, operand, at.line)?;
-        columns.set(field, operand.column);
-    }
-    Ok(out)
-}
-
-/// The operands of a mnemonic, placed as the command table says.
-fn operands(
-    spec: &CommandSpec,
-    statement: &Statement,
-    symbols: &Symbols,
-    profile: &Profile,
-    columns: &mut Columns,
-) -> Result<Instruction, Refusal> {
-    let line = statement.at.line;
-    let given = statement.operands.len();
-    let is_profile_name = |operand: &Operand| {
-        operand
-            .expr
-            .as_name()
-            .is_some_and(|name| !symbols.contains(name))
-    };
-    // A global parameter given by name implies its bank, which may then be left out (as in the
-    // interactive grammar).
-    let bank_implied = spec
-        .operands
-        .first()
-        .is_some_and(|o| o.kind == OperandKind::GlobalParam)
-        && statement.operands.first().is_some_and(is_profile_name);
-    let required = spec
-        .required_operands()
-        .saturating_sub(usize::from(bank_implied && given == 1));
-    if given < required || given > spec.operands.len() {
-        let expected = if required == spec.operands.len() {
-            count_text(required)
-        } else {
-            format!("{} to {}", required, count_text(spec.operands.len()))
+        let text = ProgramOperand {
+            operand,
+            symbols,
+            line: at.line,
         };
-        let error = InputError::ArgumentCount {
-            mnemonic: spec.display_name(),
-            expected,
-            got: given,
-            usage: spec.usage(),
-        };
-        return Err(Refusal::At(statement.at, error.into()));
+        let number = text.evaluate(Expect::Value)?;
+        operands::store(&mut out, field, what, number).map_err(|e| {
+            let column = operand.column;
+            Refusal::At(
+                Position {
+                    line: at.line,
+                    column,
+                },
+                e.into(),
+            )
+        })?;
     }
-    let mut out = Instruction {
-        command: spec.number,
-        ..Instruction::default()
-    };
-    let mut named_bank: Option<(String, u8)> = None;
-    for (kind, operand) in spec
-        .operands
-        .iter()
-        .map(|o| o.kind)
-        .zip(&statement.operands)
-    {
-        let at = Position {
-            line,
-            column: operand.column,
-        };
-        let refuse = |e: InputError| Refusal::At(at, e.into());
-        let field = kind.field();
-        columns.set(field, operand.column);
-        let name = operand.expr.as_name().filter(|_| is_profile_name(operand));
-        match (kind, name) {
-            (OperandKind::Keyword, _) if !spec.keywords.is_empty() => {
-                let keyword = operand.expr.as_name().and_then(|n| spec.keyword(n));
-                match (keyword, name) {
-                    (Some(keyword), _) => out.type_ = keyword.value,
-                    (None, Some(word)) => {
-                        return Err(refuse(InputError::BadKeyword {
-                            mnemonic: spec.display_name(),
-                            word: word.to_string(),
-                            allowed: spec.keywords.iter().map(|k| k.name.clone()).collect(),
-                        }));
-                    }
-                    (None, None) => {
-                        let value = evaluate(operand, symbols, Expect::Value, line)?;
-                        store(&mut out, field, kind.placeholder(), value, operand, line)?;
-                    }
-                }
-            }
-            (OperandKind::AxisParam, Some(name)) => {
-                out.type_ = profile
-                    .find_axis(name)
-                    .map_err(|e| refuse(e.into()))?
-                    .number;
-            }
-            (OperandKind::GlobalParam, Some(name)) => {
-                let param = profile.find_global(name).map_err(|e| refuse(e.into()))?;
-                named_bank = Some((param.ident.clone(), param.bank()));
-                out.type_ = param.number;
-            }
-            _ => {
-                let expect = match kind {
-                    OperandKind::Address => Expect::Label,
-                    _ => Expect::Value,
-                };
-                let value = evaluate(operand, symbols, expect, line)?;
-                store(&mut out, field, kind.placeholder(), value, operand, line)?;
-            }
-        }
-    }
-    if let Some((ident, bank)) = named_bank {
-        if given > 1 && out.motor != bank {
-            let at = Position {
-                line,
-                column: columns.of(Field::Motor),
-            };
-            let error = InputError::BankMismatch {
-                ident,
-                bank,
-                given: out.motor,
-            };
-            return Err(Refusal::At(at, error.into()));
-        }
-        out.motor = bank;
-    }
-    Ok(out)
-}
-
-fn evaluate(
-    operand: &Operand,
-    symbols: &Symbols,
-    expect: Expect,
-    line: usize,
-) -> Result<i64, Refusal> {
-    symbols.eval(&operand.expr, expect).map_err(|e| match e {
-        EvalError::At(column, problem) => Refusal::At(Position { line, column }, problem),
-        EvalError::Reported => Refusal::Reported,
-    })
-}
-
-/// Puts `value` into `field`, refusing what does not fit.
-fn store(
-    out: &mut Instruction,
-    field: Field,
-    what: &str,
-    value: i64,
-    operand: &Operand,
-    line: usize,
-) -> Result<(), Refusal> {
-    let result = match field {
-        Field::Type => byte(what, value).map(|b| out.type_ = b),
-        Field::Motor => byte(what, value).map(|b| out.motor = b),
-        Field::Value => word32(what, value, operand.expr.is_hex_literal()).map(|w| out.value = w),
-    };
-    result.map_err(|e| {
-        let at = Position {
-            line,
-            column: operand.column,
-        };
-        Refusal::At(at, e.into())
-    })
+    let columns = Columns::new(statement, fields.into_iter().map(|(field, _)| field));
+    Ok((out, columns))
 }

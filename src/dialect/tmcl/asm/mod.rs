@@ -14,8 +14,10 @@
 //! ```
 //!
 //! Mnemonics, keywords (`ABS`, `TICKS`, `EQ`, `ADD` …), operand layouts and ranges all come from
-//! the profile's command table, and each instruction passes the same validator as a typed command
-//! (in `Mode::Program`), so the assembler knows no command by itself. Unlike the interactive line
+//! the profile's command table; a mnemonic's operands go through the operand grammar of typed
+//! lines (`protocol::operands`), with constants, labels and expressions evaluated to numbers; and
+//! each instruction passes the same validator as a typed command (in `Mode::Program`), so the
+//! assembler knows no command by itself. Unlike the interactive line
 //! grammar there is no address character, operands are separated by commas only, and `STOP` is
 //! command 28 (end of program). A command may also be given by number with raw fields
 //! (`27 0, 0, 500`), which is how the disassembler writes instructions that have no mnemonic form.

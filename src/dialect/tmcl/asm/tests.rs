@@ -469,4 +469,5 @@ fn the_readme_example_assembles() {
     );
 }
 
+mod grammar;
 mod hostile;

@@ -319,8 +319,9 @@ impl CommandTable {
             .find(|c| c.mnemonic.eq_ignore_ascii_case(mnemonic))
     }
 
-    /// The command with this number.
-    pub fn by_number(&self, number: u8) -> Option<&CommandSpec> {
+    /// The command with this number (a `u8` or an opcode).
+    pub fn by_number(&self, number: impl Into<u8>) -> Option<&CommandSpec> {
+        let number = number.into();
         self.commands.iter().find(|c| c.number == number)
     }
 

@@ -8,7 +8,7 @@ use crate::dialect::session::DialectSession;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use crate::dialect::tmcl::protocol::line::address_char;
-use crate::dialect::tmcl::protocol::{Instruction, Status};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 use crate::dialect::tmcl::render::application_status;
 use crate::dialect::tmcl::session::{Exchange, TmclSession, WireMode};
 use crate::session::{SessionError, interrupt};
@@ -60,7 +60,7 @@ struct DownloadMode<'s> {
 impl<'s> DownloadMode<'s> {
     fn enter(session: &'s mut TmclSession, module: u8) -> Result<Self, SessionError> {
         session
-            .request(module, Instruction::new(132, 0, 0, 0))?
+            .request(module, Instruction::new(Opcode::StartDownload, 0, 0, 0))?
             .checked()?;
         Ok(DownloadMode {
             session,
@@ -74,7 +74,7 @@ impl<'s> DownloadMode<'s> {
         let interrupted = interrupt::take();
         let quit = self
             .session
-            .request(self.module, Instruction::new(133, 0, 0, 0))
+            .request(self.module, Instruction::new(Opcode::QuitDownload, 0, 0, 0))
             .and_then(Exchange::checked);
         if interrupted {
             interrupt::raise();
@@ -123,7 +123,7 @@ fn verify(
 ) -> Result<bool, SessionError> {
     for (address, expected) in program.iter().enumerate() {
         let at = address as i32;
-        let value = s.request(module, Instruction::new(134, 0, 0, at))?;
+        let value = s.request(module, Instruction::new(Opcode::ReadMemory, 0, 0, at))?;
         if matches!(
             value.status(),
             Some(Status::NotAvailable | Status::InvalidCommand | Status::WrongType)
@@ -133,7 +133,7 @@ fn verify(
         }
         let value = value.checked()?.value().unwrap_or(0);
         let fields = s
-            .request(module, Instruction::new(134, 1, 0, at))?
+            .request(module, Instruction::new(Opcode::ReadMemory, 1, 0, at))?
             .checked()?
             .value()
             .unwrap_or(0);
@@ -165,9 +165,13 @@ pub fn control(
 
 /// The application status (135): 0 stopped, 1 running, 2 stepping, 3 reset.
 pub fn status(session: &mut TmclSession, module: u8) -> Result<i32, SessionError> {
-    Ok(control(session, module, Instruction::new(135, 0, 0, 0))?
-        .value()
-        .unwrap_or(0))
+    Ok(control(
+        session,
+        module,
+        Instruction::new(Opcode::ApplicationStatus, 0, 0, 0),
+    )?
+    .value()
+    .unwrap_or(0))
 }
 
 /// Warnings about the motors of `module` that still turn, with their speed: stopping a program
@@ -181,7 +185,7 @@ pub fn still_turning(session: &mut TmclSession, module: u8) -> Vec<String> {
     let mut warnings = Vec::new();
     for motor in 0..session.profile().axes {
         let read = session
-            .request(module, Instruction::new(6, number, motor, 0))
+            .request(module, Instruction::new(Opcode::Gap, number, motor, 0))
             .and_then(Exchange::checked);
         match read.map(|x| x.value().unwrap_or(0)) {
             Ok(0) => {}

@@ -2,6 +2,7 @@
 //! and an incremental decoder that accepts bytes in any pieces.
 
 use super::instruction::Instruction;
+use super::opcode::Opcode;
 use super::status::Status;
 
 /// Length of a serial command or reply frame.
@@ -83,8 +84,8 @@ pub struct ReplyFrame {
     pub module: u8,
     /// Outcome of the command.
     pub status: Status,
-    /// Number of the command answered.
-    pub command: u8,
+    /// The command answered.
+    pub command: Opcode,
     /// Returned value.
     pub value: i32,
 }
@@ -97,7 +98,7 @@ impl ReplyFrame {
             self.host,
             self.module,
             self.status.code(),
-            self.command,
+            self.command.into(),
             v[0],
             v[1],
             v[2],
@@ -115,9 +116,17 @@ impl ReplyFrame {
             host: bytes[0],
             module: bytes[1],
             status: Status::from_code(bytes[2]),
-            command: bytes[3],
+            command: bytes[3].into(),
             value: i32::from_be_bytes([bytes[4], bytes[5], bytes[6], bytes[7]]),
         })
+    }
+}
+
+impl ReplyFrame {
+    /// Whether this is the delayed event of command 138 (target position reached), which comes
+    /// on its own and is no reply to a request.
+    pub fn is_position_event(&self) -> bool {
+        self.command == Opcode::PositionEvent && self.status == Status::PositionReachedEvent
     }
 }
 

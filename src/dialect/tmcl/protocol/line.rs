@@ -6,10 +6,9 @@ use crate::suggest;
 
 use super::error::InputError;
 use super::instruction::Instruction;
+use super::operands::{self, Number, OperandText, Refused};
 use super::syntax::{Arg, RawLine, Word, parse_line};
-use crate::dialect::tmcl::profile::commands::{
-    AsciiWord, CommandSpec, Field, Operand, OperandKind,
-};
+use crate::dialect::tmcl::profile::commands::{AsciiWord, Field, Operand, OperandKind};
 
 /// What a line asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -82,7 +81,8 @@ pub fn resolve(raw: &RawLine, profile: &Profile) -> Result<Line, InputError> {
             }
         },
     };
-    let instruction = instruction(spec, &raw.args, profile)?;
+    let instruction =
+        operands::encode(spec, &raw.args, profile).map_err(Refused::into_input_error)?;
     Ok(Line {
         address,
         op: Op::Command(instruction),
@@ -103,121 +103,27 @@ fn unknown_command(word: &str, address: Option<char>, profile: &Profile) -> Inpu
     }
 }
 
-fn instruction(
-    spec: &CommandSpec,
-    args: &[Arg],
-    profile: &Profile,
-) -> Result<Instruction, InputError> {
-    // A global parameter given by name implies its bank, which may then be left out.
-    let bank_implied = spec
-        .operands
-        .first()
-        .is_some_and(|o| o.kind == OperandKind::GlobalParam)
-        && matches!(args.first(), Some(Arg::Name(_)));
-    let required = spec.required_operands() - usize::from(bank_implied && args.len() == 1);
-    if args.len() < required || args.len() > spec.operands.len() {
-        let expected = if required == spec.operands.len() {
-            count_text(required)
-        } else {
-            format!("{} to {}", required, count_text(spec.operands.len()))
-        };
-        return Err(InputError::ArgumentCount {
-            mnemonic: spec.display_name(),
-            expected,
-            got: args.len(),
-            usage: spec.usage(),
-        });
-    }
-    let mut out = Instruction {
-        command: spec.number,
-        ..Instruction::default()
-    };
-    let mut named_bank: Option<(String, u8)> = None;
-    for (operand, arg) in spec.operands.iter().zip(args) {
-        let what = operand.kind.placeholder();
-        match (operand.kind, arg) {
-            (OperandKind::Keyword, Arg::Name(word)) if !spec.keywords.is_empty() => {
-                out.type_ = spec
-                    .keyword(word)
-                    .ok_or_else(|| InputError::BadKeyword {
-                        mnemonic: spec.display_name(),
-                        word: word.clone(),
-                        allowed: spec.keywords.iter().map(|k| k.name.clone()).collect(),
-                    })?
-                    .value;
-            }
-            (OperandKind::AxisParam, Arg::Name(name)) => {
-                out.type_ = profile.find_axis(name)?.number
-            }
-            (OperandKind::GlobalParam, Arg::Name(name)) => {
-                let param = profile.find_global(name)?;
-                named_bank = Some((param.ident.clone(), param.bank()));
-                out.type_ = param.number;
-            }
-            (kind, Arg::Number { value, hex }) => {
-                let (value, hex) = (*value, *hex);
-                match kind.field() {
-                    Field::Type => out.type_ = byte(what, value)?,
-                    Field::Motor => out.motor = byte(what, value)?,
-                    Field::Value => out.value = word32(what, value, hex)?,
-                }
-            }
-            (_, Arg::Name(found)) => {
-                return Err(InputError::ExpectedNumber {
-                    mnemonic: spec.display_name(),
-                    what: what.into(),
-                    found: found.clone(),
-                });
-            }
+impl OperandText for Arg {
+    /// Typed text defines no names: every operand is a number or a name for the tables.
+    type Error = std::convert::Infallible;
+
+    fn name(&self) -> Option<&str> {
+        match self {
+            Arg::Name(name) => Some(name),
+            Arg::Number { .. } => None,
         }
     }
-    if let Some((ident, bank)) = named_bank {
-        let bank_given = args.len() > 1;
-        if bank_given && out.motor != bank {
-            return Err(InputError::BankMismatch {
-                ident,
-                bank,
-                given: out.motor,
-            });
-        }
-        out.motor = bank;
-    }
-    Ok(out)
-}
 
-/// "no arguments", "1 argument", "3 arguments".
-pub(crate) fn count_text(n: usize) -> String {
-    match n {
-        0 => "no arguments".into(),
-        1 => "1 argument".into(),
-        n => format!("{n} arguments"),
+    fn table_name(&self) -> Option<&str> {
+        self.name()
     }
-}
 
-/// A number for a byte field (type, motor/bank, command number).
-pub(crate) fn byte(what: &str, value: i64) -> Result<u8, InputError> {
-    u8::try_from(value).map_err(|_| InputError::FieldOverflow {
-        what: what.into(),
-        value,
-        lo: 0,
-        hi: 255,
-    })
-}
-
-/// A 32-bit value; a number written in hex may use the unsigned range (`0xFFFFFFFF` is -1).
-pub(crate) fn word32(what: &str, value: i64, hex: bool) -> Result<i32, InputError> {
-    if let Ok(v) = i32::try_from(value) {
-        return Ok(v);
+    fn number(&self, _: OperandKind) -> Result<Option<Number>, Self::Error> {
+        Ok(match *self {
+            Arg::Number { value, hex } => Some(Number { value, hex }),
+            Arg::Name(_) => None,
+        })
     }
-    if hex && (0..=u32::MAX as i64).contains(&value) {
-        return Ok(value as u32 as i32);
-    }
-    Err(InputError::FieldOverflow {
-        what: what.into(),
-        value,
-        lo: i32::MIN as i64,
-        hi: i32::MAX as i64,
-    })
 }
 
 /// The canonical form of an instruction, without address: `GAP 1, 0`, `MVP ABS, 0, 1000`,
@@ -243,7 +149,10 @@ fn write_instruction(out: &mut String, instruction: &Instruction, profile: &Prof
         let _ = write!(
             out,
             "{} {}, {}, {}",
-            instruction.command, instruction.type_, instruction.motor, instruction.value
+            instruction.command.number(),
+            instruction.type_,
+            instruction.motor,
+            instruction.value
         );
         return;
     };

@@ -7,8 +7,8 @@
 //!
 //! The address character is ambiguous with the first letter of a mnemonic: `RSAP` is restore-axis-
 //! parameter, not `SAP` to module R. A whole mnemonic wins; `R SAP …` with a space addresses R.
-//! This layer only knows the shape of a line; meaning comes from the command table
-//! (`resolve.rs`).
+//! This layer only knows the shape of a line; meaning comes from the command table (`line.rs`,
+//! and `operands.rs` for the operands).
 
 use nom::branch::alt;
 use nom::bytes::complete::{tag_no_case, take_while, take_while1};

@@ -40,7 +40,7 @@ pub fn validate_instruction(
         .commands
         .by_number(instruction.command)
         .ok_or_else(|| InputError::UnknownCommandNumber {
-            number: instruction.command,
+            number: instruction.command.number(),
             module: profile.module.clone(),
         })?;
     check_mode(spec, mode)?;

@@ -58,7 +58,7 @@ impl Log {
             host: 2,
             module: 1,
             status: Status::Ok,
-            command: 139,
+            command: 139.into(),
             value: 0,
         }
         .encode();
@@ -156,7 +156,7 @@ fn binary_mode_commands_replay_as_lines_and_the_version_as_firmware_version() {
         host: 2,
         module: 1,
         status: Status::Ok,
-        command: 6,
+        command: 6.into(),
         value: 2047,
     }
     .encode();

@@ -7,7 +7,7 @@ use crate::dialect::tmcl::protocol::frame::{
     CommandFrame, FRAME_LEN, ReplyFrame, decode_version_string, hex,
 };
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
-use crate::dialect::tmcl::protocol::{Instruction, Status};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
 use super::{Answer, Exchange, TmclSession};
 use crate::session::SessionError;
@@ -37,97 +37,122 @@ impl TmclSession {
         self.core
             .wire
             .send(&frame, format_args!("{sent} to module {module} (binary)"))?;
-        let exchange = |answer, raw| Exchange {
+        let exchange = |(answer, raw)| Exchange {
             module,
-            sent: sent.clone(),
+            sent,
             op: Some(Op::Command(instruction)),
             answer,
             raw,
         };
-        if instruction.command == 137 {
-            return Ok(exchange(Answer::Nothing, String::new()));
+        if instruction.command == Opcode::FactoryDefaults {
+            return Ok(exchange((Answer::Nothing, String::new())));
         }
         let deadline = Instant::now() + self.core.options.timeout;
         loop {
-            while self.core.wire.rx.len() >= FRAME_LEN {
-                let mut raw = [0u8; FRAME_LEN];
-                raw.copy_from_slice(&self.core.wire.rx.bytes()[..FRAME_LEN]);
-                if instruction.command == 136 && instruction.type_ == 0 {
-                    let (_, text) = decode_version_string(&raw);
-                    self.settle_binary(module, &raw, deadline)?;
-                    self.core
-                        .wire
-                        .log_received(FRAME_LEN, format_args!("version {text}"));
-                    return Ok(exchange(Answer::Version(text.clone()), text));
+            while let Some(raw) = self.front_frame() {
+                if let Some(answer) = self.take_frame(module, instruction, &raw, deadline)? {
+                    return Ok(exchange(answer));
                 }
-                let reply = match ReplyFrame::decode(&raw) {
-                    Ok(reply) => reply,
-                    Err(e) => {
-                        return Err(self.binary_noise(
-                            "bad checksum",
-                            format!("corrupted reply from module {module}: {e}"),
-                        ));
-                    }
-                };
-                if reply.command == 138 && reply.status == Status::PositionReachedEvent {
-                    self.core.wire.notices.push(format!(
-                        "module {}: target position reached (event)",
-                        reply.module
-                    ));
-                    self.core.wire.log_received(
-                        FRAME_LEN,
-                        "target position reached event, not a reply; discarded",
-                    );
-                    continue;
-                }
-                if reply.module != module || reply.command != instruction.command {
-                    let kind = format!("a reply frame not for module {module}'s request");
-                    self.core.wire.discard(FRAME_LEN, &kind);
-                    continue;
-                }
-                if let Status::Other(code) = reply.status {
-                    return Err(self.binary_noise(
-                        "unknown status",
-                        format!(
-                            "line noise: module {module} answered with status {code}, which no \
-                             module sends; not taken"
-                        ),
-                    ));
-                }
-                self.settle_binary(module, &raw, deadline)?;
-                self.core.wire.log_received(
-                    FRAME_LEN,
-                    format_args!(
-                        "from module {}: {}, value {}",
-                        reply.module, reply.status, reply.value
-                    ),
-                );
-                return Ok(exchange(
-                    Answer::Reply {
-                        status: reply.status,
-                        value: reply.value,
-                    },
-                    binary_reply_text(&reply),
-                ));
             }
             if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
-                let partial = self.core.wire.rx.clear();
-                if !partial.is_empty() {
-                    self.core
-                        .wire
-                        .log(Entry::Received, &partial, "incomplete frame, no reply");
-                }
-                return Err(SessionError::Timeout {
-                    module: address_char(module).unwrap_or('?').to_string(),
-                    timeout: self.core.options.timeout,
-                    hint: if partial.is_empty() {
-                        String::new()
-                    } else {
-                        format!(" (received only {})", hex(&partial))
-                    },
-                });
+                return Err(self.binary_timeout(module));
             }
         }
+    }
+
+    /// The frame at the front of the receive buffer, once nine bytes are there.
+    fn front_frame(&self) -> Option<[u8; FRAME_LEN]> {
+        let bytes = self.core.wire.rx.bytes().get(..FRAME_LEN)?;
+        let mut raw = [0u8; FRAME_LEN];
+        raw.copy_from_slice(bytes);
+        Some(raw)
+    }
+
+    /// Takes the frame at the front of the buffer: the answer to `instruction` with its text, or
+    /// `None` for a frame that is no answer (an event, a reply to another request), set aside.
+    fn take_frame(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+        raw: &[u8; FRAME_LEN],
+        deadline: Instant,
+    ) -> Result<Option<(Answer, String)>, SessionError> {
+        if instruction.command == Opcode::FirmwareVersion && instruction.type_ == 0 {
+            let (_, text) = decode_version_string(raw);
+            self.settle_binary(module, raw, deadline)?;
+            self.core
+                .wire
+                .log_received(FRAME_LEN, format_args!("version {text}"));
+            return Ok(Some((Answer::Version(text.clone()), text)));
+        }
+        let reply = ReplyFrame::decode(raw).map_err(|e| {
+            self.binary_noise(
+                "bad checksum",
+                format!("corrupted reply from module {module}: {e}"),
+            )
+        })?;
+        if reply.is_position_event() {
+            self.note_event(reply.module);
+            self.core.wire.log_received(
+                FRAME_LEN,
+                "target position reached event, not a reply; discarded",
+            );
+            return Ok(None);
+        }
+        if reply.module != module || reply.command != instruction.command {
+            let kind = format!("a reply frame not for module {module}'s request");
+            self.core.wire.discard(FRAME_LEN, &kind);
+            return Ok(None);
+        }
+        if let Status::Other(code) = reply.status {
+            return Err(self.binary_noise(
+                "unknown status",
+                format!(
+                    "line noise: module {module} answered with status {code}, which no module \
+                     sends; not taken"
+                ),
+            ));
+        }
+        self.settle_binary(module, raw, deadline)?;
+        self.core.wire.log_received(
+            FRAME_LEN,
+            format_args!(
+                "from module {}: {}, value {}",
+                reply.module, reply.status, reply.value
+            ),
+        );
+        let answer = Answer::Reply {
+            status: reply.status,
+            value: reply.value,
+        };
+        Ok(Some((answer, binary_reply_text(&reply))))
+    }
+
+    /// No whole answer before the deadline: what came is logged and named in the error.
+    fn binary_timeout(&mut self, module: u8) -> SessionError {
+        let partial = self.core.wire.rx.clear();
+        if !partial.is_empty() {
+            self.core
+                .wire
+                .log(Entry::Received, &partial, "incomplete frame, no reply");
+        }
+        SessionError::Timeout {
+            module: address_char(module).unwrap_or('?').to_string(),
+            timeout: self.core.options.timeout,
+            hint: if partial.is_empty() {
+                String::new()
+            } else {
+                format!(" (received only {})", hex(&partial))
+            },
+        }
+    }
+
+    /// Tells the user of a position-reached event that came instead of, or after, a reply.
+    fn note_event(&mut self, module: u8) {
+        self.core
+            .wire
+            .notices
+            .push(format!("module {module}: target position reached (event)"));
     }
 
     /// Checks what follows the reply frame at the front of the buffer: nothing, or whole event
@@ -145,11 +170,8 @@ impl TmclSession {
                 let mut frame = [0u8; FRAME_LEN];
                 frame.copy_from_slice(&self.core.wire.rx.bytes()[pos..pos + FRAME_LEN]);
                 match ReplyFrame::decode(&frame) {
-                    Ok(r) if r.command == 138 && r.status == Status::PositionReachedEvent => {
-                        self.core.wire.notices.push(format!(
-                            "module {}: target position reached (event)",
-                            r.module
-                        ));
+                    Ok(r) if r.is_position_event() => {
+                        self.note_event(r.module);
                         pos += FRAME_LEN;
                     }
                     _ => return Err(self.trailing_noise(module, reply)),

@@ -19,12 +19,12 @@ use std::sync::Arc;
 
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::commands::AsciiWord;
-use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::{
     self, Line, Op, address_char, format_instruction, format_line,
 };
 use crate::dialect::tmcl::protocol::syntax::parse_line;
 use crate::dialect::tmcl::protocol::validate::{self, Mode};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 use crate::link::Link;
 
 use crate::session::core::{Addresses, SessionCore};
@@ -205,10 +205,10 @@ impl TmclSession {
                 if spec.is_some_and(|s| s.starts_motion) {
                     self.core.moved.insert(Some(exchange.module.into()));
                 }
-                if i.command == 129 {
+                if i.command == Opcode::RunApplication {
                     self.core.running.insert(Some(exchange.module.into()));
                 }
-                if i.command == 128 {
+                if i.command == Opcode::StopApplication {
                     self.stopped_program(exchange.module);
                 }
                 if mode::changes_echo(&i) {
@@ -271,7 +271,7 @@ impl TmclSession {
     ) -> Result<Exchange, SessionError> {
         let run_from = |address: Option<i32>| {
             Op::Command(Instruction::new(
-                129,
+                Opcode::RunApplication,
                 u8::from(address.is_some()),
                 0,
                 address.unwrap_or(0),
@@ -291,7 +291,7 @@ impl TmclSession {
     pub fn stop_program(&mut self, module: u8) -> Result<Exchange, SessionError> {
         let op = match self.contact(module)? {
             WireMode::Ascii => Op::Ascii(AsciiWord::Stop),
-            WireMode::Binary => Op::Command(Instruction::new(128, 0, 0, 0)),
+            WireMode::Binary => Op::Command(Instruction::new(Opcode::StopApplication, 0, 0, 0)),
         };
         self.perform(module, op)
     }

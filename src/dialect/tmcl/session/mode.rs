@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 
 use crate::dialect::tmcl::protocol::frame::{CommandFrame, FRAME_LEN, ReplyFrame, hex};
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
-use crate::dialect::tmcl::protocol::{AsciiWord, Instruction};
+use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Opcode};
 
 use super::{Answer, Exchange, TmclSession};
 use crate::session::SessionError;
@@ -97,8 +97,10 @@ const BIN_EXCHANGE_BYTES: u32 = 2 * 7 + 20;
 
 /// Whether an instruction changes global parameter 67 (so the echo must be learnt again).
 pub(super) fn changes_echo(i: &Instruction) -> bool {
-    // SGP, RSGP and AGP on 67 of bank 0, and factory reset (137).
-    (matches!(i.command, 9 | 12 | 35) && i.type_ == 67 && i.motor == 0) || i.command == 137
+    let writes_67 = matches!(i.command, Opcode::Sgp | Opcode::Rsgp | Opcode::Agp)
+        && i.type_ == 67
+        && i.motor == 0;
+    writes_67 || i.command == Opcode::FactoryDefaults
 }
 
 impl TmclSession {
@@ -136,7 +138,7 @@ impl TmclSession {
             .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))?;
         let frame = CommandFrame {
             address: module,
-            instruction: Instruction::new(139, 0, 0, 0),
+            instruction: Instruction::new(Opcode::EnterAscii, 0, 0, 0),
         };
         let bytes = frame.encode();
         self.core.wire.send(
@@ -196,7 +198,7 @@ impl TmclSession {
         let mut frame = [0u8; FRAME_LEN];
         frame.copy_from_slice(&bytes);
         match ReplyFrame::decode(&frame) {
-            Ok(reply) if reply.module == module && reply.command == 139 => {
+            Ok(reply) if reply.module == module && reply.command == Opcode::EnterAscii => {
                 self.core.wire.log(
                     Entry::Received,
                     &bytes,
@@ -221,7 +223,7 @@ impl TmclSession {
     /// was found in when `found` is not already known.
     fn learn_echo(&mut self, module: u8, found: Option<WireMode>) -> Result<(), SessionError> {
         let c = address_char(module).unwrap_or('?');
-        let probe = Instruction::new(10, 67, 0, 0);
+        let probe = Instruction::new(Opcode::Ggp, 67, 0, 0);
         let text = format!("{c}{}", self.describe_instruction(&probe));
         let exchange = match self.ascii_request(module, &text, Some(Op::Command(probe))) {
             Ok(x) => x,
@@ -316,11 +318,11 @@ impl TmclSession {
     /// Sets the echo mode of `module` (global parameter 67 bits 5..4, keeping bit 0).
     pub fn set_echo(&mut self, module: u8, echo: Echo) -> Result<Echo, SessionError> {
         let read = self
-            .request(module, Instruction::new(10, 67, 0, 0))?
+            .request(module, Instruction::new(Opcode::Ggp, 67, 0, 0))?
             .checked()?;
         let current = read.value().unwrap_or(0);
-        self.request(module, Instruction::new(9, 67, 0, echo.apply(current)))?
-            .checked()?;
+        let write = Instruction::new(Opcode::Sgp, 67, 0, echo.apply(current));
+        self.request(module, write)?.checked()?;
         Ok(self.modules.get(&module).map(|m| m.echo).unwrap_or(echo))
     }
 }

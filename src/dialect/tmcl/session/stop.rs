@@ -4,8 +4,8 @@
 
 use std::time::Duration;
 
-use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::address_char;
+use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 
 use super::{Exchange, TmclSession, modules};
 use crate::dialect::session::DialectSession;
@@ -17,7 +17,12 @@ impl TmclSession {
     pub fn stop_motors(&mut self, module: u8) -> Vec<(u8, Result<Exchange, SessionError>)> {
         self.urgently(|s| {
             (0..s.profile.axes)
-                .map(|motor| (motor, s.request(module, Instruction::new(3, 0, motor, 0))))
+                .map(|motor| {
+                    (
+                        motor,
+                        s.request(module, Instruction::new(Opcode::Mst, 0, motor, 0)),
+                    )
+                })
                 .collect()
         })
     }

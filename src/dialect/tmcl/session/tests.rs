@@ -110,12 +110,12 @@ impl FakeModule {
             return;
         }
         let i = frame.instruction;
-        let value = if i.command == 6 && i.type_ == 1 {
+        let value = if i.command.number() == 6 && i.type_ == 1 {
             self.position
         } else {
             0
         };
-        if i.command == 139 {
+        if i.command.number() == 139 {
             self.quirks.ascii = true;
             if !self.quirks.replies_to_139 {
                 return;
@@ -173,20 +173,24 @@ impl FakeModule {
         }
         let profile = Profile::builtin();
         let (status, value) = match line::parse(text, &profile).map(|l| l.op) {
-            Ok(Op::Command(i)) if i.command == 10 && i.type_ == 67 => (100, self.quirks.gp67),
-            Ok(Op::Command(i)) if i.command == 9 && i.type_ == 67 => {
+            Ok(Op::Command(i)) if i.command.number() == 10 && i.type_ == 67 => {
+                (100, self.quirks.gp67)
+            }
+            Ok(Op::Command(i)) if i.command.number() == 9 && i.type_ == 67 => {
                 self.quirks.gp67 = i.value;
                 (100, 0)
             }
-            Ok(Op::Command(i)) if i.command == 6 && i.type_ == 1 && first_gap && self.holding => {
+            Ok(Op::Command(i))
+                if i.command.number() == 6 && i.type_ == 1 && first_gap && self.holding =>
+            {
                 (100, 7777)
             }
-            Ok(Op::Command(i)) if i.command == 6 && i.type_ == 1 => (100, self.position),
-            Ok(Op::Command(i)) if i.command == 5 && i.type_ == 1 => {
+            Ok(Op::Command(i)) if i.command.number() == 6 && i.type_ == 1 => (100, self.position),
+            Ok(Op::Command(i)) if i.command.number() == 5 && i.type_ == 1 => {
                 self.position = i.value;
                 (100, 0)
             }
-            Ok(Op::Command(i)) if i.command == 6 && i.type_ == 200 => (3, 0),
+            Ok(Op::Command(i)) if i.command.number() == 6 && i.type_ == 200 => (3, 0),
             Ok(Op::Ascii(crate::dialect::tmcl::protocol::AsciiWord::Bin)) => {
                 if !self.quirks.bin_silent {
                     self.emit(b"BA 100 0");

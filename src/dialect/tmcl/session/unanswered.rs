@@ -116,7 +116,7 @@ pub(super) fn harmless(bytes: &[u8], unanswered: &mut Unanswered) -> Option<Harm
             let frame: &[u8; FRAME_LEN] = chunk.try_into().ok()?;
             ReplyFrame::decode(frame)
                 .ok()
-                .filter(|r| r.command == 138 && r.status == Status::PositionReachedEvent)
+                .filter(ReplyFrame::is_position_event)
                 .map(|r| event(r.module.to_string()))
         })
         .collect();

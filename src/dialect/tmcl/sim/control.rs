@@ -1,7 +1,7 @@
 //! The control functions 128–139 (manual §6.5): program control, download mode, memory read-back,
 //! firmware version, factory reset, the position-reached event and the switch to ASCII mode.
 
-use crate::dialect::tmcl::protocol::{Instruction, Status};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
 use super::exec::{Effect, Outcome, Reply};
 use super::machine::Machine;
@@ -16,11 +16,11 @@ impl Machine {
     pub(crate) fn control(&mut self, t: f64, i: &Instruction) -> Outcome {
         let protection = self.params.get(super::params::Slot::Global(0, 81));
         let result = match i.command {
-            128 => {
+            Opcode::StopApplication => {
                 self.vm.stop();
                 Ok(i.value)
             }
-            129 => match i.type_ {
+            Opcode::RunApplication => match i.type_ {
                 0 => self.vm.resume(t, &self.program).map(|()| i.value),
                 1 => self
                     .vm
@@ -28,37 +28,37 @@ impl Machine {
                     .map(|()| i.value),
                 _ => Err(Status::WrongType),
             },
-            130 => self.vm.step(t, &self.program).map(|()| i.value),
-            131 => {
+            Opcode::StepApplication => self.vm.step(t, &self.program).map(|()| i.value),
+            Opcode::ResetApplication => {
                 self.vm.reset();
                 Ok(i.value)
             }
-            132 if protection & NO_OVERWRITE != 0 => Err(Status::NotAvailable),
-            132 => {
+            Opcode::StartDownload if protection & NO_OVERWRITE != 0 => Err(Status::NotAvailable),
+            Opcode::StartDownload => {
                 self.vm.stop();
                 self.program.start_download(i.value).map(|()| i.value)
             }
-            133 => {
+            Opcode::QuitDownload => {
                 self.eeprom_changed |= self.program.quit_download();
                 Ok(i.value)
             }
-            134 if protection & NO_DISASSEMBLY != 0 => Err(Status::NotAvailable),
-            134 => self
+            Opcode::ReadMemory if protection & NO_DISASSEMBLY != 0 => Err(Status::NotAvailable),
+            Opcode::ReadMemory => self
                 .program
                 .get(i.value)
                 .ok_or(Status::InvalidValue)
                 .and_then(|stored| read_reply(stored, i.type_)),
-            135 => match i.type_ {
+            Opcode::ApplicationStatus => match i.type_ {
                 0 => Ok(self.vm.status_code()),
                 1 => Ok(self.vm.error_code()),
                 _ => Err(Status::WrongType),
             },
-            136 => match i.type_ {
+            Opcode::FirmwareVersion => match i.type_ {
                 0 => return reply(Reply::Version, Effect::None),
                 1 => Ok(self.profile.sim.version_binary as i32),
                 _ => Err(Status::WrongType),
             },
-            137 => {
+            Opcode::FactoryDefaults => {
                 // The value was checked against 1234 (value_range); the module restarts and
                 // therefore never replies.
                 self.params.factory();
@@ -66,7 +66,7 @@ impl Machine {
                 self.boot(t);
                 return reply(Reply::Silent, Effect::Rebooted);
             }
-            138 => match i.type_ {
+            Opcode::PositionEvent => match i.type_ {
                 0 | 1 if i.value & 1 != 0 => {
                     self.request_event(i.value, i.type_ == 1);
                     Ok(i.value)
@@ -74,7 +74,9 @@ impl Machine {
                 0 | 1 => Err(Status::InvalidValue),
                 _ => Err(Status::WrongType),
             },
-            139 => return reply(Reply::Normal(Status::Ok, i.value), Effect::EnterAscii),
+            Opcode::EnterAscii => {
+                return reply(Reply::Normal(Status::Ok, i.value), Effect::EnterAscii);
+            }
             _ => Err(Status::InvalidCommand),
         };
         match result {

@@ -7,7 +7,7 @@
 //! than 0 answers 4 (invalid value).
 
 use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
-use crate::dialect::tmcl::protocol::{Instruction, Status};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
 use super::machine::Machine;
 use super::params::{Slot, eeprom_only};
@@ -67,39 +67,18 @@ pub(crate) enum Source {
     Program,
 }
 
-const ROR: u8 = 1;
-const ROL: u8 = 2;
-const MST: u8 = 3;
-const MVP: u8 = 4;
-const SAP: u8 = 5;
-const GAP: u8 = 6;
-const STAP: u8 = 7;
-const RSAP: u8 = 8;
-const SGP: u8 = 9;
-const GGP: u8 = 10;
-const STGP: u8 = 11;
-const RSGP: u8 = 12;
-const RFS: u8 = 13;
-const SIO: u8 = 14;
-const GIO: u8 = 15;
-const SCO: u8 = 30;
-const GCO: u8 = 31;
-const CCO: u8 = 32;
-const AAP: u8 = 34;
-const AGP: u8 = 35;
-const ACO: u8 = 39;
-const CALC: u8 = 19;
-const CALCX: u8 = 33;
-
 /// EEPROM lock values of GP 73 (generic TMCL reference).
 const LOCK: i32 = 1234;
 const UNLOCK: i32 = 4321;
 
 impl Machine {
     /// Executes `instruction` at `t` (the machine must have been advanced to `t`). In download
-    /// mode, instructions below 128 are stored instead.
+    /// mode, instructions other than control functions are stored instead.
     pub fn execute(&mut self, t: f64, instruction: &Instruction, source: Source) -> Outcome {
-        if source == Source::Direct && self.program.downloading() && instruction.command < 128 {
+        if source == Source::Direct
+            && self.program.downloading()
+            && !instruction.command.is_control()
+        {
             return match self.program.store(*instruction) {
                 Ok(()) => Outcome::status(Status::Stored, instruction.value),
                 Err(status) => Outcome::error(status, instruction),
@@ -122,7 +101,7 @@ impl Machine {
         if let Err(status) = self.precheck(spec, instruction) {
             return Outcome::error(status, instruction);
         }
-        if instruction.command >= 128 {
+        if instruction.command.is_control() {
             return self.control(t, instruction);
         }
         match self.command(t, instruction) {
@@ -150,7 +129,7 @@ impl Machine {
             return Err(Status::WrongType);
         }
         // Jump targets are checked by the program runner (a bad one is a program error).
-        let flow = matches!(i.command, 21..=23);
+        let flow = matches!(i.command, Opcode::Jc | Opcode::Ja | Opcode::Csub);
         match spec.value_range {
             Some((lo, hi)) if !flow && !(lo..=hi).contains(&i64::from(i.value)) => {
                 Err(Status::InvalidValue)
@@ -162,25 +141,29 @@ impl Machine {
     fn command(&mut self, t: f64, i: &Instruction) -> Result<i32, Status> {
         let value = i.value;
         match i.command {
-            ROR | ROL => {
-                let signed = if i.command == ROR { value } else { -value };
+            Opcode::Ror | Opcode::Rol => {
+                let signed = if i.command == Opcode::Ror {
+                    value
+                } else {
+                    -value
+                };
                 self.params.set(Slot::Axis(2), signed);
                 let accel = self.move_limits().1;
                 self.axis.rotate(t, self.pps(signed), accel);
             }
-            MST => {
+            Opcode::Mst => {
                 self.params.set(Slot::Axis(2), 0);
                 let accel = self.move_limits().1;
                 self.axis.rotate(t, 0.0, accel);
             }
-            MVP => return self.move_to(t, i),
-            SAP => self.write_axis(t, i.type_, value)?,
-            AAP => self.write_axis(t, i.type_, self.vm.acc)?,
-            GAP => {
+            Opcode::Mvp => return self.move_to(t, i),
+            Opcode::Sap => self.write_axis(t, i.type_, value)?,
+            Opcode::Aap => self.write_axis(t, i.type_, self.vm.acc)?,
+            Opcode::Gap => {
                 self.params.check_read(Slot::Axis(i.type_))?;
                 return Ok(self.axis_value(i.type_, t));
             }
-            STAP | STGP => {
+            Opcode::Stap | Opcode::Stgp => {
                 let slot = slot(i);
                 self.params.check_store(slot)?;
                 if self.locked() {
@@ -188,7 +171,7 @@ impl Machine {
                 }
                 self.eeprom_changed |= self.params.store(slot);
             }
-            RSAP | RSGP => {
+            Opcode::Rsap | Opcode::Rsgp => {
                 let slot = slot(i);
                 self.params.check_store(slot)?;
                 self.params.restore(slot);
@@ -196,21 +179,21 @@ impl Machine {
                     self.after_axis_write(t, n);
                 }
             }
-            SGP => self.write_global(t, i.motor, i.type_, value)?,
-            AGP => self.write_global(t, i.motor, i.type_, self.vm.acc)?,
-            GGP => {
+            Opcode::Sgp => self.write_global(t, i.motor, i.type_, value)?,
+            Opcode::Agp => self.write_global(t, i.motor, i.type_, self.vm.acc)?,
+            Opcode::Ggp => {
                 self.params.check_read(Slot::Global(i.motor, i.type_))?;
                 return Ok(self.global_value(i.motor, i.type_, t));
             }
-            RFS => return Ok(self.reference_search(t, i.type_)),
-            SIO => self.io.write(i.type_, i.motor, value != 0)?,
-            GIO => return self.io.read(i.type_, i.motor),
-            SCO => self.set_coordinate(i.type_, value)?,
-            ACO => self.set_coordinate(i.type_, self.vm.acc)?,
-            CCO => self.set_coordinate(i.type_, self.axis.counter(t))?,
+            Opcode::Rfs => return Ok(self.reference_search(t, i.type_)),
+            Opcode::Sio => self.io.write(i.type_, i.motor, value != 0)?,
+            Opcode::Gio => return self.io.read(i.type_, i.motor),
+            Opcode::Sco => self.set_coordinate(i.type_, value)?,
+            Opcode::Aco => self.set_coordinate(i.type_, self.vm.acc)?,
+            Opcode::Cco => self.set_coordinate(i.type_, self.axis.counter(t))?,
             // Only a division by zero fails here: the keyword was checked before.
-            CALC | CALCX => self.calculate(i).map_err(|_| Status::InvalidValue)?,
-            GCO => return Ok(self.coords[i.type_ as usize]),
+            Opcode::Calc | Opcode::Calcx => self.calculate(i).map_err(|_| Status::InvalidValue)?,
+            Opcode::Gco => return Ok(self.coords[i.type_ as usize]),
             _ => return Err(Status::InvalidCommand),
         }
         Ok(value)
@@ -330,7 +313,7 @@ impl Machine {
 /// The parameter a STAP/RSAP/STGP/RSGP instruction names.
 fn slot(i: &Instruction) -> Slot {
     match i.command {
-        STAP | RSAP => Slot::Axis(i.type_),
+        Opcode::Stap | Opcode::Rsap => Slot::Axis(i.type_),
         _ => Slot::Global(i.motor, i.type_),
     }
 }

@@ -6,8 +6,8 @@ use crate::dialect::tmcl::protocol::frame::{ChecksumError, encode_version_string
 use crate::dialect::tmcl::protocol::line::{address_char, resolve};
 use crate::dialect::tmcl::protocol::syntax::parse_line;
 use crate::dialect::tmcl::protocol::{
-    AsciiReply, AsciiWord, CommandFrame, FrameDecoder, InputError, Instruction, Op, ReplyFrame,
-    Status, format_instruction, host_char,
+    AsciiReply, AsciiWord, CommandFrame, FrameDecoder, InputError, Instruction, Op, Opcode,
+    ReplyFrame, Status, format_instruction, host_char,
 };
 
 use super::ascii::{Context, Echo, LineInput};
@@ -99,7 +99,7 @@ impl Module {
             )
         });
         // Trinamic's firmware answers status 1 with command 0 and value 0.
-        self.send_frame(Status::WrongChecksum, 0, 0, sink);
+        self.send_frame(Status::WrongChecksum, Opcode::Other(0), 0, sink);
     }
 
     fn frame(&mut self, t: f64, bytes: &[u8; 9], sink: &mut Sink) {
@@ -150,7 +150,7 @@ impl Module {
         }
     }
 
-    fn send_frame(&mut self, status: Status, command: u8, value: i32, sink: &mut Sink) {
+    fn send_frame(&mut self, status: Status, command: Opcode, value: i32, sink: &mut Sink) {
         let reply = ReplyFrame {
             host: self.machine.host(),
             module: self.machine.address(),
@@ -215,11 +215,11 @@ impl Module {
         match line.op {
             Op::Ascii(AsciiWord::Bin) => (Outcome::ok(0), true),
             Op::Ascii(AsciiWord::Run) => {
-                let run = Instruction::new(129, 1, 0, 0);
+                let run = Instruction::new(Opcode::RunApplication, 1, 0, 0);
                 (self.machine.control(t, &run), false)
             }
             Op::Ascii(AsciiWord::Stop) => {
-                let stop = Instruction::new(128, 0, 0, 0);
+                let stop = Instruction::new(Opcode::StopApplication, 0, 0, 0);
                 (self.machine.control(t, &stop), false)
             }
             Op::Command(instruction) => {
@@ -256,7 +256,12 @@ impl Module {
             if self.ascii {
                 self.send_line(Status::PositionReachedEvent, mask, sink);
             } else {
-                self.send_frame(Status::PositionReachedEvent, 138, mask, sink);
+                self.send_frame(
+                    Status::PositionReachedEvent,
+                    Opcode::PositionEvent,
+                    mask,
+                    sink,
+                );
             }
         }
     }

@@ -82,7 +82,7 @@ impl Program {
     pub fn image(&self) -> Vec<(u8, u8, u8, i32)> {
         self.memory[..self.used]
             .iter()
-            .map(|i| (i.command, i.type_, i.motor, i.value))
+            .map(|i| (i.command.number(), i.type_, i.motor, i.value))
             .collect()
     }
 
@@ -110,7 +110,7 @@ impl Program {
 pub(crate) fn read_reply(instruction: Instruction, type_: u8) -> Result<i32, Status> {
     match type_ {
         0 => Ok(instruction.value),
-        1 => Ok(i32::from(instruction.command) << 16
+        1 => Ok(i32::from(instruction.command.number()) << 16
             | i32::from(instruction.type_) << 8
             | i32::from(instruction.motor)),
         _ => Err(Status::WrongType),

@@ -15,7 +15,7 @@
 
 use std::cmp::Ordering;
 
-use crate::dialect::tmcl::protocol::{Instruction, Status};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
 use super::exec::{Reply, Source};
 use super::machine::Machine;
@@ -188,23 +188,6 @@ impl Vm {
     }
 }
 
-/// Instruction numbers the runner handles itself.
-const CALC: u8 = 19;
-const COMP: u8 = 20;
-const JC: u8 = 21;
-const JA: u8 = 22;
-const CSUB: u8 = 23;
-const RSUB: u8 = 24;
-const WAIT: u8 = 27;
-const STOP: u8 = 28;
-const CALCX: u8 = 33;
-const CLE: u8 = 36;
-
-/// Commands whose value a program gets in the accumulator.
-fn reads_value(i: &Instruction) -> bool {
-    matches!(i.command, 6 | 10 | 15 | 31) || (i.command == 13 && i.type_ == 2)
-}
-
 fn calc(op: u8, a: i32, b: i32) -> Result<i32, ProgramError> {
     Ok(match op {
         0 => a.wrapping_add(b),
@@ -303,7 +286,7 @@ impl Machine {
     /// (manual 6.4.5: calculation commands may be used in both).
     pub(super) fn calculate(&mut self, i: &Instruction) -> Result<(), ProgramError> {
         match (i.command, i.type_) {
-            (CALC, op) => self.vm.acc = calc(op, self.vm.acc, i.value)?,
+            (Opcode::Calc, op) => self.vm.acc = calc(op, self.vm.acc, i.value)?,
             (_, 9) => self.vm.x = self.vm.acc,
             (_, 10) => std::mem::swap(&mut self.vm.acc, &mut self.vm.x),
             (_, op) => self.vm.acc = calc(op, self.vm.acc, self.vm.x)?,
@@ -315,9 +298,9 @@ impl Machine {
         let next = t + self.instruction_time();
         let mut next_pc = self.vm.pc + 1;
         match i.command {
-            CALC | CALCX => self.calculate(i)?,
-            COMP => self.vm.compared = Some(self.vm.acc.cmp(&i.value)),
-            JC => {
+            Opcode::Calc | Opcode::Calcx => self.calculate(i)?,
+            Opcode::Comp => self.vm.compared = Some(self.vm.acc.cmp(&i.value)),
+            Opcode::Jc => {
                 use Ordering::{Equal, Greater, Less};
                 let c = self.vm.compared;
                 let taken = match i.type_ {
@@ -337,8 +320,8 @@ impl Machine {
                     next_pc = self.jump_target(i.value)?;
                 }
             }
-            JA => next_pc = self.jump_target(i.value)?,
-            CSUB => {
+            Opcode::Ja => next_pc = self.jump_target(i.value)?,
+            Opcode::Csub => {
                 let target = self.jump_target(i.value)?;
                 if self.vm.stack.len() >= self.profile.stack_depth.into() {
                     return Err(ProgramError::StackOverflow);
@@ -346,26 +329,26 @@ impl Machine {
                 self.vm.stack.push(next_pc);
                 next_pc = target;
             }
-            RSUB => next_pc = self.vm.stack.pop().ok_or(ProgramError::StackUnderflow)?,
-            CLE => match i.type_ {
+            Opcode::Rsub => next_pc = self.vm.stack.pop().ok_or(ProgramError::StackUnderflow)?,
+            Opcode::Cle => match i.type_ {
                 0 | 1 => self.vm.timeout_flag = false,
                 2..=4 => {}
                 _ => return Err(ProgramError::InvalidInstruction),
             },
-            STOP => {
+            Opcode::Stop => {
                 self.vm.stop();
                 self.vm.pc = 0;
                 self.vm.stack.clear();
                 return Ok(());
             }
-            WAIT => return self.start_wait(t, i),
+            Opcode::Wait => return self.start_wait(t, i),
             _ => {
                 let outcome = self.execute(t, i, Source::Program);
                 match outcome.reply {
                     Reply::Normal(Status::InvalidCommand, _) => {
                         return Err(ProgramError::InvalidInstruction);
                     }
-                    Reply::Normal(Status::Ok, value) if reads_value(i) => self.vm.acc = value,
+                    Reply::Normal(Status::Ok, value) if i.reads_value() => self.vm.acc = value,
                     _ => {}
                 }
             }

@@ -15,7 +15,7 @@ proptest! {
 
     #[test]
     fn reply_frames_round_trip(host: u8, module: u8, status: u8, command: u8, value: i32) {
-        let reply = ReplyFrame { host, module, status: Status::from_code(status), command, value };
+        let reply = ReplyFrame { host, module, status: Status::from_code(status), command: command.into(), value };
         prop_assert_eq!(ReplyFrame::decode(&reply.encode()), Ok(reply));
     }
 
@@ -74,7 +74,7 @@ fn reply_layout_matches_the_manual() {
         host: 2,
         module: 1,
         status: Status::Ok,
-        command: 6,
+        command: 6.into(),
         value: -5000,
     };
     let bytes = reply.encode();

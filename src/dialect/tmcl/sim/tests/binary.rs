@@ -35,8 +35,8 @@ fn every_command_of_the_table_gets_the_answer_its_kind_calls_for() {
         }
         let mut sim = Sim::new();
         let i = sensible(spec);
-        let reply = sim.frame(1, i.command, i.type_, i.motor, i.value);
-        assert_eq!(reply.command, spec.number);
+        let reply = sim.frame(1, i.command.number(), i.type_, i.motor, i.value);
+        assert_eq!(reply.command.number(), spec.number);
         let expected = if !spec.direct_mode {
             Status::InvalidCommand
         } else if spec.mnemonic == "SAC" || spec.mnemonic.starts_with("UF") {
@@ -76,7 +76,7 @@ fn replies_carry_host_and_module_address_and_echo_the_value() {
             host: 2,
             module: 1,
             status: Status::Ok,
-            command: 1,
+            command: 1.into(),
             value: 1234
         }
     );
@@ -96,7 +96,7 @@ fn a_bad_checksum_to_this_module_answers_status_1() {
     let out = sim.send(&bytes);
     let reply = ReplyFrame::decode(out[..].try_into().unwrap()).unwrap();
     assert_eq!(
-        (reply.status, reply.command, reply.value),
+        (reply.status, reply.command.number(), reply.value),
         (Status::WrongChecksum, 0, 0)
     );
     // To another module: silence.
@@ -426,7 +426,7 @@ fn position_reached_event_sends_a_second_reply_on_arrival() {
     let out = sim.output();
     let event = ReplyFrame::decode(out[..].try_into().unwrap()).unwrap();
     assert_eq!(
-        (event.status, event.command, event.value),
+        (event.status, event.command.number(), event.value),
         (Status::PositionReachedEvent, 138, 1)
     );
     // Type 0 fires once.
