@@ -23,7 +23,8 @@ pub(crate) fn repl_at(extra: &[&str], data: &std::path::Path) -> PtySession {
         .env("XDG_DATA_HOME", data)
         .env("XDG_CONFIG_HOME", data)
         .env("HOME", data);
-    let mut p = spawn_command(command, Some(10_000)).expect("tmclsh starts in a pty");
+    let mut p =
+        spawn_command(command, Some(crate::util::EXPECT_MS)).expect("tmclsh starts in a pty");
     p.exp_string("tmclsh").unwrap();
     p
 }

@@ -426,7 +426,8 @@ fn the_repl_shows_noise_escaped_and_goes_on() {
         .env("TERM", "xterm")
         .env("HOME", &home)
         .env("XDG_DATA_HOME", &home);
-    let mut p = spawn_command(command, Some(10_000)).expect("tmclsh starts in a pty");
+    let mut p =
+        spawn_command(command, Some(crate::util::EXPECT_MS)).expect("tmclsh starts in a pty");
     let mut seen = p.exp_string("smd4> ").unwrap();
     p.send_line("SYS:FW").unwrap();
     seen += &p

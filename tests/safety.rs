@@ -53,7 +53,7 @@ fn terminal(args: &[&str], env: &[(&str, &str)]) -> PtySession {
     for (name, value) in env {
         command.env(name, value);
     }
-    spawn_command(command, Some(10_000)).expect("tmclsh starts in a pty")
+    spawn_command(command, Some(crate::util::EXPECT_MS)).expect("tmclsh starts in a pty")
 }
 
 fn exit_code(p: &PtySession) -> i32 {

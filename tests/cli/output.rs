@@ -175,7 +175,7 @@ fn the_interactive_shell_refuses_the_output_flags() {
         .env("XDG_DATA_HOME", &data)
         .env("XDG_CONFIG_HOME", &data)
         .env("HOME", &data);
-    let mut p = rexpect::session::spawn_command(command, Some(10_000)).unwrap();
+    let mut p = rexpect::session::spawn_command(command, Some(crate::util::EXPECT_MS)).unwrap();
     p.exp_string("--json, --keep-going shape the output of -c and piped lines")
         .unwrap();
     p.exp_eof().unwrap();

@@ -201,7 +201,7 @@ fn repl_on(machine: &Machine, port: &str) -> rexpect::session::PtySession {
         .env("XDG_DATA_HOME", &home)
         .env("XDG_CONFIG_HOME", &home)
         .env("HOME", &home);
-    spawn_command(command, Some(10_000)).unwrap()
+    spawn_command(command, Some(crate::util::EXPECT_MS)).unwrap()
 }
 
 #[test]

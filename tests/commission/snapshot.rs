@@ -682,7 +682,7 @@ fn the_store_confirmation_on_a_terminal_names_what_the_restore_wrote() {
             &sim.first,
         ])
         .env("NO_COLOR", "1");
-    let mut p = rexpect::session::spawn_command(command, Some(10_000)).unwrap();
+    let mut p = rexpect::session::spawn_command(command, Some(crate::util::EXPECT_MS)).unwrap();
     p.exp_string(
         "store 2 parameters to the EEPROM of module 1 (max_current, user_variable_5)? [y/N]",
     )

@@ -23,7 +23,8 @@ fn ctrl_c_while_a_reply_is_awaited_stops_the_motor_at_once_and_leaves_nothing_be
         .env("XDG_DATA_HOME", &data)
         .env("HOME", &data);
     // rexpect's own timeout is the hang guard: far below the 60 s the reply would take.
-    let mut p = spawn_command(command, Some(10_000)).expect("tmclsh starts in a pty");
+    let mut p =
+        spawn_command(command, Some(crate::util::EXPECT_MS)).expect("tmclsh starts in a pty");
     p.exp_string("A> ").unwrap();
     p.send_line("ROL 0, 1000").unwrap();
     p.exp_string("ok").unwrap();

@@ -273,7 +273,8 @@ fn the_repl_says_the_transcript_failed_and_goes_on_without_it() {
         .env("TERM", "xterm")
         .env("HOME", &dir)
         .env("XDG_DATA_HOME", &dir);
-    let mut p = spawn_command(command, Some(10_000)).expect("tmclsh starts in a pty");
+    let mut p =
+        spawn_command(command, Some(crate::util::EXPECT_MS)).expect("tmclsh starts in a pty");
     p.exp_string("A> ").unwrap();
     p.send_line(":log /dev/full").unwrap();
     p.exp_string("cannot write the transcript /dev/full")
