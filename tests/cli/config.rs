@@ -202,7 +202,7 @@ fn configured_values_are_never_refused_where_they_have_no_use() {
     let place = Place::new();
     place.user_file("port = \"/nonexistent/tmclsh-config/ttyUSB8\"\nbaud = 19200\nmodule = 2\necho = \"none\"\nprofile = \"custom.toml\"\n");
     std::fs::copy(
-        repo().join("data/tmcm142.toml"),
+        repo().join("data/profiles/tmcm-142.toml"),
         place.user.join("tmclsh/custom.toml"),
     )
     .unwrap();

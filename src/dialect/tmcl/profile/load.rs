@@ -1,4 +1,4 @@
-//! Reading a module profile from its TOML file (the schema of `data/tmcm142.toml`).
+//! Reading a module profile from its TOML file (the schema of `data/profiles/tmcm-142.toml`).
 //!
 //! The file is written for people first: it carries sources, pages and uncertainty notes that
 //! tmclsh ignores. Only the fields below are read; unknown fields are allowed so that a profile can

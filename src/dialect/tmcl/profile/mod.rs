@@ -1,7 +1,7 @@
 //! Module profiles: the command, axis-parameter and global-parameter tables of a module, as data.
 //!
 //! One table serves the validator, completion, hints, `params`, the simulator and the docs. The
-//! TMCM-142 profile is built in (`data/tmcm142.toml`); `--profile FILE.toml` loads another module's
+//! TMCM-142 profile is built in (`data/profiles/tmcm-142.toml`); `--profile FILE.toml` loads another module's
 //! table with the same schema, so a new module needs no new release.
 
 mod check;
@@ -18,7 +18,7 @@ use load::{ParamRow, ProfileFile};
 pub use crate::commission::{Access, SnapshotRole, SnapshotRules};
 
 /// The built-in profile's source text, kept in the repository as the single source of truth.
-pub const BUILTIN_TOML: &str = include_str!("../../../../data/tmcm142.toml");
+pub const BUILTIN_TOML: &str = include_str!("../../../../data/profiles/tmcm-142.toml");
 
 /// Axis parameters belong to a motor; global parameters to a bank.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -195,7 +195,7 @@ impl Profile {
         BUILTIN
             .get_or_init(|| {
                 let profile = Profile::from_toml(BUILTIN_TOML, None)
-                    .expect("the built-in profile data/tmcm142.toml is valid");
+                    .expect("the built-in profile data/profiles/tmcm-142.toml is valid");
                 Arc::new(profile)
             })
             .clone()
