@@ -318,3 +318,41 @@ fn config_names_the_files_and_what_is_not_set() {
         "{report}"
     );
 }
+
+#[test]
+fn a_profile_is_a_built_in_name_or_a_file() {
+    let place = Place::new();
+    // A name stays a name (no file beside the configuration needed).
+    place.project_file("profile = \"tmcm-6110\"\n");
+    let out = place.run(&["-c", "GAP 4, 5"], &[]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("simulated TMCM-6110"),
+        "{}",
+        stderr(&out)
+    );
+    let out = place.run(&["config"], &[]);
+    assert!(
+        stdout(&out).contains("profile = \"tmcm-6110\""),
+        "{}",
+        stdout(&out)
+    );
+    // A name that is no built-in profile is refused when the profile loads, with the nearest.
+    place.project_file("profile = \"tmcm-6111\"\n");
+    let out = place.run(&["params"], &[]);
+    assert_eq!(code(&out), 2);
+    assert!(
+        stderr(&out).contains("did you mean tmcm-6110?"),
+        "{}",
+        stderr(&out)
+    );
+    // A path is checked as a file at once.
+    place.project_file("profile = \"rig/tmcm-6110\"\n");
+    let out = place.run(&["params"], &[]);
+    assert_eq!(code(&out), 2);
+    assert!(
+        stderr(&out).contains("profile: no such file"),
+        "{}",
+        stderr(&out)
+    );
+}
