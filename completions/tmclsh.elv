@@ -18,7 +18,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
     }
     var completions = [
         &'tmclsh'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -c 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal'
             cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
             cand --baud 'Serial bit rate (8N1)'
@@ -43,6 +43,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
+            cand profiles 'List the built-in TMCL module profiles with their sources, or show one in full'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
             cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
@@ -59,22 +60,27 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         }
         &'tmclsh;params'= {
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
+        &'tmclsh;profiles'= {
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
         &'tmclsh;ports'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
         &'tmclsh;completions'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
         &'tmclsh;man'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
@@ -95,7 +101,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --max-memory 'Memory the script may hold, in MiB (0: no limit)'
             cand --max-time 'Wall-clock time after which the script is stopped, its motors too (exit code 1): 500ms, 30s, 2m, or milliseconds'
             cand --allow-dir 'A directory the script''s file functions may also reach (repeatable); by default they reach only the script''s directory and the working directory'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
@@ -107,13 +113,13 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;asm'= {
             cand -o 'Write the program file (format in the README); without it the source is only checked'
             cand --output 'Write the program file (format in the README); without it the source is only checked'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --list 'Print the listing: address, the 7 instruction bytes and the source line'
             cand -h 'Print help'
             cand --help 'Print help'
         }
         &'tmclsh;disasm'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
@@ -129,7 +135,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
             cand --run 'Start the program after downloading it'
@@ -139,7 +145,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;snapshot'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
             cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
@@ -159,7 +165,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --force 'Replace FILE if it exists'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
@@ -180,7 +186,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
@@ -200,7 +206,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --store 'Afterwards make the written parameters permanent, after a confirmation: EEPROM (STAP/STGP) on TMCL modules; STORE on an SMD4, which saves its whole working configuration'
             cand --yes 'Confirm --store without asking (for scripts)'
             cand --dry-run 'Only print the lines that would be sent'
@@ -239,7 +245,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
@@ -248,7 +254,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;transcript'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
             cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
@@ -258,7 +264,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -o 'Write the script to FILE instead of stdout'
             cand --output 'Write the script to FILE instead of stdout'
             cand --wait 'Milliseconds the script waits for a live value (position, switch) to reach the value the transcript saw'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
@@ -294,7 +300,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --error-spelling 'Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic) or bare (-103)'
             cand --prefix-only 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)'
             cand --real-value-grid 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --pty 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
             cand -v 'Log every frame and line received and sent, decoded, to stderr'
             cand --verbose 'Log every frame and line received and sent, decoded, to stderr'
@@ -321,7 +327,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
@@ -331,6 +337,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         }
         &'tmclsh;help'= {
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
+            cand profiles 'List the built-in TMCL module profiles with their sources, or show one in full'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
             cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
@@ -346,6 +353,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;help;params'= {
+        }
+        &'tmclsh;help;profiles'= {
         }
         &'tmclsh;help;ports'= {
         }

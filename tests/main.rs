@@ -4,6 +4,7 @@
 mod util;
 
 mod asm;
+mod catalogue;
 mod cli;
 mod commission;
 #[cfg(feature = "hardware")]

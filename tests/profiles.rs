@@ -1,4 +1,4 @@
-//! The module profiles of `data/profiles/` (and the built-in `data/tmcm142.toml`): each one loads
+//! The module profiles of `data/profiles/` (the TMCM-142's among them): each one loads
 //! through the real binary, lists every parameter it declares, drives exactly its declared axes,
 //! and its data is consistent (unique numbers, ordered ranges, defaults in range, identification,
 //! ASCII allow-list, I/O map). The checks return their findings, so a doctored profile shows they
@@ -11,7 +11,7 @@ use toml::{Table, Value};
 
 use crate::util::{code, repo, run, stderr, stdout, tempdir};
 
-/// Every shipped profile: the built-in one and `data/profiles/*.toml`.
+/// Every shipped profile: `data/profiles/*.toml`, the TMCM-142's among them.
 fn profiles() -> Vec<PathBuf> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(repo().join("data/profiles"))
         .expect("data/profiles exists")
@@ -23,7 +23,6 @@ fn profiles() -> Vec<PathBuf> {
         files.len() >= 8,
         "at least eight module profiles: {files:?}"
     );
-    files.push(repo().join("data/tmcm142.toml"));
     files
 }
 
@@ -376,7 +375,7 @@ fn every_profile_drives_exactly_its_declared_axes() {
 
 #[test]
 fn every_profile_is_consistent() {
-    let builtin = load(&repo().join("data/tmcm142.toml"));
+    let builtin = load(&repo().join("data/profiles/tmcm-142.toml"));
     for path in profiles() {
         let problems = check_data(&load(&path), &builtin);
         assert!(
@@ -433,7 +432,7 @@ fn the_family_profiles_declare_the_issue_s_modules() {
 
 #[test]
 fn the_checks_catch_a_doctored_profile() {
-    let builtin = load(&repo().join("data/tmcm142.toml"));
+    let builtin = load(&repo().join("data/profiles/tmcm-142.toml"));
     let path = repo().join("data/profiles/tmcm-6110.toml");
     let good = std::fs::read_to_string(&path).unwrap();
     let doctored = good

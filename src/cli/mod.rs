@@ -12,6 +12,7 @@ pub mod man;
 pub(crate) mod params;
 mod ports;
 mod position;
+mod profiles;
 mod relevance;
 pub mod run;
 mod scan;
@@ -34,8 +35,10 @@ use crate::exit::Exit;
 #[derive(Debug, Parser)]
 #[command(name = "tmclsh", version, about, long_about = None, max_term_width = 100)]
 pub struct Cli {
-    /// Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables.
-    #[arg(long, global = true, value_name = "FILE", env = "TMCLSH_PROFILE")]
+    /// Module profile instead of the TMCM-142's: a built-in name, alias or module number
+    /// (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema
+    /// in the README).
+    #[arg(long, global = true, value_name = "NAME|FILE", env = "TMCLSH_PROFILE")]
     pub profile: Option<PathBuf>,
 
     #[command(flatten)]
@@ -49,6 +52,8 @@ pub struct Cli {
 enum Command {
     /// Print the module's axis and global parameters (those matching FILTER).
     Params(params::ParamsArgs),
+    /// List the built-in TMCL module profiles with their sources, or show one in full.
+    Profiles(profiles::ProfilesArgs),
     /// List the serial ports of this machine.
     Ports,
     /// Print a shell completion script.
@@ -155,11 +160,15 @@ impl Failure {
 
 /// Runs a parsed command line, printing results to `out`.
 pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
+    if let Some(Command::Profiles(args)) = &cli.command {
+        return profiles::run(args, out); // the built-in catalogue: no profile to load
+    }
     let configs = Configured::load(cli.profile.as_deref())
         .map_err(|message| Failure::new(Exit::Refused, message))?;
     let result = match cli.command {
         Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports) => ports::run(out),
+        Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),
         Some(Command::Completions(args)) => completions::run(&args, out),
         Some(Command::Man) => man::run(out),
         Some(Command::Run(args)) => return run::run(args, &configs),

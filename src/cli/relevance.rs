@@ -70,7 +70,7 @@ const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl")];
 const SHOWS_ALL: &str = "config";
 
 /// Subcommands that read no module tables (`--profile` is global, so every one receives it).
-const NO_TABLES: &[&str] = &["ports", "completions", "man"];
+const NO_TABLES: &[&str] = &["ports", "completions", "man", "profiles"];
 
 /// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
 /// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).

@@ -202,7 +202,7 @@ fn configured_values_are_never_refused_where_they_have_no_use() {
     let place = Place::new();
     place.user_file("port = \"/nonexistent/tmclsh-config/ttyUSB8\"\nbaud = 19200\nmodule = 2\necho = \"none\"\nprofile = \"custom.toml\"\n");
     std::fs::copy(
-        repo().join("data/tmcm142.toml"),
+        repo().join("data/profiles/tmcm-142.toml"),
         place.user.join("tmclsh/custom.toml"),
     )
     .unwrap();
@@ -316,5 +316,43 @@ fn config_names_the_files_and_what_is_not_set() {
     assert!(
         shown(&report, "baud").contains(&format!("# project {}:1", file.display())),
         "{report}"
+    );
+}
+
+#[test]
+fn a_profile_is_a_built_in_name_or_a_file() {
+    let place = Place::new();
+    // A name stays a name (no file beside the configuration needed).
+    place.project_file("profile = \"tmcm-6110\"\n");
+    let out = place.run(&["-c", "GAP 4, 5"], &[]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("simulated TMCM-6110"),
+        "{}",
+        stderr(&out)
+    );
+    let out = place.run(&["config"], &[]);
+    assert!(
+        stdout(&out).contains("profile = \"tmcm-6110\""),
+        "{}",
+        stdout(&out)
+    );
+    // A name that is no built-in profile is refused when the profile loads, with the nearest.
+    place.project_file("profile = \"tmcm-6111\"\n");
+    let out = place.run(&["params"], &[]);
+    assert_eq!(code(&out), 2);
+    assert!(
+        stderr(&out).contains("did you mean tmcm-6110?"),
+        "{}",
+        stderr(&out)
+    );
+    // A path is checked as a file at once.
+    place.project_file("profile = \"rig/tmcm-6110\"\n");
+    let out = place.run(&["params"], &[]);
+    assert_eq!(code(&out), 2);
+    assert!(
+        stderr(&out).contains("profile: no such file"),
+        "{}",
+        stderr(&out)
     );
 }

@@ -122,7 +122,7 @@ fn two_files_are_compared_without_a_module() {
 
 /// The built-in profile with `max_current` made read-only.
 fn read_only_profile(dir: &std::path::Path) -> std::path::PathBuf {
-    let text = std::fs::read_to_string(repo().join("data/tmcm142.toml")).unwrap();
+    let text = std::fs::read_to_string(repo().join("data/profiles/tmcm-142.toml")).unwrap();
     let at = text.find("ident = \"max_current\"").unwrap();
     let access = at + text[at..].find("access = \"RWE\"").unwrap();
     let changed = format!("{}access = \"R\"{}", &text[..access], &text[access + 14..]);
@@ -525,7 +525,7 @@ fn a_restore_with_nothing_to_write_says_so() {
 /// The built-in profile with max_current limited to 0..10: a simulator serving it refuses what
 /// a client with the built-in profile lets through.
 fn narrow_profile(dir: &std::path::Path) -> std::path::PathBuf {
-    let text = std::fs::read_to_string(repo().join("data/tmcm142.toml")).unwrap();
+    let text = std::fs::read_to_string(repo().join("data/profiles/tmcm-142.toml")).unwrap();
     let at = text.find("ident = \"max_current\"").unwrap();
     let range = at + text[at..].find("range = [0, 15]").unwrap();
     let changed = format!("{}range = [0, 10]{}", &text[..range], &text[range + 15..]);

@@ -11,13 +11,15 @@ use crate::util::repo;
 use paths::{Source, sources, used_paths};
 
 /// Files outside the dialect folders that may name one: the list of dialects, and the
-/// subcommands only TMCL has (the assembler, the disassembler, program download).
+/// subcommands only TMCL has (the assembler, the disassembler, program download, the list of
+/// module profiles).
 const NAMING_A_DIALECT: &[&str] = &[
     "src/dialect/mod.rs",
     "src/cli/mod.rs",
     "src/cli/asm.rs",
     "src/cli/disasm.rs",
     "src/cli/download.rs",
+    "src/cli/profiles.rs",
 ];
 
 /// The layers of the diagram, top first: the module names on each line of the fenced block that

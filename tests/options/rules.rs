@@ -83,7 +83,7 @@ fn an_option_given_before_and_after_the_subcommand_is_refused() {
 #[test]
 fn options_of_the_other_dialect_or_link_are_refused() {
     let profile = fresh("profile.toml");
-    std::fs::copy(repo().join("data/tmcm142.toml"), &profile).unwrap();
+    std::fs::copy(repo().join("data/profiles/tmcm-142.toml"), &profile).unwrap();
     let cases: &[(&[&str], &str)] = &[
         (
             &["--protocol", "smd4", "--module", "2", "-c", "SYS:FW"],

@@ -127,10 +127,11 @@ fn checked(
             }
             s.to_string()
         }
-        (Kind::Path | Kind::Dir, DeValue::String(s)) => {
+        (Kind::NameOrPath, DeValue::String(s)) if !names_a_file(s) => s.to_string(),
+        (Kind::Path | Kind::Dir | Kind::NameOrPath, DeValue::String(s)) => {
             let path = dir.join(expand_home(s));
             match key.kind {
-                Kind::Path if !path.is_file() => {
+                Kind::Path | Kind::NameOrPath if !path.is_file() => {
                     return Err(format!("{name}: no such file {}", path.display()));
                 }
                 Kind::Dir if path.exists() && !path.is_dir() => {
@@ -155,6 +156,11 @@ fn checked(
     };
     option_accepts(cmd, key.id, &text).map_err(|why| format!("{name}: {why}"))?;
     Ok(text)
+}
+
+/// Whether a name-or-file value is a file: it has a directory part or a `.toml` ending.
+fn names_a_file(text: &str) -> bool {
+    text.contains('/') || text.contains(std::path::MAIN_SEPARATOR) || text.ends_with(".toml")
 }
 
 /// `~/…` in a configuration file means the home directory.

@@ -34,6 +34,9 @@ pub enum Kind {
     Integer,
     /// A file (relative to the configuration file's directory).
     Path,
+    /// A built-in name, kept as written, or — with a directory part or a `.toml` ending — a file
+    /// as for [`Kind::Path`] (`profile = "tmcm-6110"`, `profile = "rig/my.toml"`).
+    NameOrPath,
     /// A directory (relative to the configuration file's directory).
     Dir,
 }
@@ -79,8 +82,8 @@ pub const KEYS: &[Key] = &[
     Key {
         name: "profile",
         id: "profile",
-        kind: Kind::Path,
-        example: "profile = \"profiles/tmcm-1140.toml\"",
+        kind: Kind::NameOrPath,
+        example: "profile = \"tmcm-1140\" or \"profiles/my-module.toml\"",
         unset: "the built-in TMCM-142 tables",
     },
     Key {

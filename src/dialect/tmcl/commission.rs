@@ -97,9 +97,12 @@ impl ParamDevice for TmclSession {
         self.format(self.target(), op)
     }
 
+    /// STAP/STGP per parameter; none for a global parameter in a bank STGP does not take (the
+    /// TMCM-142's bank-0 settings are kept in EEPROM by SGP itself).
     fn store_steps(&self, params: &[&ParamRef]) -> Vec<StoreStep> {
         params
             .iter()
+            .filter(|param| stored_by_command(self.profile(), param))
             .map(|&param| {
                 let op = Op::Command(instruction(param, [Opcode::Stap, Opcode::Stgp], 0));
                 StoreStep {
@@ -112,11 +115,28 @@ impl ParamDevice for TmclSession {
     }
 
     fn store(&mut self, step: &StoreStep) -> Result<(), SessionError> {
-        for param in &step.params {
+        let profile = self.profile().clone();
+        for param in step
+            .params
+            .iter()
+            .filter(|p| stored_by_command(&profile, p))
+        {
             let instruction = instruction(param, [Opcode::Stap, Opcode::Stgp], 0);
             self.request(self.target(), instruction)?.checked()?;
         }
         Ok(())
+    }
+}
+
+/// Whether a parameter is made permanent by STAP/STGP: a global one only in a bank STGP takes.
+fn stored_by_command(profile: &Profile, param: &ParamRef) -> bool {
+    match param.scope {
+        Scope::Global { bank } => profile
+            .commands
+            .by_number(11)
+            .and_then(|stgp| stgp.banks.as_ref())
+            .is_none_or(|banks| banks.contains(&bank)),
+        _ => true,
     }
 }
 

@@ -1,5 +1,6 @@
-//! TMCL configured by the command line: the module profile (`--profile FILE`, or the built-in
-//! TMCM-142 tables), from which sessions, simulators, the parameter table and replays are made.
+//! TMCL configured by the command line: the module profile (`--profile NAME|FILE`: a built-in
+//! profile or a file; by default the TMCM-142's), from which sessions, simulators, the parameter
+//! table and replays are made.
 
 use std::io::{self, Write};
 use std::path::Path;
@@ -14,7 +15,7 @@ use crate::session::SessionError;
 use crate::session::transcript::Header;
 use crate::sim::Device;
 
-use super::profile::Profile;
+use super::profile::{Profile, catalogue};
 use super::session::{Echo, TmclSession};
 use super::sim::{Bus, BusOptions};
 
@@ -24,11 +25,12 @@ pub struct TmclConfig {
     pub profile: Arc<Profile>,
 }
 
-/// Loads the profile `--profile` names, or the built-in one.
+/// Loads the profile `--profile` names (a built-in name, alias or module number, or a file), or
+/// the default one.
 pub fn configure(profile: Option<&Path>) -> Result<Box<dyn DialectConfig>, String> {
     let profile = match profile {
         None => Profile::builtin(),
-        Some(path) => Arc::new(Profile::from_file(path).map_err(|e| e.to_string())?),
+        Some(arg) => catalogue::resolve(arg).map_err(|e| e.to_string())?,
     };
     Ok(Box::new(TmclConfig { profile }))
 }
@@ -43,15 +45,23 @@ pub fn profile(config: &dyn DialectConfig) -> Option<&Arc<Profile>> {
 
 /// The transcript header of a TMCL session with modules of `profile`.
 pub fn header(profile: &Profile) -> Header {
-    let source = profile
-        .source
-        .as_ref()
-        .map_or_else(|| "built-in".to_string(), |path| path.display().to_string());
     Header {
         dialect: super::DIALECT.name.to_string(),
         module: profile.module.clone(),
-        profile: Some(source),
+        profile: Some(profile.origin()),
         version: env!("CARGO_PKG_VERSION").to_string(),
+    }
+}
+
+impl TmclConfig {
+    /// The profile the simulator serves: the configured one, but a simulated TMCM-142 behind the
+    /// generic profile (which describes no module to simulate).
+    fn simulated_profile(&self) -> Arc<Profile> {
+        if self.profile.generic {
+            Profile::builtin()
+        } else {
+            self.profile.clone()
+        }
     }
 }
 
@@ -71,11 +81,11 @@ impl DialectConfig for TmclConfig {
     }
 
     fn simulated_module(&self) -> String {
-        self.profile.module.clone()
+        self.simulated_profile().module.clone()
     }
 
     fn simulator(&self) -> Box<dyn Device> {
-        Box::new(Bus::new(self.profile.clone(), BusOptions::default()))
+        Box::new(Bus::new(self.simulated_profile(), BusOptions::default()))
     }
 
     fn served_simulator(
@@ -84,7 +94,7 @@ impl DialectConfig for TmclConfig {
         state: Option<&Path>,
         verbose: bool,
     ) -> Result<Box<dyn Device>, String> {
-        super::sim::flags::served(&self.profile, flags, state, verbose)
+        super::sim::flags::served(&self.simulated_profile(), flags, state, verbose)
     }
 
     /// For a conversation, the target module is contacted and its echo set as `--echo` asks.

@@ -23,8 +23,9 @@ pub fn intro(out: &mut dyn Write) -> io::Result<()> {
 /// The topics named at the end of `:help`.
 pub const MORE: &str = ":help COMMAND, :help params, :help exit, :help ascii";
 
-/// `:help params` and `:help ascii`; false for other topics.
-pub fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
+/// `:help params` and `:help ascii` (the ASCII commands of `profile`'s module); false for other
+/// topics.
+pub fn topic(profile: &Profile, topic: &str, out: &mut dyn Write) -> io::Result<bool> {
     match topic {
         "params" => writeln!(
             out,
@@ -35,10 +36,22 @@ pub fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
                 out,
                 "ASCII mode (manual 6.6): lines are <address char><command>, replies <host char><module char> <status> <value>."
             )?;
-            writeln!(
-                out,
-                "Only ROL ROR MST MVP SAP GAP STAP RSAP SGP GGP STGP RSGP RFS SIO GIO SAC SCO GCO CCO UF0-UF7, plus BIN RUN STOP."
-            )?;
+            let allowed: Vec<&str> = profile
+                .commands
+                .iter()
+                .filter(|c| c.ascii_allowed)
+                .map(|c| c.mnemonic.as_str())
+                .collect();
+            if allowed.is_empty() {
+                writeln!(out, "The {} has no ASCII interface.", profile.module)?;
+            } else {
+                writeln!(
+                    out,
+                    "The {} takes only {}, plus BIN RUN STOP.",
+                    profile.module,
+                    allowed.join(" ")
+                )?;
+            }
             writeln!(
                 out,
                 "Echo (GP 67 bits 4/5): char, line or none (:echo). :bin switches to binary frames for the rest."

@@ -8,6 +8,13 @@ use super::profile::{Param, ParamKind, Profile};
 /// stderr and returns false.
 pub fn write_params(profile: &Profile, filter: &str, out: &mut dyn Write) -> io::Result<bool> {
     let rows: Vec<&Param> = profile.matching(filter).collect();
+    if profile.generic {
+        eprintln!(
+            "the {} profile knows parameters by number only (0..255): it has none to list",
+            profile.module
+        );
+        return Ok(false);
+    }
     if rows.is_empty() {
         eprintln!("no {} parameter matches '{filter}'", profile.module);
         return Ok(false);
@@ -35,9 +42,15 @@ pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
         "kind", "no", "name", "acc", "range"
     )?;
     for p in rows {
+        // A range that applies while another parameter has a value follows the unit.
+        let when: String = p
+            .range_when
+            .iter()
+            .map(|r| format!(" ({})", r.describe()))
+            .collect();
         writeln!(
             out,
-            "{:<8} {:>3}  {:<ident_width$}  {:<3}  {:<range_width$}  {}",
+            "{:<8} {:>3}  {:<ident_width$}  {:<3}  {:<range_width$}  {}{when}",
             kind(p),
             p.number,
             p.ident,

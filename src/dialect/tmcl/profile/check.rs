@@ -12,7 +12,10 @@ use std::collections::HashMap;
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
+use super::commands::CommandTable;
 use super::load::{CommandRow, ParamRow, ProfileFile};
+
+mod family;
 
 /// One step of a place in the file: a key of a table, or a row of an array.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -41,7 +44,7 @@ impl Problem {
         }
     }
 
-    fn also(mut self, first: Vec<Step>) -> Self {
+    pub(crate) fn also(mut self, first: Vec<Step>) -> Self {
         self.first = Some(first);
         self
     }
@@ -52,14 +55,17 @@ const MAX_NUMBER: i64 = 255;
 /// A number of -1 marks a placeholder row (a bank whose contents are unknown).
 const PLACEHOLDER: i64 = -1;
 
-/// Every problem of the file's rows, in file order of the checks.
-pub(crate) fn check(file: &ProfileFile) -> Vec<Problem> {
+/// Every problem of the file's rows, in file order of the checks. `base` is the command table a
+/// file without `[[command]]` rows starts from.
+pub(crate) fn check(file: &ProfileFile, base: Option<&CommandTable>) -> Vec<Problem> {
     let mut problems = Vec::new();
     check_meta(file, &mut problems);
     check_params(&file.axis_parameter, "axis_parameter", &mut problems);
     check_params(&file.global_parameter, "global_parameter", &mut problems);
-    check_commands(&file.command, &mut problems);
+    check_commands(&file.command, "command", &mut problems);
+    check_commands(&file.extra_command, "extra_command", &mut problems);
     check_simulation(file, &mut problems);
+    family::check(file, base, &mut problems);
     problems
 }
 
@@ -232,7 +238,12 @@ fn ident_problem(ident: &str) -> Option<String> {
     })
 }
 
-fn check_range(range: Option<[i64; 2]>, place: Vec<Step>, key: &str, problems: &mut Vec<Problem>) {
+pub(crate) fn check_range(
+    range: Option<[i64; 2]>,
+    place: Vec<Step>,
+    key: &str,
+    problems: &mut Vec<Problem>,
+) {
     let Some([lo, hi]) = range else { return };
     if lo > hi {
         problems.push(Problem::at(
@@ -247,11 +258,11 @@ fn check_range(range: Option<[i64; 2]>, place: Vec<Step>, key: &str, problems: &
     }
 }
 
-fn check_commands(rows: &[CommandRow], problems: &mut Vec<Problem>) {
+fn check_commands(rows: &[CommandRow], table: &'static str, problems: &mut Vec<Problem>) {
     let mut numbers: HashMap<u8, Vec<Step>> = HashMap::new();
     let mut mnemonics: HashMap<String, Vec<Step>> = HashMap::new();
     for (i, row) in rows.iter().enumerate() {
-        let at = |key| vec![Step::Key("command"), Step::Row(i), Step::Key(key)];
+        let at = |key| vec![Step::Key(table), Step::Row(i), Step::Key(key)];
         match numbers.get(&row.number) {
             Some(first) => problems.push(
                 Problem::at(
@@ -301,7 +312,7 @@ fn check_commands(rows: &[CommandRow], problems: &mut Vec<Problem>) {
         for (k, keyword) in row.types.iter().enumerate() {
             let at = |key| {
                 vec![
-                    Step::Key("command"),
+                    Step::Key(table),
                     Step::Row(i),
                     Step::Key("types"),
                     Step::Row(k),

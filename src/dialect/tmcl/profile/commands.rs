@@ -1,6 +1,7 @@
 //! The TMCL command table: numbers, mnemonics, operand layouts, keywords and where each command
 //! may be used. Built from the profile data; nothing here lists commands by hand.
 
+use super::family::RangeWhen;
 use super::load::{CommandRow, KeywordRow};
 
 /// What an operand in mnemonic form means, and so which instruction field it fills.
@@ -42,7 +43,7 @@ pub enum Field {
 }
 
 impl OperandKind {
-    fn parse(word: &str) -> Option<OperandKind> {
+    pub(crate) fn parse(word: &str) -> Option<OperandKind> {
         Some(match word {
             "keyword" => OperandKind::Keyword,
             "axis_param" => OperandKind::AxisParam,
@@ -149,6 +150,14 @@ pub struct CommandSpec {
     pub starts_motion: bool,
     /// Whether the entry is best knowledge rather than confirmed.
     pub uncertain: bool,
+    /// The banks a global-parameter command accepts (STGP/RSGP: bank 2); `None`: every bank.
+    pub banks: Option<Vec<u8>>,
+    /// Why, as the profile says (shown when another bank is refused).
+    pub banks_note: String,
+    /// Ranges of the value that apply while another parameter has a value.
+    pub range_when: Vec<RangeWhen>,
+    /// The manual makes the type byte "don't care" (134, 135).
+    pub type_ignored: bool,
 }
 
 impl CommandSpec {
@@ -250,6 +259,8 @@ impl AsciiWord {
 pub struct CommandTable {
     commands: Vec<CommandSpec>,
     ascii_words: Vec<String>,
+    /// Commands of the built-in table this module does not have, with the profile's reason.
+    absent: Vec<(CommandSpec, String)>,
 }
 
 impl CommandTable {
@@ -295,12 +306,17 @@ impl CommandTable {
                 },
                 starts_motion: row.starts_motion,
                 uncertain: row.uncertain,
+                banks: row.banks.clone(),
+                banks_note: row.banks_note.clone(),
+                range_when: RangeWhen::from_rows(&row.range_when),
+                type_ignored: row.type_ignored,
             });
         }
         let ascii_words = ascii_words.iter().map(|w| w.to_ascii_uppercase()).collect();
         Ok(CommandTable {
             commands,
             ascii_words,
+            absent: Vec::new(),
         })
     }
 
@@ -347,6 +363,62 @@ impl CommandTable {
             .map(|c| c.mnemonic.as_str())
             .filter(|m| !m.is_empty())
             .chain(self.ascii_words.iter().map(String::as_str))
+    }
+}
+
+/// How a module's table differs from the built-in one (profile `[commands]`, `[[extra_command]]`,
+/// `[ascii]`).
+impl CommandTable {
+    /// Takes out the commands numbered in `numbers`, remembering them with `reason`.
+    pub(crate) fn remove(&mut self, numbers: &[u8], reason: &str) {
+        let (gone, kept) = std::mem::take(&mut self.commands)
+            .into_iter()
+            .partition(|c| numbers.contains(&c.number));
+        self.commands = kept;
+        let gone: Vec<CommandSpec> = gone;
+        self.absent
+            .extend(gone.into_iter().map(|c| (c, reason.to_string())));
+    }
+
+    /// Adds the commands of `other`, in number order with the rest.
+    pub(crate) fn extend(&mut self, other: CommandTable) {
+        self.commands.extend(other.commands);
+        self.commands.sort_by_key(|c| c.number);
+    }
+
+    /// Keeps the commands' conditional ranges whose condition `keep` accepts.
+    pub(crate) fn keep_range_when(&mut self, keep: impl Fn(&super::family::Condition) -> bool) {
+        for command in &mut self.commands {
+            command.range_when.retain(|r| keep(&r.when));
+        }
+    }
+
+    /// The words that exist only in ASCII mode.
+    pub(crate) fn set_ascii_words(&mut self, words: &[String]) {
+        self.ascii_words = words.iter().map(|w| w.to_ascii_uppercase()).collect();
+    }
+
+    /// Makes `mnemonics` (case-insensitive) the commands accepted in ASCII mode, and no others.
+    pub(crate) fn set_ascii_allowed(&mut self, mnemonics: &[String]) {
+        for command in &mut self.commands {
+            command.ascii_allowed = !command.mnemonic.is_empty()
+                && mnemonics
+                    .iter()
+                    .any(|m| m.eq_ignore_ascii_case(&command.mnemonic));
+        }
+    }
+
+    /// A command of the built-in table this module does not have, by mnemonic, with the reason.
+    pub fn absent(&self, mnemonic: &str) -> Option<(&CommandSpec, &str)> {
+        self.absent
+            .iter()
+            .find(|(c, _)| !c.mnemonic.is_empty() && c.mnemonic.eq_ignore_ascii_case(mnemonic))
+            .map(|(c, reason)| (c, reason.as_str()))
+    }
+
+    /// Every command of the built-in table this module does not have, with the reason.
+    pub fn absent_commands(&self) -> impl Iterator<Item = (&CommandSpec, &str)> {
+        self.absent.iter().map(|(c, reason)| (c, reason.as_str()))
     }
 }
 

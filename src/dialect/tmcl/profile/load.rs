@@ -1,8 +1,9 @@
-//! Reading a module profile from its TOML file (the schema of `data/tmcm142.toml`).
+//! Reading a module profile from its TOML file (the schema of `data/profiles/tmcm-142.toml`, the
+//! family fields in `data/profiles/README.md`).
 //!
-//! The file is written for people first: it carries sources, pages and uncertainty notes that
-//! tmclsh ignores. Only the fields below are read; unknown fields are allowed so that a profile can
-//! be annotated freely.
+//! The file is written for people first: it carries pages and uncertainty notes that tmclsh
+//! ignores. Only the fields below are read; unknown fields are allowed so that a profile can be
+//! annotated freely.
 
 use serde::Deserialize;
 
@@ -19,6 +20,15 @@ pub(crate) struct ProfileFile {
     pub simulation: Option<SimulationRow>,
     #[serde(default)]
     pub snapshot: super::SnapshotRules,
+    /// What a profile without `[[command]]` rows changes in the built-in command table.
+    pub commands: Option<CommandsSection>,
+    /// Commands the built-in table lacks, in the `[[command]]` schema.
+    #[serde(default)]
+    pub extra_command: Vec<CommandRow>,
+    #[serde(default)]
+    pub io_port: Vec<IoPortRow>,
+    #[serde(default)]
+    pub source_doc: Vec<SourceDocRow>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -32,6 +42,29 @@ pub(crate) struct Meta {
     pub coordinates: u8,
     #[serde(default = "stack_depth")]
     pub stack_depth: u8,
+    pub module_number: Option<u32>,
+    pub version_prefix: Option<String>,
+    pub version_format: Option<String>,
+    pub bootloader_format: Option<String>,
+    #[serde(default)]
+    pub aliases: Vec<String>,
+    pub ascii_interface: Option<String>,
+    pub parameter_generation: Option<String>,
+    /// The generic profile: no parameter tables, numbers sent unchecked.
+    #[serde(default)]
+    pub generic: bool,
+    #[serde(default)]
+    pub manual: String,
+    #[serde(default)]
+    pub manual_url: String,
+    #[serde(default)]
+    pub motion_controller: String,
+    /// Field name → source, for the `[meta]` fields.
+    #[serde(default)]
+    pub sources: std::collections::BTreeMap<String, String>,
+    /// Field name → why it is uncertain.
+    #[serde(default)]
+    pub uncertain_facts: std::collections::BTreeMap<String, String>,
 }
 
 fn one() -> u8 {
@@ -68,6 +101,28 @@ pub(crate) struct CommandRow {
     pub starts_motion: bool,
     #[serde(default)]
     pub uncertain: bool,
+    /// The banks a global-parameter command accepts (STGP/RSGP: user variables only).
+    pub banks: Option<Vec<u8>>,
+    #[serde(default)]
+    pub banks_note: String,
+    #[serde(default)]
+    pub range_when: Vec<RangeWhenRow>,
+    /// The manual makes the type byte "don't care".
+    #[serde(default)]
+    pub type_ignored: bool,
+}
+
+/// A range that applies instead of the usual one while a parameter has a value.
+#[derive(Debug, Deserialize)]
+pub(crate) struct RangeWhenRow {
+    pub axis_parameter: Option<u8>,
+    pub global_parameter: Option<u8>,
+    #[serde(default)]
+    pub bank: u8,
+    pub equals: i64,
+    pub range: [i64; 2],
+    #[serde(default)]
+    pub unit: String,
 }
 
 #[derive(Debug, Deserialize)]
@@ -96,12 +151,50 @@ pub(crate) struct ParamRow {
     pub default: Option<i64>,
     #[serde(default)]
     pub uncertain: bool,
+    #[serde(default)]
+    pub range_when: Vec<RangeWhenRow>,
 }
 
 #[derive(Debug, Deserialize)]
 pub(crate) struct AsciiSection {
     #[serde(default)]
     pub ascii_only_commands: Vec<String>,
+    /// The module's ASCII allow-list; replaces the `ascii_allowed` flags of the command rows.
+    pub allowed_commands: Option<Vec<String>>,
+}
+
+#[derive(Debug, Deserialize)]
+pub(crate) struct CommandsSection {
+    pub base: Option<String>,
+    /// Commands of the built-in table the module does not have.
+    #[serde(default)]
+    pub absent: Vec<u8>,
+    #[serde(default)]
+    pub absent_reason: String,
+}
+
+/// One GIO/SIO address, or (without bank and port) a signal documented only.
+#[derive(Debug, Deserialize)]
+pub(crate) struct IoPortRow {
+    pub bank: Option<u8>,
+    pub port: Option<u8>,
+    pub name: Option<String>,
+    pub signal: Option<String>,
+    #[serde(default)]
+    pub kind: String,
+    pub range: Option<[i64; 2]>,
+    #[serde(default)]
+    pub unit: String,
+}
+
+#[derive(Debug, Deserialize)]
+pub(crate) struct SourceDocRow {
+    #[serde(default)]
+    pub id: String,
+    #[serde(default)]
+    pub what: String,
+    #[serde(default, rename = "where")]
+    pub at: String,
 }
 
 #[derive(Debug, Deserialize)]

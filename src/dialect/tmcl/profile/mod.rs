@@ -1,24 +1,31 @@
 //! Module profiles: the command, axis-parameter and global-parameter tables of a module, as data.
 //!
-//! One table serves the validator, completion, hints, `params`, the simulator and the docs. The
-//! TMCM-142 profile is built in (`data/tmcm142.toml`); `--profile FILE.toml` loads another module's
-//! table with the same schema, so a new module needs no new release.
+//! One table serves the validator, completion, hints, `params`, the simulator and the docs. Every
+//! file of `data/profiles/` is built in ([`catalogue`]: by name, alias or module number); the
+//! TMCM-142's is the default and holds the TMCL command table the others start from;
+//! `--profile FILE.toml` loads another module's table with the same schema, so a new module needs
+//! no new release. A module without a profile gets the generic one ([`catalogue::generic`]).
 
+pub mod catalogue;
 mod check;
 pub mod commands;
+pub mod family;
 pub(crate) mod load;
+pub mod version;
 
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 
 use crate::suggest;
 use commands::CommandTable;
+use family::{Identity, IoPort, RangeWhen};
 use load::{ParamRow, ProfileFile};
 
 pub use crate::commission::{Access, SnapshotRole, SnapshotRules};
 
-/// The built-in profile's source text, kept in the repository as the single source of truth.
-pub const BUILTIN_TOML: &str = include_str!("../../../../data/tmcm142.toml");
+/// The default profile's source text (TMCM-142), kept in the repository as the single source of
+/// truth for it and for the TMCL command table.
+pub const BUILTIN_TOML: &str = include_str!("../../../../data/profiles/tmcm-142.toml");
 
 /// Axis parameters belong to a motor; global parameters to a bank.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -55,6 +62,8 @@ pub struct Param {
     pub default: Option<i64>,
     /// Whether any field is best knowledge rather than confirmed by the manual.
     pub uncertain: bool,
+    /// Ranges that apply instead of `range` while another parameter has a value.
+    pub range_when: Vec<RangeWhen>,
 }
 
 impl Param {
@@ -134,8 +143,16 @@ pub struct Profile {
     pub sim: SimConstants,
     /// How parameter snapshots treat each parameter.
     pub snapshot: SnapshotRules,
-    /// The file it was loaded from; `None` for the built-in profile.
+    /// The file it was loaded from; `None` for a built-in profile.
     pub source: Option<PathBuf>,
+    /// The built-in name (`tmcm-6110`, `generic`), or the file's stem.
+    pub name: String,
+    /// Who the module is and what the profile rests on.
+    pub identity: Identity,
+    /// The GIO/SIO addresses of the module, by bank and port (empty: not mapped, not checked).
+    pub io_ports: Vec<IoPort>,
+    /// No parameter tables: parameters are known by number only (the generic profile).
+    pub generic: bool,
 }
 
 /// Why a profile could not be loaded.
@@ -159,6 +176,17 @@ pub enum ProfileError {
         path: String,
         /// What is wrong, one `line N: …` each.
         problems: Vec<String>,
+    },
+    /// `--profile` names neither a built-in profile nor a file.
+    #[error(
+        "no built-in profile or file '{name}' (`tmclsh profiles` lists the built-in ones){}",
+        suggest::did_you_mean(suggestion)
+    )]
+    Unknown {
+        /// What was given.
+        name: String,
+        /// The nearest built-in name.
+        suggestion: Option<String>,
     },
 }
 
@@ -186,16 +214,30 @@ pub enum LookupError {
         /// The identifiers it could mean.
         candidates: Vec<String>,
     },
+    /// A name where the profile has none (the generic profile).
+    #[error(
+        "the {module} profile has no parameter names: give the {kind} parameter's number \
+         (0..255) for '{name}', or the module's profile with --profile (tmclsh profiles lists them)"
+    )]
+    NumbersOnly {
+        /// "axis" or "global".
+        kind: &'static str,
+        /// What was typed.
+        name: String,
+        /// The profile's module name.
+        module: String,
+    },
 }
 
 impl Profile {
-    /// The built-in TMCM-142 profile (parsed once per process).
+    /// The default built-in profile, the TMCM-142's (parsed once per process).
     pub fn builtin() -> Arc<Profile> {
         static BUILTIN: OnceLock<Arc<Profile>> = OnceLock::new();
         BUILTIN
             .get_or_init(|| {
-                let profile = Profile::from_toml(BUILTIN_TOML, None)
-                    .expect("the built-in profile data/tmcm142.toml is valid");
+                let mut profile = Profile::from_toml(BUILTIN_TOML, None)
+                    .expect("the built-in profile data/profiles/tmcm-142.toml is valid");
+                profile.name = catalogue::DEFAULT.to_string();
                 Arc::new(profile)
             })
             .clone()
@@ -207,16 +249,22 @@ impl Profile {
             path: path.display().to_string(),
             source,
         })?;
-        let builtin = Profile::builtin();
-        let mut profile =
-            Profile::from_toml(&text, Some(&builtin.commands)).map_err(|message| {
-                ProfileError::Schema {
-                    path: path.display().to_string(),
-                    problems: message.lines().map(String::from).collect(),
-                }
-            })?;
+        let mut profile = Profile::from_text(&text, &path.display().to_string())?;
         profile.source = Some(path.to_path_buf());
+        profile.name = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
         Ok(profile)
+    }
+
+    /// A profile from its text, over the built-in command table; `path` names it in errors.
+    pub(crate) fn from_text(text: &str, path: &str) -> Result<Profile, ProfileError> {
+        let builtin = Profile::builtin();
+        Profile::from_toml(text, Some(&builtin.commands)).map_err(|message| ProfileError::Schema {
+            path: path.to_string(),
+            problems: message.lines().map(String::from).collect(),
+        })
     }
 
     /// Builds a profile from TOML text; `fallback_commands` fills in a missing command table.
@@ -226,17 +274,22 @@ impl Profile {
         fallback_commands: Option<&CommandTable>,
     ) -> Result<Profile, String> {
         let file = ProfileFile::parse(text).map_err(|e| check::render_toml_error(text, &e))?;
-        let problems = check::check(&file);
+        let base = if file.command.is_empty() {
+            fallback_commands
+        } else {
+            None
+        };
+        let problems = check::check(&file, base);
         if !problems.is_empty() {
             return Err(check::render(text, &problems).join("\n"));
         }
         let at = |place: Vec<check::Step>, message: String| {
             check::render(text, &[check::Problem::at(place, message)]).join("\n")
         };
-        let commands = if file.command.is_empty() {
-            fallback_commands
-                .cloned()
-                .ok_or_else(|| "no [[command]] rows".to_string())?
+        let mut commands = if file.command.is_empty() {
+            let base = fallback_commands.ok_or_else(|| "no [[command]] rows".to_string())?;
+            family::compose(base, &file)
+                .map_err(|message| at(vec![check::Step::Key("extra_command")], message))?
         } else {
             let ascii_words = file.ascii.as_ref().map(|a| a.ascii_only_commands.clone());
             CommandTable::from_rows(&file.command, ascii_words.unwrap_or_default()).map_err(
@@ -254,6 +307,7 @@ impl Profile {
                 },
             )?
         };
+        family::apply_ascii(&mut commands, &file);
         let mut axis = Vec::new();
         for row in &file.axis_parameter {
             axis.extend(expand(row, ParamKind::Axis));
@@ -302,7 +356,25 @@ impl Profile {
             },
             snapshot: file.snapshot.clone(),
             source: None,
+            name: String::new(),
+            identity: family::identity(&file),
+            io_ports: family::io_ports(&file),
+            generic: file.meta.generic,
         })
+    }
+
+    /// The I/O port at `bank` and `port`, if the profile maps it.
+    pub fn io_port(&self, bank: u8, port: u8) -> Option<&IoPort> {
+        self.io_ports
+            .iter()
+            .find(|p| p.bank == bank && p.port == port)
+    }
+
+    /// Where the profile comes from, for banners and transcripts: "built-in" or the file.
+    pub fn origin(&self) -> String {
+        self.source
+            .as_ref()
+            .map_or_else(|| "built-in".to_string(), |path| path.display().to_string())
     }
 
     /// The axis parameter with this number.
@@ -319,12 +391,26 @@ impl Profile {
 
     /// Resolves an axis parameter identifier, name or unique identifier prefix.
     pub fn find_axis(&self, name: &str) -> Result<&Param, LookupError> {
+        self.by_number_only("axis", name)?;
         find_by_name(&self.axis, name, "axis")
     }
 
     /// Resolves a global parameter identifier, name or unique identifier prefix (any bank).
     pub fn find_global(&self, name: &str) -> Result<&Param, LookupError> {
+        self.by_number_only("global", name)?;
         find_by_name(&self.global, name, "global")
+    }
+
+    /// The refusal of a name where the profile knows parameters by number only.
+    fn by_number_only(&self, kind: &'static str, name: &str) -> Result<(), LookupError> {
+        if self.generic {
+            return Err(LookupError::NumbersOnly {
+                kind,
+                name: name.to_string(),
+                module: self.module.clone(),
+            });
+        }
+        Ok(())
     }
 
     /// Parameters whose number, identifier, name or unit contains `filter` (case-insensitive).
@@ -397,6 +483,7 @@ fn expand(row: &ParamRow, kind: ParamKind) -> Vec<Param> {
             description: row.description.clone(),
             default: row.default,
             uncertain: row.uncertain,
+            range_when: RangeWhen::from_rows(&row.range_when),
         })
         .collect()
 }

@@ -124,7 +124,7 @@ fn every_power_up_value_lies_in_its_range() {
         let value = param.default.unwrap_or(0);
         assert!(
             param.accepts(value),
-            "{} ({}) powers up at {value}, outside {}: give it a default in data/tmcm142.toml",
+            "{} ({}) powers up at {value}, outside {}: give it a default in data/profiles/tmcm-142.toml",
             param.ident,
             param.number,
             param.range_text()

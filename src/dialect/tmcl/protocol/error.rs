@@ -73,7 +73,7 @@ pub enum InputError {
         hi: i64,
     },
     /// A parameter name that does not resolve.
-    #[error("{0}; list them with :params or `tmclsh params`")]
+    #[error("{}", param_text(.0))]
     Param(#[from] LookupError),
     /// A global parameter named with the wrong bank.
     #[error("global parameter '{ident}' is in bank {bank}, not bank {given}")]
@@ -156,6 +156,74 @@ pub enum InputError {
         /// Unit, if any.
         unit: String,
     },
+    /// A command of the TMCL table this module does not have (profile `[commands] absent`).
+    #[error("{mnemonic} ({number}) is not a command of the {module} (its profile: {reason})")]
+    AbsentCommand {
+        /// The command as typed.
+        mnemonic: String,
+        /// Its number.
+        number: u8,
+        /// Module name.
+        module: String,
+        /// Why, as the profile says.
+        reason: String,
+    },
+    /// A bank the command does not accept on this module (STGP/RSGP: user variables only).
+    #[error(
+        "{mnemonic} accepts bank {accepted}, not bank {bank}{}",
+        note_text(note)
+    )]
+    BankNotAccepted {
+        /// The command.
+        mnemonic: String,
+        /// The bank typed.
+        bank: u8,
+        /// The banks it accepts, and where: "2 only on the TMCM-142".
+        accepted: String,
+        /// The profile's note on why.
+        note: String,
+    },
+    /// An I/O address the module's map does not have.
+    #[error("the {module} has no I/O port {port} in bank {bank}; it has {known}")]
+    BadPort {
+        /// Port typed.
+        port: u8,
+        /// Bank typed.
+        bank: u8,
+        /// Module name.
+        module: String,
+        /// The ports it has, by bank.
+        known: String,
+    },
+    /// A write to an I/O port that is not an output.
+    #[error("{mnemonic} sets outputs ({outputs}); port {port} of bank {bank} is {name}, an input")]
+    NotAnOutput {
+        /// The command.
+        mnemonic: String,
+        /// Port typed.
+        port: u8,
+        /// Bank typed.
+        bank: u8,
+        /// The port's name.
+        name: String,
+        /// The output ports.
+        outputs: String,
+    },
+}
+
+fn param_text(error: &LookupError) -> String {
+    match error {
+        LookupError::NumbersOnly { .. } => error.to_string(),
+        _ => format!("{error}; list them with :params or `tmclsh params`"),
+    }
+}
+
+fn note_text(note: &str) -> String {
+    if note.is_empty() {
+        String::new()
+    } else {
+        format!(" ({note})")
+    }
 }
 
 fn plural(n: u8, word: &str) -> String {
@@ -188,6 +256,26 @@ pub enum Warning {
         /// Module name.
         module: String,
     },
+    /// A value valid in the usual range, outside a conditional one.
+    #[error("{0}")]
+    ConditionalRange(ConditionalRange),
+}
+
+/// A value outside one of its ranges that lies in another (`range_when`): sent, with this notice.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "{what}: {value} is outside {outside}; sent, as it lies in {valid} (which applies depends \
+     on a setting only the module knows)"
+)]
+pub struct ConditionalRange {
+    /// What the value is for.
+    pub what: String,
+    /// The value typed.
+    pub value: i64,
+    /// The range it misses ("0..31999999 usteps/s when axis parameter 255 = 1").
+    pub outside: String,
+    /// The range it lies in.
+    pub valid: String,
 }
 
 fn bank_text(bank: Option<u8>) -> String {

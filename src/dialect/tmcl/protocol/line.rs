@@ -96,6 +96,15 @@ fn unknown_command(word: &str, address: Option<char>, profile: &Profile) -> Inpu
         None => word.to_string(),
     };
     let readings = [typed.as_str(), typed.get(1..).unwrap_or_default()];
+    // A command of the TMCL table this module lacks is named as such, not as a typo.
+    if let Some((spec, reason)) = readings.iter().find_map(|r| profile.commands.absent(r)) {
+        return InputError::AbsentCommand {
+            mnemonic: spec.mnemonic.clone(),
+            number: spec.number,
+            module: profile.module.clone(),
+            reason: reason.to_string(),
+        };
+    }
     let suggestion = suggest::nearest_of(&readings, profile.commands.words());
     InputError::UnknownCommand {
         word: typed,

@@ -1,6 +1,9 @@
-//! Checks a resolved line against the profile before it is sent: mode, keywords, motor, parameter
-//! access and value ranges. Unknown parameter *numbers* pass with a warning (the tables are
-//! incomplete); everything else that is wrong is refused.
+//! Checks a resolved line against the profile before it is sent: mode, keywords, motor, bank, I/O
+//! port, parameter access and value ranges. Unknown parameter *numbers* pass with a warning (the
+//! tables are incomplete; the generic profile has none, and says so once per session); everything
+//! else that is wrong is refused. The rules a module's profile adds are in [`family`].
+
+mod family;
 
 use crate::dialect::tmcl::profile::{Param, ParamKind, Profile};
 
@@ -43,11 +46,14 @@ pub fn validate_instruction(
             number: instruction.command.number(),
             module: profile.module.clone(),
         })?;
-    check_mode(spec, mode)?;
+    check_mode(spec, mode, profile)?;
     check_keyword(spec, instruction)?;
     check_motor(spec, instruction, profile)?;
-    check_ranges(spec, instruction, profile)?;
-    check_param(spec, instruction, profile)
+    let mut warnings = check_ranges(spec, instruction, profile)?;
+    warnings.extend(check_param(spec, instruction, profile)?);
+    family::check_bank(spec, instruction, profile)?;
+    family::check_port(spec, instruction, profile)?;
+    Ok(warnings)
 }
 
 fn check_ascii_word(word: AsciiWord, mode: Mode) -> Result<(), InputError> {
@@ -68,7 +74,7 @@ fn check_ascii_word(word: AsciiWord, mode: Mode) -> Result<(), InputError> {
     })
 }
 
-fn check_mode(spec: &CommandSpec, mode: Mode) -> Result<(), InputError> {
+fn check_mode(spec: &CommandSpec, mode: Mode, profile: &Profile) -> Result<(), InputError> {
     let name = spec.display_name();
     let program_only = spec.standalone && !spec.direct_mode;
     let message = match mode {
@@ -79,8 +85,9 @@ fn check_mode(spec: &CommandSpec, mode: Mode) -> Result<(), InputError> {
             format!("{name} only exists inside stand-alone TMCL programs")
         }
         Mode::Ascii => format!(
-            "{name} ({}) is not available in ASCII mode (manual §6.6.3); switch to binary mode with :bin to send it",
-            spec.name
+            "{name} ({}) is not available in ASCII mode (not in the {}'s ASCII command list); \
+             switch to binary mode with :bin to send it",
+            spec.name, profile.module
         ),
         Mode::Binary => format!("{name} ({}) cannot be sent in direct mode", spec.name),
         Mode::Program => format!(
@@ -135,7 +142,7 @@ fn check_ranges(
     spec: &CommandSpec,
     instruction: &Instruction,
     profile: &Profile,
-) -> Result<(), InputError> {
+) -> Result<Vec<Warning>, InputError> {
     let coordinates = (0, i64::from(profile.coordinates) - 1);
     let out_of = |what: String, value: i64, (lo, hi): (i64, i64)| {
         if (lo..=hi).contains(&value) {
@@ -150,13 +157,17 @@ fn check_ranges(
             })
         }
     };
-    if let Some(range) = spec.value_range {
-        out_of(
-            format!("the value of {}", spec.display_name()),
+    let warnings = if spec.value_range.is_some() || !spec.range_when.is_empty() {
+        family::check_value(
+            &format!("the value of {}", spec.display_name()),
             instruction.value.into(),
-            range,
-        )?;
-    }
+            spec.value_range,
+            &spec.range_when,
+            "",
+        )?
+    } else {
+        Vec::new()
+    };
     if spec
         .operand_for(Field::Type)
         .is_some_and(|o| o.kind == OperandKind::Coord)
@@ -177,7 +188,7 @@ fn check_ranges(
             coordinates,
         )?;
     }
-    Ok(())
+    Ok(warnings)
 }
 
 fn check_param(
@@ -198,6 +209,9 @@ fn check_param(
         _ => return Ok(Vec::new()),
     };
     let Some(param) = param else {
+        if profile.generic {
+            return Ok(Vec::new()); // numbers only: the session said so once
+        }
         return Ok(vec![Warning::UnknownParam {
             kind,
             number: instruction.type_,
@@ -217,21 +231,13 @@ fn check_param(
             ident: param.ident.clone(),
             read: read_line(param, profile),
         }),
-        Some(ParamUse::Write)
-            if spec.operand_for(Field::Value).is_some()
-                && !param.accepts(instruction.value.into()) =>
-        {
-            let (lo, hi) = param
-                .range
-                .expect("a parameter that refuses a value has a range");
-            Err(InputError::OutOfRange {
-                what: format!("{} ({kind} parameter {})", param.ident, param.number),
-                value: instruction.value.into(),
-                lo,
-                hi,
-                unit: param.unit.clone(),
-            })
-        }
+        Some(ParamUse::Write) if spec.operand_for(Field::Value).is_some() => family::check_value(
+            &format!("{} ({kind} parameter {})", param.ident, param.number),
+            instruction.value.into(),
+            param.range,
+            &param.range_when,
+            &param.unit,
+        ),
         Some(ParamUse::Store) if !param.access.store => Err(InputError::NotStorable {
             kind,
             number: param.number,

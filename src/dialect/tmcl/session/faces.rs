@@ -102,7 +102,7 @@ impl DialectSession for TmclSession {
     }
 
     fn help_topic(&self, topic: &str, out: &mut dyn Write) -> io::Result<bool> {
-        help::topic(topic, out)
+        help::topic(&self.profile, topic, out)
     }
 
     fn help_command(&self, word: &str, out: &mut dyn Write) -> io::Result<bool> {

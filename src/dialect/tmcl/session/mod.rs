@@ -1,4 +1,5 @@
-//! The TMCL session: ASCII mode by default (manual §6.6), binary direct mode after `:bin`.
+//! The TMCL session: ASCII mode by default (manual §6.6), binary direct mode after `:bin`, and
+//! from the start for a module whose profile says it has no ASCII interface.
 //!
 //! On open the target module is put into ASCII mode with the binary command 139 and its echo
 //! behaviour is learnt from global parameter 67; other modules on the bus are entered the first
@@ -83,6 +84,10 @@ impl TmclSession {
         };
         let opened = format!("session opened on {}", session.core.wire.link.describe());
         session.core.wire.note(&opened);
+        if session.profile.generic {
+            let notice = crate::dialect::tmcl::profile::catalogue::GENERIC_NOTICE;
+            session.core.wire.notices.push(notice.to_string());
+        }
         Ok(session)
     }
 

@@ -9,6 +9,7 @@
 
 use std::time::{Duration, Instant};
 
+use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::protocol::frame::{CommandFrame, FRAME_LEN, ReplyFrame, hex};
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Opcode};
@@ -104,10 +105,29 @@ pub(super) fn changes_echo(i: &Instruction) -> bool {
 }
 
 impl TmclSession {
-    /// Makes sure the session knows how to talk to `module`, entering ASCII mode on first contact.
+    /// Makes sure the session knows how to talk to `module`, entering ASCII mode on first contact
+    /// (binary direct mode on a module without the ASCII interface).
     pub(super) fn contact(&mut self, module: u8) -> Result<WireMode, SessionError> {
         if let Some(state) = self.modules.get(&module) {
             return Ok(state.mode);
+        }
+        if !self.has_ascii() {
+            self.modules.insert(
+                module,
+                ModuleState {
+                    mode: WireMode::Binary,
+                    found_in: WireMode::Binary,
+                    echo: Echo::None,
+                    echo_known: false,
+                },
+            );
+            let note = format!(
+                "module {} in binary direct mode: the {} has no ASCII interface",
+                address_char(module).unwrap_or('?'),
+                self.profile.module
+            );
+            self.core.wire.note(&note);
+            return Ok(WireMode::Binary);
         }
         if self.core.options.enter {
             self.enter_ascii(module)?;
@@ -126,8 +146,19 @@ impl TmclSession {
         Ok(WireMode::Ascii)
     }
 
+    /// Whether the profile's module has the ASCII interface (or may have it).
+    fn has_ascii(&self) -> bool {
+        self.profile.identity.ascii_interface() != AsciiInterface::No
+    }
+
     /// Sends 139 and learns the echo mode (see the module docs).
     pub fn enter_ascii(&mut self, module: u8) -> Result<(), SessionError> {
+        if !self.has_ascii() {
+            return Err(SessionError::Refused(format!(
+                "the {} has no ASCII interface (profile {}); it is used in binary direct mode",
+                self.profile.module, self.profile.name
+            )));
+        }
         // A module still in binary mode has seen our ASCII traffic to others as frame bytes; it
         // finds the start of our frame only after the line was idle for its receive time-out.
         let resync = Duration::from_millis(u64::from(self.profile.sim.frame_timeout_ms) * 11 / 10);

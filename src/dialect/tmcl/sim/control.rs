@@ -15,6 +15,7 @@ impl Machine {
     /// Executes a control function (the machine must have been advanced to `t`).
     pub(crate) fn control(&mut self, t: f64, i: &Instruction) -> Outcome {
         let protection = self.params.get(super::params::Slot::Global(0, 81));
+        let i = &self.type_as_answered(i);
         let result = match i.command {
             Opcode::StopApplication => {
                 self.vm.stop();
@@ -82,6 +83,24 @@ impl Machine {
         match result {
             Ok(value) => Outcome::ok(value),
             Err(status) => Outcome::error(status, i),
+        }
+    }
+}
+
+impl Machine {
+    /// The instruction with the type byte a command ignores (`type_ignored`: 134, 135, "don't
+    /// care" in the manual) read as 0, except type 1, this simulator's documented extension
+    /// (134: the stored command, type and motor; 135: the program error).
+    fn type_as_answered(&self, i: &Instruction) -> Instruction {
+        let ignored = self
+            .profile
+            .commands
+            .by_number(i.command)
+            .is_some_and(|spec| spec.type_ignored);
+        match i.type_ {
+            0 | 1 => *i,
+            _ if ignored => Instruction { type_: 0, ..*i },
+            _ => *i,
         }
     }
 }

@@ -128,6 +128,14 @@ impl Machine {
         {
             return Err(Status::WrongType);
         }
+        // Banks the profile restricts the command to (STGP/RSGP: user variables only).
+        if spec
+            .banks
+            .as_ref()
+            .is_some_and(|banks| has(OperandKind::Bank) && !banks.contains(&i.motor))
+        {
+            return Err(Status::InvalidValue);
+        }
         // Jump targets are checked by the program runner (a bad one is a program error).
         let flow = matches!(i.command, Opcode::Jc | Opcode::Ja | Opcode::Csub);
         match spec.value_range {

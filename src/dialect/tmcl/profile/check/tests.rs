@@ -29,7 +29,7 @@ fn refused(text: &str) -> String {
 #[test]
 fn the_builtin_profile_passes_every_check() {
     let file = super::ProfileFile::parse(BUILTIN_TOML).unwrap();
-    assert_eq!(super::check(&file), Vec::new());
+    assert_eq!(super::check(&file, None), Vec::new());
 }
 
 #[test]

@@ -452,3 +452,33 @@ fn calculations_in_direct_mode_work_on_the_one_accumulator() {
     assert_eq!(sim.status(34, 4, 0, 0), Status::Ok); // AAP 4, 0
     assert_eq!(sim.frame(1, 6, 4, 0, 0).value, 711); // GAP 4, 0
 }
+
+#[test]
+fn the_type_byte_of_134_and_135_is_dont_care_beyond_the_extension() {
+    // The profile marks both type_ignored (manual §6.5: "don't care"); only type 1, the
+    // simulator's documented extension, answers differently.
+    let mut sim = Sim::new();
+    sim.ok(132, 0, 0, 0);
+    sim.frame(1, 4, 1, 0, -5000);
+    sim.ok(133, 0, 0, 0);
+    for type_ in [0, 2, 7, 255] {
+        assert_eq!(sim.ok(134, type_, 0, 0), -5000, "134 type {type_}");
+        assert_eq!(sim.ok(135, type_, 0, 0), 0, "135 type {type_}: stopped");
+    }
+    assert_eq!(sim.ok(134, 1, 0, 0), 4 << 16 | 1 << 8);
+    // 136 selects string or binary by its type: not ignored.
+    assert_eq!(sim.status(136, 2, 0, 0), Status::WrongType);
+}
+
+#[test]
+fn stgp_and_rsgp_take_the_user_variable_bank_only() {
+    let mut sim = Sim::new();
+    sim.ok(11, 3, 2, 0);
+    sim.ok(12, 3, 2, 0);
+    for command in [11, 12] {
+        assert_eq!(sim.status(command, 67, 0, 0), Status::InvalidValue);
+    }
+    // SGP and GGP keep every bank.
+    sim.ok(9, 67, 0, 0x21);
+    assert_eq!(sim.ok(10, 67, 0, 0), 0x21);
+}
