@@ -13,6 +13,7 @@ pub mod clock;
 pub mod commission;
 pub mod crash;
 pub mod dialect;
+pub mod duration;
 pub mod escape;
 pub mod exit;
 pub mod link;

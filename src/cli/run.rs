@@ -98,7 +98,7 @@ pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
 
 /// A time for `--max-time`: `500ms`, `30s`, `2m`, or a number of milliseconds; at least 1 ms.
 fn parse_time(text: &str) -> Result<Duration, String> {
-    let time = crate::commission::record::parse_duration(text)?;
+    let time = crate::duration::parse(text)?;
     if time.is_zero() {
         return Err("the time must be at least 1 ms".into());
     }

@@ -124,7 +124,7 @@ fn scan(
     let addresses = parse_addresses(words.first().copied().unwrap_or(dialect.scan_addresses))
         .map_err(|e| usage(&format!("{usage_text}; {e}")))?;
     let per_reply = match words.get(1) {
-        Some(t) => record::parse_duration(t).map_err(|e| usage(&format!("{usage_text}; {e}")))?,
+        Some(t) => crate::duration::parse(t).map_err(|e| usage(&format!("{usage_text}; {e}")))?,
         None => session.options().timeout,
     };
     if words.len() > 2 {
@@ -142,12 +142,13 @@ fn params_and_times(
     times: usize,
 ) -> Result<(Vec<ParamRef>, Vec<Duration>), String> {
     let mut split = words.len();
-    while split > 1 && words.len() - split < times && record::is_time(words[split - 1]) {
+    while split > 1 && words.len() - split < times && crate::duration::is_duration(words[split - 1])
+    {
         split -= 1;
     }
     let durations = words[split..]
         .iter()
-        .map(|w| record::parse_duration(w))
+        .map(|w| crate::duration::parse(w))
         .collect::<Result<Vec<_>, _>>()?;
     let joined = words[..split].join(",");
     let names: Vec<&str> = joined.split(',').filter(|n| !n.is_empty()).collect();
