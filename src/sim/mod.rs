@@ -12,6 +12,7 @@ pub mod inprocess;
 pub mod pacing;
 #[cfg(unix)]
 pub mod serve;
+pub mod store;
 
 pub use builtin::builtin_link;
 

@@ -10,10 +10,11 @@ use tmclsh::dialect::session::DialectSession;
 use tmclsh::dialect::smd4::protocol::Smd4Spec;
 use tmclsh::dialect::smd4::scan as smd4_scan;
 use tmclsh::dialect::smd4::session::Smd4Session;
-use tmclsh::dialect::smd4::sim::{ConfigStore, MemoryStore, Smd4Options, Smd4Sim};
+use tmclsh::dialect::smd4::sim::{Smd4Options, Smd4Sim};
 use tmclsh::session::{SessionError, SessionOptions};
 use tmclsh::sim::Device;
 use tmclsh::sim::inprocess::SimLink;
+use tmclsh::sim::store::{MemoryStore, Store};
 
 use crate::smd4::{Drive, Via, assert_exit, client, lines};
 

@@ -1,6 +1,6 @@
 //! A simulated AML SMD4 drive: a pure state machine behind [`crate::sim::Device`] — bytes in,
 //! bytes out, time as an input; no threads, clocks or I/O inside, except that STORE writes the
-//! state file it was given (through a [`ConfigStore`]).
+//! state file it was given (through a [`Store`]).
 //!
 //! It answers every command of `data/smd4.toml` as the document describes: rounding of currents,
 //! the run/acceleration current and start/stop frequency couplings, standby gating, latching error
@@ -28,7 +28,8 @@ use std::time::Duration;
 use crate::dialect::smd4::protocol::{Eflags, Request, Sflags, Smd4Spec};
 
 use crate::sim::Device;
-pub use config::{ConfigStore, FileStore, MemoryStore, Setting, Settings};
+use crate::sim::store::{FileStore, MemoryStore, Store};
+pub use config::{Setting, Settings};
 pub use motion::Snapshot;
 use motion::{Goal, Motion, Profile};
 pub use options::{PositionFormat, PrefixAcceptance, Smd4Options};
@@ -80,7 +81,7 @@ struct Inputs {
 pub struct Smd4Sim {
     spec: &'static Smd4Spec,
     options: Smd4Options,
-    store: Box<dyn ConfigStore>,
+    store: Box<dyn Store>,
     factory: Settings,
     stored: Settings,
     working: Settings,
@@ -106,15 +107,15 @@ impl Smd4Sim {
     /// memory). A missing file means factory settings; a damaged one latches the configuration
     /// error flag (EFLAGS bit 6) and uses what it can.
     pub fn new(options: Smd4Options) -> Smd4Sim {
-        let store: Box<dyn ConfigStore> = match &options.state_file {
-            Some(path) => Box::new(FileStore::new(path.clone())),
+        let store: Box<dyn Store> = match &options.state_file {
+            Some(path) => Box::new(FileStore::new(path)),
             None => Box::new(MemoryStore::default()),
         };
         Smd4Sim::with_store(options, store)
     }
 
     /// A drive whose stored configuration lives in `store`.
-    pub fn with_store(options: Smd4Options, mut store: Box<dyn ConfigStore>) -> Smd4Sim {
+    pub fn with_store(options: Smd4Options, store: Box<dyn Store>) -> Smd4Sim {
         let spec = Smd4Spec::builtin();
         let factory = config::factory(&spec.commands);
         let (stored, config_damaged) = match store.load() {

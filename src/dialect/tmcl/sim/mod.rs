@@ -26,7 +26,7 @@ mod vm;
 pub use bus::{Bus, BusOptions, LogSink, MotorState};
 pub use motion::{Switch, Switches};
 pub use options::{Backspace, LineEnd, Quirks};
-pub use state::{BusImage, FileStore, MemoryStore, ModuleImage, StateError, StateStore};
+pub use state::{BusImage, Eeprom, ModuleImage, StateError};
 
 #[cfg(test)]
 mod tests;
