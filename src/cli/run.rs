@@ -4,12 +4,11 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use crate::dialect::{Configured, Purpose};
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 use crate::script::limits::DEFAULT_MAX_MEMORY_MIB;
 use crate::script::{self, Limits};
 use crate::session::interrupt;
 
-use super::Failure;
 use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `run`.
@@ -51,7 +50,7 @@ pub struct RunArgs {
 /// module is put back in the mode it was found in before exiting.
 pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
     interrupt::install();
-    script::check_file(&args.script).map_err(|r| Failure::new(r.exit, r.message))?;
+    script::check_file(&args.script)?;
     for dir in &args.allow_dir {
         if !dir.is_dir() {
             return Err(Failure::new(

@@ -35,23 +35,12 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rhai::{Dynamic, Engine, EvalAltResult, OptimizationLevel, Position, Scope};
 
 use crate::escape::escape_control;
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
-
-pub use failure::ScriptFailure;
 
 pub use limits::Limits;
 use memory::Budget;
 use sandbox::Sandbox;
-
-/// A script's failure as reported: `file:line:column: message` and the exit code.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Report {
-    /// The exit code.
-    pub exit: Exit,
-    /// The message, with file, line and column where known.
-    pub message: String,
-}
 
 /// A script ready to run: its text, its arguments, its limits and the files it may reach.
 pub struct Script {
@@ -68,7 +57,7 @@ pub type Registrar<S> = fn(&mut Engine, &Rc<RefCell<S>>, &Rc<Sandbox>);
 impl Script {
     /// The script at `path` with `args`; its file functions reach the script's directory, the
     /// working directory and `limits.allow_dirs`.
-    pub fn from_file(path: &Path, args: &[String], limits: Limits) -> Result<Script, Report> {
+    pub fn from_file(path: &Path, args: &[String], limits: Limits) -> Result<Script, Failure> {
         let name = path.display().to_string();
         let sandbox = Sandbox::for_script(path, &limits.allow_dirs, limits.overwrite);
         match std::fs::read_to_string(path) {
@@ -79,10 +68,7 @@ impl Script {
                 limits,
                 sandbox: Rc::new(sandbox),
             }),
-            Err(e) => Err(Report {
-                exit: Exit::Refused,
-                message: format!("cannot read script {name}: {e}"),
-            }),
+            Err(e) => Err(Failure::refused(format!("cannot read script {name}: {e}"))),
         }
     }
 
@@ -110,7 +96,7 @@ impl Script {
         session: S,
         annotate: fn(&mut S, &str) -> bool,
         register: Registrar<S>,
-    ) -> (S, Result<(), Report>) {
+    ) -> (S, Result<(), Failure>) {
         let shared = Rc::new(RefCell::new(session));
         let watchdog = limits::Watchdog::start(self.limits.max_time);
         let result = {
@@ -126,7 +112,7 @@ impl Script {
             execute(&engine, &self.name, &self.source, &self.args)
         };
         let result = if watchdog.stop(result.is_ok()) && result.is_err() {
-            Err(Report {
+            Err(Failure {
                 exit: Exit::DeviceError,
                 message: format!(
                     "{}: {}",
@@ -145,9 +131,9 @@ impl Script {
 }
 
 /// Checks that a script compiles, before any connection is opened.
-pub fn check_file(path: &Path) -> Result<(), Report> {
+pub fn check_file(path: &Path) -> Result<(), Failure> {
     let name = path.display().to_string();
-    let source = std::fs::read_to_string(path).map_err(|e| Report {
+    let source = std::fs::read_to_string(path).map_err(|e| Failure {
         exit: Exit::Refused,
         message: format!("cannot read script {name}: {e}"),
     })?;
@@ -186,8 +172,8 @@ fn base_engine(limits: &Limits, budget: Option<Budget>, expired: Arc<AtomicBool>
     if let Some(budget) = budget {
         memory::register_builders(&mut engine, budget);
     }
-    engine.register_type_with_name::<ScriptFailure>("Failure");
-    engine.register_fn("to_string", |f: &mut ScriptFailure| f.message.clone());
+    engine.register_type_with_name::<Failure>("Failure");
+    engine.register_fn("to_string", |f: &mut Failure| f.message.clone());
     engine
 }
 
@@ -201,8 +187,8 @@ fn print(text: &str) {
     println!("{}", escape_control(text));
 }
 
-fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Report> {
-    engine.compile(source).map_err(|e| Report {
+fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Failure> {
+    engine.compile(source).map_err(|e| Failure {
         exit: Exit::Refused,
         message: at(
             name,
@@ -212,7 +198,7 @@ fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Repor
     })
 }
 
-fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result<(), Report> {
+fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result<(), Failure> {
     let ast = compile(engine, name, source)?;
     let mut scope = Scope::new();
     let args: rhai::Array = args.iter().map(|a| Dynamic::from(a.clone())).collect();
@@ -223,7 +209,7 @@ fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result
 }
 
 /// Maps a Rhai error to the exit code and message the user sees.
-fn report(name: &str, error: EvalAltResult) -> Report {
+fn report(name: &str, error: EvalAltResult) -> Failure {
     let position = error.position();
     match error {
         EvalAltResult::ErrorInFunctionCall(function, _, inner, _) => {
@@ -235,22 +221,22 @@ fn report(name: &str, error: EvalAltResult) -> Report {
             }
             inner
         }
-        EvalAltResult::ErrorRuntime(value, _) if value.is::<ScriptFailure>() => {
-            let failure = value.cast::<ScriptFailure>();
-            Report {
+        EvalAltResult::ErrorRuntime(value, _) if value.is::<Failure>() => {
+            let failure = value.cast::<Failure>();
+            Failure {
                 exit: failure.exit,
                 message: at(name, position, &failure.message),
             }
         }
-        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == MEMORY => Report {
+        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == MEMORY => Failure {
             exit: Exit::DeviceError,
             message: at(name, position, memory::MESSAGE),
         },
-        EvalAltResult::ErrorTerminated(..) => Report {
+        EvalAltResult::ErrorTerminated(..) => Failure {
             exit: Exit::Interrupted,
             message: at(name, position, "interrupted"),
         },
-        EvalAltResult::ErrorTooManyOperations(..) => Report {
+        EvalAltResult::ErrorTooManyOperations(..) => Failure {
             exit: Exit::DeviceError,
             message: at(
                 name,
@@ -258,7 +244,7 @@ fn report(name: &str, error: EvalAltResult) -> Report {
                 "runaway script: too many operations (raise the cap with --max-operations)",
             ),
         },
-        EvalAltResult::ErrorStackOverflow(..) => Report {
+        EvalAltResult::ErrorStackOverflow(..) => Failure {
             exit: Exit::DeviceError,
             message: at(
                 name,
@@ -266,14 +252,18 @@ fn report(name: &str, error: EvalAltResult) -> Report {
                 "calls nested too deeply (raise the cap with --max-call-depth)",
             ),
         },
-        EvalAltResult::ErrorRuntime(value, _) => Report {
+        EvalAltResult::ErrorRuntime(value, _) => Failure {
             exit: Exit::DeviceError,
             message: at(name, position, &format!("error: {value}")),
         },
-        other => Report {
-            exit: Exit::DeviceError,
-            message: at(name, position, &strip_position(&other.to_string())),
-        },
+        mut other => {
+            // Rhai writes the position after the message; it is already in front.
+            other.clear_position();
+            Failure {
+                exit: Exit::DeviceError,
+                message: at(name, position, &other.to_string()),
+            }
+        }
     }
 }
 
@@ -282,14 +272,6 @@ fn at(name: &str, position: Position, message: &str) -> String {
         (Some(line), Some(column)) => format!("{name}:{line}:{column}: {message}"),
         (Some(line), None) => format!("{name}:{line}: {message}"),
         _ => format!("{name}: {message}"),
-    }
-}
-
-/// Rhai appends " (line L, position P)" to its messages; the position is already in front.
-fn strip_position(message: &str) -> String {
-    match message.rfind(" (line ") {
-        Some(i) if message.ends_with(')') => message[..i].to_string(),
-        _ => message.to_string(),
     }
 }
 

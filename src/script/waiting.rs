@@ -5,10 +5,10 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
 
-use super::failure::{Fallible, ScriptFailure};
+use super::failure::{Fallible, thrown};
 
 /// How often a wait re-checks its condition.
 pub const POLL: Duration = Duration::from_millis(10);
@@ -18,7 +18,7 @@ pub fn sleep(duration: Duration) -> Fallible<()> {
     let end = Instant::now() + duration;
     loop {
         if interrupt::pending() {
-            return Err(ScriptFailure::new(Exit::Interrupted, "interrupted").into_rhai());
+            return Err(thrown(Failure::new(Exit::Interrupted, "interrupted")));
         }
         let now = Instant::now();
         if now >= end {
@@ -44,14 +44,13 @@ pub fn until(
             Err(e) => break Err(e),
         }
         if start.elapsed() >= timeout {
-            break Err(ScriptFailure::new(
+            break Err(thrown(Failure::new(
                 Exit::DeviceError,
                 format!(
                     "timed out after {} ms waiting for {what}",
                     timeout.as_millis()
                 ),
-            )
-            .into_rhai());
+            )));
         }
         if let Err(e) = sleep(POLL) {
             break Err(e);

@@ -7,6 +7,7 @@ use std::rc::Rc;
 
 use rhai::{Dynamic, Engine, INT, Map};
 
+use crate::dialect::tmcl::asm::{self, LoadError};
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::protocol::line::address_of;
 use crate::dialect::tmcl::protocol::{Instruction, Status};
@@ -337,23 +338,20 @@ fn program(sandbox: &Sandbox, path: &str, profile: &Profile) -> Fallible<Vec<Ins
     let bytes = sandbox
         .read(path, READ_LIMIT)
         .map_err(|r| refused(r.to_string()))?;
-    crate::dialect::tmcl::asm::load_program(&bytes, path, profile).map_err(|e| {
-        let first = e.to_string();
-        let place = first
-            .strip_prefix(path)
-            .and_then(|rest| rest.strip_prefix(':'))
-            .and_then(|rest| {
-                let mut parts = rest.splitn(3, ':');
-                let line = parts.next()?.parse::<usize>().ok()?;
-                let column = parts.next()?.parse::<usize>().ok()?;
-                Some(format!(
-                    " (the first problem is at line {line}, column {column})"
-                ))
-            })
-            .unwrap_or_default();
+    asm::load_program(&bytes, path, profile).map_err(|e| {
+        let place = match &e {
+            LoadError::Source(errors) => errors.errors.first().map(|first| {
+                format!(
+                    " (the first problem is at line {}, column {})",
+                    first.at.line, first.at.column
+                )
+            }),
+            _ => None,
+        };
         refused(format!(
-            "{path} is not a program for the {}{place}; `tmclsh asm {path}` shows why",
-            profile.module
+            "{path} is not a program for the {}{}; `tmclsh asm {path}` shows why",
+            profile.module,
+            place.unwrap_or_default()
         ))
     })
 }

@@ -10,21 +10,21 @@ use crate::dialect::tmcl::asm;
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::session::TmclSession;
-use crate::exit::{Exit, ExitStatus};
+use crate::exit::Failure;
 use crate::session::SessionError;
 
-/// A failure of the download as a whole: its exit code and message, never taken for a lost link
-/// or Ctrl-C at the prompt (the download has already handled those).
-fn failure(exit: Exit, message: String) -> SessionError {
-    SessionError::Script { exit, message }
+/// A failure of the download as a whole, with the exit code of what went wrong, never taken for a
+/// lost link or Ctrl-C at the prompt (the download has already handled those).
+fn failed(error: impl Into<Failure>) -> SessionError {
+    SessionError::Failed(error.into())
 }
 
 /// Loads a program file or assembles a source file.
 pub fn load(path: &Path, profile: &Profile) -> Result<Vec<Instruction>, SessionError> {
     let name = path.display().to_string();
     let bytes = std::fs::read(path)
-        .map_err(|e| failure(Exit::Refused, format!("cannot read {name}: {e}")))?;
-    asm::load_program(&bytes, &name, profile).map_err(|e| failure(Exit::Refused, e.to_string()))
+        .map_err(|e| failed(Failure::refused(format!("cannot read {name}: {e}"))))?;
+    asm::load_program(&bytes, &name, profile).map_err(|e| failed(Failure::refused(e.to_string())))
 }
 
 /// Downloads with a progress bar on a terminal, then optionally runs; returns what to tell the
@@ -34,7 +34,6 @@ pub fn download_and_run(
     instructions: &[Instruction],
     run: bool,
 ) -> Result<String, SessionError> {
-    let failed = |e: SessionError| failure(e.exit(), e.to_string());
     let module = session.target();
     let bar = progress_bar(instructions.len() * 2);
     let report = super::download(session, module, instructions, |done, total| {
