@@ -42,13 +42,19 @@ pub use limits::Limits;
 use memory::Budget;
 use sandbox::Sandbox;
 
-/// A script ready to run: its text, its arguments, its limits and the files it may reach.
+/// Where a script's `print` lines go, their control characters already escaped (see
+/// [`print_to_stdout`]): stdout by default; tests and embedders capture them with their own.
+pub type PrintSink = Rc<dyn Fn(&str)>;
+
+/// A script ready to run: its text, its arguments, its limits, the files it may reach and where
+/// it prints.
 pub struct Script {
     name: String,
     source: String,
     args: Vec<String>,
     limits: Limits,
     sandbox: Rc<Sandbox>,
+    print: PrintSink,
 }
 
 /// The functions a dialect adds to the engine: over the session, with the sandbox for files.
@@ -67,6 +73,7 @@ impl Script {
                 args: args.to_vec(),
                 limits,
                 sandbox: Rc::new(sandbox),
+                print: Rc::new(print_to_stdout),
             }),
             Err(e) => Err(Failure::refused(format!("cannot read script {name}: {e}"))),
         }
@@ -84,7 +91,14 @@ impl Script {
             args: args.to_vec(),
             limits,
             sandbox: Rc::new(sandbox),
+            print: Rc::new(print_to_stdout),
         }
+    }
+
+    /// The script with its `print` lines sent to `sink` instead of stdout.
+    pub fn print_to(mut self, sink: PrintSink) -> Script {
+        self.print = sink;
+        self
     }
 
     /// Runs over a session of type `S`, with the functions `register` adds (a dialect's device
@@ -101,7 +115,7 @@ impl Script {
         let watchdog = limits::Watchdog::start(self.limits.max_time);
         let result = {
             let budget = self.limits.max_memory.map(Budget::from_now);
-            let mut engine = base_engine(&self.limits, budget, watchdog.flag());
+            let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &self.print);
             let log_session = shared.clone();
             common::register(&mut engine, move |message| {
                 if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
@@ -137,7 +151,12 @@ pub fn check_file(path: &Path) -> Result<(), Failure> {
         exit: Exit::Refused,
         message: format!("cannot read script {name}: {e}"),
     })?;
-    let engine = base_engine(&Limits::default(), None, Arc::default());
+    let engine = base_engine(
+        &Limits::default(),
+        None,
+        Arc::default(),
+        &(Rc::new(print_to_stdout) as PrintSink),
+    );
     compile(&engine, &name, &source).map(|_| ())
 }
 
@@ -145,10 +164,15 @@ pub fn check_file(path: &Path) -> Result<(), Failure> {
 const MEMORY: &str = "memory";
 const TIME: &str = "time";
 
-/// The engine with limits and sandboxing, without device functions. Rhai's data-size limits are
+/// The engine with limits and sandboxing, printing to `print`, without device functions. Rhai's data-size limits are
 /// not set: they walk whole values after every call (see [`memory`]); `budget` bounds memory
 /// instead, checked at every operation like Ctrl-C and the deadline (`expired`).
-fn base_engine(limits: &Limits, budget: Option<Budget>, expired: Arc<AtomicBool>) -> Engine {
+fn base_engine(
+    limits: &Limits,
+    budget: Option<Budget>,
+    expired: Arc<AtomicBool>,
+    print: &PrintSink,
+) -> Engine {
     let mut engine = Engine::new();
     engine.set_optimization_level(OptimizationLevel::Simple);
     engine.set_max_operations(limits.max_operations);
@@ -156,7 +180,8 @@ fn base_engine(limits: &Limits, budget: Option<Budget>, expired: Arc<AtomicBool>
     engine.set_max_expr_depths(128, 64);
     engine.set_module_resolver(rhai::module_resolvers::DummyModuleResolver::new());
     engine.disable_symbol("eval");
-    engine.on_print(print);
+    let print = print.clone();
+    engine.on_print(move |text| print(&escape_control(text)));
     engine.on_debug(|text, _, pos| eprintln!("debug {pos}: {}", escape_control(text)));
     engine.on_progress(move |_| {
         if expired.load(Ordering::Relaxed) {
@@ -177,14 +202,15 @@ fn base_engine(limits: &Limits, budget: Option<Budget>, expired: Arc<AtomicBool>
     engine
 }
 
-/// Rhai's `print`: the text on stdout, its control characters escaped like all other output
-/// (a line feed stays a line break). A script's strings routinely carry device text — a reply's
-/// `raw`, its items, a caught error's message — and by then nothing tells those bytes from the
-/// script's own, so a device could retitle or clear the terminal, or hide a failed verdict behind
-/// a carriage return, in the output a user or a CI log trusts. The price is that a script cannot
-/// colour its output or move the cursor; a verdict needs neither.
-fn print(text: &str) {
-    println!("{}", escape_control(text));
+/// Rhai's `print` by default: the line on stdout. Every sink gets the text with its control
+/// characters escaped like all other output (a line feed stays a line break). A script's strings
+/// routinely carry device text — a reply's `raw`, its items, a caught error's message — and by
+/// then nothing tells those bytes from the script's own, so a device could retitle or clear the
+/// terminal, or hide a failed verdict behind a carriage return, in the output a user or a CI log
+/// trusts. The price is that a script cannot colour its output or move the cursor; a verdict needs
+/// neither.
+pub fn print_to_stdout(escaped: &str) {
+    println!("{escaped}");
 }
 
 fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Failure> {
