@@ -17,6 +17,7 @@ pub mod duration;
 pub mod escape;
 pub mod exit;
 pub mod link;
+pub mod progress;
 pub mod repl;
 pub mod script;
 pub mod session;

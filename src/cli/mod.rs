@@ -12,6 +12,7 @@ pub mod man;
 pub(crate) mod params;
 mod ports;
 mod position;
+mod progress;
 mod relevance;
 pub mod run;
 mod scan;
@@ -78,6 +79,7 @@ enum Command {
 
 /// Parses the process arguments and runs; returns the exit code.
 pub fn main() -> Exit {
+    crate::progress::install(Box::new(progress::TerminalProgress));
     let defaults = match config::Defaults::load() {
         Ok(defaults) => defaults,
         Err(message) => {

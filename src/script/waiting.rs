@@ -1,11 +1,9 @@
 //! Waiting inside scripts: sliced so Ctrl-C interrupts promptly, with a spinner on a terminal.
 
-use std::io::IsTerminal;
 use std::time::{Duration, Instant};
 
-use indicatif::{ProgressBar, ProgressStyle};
-
 use crate::exit::{Exit, Failure};
+use crate::progress::Progress;
 use crate::session::interrupt;
 
 use super::failure::{Fallible, thrown};
@@ -36,7 +34,12 @@ pub fn until(
     mut check: impl FnMut() -> Fallible<bool>,
 ) -> Fallible<()> {
     let start = Instant::now();
-    let spinner = spinner(what, timeout);
+    // A spinner for waits long enough to wonder about.
+    let spinner = if timeout >= Duration::from_millis(500) {
+        Progress::waiting(what)
+    } else {
+        Progress::hidden()
+    };
     let result = loop {
         match check() {
             Ok(true) => break Ok(()),
@@ -56,19 +59,6 @@ pub fn until(
             break Err(e);
         }
     };
-    if let Some(spinner) = spinner {
-        spinner.finish_and_clear();
-    }
+    drop(spinner);
     result
-}
-
-fn spinner(what: &str, timeout: Duration) -> Option<ProgressBar> {
-    if !std::io::stderr().is_terminal() || timeout < Duration::from_millis(500) {
-        return None;
-    }
-    let bar = ProgressBar::new_spinner();
-    bar.set_style(ProgressStyle::with_template("{spinner} {msg} {elapsed}").ok()?);
-    bar.set_message(format!("waiting for {what}"));
-    bar.enable_steady_tick(Duration::from_millis(120));
-    Some(bar)
 }

@@ -3,7 +3,7 @@
 //! `:record` without a duration) need a terminal.
 
 use std::cell::Cell;
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
@@ -13,9 +13,11 @@ use crate::commission::device::{ParamDevice, ParamRef};
 use crate::commission::plot;
 use crate::commission::record::{self, CsvFile, Recording};
 use crate::commission::scan::parse_addresses;
-use crate::commission::watch::{self, Key, Screen, TerminalScreen};
+use crate::commission::watch::{self, Key, Screen};
 use crate::dialect::DialectSession;
 use crate::session::SessionError;
+
+use super::terminal::{TerminalScreen, interactive, width};
 
 /// What the helpers remember between commands.
 #[derive(Debug, Default)]
@@ -168,10 +170,6 @@ fn params_and_times(
     Ok((params, durations))
 }
 
-fn interactive() -> bool {
-    std::io::stdin().is_terminal() && std::io::stdout().is_terminal()
-}
-
 fn watch(
     session: &mut dyn ParamDevice,
     arg: &str,
@@ -297,11 +295,6 @@ fn plot(state: &State, arg: &str, out: &mut dyn Write) -> Result<(), SessionErro
         }
         _ => return Err(usage(":plot [FILE.csv]")),
     };
-    let width = if std::io::stdout().is_terminal() {
-        crossterm::terminal::size().map_or(80, |(w, _)| w as usize)
-    } else {
-        80
-    };
-    plot::write_recording(recording, width.clamp(30, 200), out)?;
+    plot::write_recording(recording, width().clamp(30, 200), out)?;
     Ok(())
 }

@@ -6,6 +6,7 @@ pub mod commission;
 mod help;
 pub mod helpers;
 mod script;
+pub mod terminal;
 pub mod words;
 
 use std::io::Write;

@@ -15,9 +15,9 @@ use crate::dialect::smd4::protocol::{MAX_ADDRESS, Request};
 use crate::dialect::smd4::session::Smd4Session;
 use crate::session::SessionError;
 
-use crate::commission::progress::Progress;
 use crate::commission::scan::describe_addresses;
 use crate::dialect::session::{BusScan, DialectSession};
+use crate::progress::Progress;
 
 /// A drive that answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -56,7 +56,7 @@ pub fn scan(
             "SMD4 addresses are 1..{MAX_ADDRESS}, not {bad}"
         )));
     }
-    let progress = Progress::new(addresses.len(), "scanning");
+    let progress = Progress::steps(addresses.len(), 2, "scanning");
     let mut found = Vec::new();
     for &address in &addresses {
         progress.step(&format!("@{address}"));

@@ -24,9 +24,9 @@ use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::session::{Answer, Echo, TmclSession, WireMode};
 use crate::session::SessionError;
 
-use crate::commission::progress::Progress;
 use crate::commission::scan::describe_addresses;
 use crate::dialect::session::{BusScan, DialectSession};
+use crate::progress::Progress;
 
 /// A module that answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -65,7 +65,7 @@ pub fn scan(
     let mut addresses = addresses.to_vec();
     addresses.sort_unstable();
     addresses.dedup();
-    let progress = Progress::new(addresses.len(), "scanning (binary)");
+    let progress = Progress::steps(addresses.len(), 2, "scanning (binary)");
     let mut found: BTreeMap<u8, Found> = BTreeMap::new();
     for &address in &addresses {
         progress.step(&address.to_string());
@@ -84,7 +84,7 @@ pub fn scan(
         session.end_partial_line()?;
     }
     drop(progress);
-    let progress = Progress::new(candidates.len(), "scanning (ASCII)");
+    let progress = Progress::steps(candidates.len(), 2, "scanning (ASCII)");
     for &address in &candidates {
         progress.step(&address.to_string());
         if let Some(module) = session.with_timeout(per_reply, |s| probe_ascii(s, address))? {
