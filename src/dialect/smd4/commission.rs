@@ -13,7 +13,7 @@ use crate::commission::Access;
 use crate::dialect::session::DialectSession;
 use crate::dialect::smd4::protocol::validate::validate;
 use crate::dialect::smd4::protocol::{
-    CommandSpec, ItemType, Kind, ReplyShape, Request, Response, Smd4Spec,
+    CommandSpec, ItemType, Kind, ReplyShape, Request, Smd4Reply, Smd4Spec,
 };
 use crate::dialect::smd4::protocol::{Value, items::DataItem};
 use crate::dialect::smd4::session::{Smd4Exchange, Smd4Session};
@@ -144,10 +144,10 @@ impl Smd4Session {
     }
 
     /// Sends `request` and returns its reply, or why there is none.
-    fn reply(&mut self, request: Request) -> Result<Response, SessionError> {
+    fn reply(&mut self, request: Request) -> Result<Smd4Reply, SessionError> {
         let exchange = self.request(request)?.checked()?;
-        let Smd4Exchange { response, sent, .. } = exchange;
-        response.ok_or_else(|| {
+        let Smd4Exchange { reply, sent, .. } = exchange;
+        reply.ok_or_else(|| {
             SessionError::Usage(format!(
                 "'{sent}' gets no reply (broadcast @0): choose one drive with --address N or :target N"
             ))
@@ -256,7 +256,7 @@ fn find_command<'a>(spec: &'a Smd4Spec, name: &str) -> Result<&'a CommandSpec, S
 }
 
 /// The value of a reply to `command`.
-fn reading(command: &CommandSpec, response: &Response) -> Option<Reading> {
+fn reading(command: &CommandSpec, response: &Smd4Reply) -> Option<Reading> {
     match &command.reply {
         ReplyShape::UserReal => {
             let (user, real) = response.user_real()?;
@@ -322,7 +322,7 @@ fn store_mnemonic(spec: &Smd4Spec) -> String {
 mod tests {
     use super::*;
     use crate::commission::SnapshotRole;
-    use crate::dialect::smd4::protocol::{Expectation, parse_response};
+    use crate::dialect::smd4::protocol::{Expectation, parse_reply};
 
     fn spec() -> &'static Smd4Spec {
         Smd4Spec::builtin()
@@ -337,7 +337,7 @@ mod tests {
 
     fn read(name: &str, line: &str) -> Reading {
         let command = spec().commands.get(name).unwrap();
-        let response = parse_response(line, &Expectation::for_command(command)).unwrap();
+        let response = parse_reply(line, &Expectation::for_command(command)).unwrap();
         reading(command, &response).unwrap()
     }
 

@@ -86,7 +86,7 @@ fn ask(
     mnemonic: &str,
 ) -> Result<Option<Option<String>>, SessionError> {
     match session.request(Request::new(mnemonic).to(address)) {
-        Ok(exchange) => Ok(exchange.response.map(|r| {
+        Ok(exchange) => Ok(exchange.reply.map(|r| {
             r.is_ok()
                 .then(|| r.data_strings().join(","))
                 .filter(|t| !t.is_empty())

@@ -9,7 +9,7 @@ use crate::dialect::tmcl::params::write_table;
 use crate::dialect::tmcl::program::{self, download};
 use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::{address_char, address_of};
-use crate::dialect::tmcl::session::{Echo, Exchange, TmclSession};
+use crate::dialect::tmcl::session::{Echo, TmclExchange, TmclSession};
 use crate::session::SessionError;
 
 /// The helpers only TMCL modules have.
@@ -181,7 +181,7 @@ pub fn run(
 
 fn report_program(
     session: &TmclSession,
-    exchange: &Exchange,
+    exchange: &TmclExchange,
     verb: &str,
     out: &mut dyn Write,
 ) -> std::io::Result<()> {

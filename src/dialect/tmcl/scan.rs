@@ -21,7 +21,7 @@ use std::time::Duration;
 
 use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::protocol::line::address_char;
-use crate::dialect::tmcl::session::{Answer, Echo, TmclSession, WireMode};
+use crate::dialect::tmcl::session::{Echo, TmclReply, TmclSession, WireMode};
 use crate::session::SessionError;
 
 use crate::commission::scan::describe_addresses;
@@ -168,7 +168,7 @@ fn probe_binary(session: &mut TmclSession, address: u8) -> Result<Option<Found>,
         Err(e) => return Err(e),
     }
     let firmware = match session.probe_binary(address, Instruction::new(136, 0, 0, 0)) {
-        Ok(x) => version_text(&x.answer),
+        Ok(x) => version_text(&x.reply),
         Err(e) if absent(&e) => None,
         Err(e) => return Err(e),
     };
@@ -196,7 +196,7 @@ fn probe_ascii(session: &mut TmclSession, address: u8) -> Result<Option<Found>, 
         s.request(address, Instruction::new(136, 0, 0, 0))
     });
     let firmware = match version {
-        Ok(x) => version_text(&x.answer),
+        Ok(x) => version_text(&x.reply),
         Err(e) if absent(&e) => None,
         Err(e) => return Err(e),
     };
@@ -218,9 +218,9 @@ fn read_echo_binary(session: &mut TmclSession, address: u8) -> Result<Option<Ech
     }
 }
 
-fn version_text(answer: &Answer) -> Option<String> {
+fn version_text(answer: &TmclReply) -> Option<String> {
     match answer {
-        Answer::Version(text) if !text.trim().is_empty() => Some(text.trim().to_string()),
+        TmclReply::Version(text) if !text.trim().is_empty() => Some(text.trim().to_string()),
         _ => None,
     }
 }

@@ -11,7 +11,7 @@ use crate::dialect::tmcl::asm::{self, LoadError};
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::protocol::line::address_of;
 use crate::dialect::tmcl::protocol::{Instruction, Status};
-use crate::dialect::tmcl::session::{Answer, Exchange, TmclSession};
+use crate::dialect::tmcl::session::{TmclExchange, TmclReply, TmclSession};
 
 use crate::script::common::duration;
 use crate::script::failure::{Fallible, device, refused};
@@ -193,8 +193,8 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         let exchange = checked(session.in_binary(target, |x| {
             x.request(target, Instruction::new(136, 0, 0, 0))
         }))?;
-        Ok(match exchange.answer {
-            Answer::Version(text) => text,
+        Ok(match exchange.reply {
+            TmclReply::Version(text) => text,
             _ => exchange.raw,
         })
     });
@@ -237,28 +237,28 @@ fn request(session: &Shared, command: u8, type_: u8, motor: u8, value: i32) -> F
     value_of(checked(session.borrow_mut().request(target, instruction))?)
 }
 
-fn checked(result: Result<Exchange, crate::session::SessionError>) -> Fallible<Exchange> {
-    device(result.and_then(Exchange::checked))
+fn checked(result: Result<TmclExchange, crate::session::SessionError>) -> Fallible<TmclExchange> {
+    device(result.and_then(TmclExchange::checked))
 }
 
-fn value_of(exchange: Exchange) -> Fallible<INT> {
-    match exchange.answer {
-        Answer::Reply { value, .. } => Ok(value.into()),
+fn value_of(exchange: TmclExchange) -> Fallible<INT> {
+    match exchange.reply {
+        TmclReply::Status { value, .. } => Ok(value.into()),
         _ => Ok(0),
     }
 }
 
-fn reply_map(exchange: Exchange) -> Map {
-    let (status, value) = match &exchange.answer {
-        Answer::Reply { status, value } => (*status, *value),
+fn reply_map(exchange: TmclExchange) -> Map {
+    let (status, value) = match &exchange.reply {
+        TmclReply::Status { status, value } => (*status, *value),
         _ => (Status::Ok, 0),
     };
     let mut map = Map::new();
     map.insert("status".into(), INT::from(status.code()).into());
     map.insert("value".into(), INT::from(value).into());
     map.insert("ok".into(), exchange.ok().into());
-    let raw = match &exchange.answer {
-        Answer::Version(text) => text.clone(),
+    let raw = match &exchange.reply {
+        TmclReply::Version(text) => text.clone(),
         _ => exchange.raw.clone(),
     };
     map.insert("raw".into(), raw.into());

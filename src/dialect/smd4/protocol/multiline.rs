@@ -25,7 +25,7 @@
 use std::time::Duration;
 
 use super::Smd4Spec;
-use super::response::{Expectation, Response, ResponseError, parse_response};
+use super::reply::{Expectation, ReplyError, Smd4Reply, parse_reply};
 
 /// The quiet gap that ends a multi-line reply, from `data/smd4.toml`.
 pub fn default_quiet_gap() -> Duration {
@@ -36,7 +36,7 @@ pub fn default_quiet_gap() -> Duration {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Progress {
     /// The reply is complete.
-    Complete(Box<Response>),
+    Complete(Box<Smd4Reply>),
     /// More lines may follow: keep reading until the line has been quiet for the gap, then call
     /// [`ReplyCollector::finish_quiet`].
     AwaitQuiet,
@@ -46,7 +46,7 @@ pub enum Progress {
 #[derive(Debug, Clone)]
 pub struct ReplyCollector {
     expect: Expectation,
-    head: Option<Response>,
+    head: Option<Smd4Reply>,
 }
 
 impl ReplyCollector {
@@ -57,13 +57,13 @@ impl ReplyCollector {
 
     /// Feeds one received line (line ending optional). The first line must be a reply; an error
     /// leaves the collector as it was, so a session may skip line noise and go on.
-    pub fn push_line(&mut self, line: &str) -> Result<Progress, ResponseError> {
+    pub fn push_line(&mut self, line: &str) -> Result<Progress, ReplyError> {
         let text = line.trim_end_matches(['\r', '\n']);
         if let Some(head) = &mut self.head {
             head.lines.push(text.to_string());
             return Ok(Progress::AwaitQuiet);
         }
-        let reply = parse_response(text, &self.expect)?;
+        let reply = parse_reply(text, &self.expect)?;
         if self.expect.multi_line() && reply.is_ok() {
             self.head = Some(reply);
             Ok(Progress::AwaitQuiet)
@@ -78,7 +78,7 @@ impl ReplyCollector {
     }
 
     /// The line has been quiet for the gap: the reply is complete. `None` if no first line came.
-    pub fn finish_quiet(self) -> Option<Response> {
+    pub fn finish_quiet(self) -> Option<Smd4Reply> {
         self.head
     }
 }

@@ -16,7 +16,7 @@ mod receive;
 use std::time::Duration;
 
 use crate::dialect::session::{DialectSession, Refusal};
-use crate::dialect::smd4::protocol::{PrefixStyle, Request, Response, Smd4Spec, validate};
+use crate::dialect::smd4::protocol::{PrefixStyle, Request, Smd4Reply, Smd4Spec, validate};
 use crate::link::Link;
 use crate::session::core::SessionCore;
 use crate::session::transcript::Transcript;
@@ -52,18 +52,18 @@ pub struct Smd4Exchange {
     /// What was sent.
     pub request: Request,
     /// The reply; `None` for broadcasts and commands the drive does not answer.
-    pub response: Option<Response>,
+    pub reply: Option<Smd4Reply>,
 }
 
 impl Smd4Exchange {
     /// Whether no error code came back.
     pub fn ok(&self) -> bool {
-        self.response.as_ref().is_none_or(Response::is_ok)
+        self.reply.as_ref().is_none_or(Smd4Reply::is_ok)
     }
 
     /// The reply as received: the first line, then any following lines, without line endings.
     pub fn raw(&self) -> String {
-        match &self.response {
+        match &self.reply {
             None => String::new(),
             Some(r) if r.lines.is_empty() => r.raw.clone(),
             Some(r) => format!("{}\n{}", r.raw, r.lines.join("\n")),
@@ -80,7 +80,7 @@ impl Smd4Exchange {
 
     /// The error code the drive answered with, if any.
     pub fn refusal(&self) -> Option<Refusal> {
-        let error = self.response.as_ref()?.error.as_ref()?;
+        let error = self.reply.as_ref()?.error.as_ref()?;
         Some(Refusal {
             module: drive_name(self.request.address),
             sent: self.sent.clone(),
@@ -189,7 +189,7 @@ impl Smd4Session {
         let exchange = Smd4Exchange {
             sent,
             request,
-            response: result?,
+            reply: result?,
         };
         if exchange.ok() && spec.is_some_and(|s| s.starts_motion) {
             self.core.moved.insert(exchange.request.address);
@@ -203,7 +203,7 @@ impl Smd4Session {
         &mut self,
         request: &Request,
         silent: bool,
-    ) -> Result<Option<Response>, SessionError> {
+    ) -> Result<Option<Smd4Reply>, SessionError> {
         self.core.wire.send(
             &request.wire(self.smd4.prefix),
             format_args!("to {}", drive_name(request.address)),

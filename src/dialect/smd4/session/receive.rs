@@ -5,7 +5,8 @@
 use std::time::Instant;
 
 use crate::dialect::smd4::protocol::{
-    Expectation, PrefixStyle, Progress, ReplyCollector, Request, Response, check_reply, is_reply_to,
+    Expectation, PrefixStyle, Progress, ReplyCollector, Request, Smd4Reply, check_reply,
+    is_reply_to,
 };
 use crate::session::SessionError;
 use crate::session::rx::is_line_break;
@@ -25,7 +26,7 @@ impl Smd4Session {
     /// when nothing arrived for the quiet gap, a single-line one once the bytes after it were
     /// seen. Lines are consumed as they are judged, so a flood costs neither time beyond the
     /// deadline nor memory.
-    pub(super) fn receive(&mut self, request: &Request) -> Result<Response, SessionError> {
+    pub(super) fn receive(&mut self, request: &Request) -> Result<Smd4Reply, SessionError> {
         let expect = Expectation::for_request(&self.spec.commands, request);
         let mut collector = ReplyCollector::new(expect.clone());
         let deadline = Instant::now() + self.core.options.timeout;
@@ -133,13 +134,13 @@ impl Smd4Session {
     /// follows it has been seen: nothing but line ends.
     fn settle(
         &mut self,
-        reply: Response,
+        reply: Smd4Reply,
         mut reply_bytes: Vec<u8>,
         used: usize,
         deadline: Instant,
         expect: &Expectation,
         request: &Request,
-    ) -> Result<Response, SessionError> {
+    ) -> Result<Smd4Reply, SessionError> {
         match self.core.wire.settle(used, deadline, &mut |_| false)? {
             Settled::Clean(n) => {
                 reply_bytes.extend(self.core.wire.rx.take(n));
@@ -189,11 +190,11 @@ impl Smd4Session {
     /// noise, never a value.
     fn finish(
         &mut self,
-        reply: Response,
+        reply: Smd4Reply,
         consumed: &[u8],
         expect: &Expectation,
         request: &Request,
-    ) -> Result<Response, SessionError> {
+    ) -> Result<Smd4Reply, SessionError> {
         if let Err(noise) = check_reply(&reply, expect, request.address) {
             self.core.wire.log(
                 Entry::Received,
@@ -219,7 +220,7 @@ impl Smd4Session {
 }
 
 /// A reply carrying another drive's address prefix (any prefix when the request had none).
-fn foreign(reply: &Response, request: &Request) -> bool {
+fn foreign(reply: &Smd4Reply, request: &Request) -> bool {
     !is_reply_to(reply.address, request.address)
 }
 

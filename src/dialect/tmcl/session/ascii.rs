@@ -16,7 +16,7 @@ use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::reply::{AsciiReply, parse_reply_bytes};
 use crate::dialect::tmcl::protocol::{AsciiWord, Status};
 
-use super::{Answer, Exchange, TmclSession};
+use super::{TmclExchange, TmclReply, TmclSession};
 use crate::session::SessionError;
 use crate::session::rx::is_line_break;
 use crate::session::transcript::{Entry, escape_into};
@@ -69,7 +69,7 @@ impl TmclSession {
         module: u8,
         text: &str,
         op: Option<Op>,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         self.ascii_request_with(module, text, op, None)
     }
 
@@ -81,7 +81,7 @@ impl TmclSession {
         text: &str,
         op: Option<Op>,
         optional_wait: Option<Duration>,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         let wire_text = self.spelling(text);
         let optional = optional_wait.is_some();
         let mut echoed = false;
@@ -104,7 +104,7 @@ impl TmclSession {
         op: Option<Op>,
         optional_wait: Option<Duration>,
         echoed: &mut bool,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         let c = address_char(module).unwrap_or('?');
         let mut line = Vec::with_capacity(wire_text.len() + 1);
         line.extend_from_slice(wire_text.as_bytes());
@@ -294,7 +294,7 @@ impl TmclSession {
         mut record: Vec<u8>,
         (reply, raw, used): Found,
         deadline: Instant,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         let c = reply.module;
         let mut events = Vec::new();
         let settled =
@@ -320,11 +320,11 @@ impl TmclSession {
                     &record,
                     format_args!("{c}: {}, value {}", reply.status, reply.value),
                 );
-                Ok(Exchange {
+                Ok(TmclExchange {
                     module,
                     sent: text.to_string(),
                     op,
-                    answer: Answer::Reply {
+                    reply: TmclReply::Status {
                         status: reply.status,
                         value: reply.value,
                     },

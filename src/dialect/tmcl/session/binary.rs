@@ -9,7 +9,7 @@ use crate::dialect::tmcl::protocol::frame::{
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::{Instruction, Status};
 
-use super::{Answer, Exchange, TmclSession};
+use super::{TmclExchange, TmclReply, TmclSession};
 use crate::session::SessionError;
 use crate::session::transcript::Entry;
 
@@ -19,7 +19,7 @@ impl TmclSession {
         &mut self,
         module: u8,
         instruction: Instruction,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         self.exchange(module, false, |s| s.binary_exchange(module, instruction))
     }
 
@@ -27,7 +27,7 @@ impl TmclSession {
         &mut self,
         module: u8,
         instruction: Instruction,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         let sent = self.describe_instruction(&instruction);
         let frame = CommandFrame {
             address: module,
@@ -37,15 +37,15 @@ impl TmclSession {
         self.core
             .wire
             .send(&frame, format_args!("{sent} to module {module} (binary)"))?;
-        let exchange = |answer, raw| Exchange {
+        let exchange = |reply, raw| TmclExchange {
             module,
             sent: sent.clone(),
             op: Some(Op::Command(instruction)),
-            answer,
+            reply,
             raw,
         };
         if instruction.command == 137 {
-            return Ok(exchange(Answer::Nothing, String::new()));
+            return Ok(exchange(TmclReply::Nothing, String::new()));
         }
         let deadline = Instant::now() + self.core.options.timeout;
         loop {
@@ -58,7 +58,7 @@ impl TmclSession {
                     self.core
                         .wire
                         .log_received(FRAME_LEN, format_args!("version {text}"));
-                    return Ok(exchange(Answer::Version(text.clone()), text));
+                    return Ok(exchange(TmclReply::Version(text.clone()), text));
                 }
                 let reply = match ReplyFrame::decode(&raw) {
                     Ok(reply) => reply,
@@ -103,7 +103,7 @@ impl TmclSession {
                     ),
                 );
                 return Ok(exchange(
-                    Answer::Reply {
+                    TmclReply::Status {
                         status: reply.status,
                         value: reply.value,
                     },

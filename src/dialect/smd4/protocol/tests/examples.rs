@@ -4,7 +4,7 @@
 
 use crate::dialect::smd4::protocol::{
     Example, Expectation, ItemType, Progress, ReplyCollector, ReplyShape, Request, Smd4Spec,
-    ValidationError, Value, check_reply, parse_response, validate,
+    ValidationError, Value, check_reply, parse_reply, validate,
 };
 
 fn all_examples() -> Vec<(String, Example)> {
@@ -132,7 +132,7 @@ fn writes_echo_the_value_set_except_where_the_document_is_wrong() {
         else {
             continue;
         };
-        let reply = parse_response(rx, &Expectation::for_command(spec)).unwrap();
+        let reply = parse_reply(rx, &Expectation::for_command(spec)).unwrap();
         let echoed = &reply.data[0];
         let same = match (arg.parse::<f64>(), echoed.value.as_f64()) {
             (Ok(sent), Some(got)) => (sent - got).abs() < 1e-9,
@@ -159,7 +159,7 @@ fn writes_echo_the_value_set_except_where_the_document_is_wrong() {
 fn notable_examples_decode_to_the_documented_values() {
     let table = &Smd4Spec::builtin().commands;
     let parse = |mnemonic: &str, rx: &str| {
-        parse_response(rx, &Expectation::for_command(table.get(mnemonic).unwrap())).unwrap()
+        parse_reply(rx, &Expectation::for_command(table.get(mnemonic).unwrap())).unwrap()
     };
     // §7.5: the VSTOP example lacks the `E`; user 10 Hz, real 9.9996 Hz.
     assert_eq!(

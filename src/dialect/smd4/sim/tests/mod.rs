@@ -12,7 +12,7 @@ mod replies;
 use std::time::Duration;
 
 use crate::dialect::smd4::protocol::{
-    Expectation, Progress, ReplyCollector, Request, Response, Smd4Spec, check_reply, parse_response,
+    Expectation, Progress, ReplyCollector, Request, Smd4Reply, Smd4Spec, check_reply, parse_reply,
 };
 use crate::sim::Device;
 
@@ -60,7 +60,7 @@ impl Bench {
 
     /// Sends `line` and parses and checks the reply as a client would, multi-line replies
     /// included.
-    pub fn reply(&mut self, line: &str) -> Response {
+    pub fn reply(&mut self, line: &str) -> Smd4Reply {
         let request = Request::parse(line).unwrap();
         let expect = Expectation::for_request(&Smd4Spec::builtin().commands, &request);
         let reply = self.collect(line, expect.clone());
@@ -73,7 +73,7 @@ impl Bench {
         reply
     }
 
-    fn collect(&mut self, line: &str, expect: Expectation) -> Response {
+    fn collect(&mut self, line: &str, expect: Expectation) -> Smd4Reply {
         let text = self.raw(format!("{line}\r\n").as_bytes());
         let mut collector = ReplyCollector::new(expect);
         let mut lines = text.split_terminator("\r\n");
@@ -114,7 +114,7 @@ impl Bench {
 
     /// A number read back.
     pub fn number(&mut self, line: &str) -> f64 {
-        let reply = parse_response(&self.send(line), &Expectation::unknown()).unwrap();
+        let reply = parse_reply(&self.send(line), &Expectation::unknown()).unwrap();
         reply.data[0].value.as_f64().unwrap()
     }
 

@@ -20,7 +20,7 @@ use super::types::{ItemType, parse_int};
 
 /// A parsed reply.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Response {
+pub struct Smd4Reply {
     /// The `@N,` prefix of a reply from an addressed drive.
     pub address: Option<u32>,
     /// Status word.
@@ -38,7 +38,7 @@ pub struct Response {
     pub raw: String,
 }
 
-impl Response {
+impl Smd4Reply {
     /// Whether the command succeeded.
     pub fn is_ok(&self) -> bool {
         self.error.is_none()
@@ -58,7 +58,7 @@ impl Response {
     }
 
     /// The reply, or the device error it carries.
-    pub fn into_result(self) -> Result<Response, DeviceError> {
+    pub fn into_result(self) -> Result<Smd4Reply, DeviceError> {
         match self.error {
             Some(error) => Err(error),
             None => Ok(self),
@@ -69,7 +69,7 @@ impl Response {
 /// Why a line is not a reply.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("not an SMD4 reply: '{line}' ({why})")]
-pub struct ResponseError {
+pub struct ReplyError {
     /// The line.
     pub line: String,
     /// What is wrong with it.
@@ -128,9 +128,9 @@ impl Expectation {
 }
 
 /// Parses one reply line (line ending optional).
-pub fn parse_response(line: &str, expect: &Expectation) -> Result<Response, ResponseError> {
+pub fn parse_reply(line: &str, expect: &Expectation) -> Result<Smd4Reply, ReplyError> {
     let text = line.trim_end_matches(['\r', '\n']);
-    let fail = |why| ResponseError {
+    let fail = |why| ReplyError {
         line: text.to_string(),
         why,
     };
@@ -157,7 +157,7 @@ pub fn parse_response(line: &str, expect: &Expectation) -> Result<Response, Resp
             .map(|(i, raw)| typed_item(raw, i, expect))
             .collect(),
     };
-    Ok(Response {
+    Ok(Smd4Reply {
         address,
         sflags: Sflags(sflags),
         eflags: Eflags(eflags),
@@ -207,7 +207,7 @@ fn error_item(items: &[&str], expect: &Expectation) -> Option<DeviceError> {
 }
 
 /// Whether both flag words of a reply line are written as the type table says: `0x` and exactly
-/// four hex digits. [`parse_response`] reads shorter words too, so that a line is still
+/// four hex digits. [`parse_reply`] reads shorter words too, so that a line is still
 /// recognised as a reply; a reply with a short word lost a digit on the way.
 pub(super) fn full_width_flags(line: &str) -> bool {
     head_of_width(line, 4).is_ok()
