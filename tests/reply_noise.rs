@@ -13,7 +13,7 @@ use std::time::Duration;
 
 use tmclsh::clock::SystemClock;
 use tmclsh::dialect::smd4::protocol::{Expectation, Smd4Spec, check_reply, parse_reply};
-use tmclsh::dialect::smd4::sim::{Smd4Options, Smd4Sim};
+use tmclsh::dialect::smd4::sim::{Smd4Sim, Smd4SimOptions};
 use tmclsh::dialect::tmcl::protocol::{CommandFrame, Instruction};
 use tmclsh::dialect::tmcl::sim::{Bus, BusOptions};
 use tmclsh::sim::Device;
@@ -100,7 +100,7 @@ fn smd4_drive_via(via: Via, rules: &[(&str, &[u8])]) -> Vec<String> {
     let device = Scripted {
         end: b'\n',
         rules: own(rules),
-        inner: Box::new(Smd4Sim::new(Smd4Options::default())),
+        inner: Box::new(Smd4Sim::new(Smd4SimOptions::default())),
         line: Vec::new(),
         out: Vec::new(),
     };

@@ -16,6 +16,9 @@ pub mod store;
 
 pub use builtin::builtin_link;
 
+/// Where a simulator logs its traffic (`tmclsh sim --verbose`): one decoded line at a time.
+pub type LogSink = Box<dyn FnMut(&str) + Send>;
+
 use std::time::Duration;
 
 /// A simulated bus endpoint as a pure state machine. `now` is the simulation time since the device

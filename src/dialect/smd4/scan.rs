@@ -21,7 +21,7 @@ use crate::progress::Progress;
 
 /// A drive that answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Found {
+pub struct FoundDrive {
     /// Its bus address (COMS:SERIAL:SLAVEADDR).
     pub address: u32,
     /// Its firmware version (SYS:FW), unless it answered with an error code.
@@ -32,11 +32,11 @@ pub struct Found {
 
 /// What a scan found.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Report {
+pub struct Smd4Scan {
     /// The addresses tried.
     pub scanned: Vec<u32>,
     /// The drives that answered, by address.
-    pub found: Vec<Found>,
+    pub found: Vec<FoundDrive>,
     /// How long each reply was awaited.
     pub per_reply: Duration,
 }
@@ -47,7 +47,7 @@ pub fn scan(
     session: &mut Smd4Session,
     addresses: &[u32],
     per_reply: Duration,
-) -> Result<Report, SessionError> {
+) -> Result<Smd4Scan, SessionError> {
     let mut addresses = addresses.to_vec();
     addresses.sort_unstable();
     addresses.dedup();
@@ -65,13 +65,13 @@ pub fn scan(
         let serial = session
             .with_timeout(per_reply, |s| ask(s, address, "SYS:BSN"))?
             .flatten();
-        found.push(Found {
+        found.push(FoundDrive {
             address,
             firmware,
             serial,
         });
     }
-    Ok(Report {
+    Ok(Smd4Scan {
         scanned: addresses,
         found,
         per_reply,
@@ -114,7 +114,7 @@ pub fn bus_scan(
 }
 
 /// Prints the table of drives found, a summary line, and what the probes left behind.
-pub fn write_report(report: &Report, out: &mut dyn Write) -> io::Result<()> {
+pub fn write_report(report: &Smd4Scan, out: &mut dyn Write) -> io::Result<()> {
     if !report.found.is_empty() {
         writeln!(out, "address  firmware  serial")?;
     }
@@ -132,7 +132,7 @@ pub const ADDRESSING_NOTE: &str = "note: the drives on this bus saw @N packets a
 addressing mode until they restart: talk to them with --address N (:target N)";
 
 /// "2 drives answered at 1-247 (at most 100 ms per reply)".
-pub fn summary(report: &Report) -> String {
+pub fn summary(report: &Smd4Scan) -> String {
     let who = match report.found.len() {
         0 => "no drive answered".to_string(),
         1 => "1 drive answered".to_string(),
@@ -156,15 +156,15 @@ mod tests {
 
     #[test]
     fn the_table_lists_each_drive_and_the_note_on_addressing_mode() {
-        let report = Report {
+        let report = Smd4Scan {
             scanned: (1..=247).collect(),
             found: vec![
-                Found {
+                FoundDrive {
                     address: 3,
                     firmware: Some("24044.12".into()),
                     serial: Some("1234ABCD".into()),
                 },
-                Found {
+                FoundDrive {
                     address: 200,
                     firmware: None,
                     serial: None,

@@ -28,16 +28,16 @@ mod tests;
 
 pub use check::{Noise, check_reply, is_reply_to};
 pub use commands::{
-    ArgProblem, ArgSpec, Choice, CommandSpec, CommandTable, Example, Kind, ReplyShape,
+    ArgProblem, ArgSpec, Choice, Example, Kind, ReplyShape, Smd4Command, Smd4CommandTable,
 };
 pub use errors::{DeviceError, ErrorCode, ErrorInfo};
 pub use flags::{Eflags, FlagBit, FlagTable, Sflags};
 pub use format::{ErrorSpelling, FlagCase, FloatStyle};
-pub use hints::{Candidate, Completion, complete, hint, hint_for_line, usage};
+pub use hints::{WordCompletion, complete, hint, hint_for_line, usage};
 pub use items::{DataItem, Value};
-pub use multiline::{Progress, ReplyCollector, default_quiet_gap};
+pub use multiline::{CollectorState, ReplyCollector, default_quiet_gap};
 pub use reply::{Expectation, ReplyError, Smd4Reply, parse_reply};
 pub use request::{ADDRESSING_HELP, PrefixStyle, Request, RequestError};
 pub use spec::{SimConstants, Smd4Spec, SnapshotSpec};
 pub use types::{ArgValue, ItemType};
-pub use validate::{Access, Checked, MAX_ADDRESS, ValidationError, validate};
+pub use validate::{Action, Checked, MAX_ADDRESS, ValidationError, validate};

@@ -7,13 +7,13 @@
 //! `data/smd4.toml`; make it configurable, e.g. longer on slow RS485 links):
 //!
 //! ```
-//! use tmclsh::dialect::smd4::protocol::{Expectation, Progress, ReplyCollector, Smd4Spec};
+//! use tmclsh::dialect::smd4::protocol::{Expectation, CollectorState, ReplyCollector, Smd4Spec};
 //! let table = &Smd4Spec::builtin().commands;
 //! let mut collector = ReplyCollector::new(Expectation::for_command(table.get("COMS:NET:IPCONF").unwrap()));
 //! // The session reads a line, feeds it, and looks at what the collector needs next:
-//! assert_eq!(collector.push_line("0x0000,0x0000,\r\n").unwrap(), Progress::AwaitQuiet);
+//! assert_eq!(collector.push_line("0x0000,0x0000,\r\n").unwrap(), CollectorState::AwaitQuiet);
 //! // … more lines arrive; each is fed the same way …
-//! assert_eq!(collector.push_line("Ethernet interface:").unwrap(), Progress::AwaitQuiet);
+//! assert_eq!(collector.push_line("Ethernet interface:").unwrap(), CollectorState::AwaitQuiet);
 //! // … until nothing arrived for the quiet gap after the last byte:
 //! let reply = collector.finish_quiet().unwrap();
 //! assert_eq!(reply.lines, ["Ethernet interface:"]);
@@ -34,7 +34,7 @@ pub fn default_quiet_gap() -> Duration {
 
 /// What the collector needs after a line.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Progress {
+pub enum CollectorState {
     /// The reply is complete.
     Complete(Box<Smd4Reply>),
     /// More lines may follow: keep reading until the line has been quiet for the gap, then call
@@ -57,18 +57,18 @@ impl ReplyCollector {
 
     /// Feeds one received line (line ending optional). The first line must be a reply; an error
     /// leaves the collector as it was, so a session may skip line noise and go on.
-    pub fn push_line(&mut self, line: &str) -> Result<Progress, ReplyError> {
+    pub fn push_line(&mut self, line: &str) -> Result<CollectorState, ReplyError> {
         let text = line.trim_end_matches(['\r', '\n']);
         if let Some(head) = &mut self.head {
             head.lines.push(text.to_string());
-            return Ok(Progress::AwaitQuiet);
+            return Ok(CollectorState::AwaitQuiet);
         }
         let reply = parse_reply(text, &self.expect)?;
         if self.expect.multi_line() && reply.is_ok() {
             self.head = Some(reply);
-            Ok(Progress::AwaitQuiet)
+            Ok(CollectorState::AwaitQuiet)
         } else {
-            Ok(Progress::Complete(Box::new(reply)))
+            Ok(CollectorState::Complete(Box::new(reply)))
         }
     }
 

@@ -11,7 +11,7 @@ use nom::character::complete::{char, digit1, one_of};
 use nom::combinator::opt;
 use nom::{IResult, Parser};
 
-use super::commands::{CommandSpec, CommandTable, ReplyShape};
+use super::commands::{ReplyShape, Smd4Command, Smd4CommandTable};
 use super::errors::{DeviceError, ErrorCode};
 use super::flags::{Eflags, Sflags};
 use super::items::{DataItem, Value, parse_named};
@@ -92,7 +92,7 @@ impl Expectation {
     }
 
     /// The reply of `spec`.
-    pub fn for_command(spec: &CommandSpec) -> Expectation {
+    pub fn for_command(spec: &Smd4Command) -> Expectation {
         Expectation {
             shape: Some(spec.reply.clone()),
             value: spec.value_item_type(),
@@ -101,7 +101,7 @@ impl Expectation {
     }
 
     /// The reply to `request`, looked up in `table`.
-    pub fn for_request(table: &CommandTable, request: &Request) -> Expectation {
+    pub fn for_request(table: &Smd4CommandTable, request: &Request) -> Expectation {
         table
             .get(&request.mnemonic)
             .map(Expectation::for_command)

@@ -25,7 +25,7 @@ use crate::session::{SessionError, SessionOptions};
 
 /// SMD4-specific settings.
 #[derive(Debug, Clone, Copy)]
-pub struct Smd4Options {
+pub struct Smd4SessionOptions {
     /// `@N` prefix for requests without one (`--address`); `None` sends no prefix.
     pub address: Option<u32>,
     /// Whether a comma follows the prefix (`--prefix-comma`).
@@ -34,9 +34,9 @@ pub struct Smd4Options {
     pub quiet_gap: Duration,
 }
 
-impl Default for Smd4Options {
+impl Default for Smd4SessionOptions {
     fn default() -> Self {
-        Smd4Options {
+        Smd4SessionOptions {
             address: None,
             prefix: PrefixStyle::Attached,
             quiet_gap: crate::dialect::smd4::protocol::default_quiet_gap(),
@@ -98,7 +98,7 @@ pub fn drive_name(address: Option<u32>) -> String {
 pub struct Smd4Session {
     core: SessionCore,
     spec: &'static Smd4Spec,
-    smd4: Smd4Options,
+    smd4: Smd4SessionOptions,
     /// An addressed drive answered without its `@N,` prefix: replies cannot be told apart.
     unprefixed_replies: bool,
 }
@@ -108,7 +108,7 @@ impl Smd4Session {
     pub fn open(
         link: Box<dyn Link>,
         options: SessionOptions,
-        smd4: Smd4Options,
+        smd4: Smd4SessionOptions,
         transcript: Option<Transcript>,
     ) -> Result<Self, SessionError> {
         let mut session = Smd4Session {

@@ -5,7 +5,7 @@
 use std::time::Instant;
 
 use crate::dialect::smd4::protocol::{
-    Expectation, PrefixStyle, Progress, ReplyCollector, Request, Smd4Reply, check_reply,
+    CollectorState, Expectation, PrefixStyle, ReplyCollector, Request, Smd4Reply, check_reply,
     is_reply_to,
 };
 use crate::session::SessionError;
@@ -71,7 +71,7 @@ impl Smd4Session {
                 }
                 let line = String::from_utf8_lossy(&self.core.wire.rx.bytes()[..end]).into_owned();
                 match collector.push_line(&line) {
-                    Ok(Progress::Complete(reply)) if foreign(&reply, request) => {
+                    Ok(CollectorState::Complete(reply)) if foreign(&reply, request) => {
                         let kind = format!(
                             "a reply from drive {} while waiting for {}",
                             drive_name(reply.address),
@@ -80,10 +80,10 @@ impl Smd4Session {
                         self.core.wire.discard(used, &kind);
                         collector = ReplyCollector::new(expect.clone());
                     }
-                    Ok(Progress::Complete(reply)) => {
+                    Ok(CollectorState::Complete(reply)) => {
                         return self.settle(*reply, reply_bytes, used, deadline, &expect, request);
                     }
-                    Ok(Progress::AwaitQuiet) => {
+                    Ok(CollectorState::AwaitQuiet) => {
                         reply_bytes.extend(self.core.wire.rx.take(used));
                         if reply_bytes.len() > MAX_REPLY {
                             return Err(self.endless(

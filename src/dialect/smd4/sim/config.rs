@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
-use crate::dialect::smd4::protocol::{ArgValue, CommandTable};
+use crate::dialect::smd4::protocol::{ArgValue, Smd4CommandTable};
 
 /// One setting's value.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -55,7 +55,7 @@ impl Setting {
 pub type Settings = BTreeMap<String, Setting>;
 
 /// The factory defaults of every setting that has one (from `data/smd4.toml`).
-pub fn factory(table: &CommandTable) -> Settings {
+pub fn factory(table: &Smd4CommandTable) -> Settings {
     table
         .iter()
         .filter(|c| c.readable && c.writable && c.arg.is_some())
@@ -68,7 +68,7 @@ pub fn factory(table: &CommandTable) -> Settings {
 }
 
 /// The settings STORE saves.
-pub fn persistent(table: &CommandTable, working: &Settings) -> Settings {
+pub fn persistent(table: &Smd4CommandTable, working: &Settings) -> Settings {
     working
         .iter()
         .filter(|(name, _)| table.get(name).is_some_and(|c| c.persistent))
@@ -95,7 +95,7 @@ pub fn to_text(stored: &Settings) -> String {
 /// Reads a state file over `factory`: each valid stored setting replaces its default. `Err` says
 /// what was wrong (the drive then reports a configuration error), with the usable rest.
 pub fn from_text(
-    table: &CommandTable,
+    table: &Smd4CommandTable,
     factory: &Settings,
     text: &str,
 ) -> Result<Settings, Settings> {

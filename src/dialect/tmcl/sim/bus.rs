@@ -6,7 +6,7 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use crate::dialect::tmcl::profile::Profile;
-use crate::sim::Device;
+use crate::sim::{Device, LogSink};
 
 use super::control_cmd;
 use super::machine::Machine;
@@ -14,9 +14,6 @@ use super::module::{Module, Sink};
 use super::motion::{Switch, Switches};
 use super::options::Quirks;
 use super::state::{BusImage, Eeprom};
-
-/// A sink for log lines (`--verbose`): decoded bytes in and out.
-pub type LogSink = Box<dyn FnMut(&str) + Send>;
 
 /// How to build a bus.
 pub struct BusOptions {

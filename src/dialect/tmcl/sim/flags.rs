@@ -8,10 +8,10 @@ use clap::{ArgMatches, Args, Command, FromArgMatches};
 
 use crate::dialect::SimFlags;
 use crate::dialect::tmcl::profile::Profile;
-use crate::sim::Device;
 use crate::sim::store::FileStore;
+use crate::sim::{Device, LogSink};
 
-use super::{Backspace, Bus, BusOptions, Eeprom, LineEnd, LogSink, Quirks, Switches};
+use super::{Backspace, Bus, BusOptions, Eeprom, LineEnd, Quirks, Switches};
 
 /// The bus layout.
 #[derive(Debug, Clone, clap::Args)]

@@ -3,7 +3,7 @@
 //! the test names the example and says what is wrong with it.
 
 use crate::dialect::smd4::protocol::{
-    Example, Expectation, ItemType, Progress, ReplyCollector, ReplyShape, Request, Smd4Spec,
+    CollectorState, Example, Expectation, ItemType, ReplyCollector, ReplyShape, Request, Smd4Spec,
     ValidationError, Value, check_reply, parse_reply, validate,
 };
 
@@ -65,11 +65,14 @@ fn every_reply_parses_with_the_types_its_command_returns() {
             .unwrap();
         let mut collector = ReplyCollector::new(Expectation::for_command(spec));
         let reply = match collector.push_line(rx).unwrap() {
-            Progress::Complete(reply) => *reply,
-            Progress::AwaitQuiet => {
+            CollectorState::Complete(reply) => *reply,
+            CollectorState::AwaitQuiet => {
                 assert!(spec.multi_line(), "{rx}");
                 for line in &example.rx_more {
-                    assert_eq!(collector.push_line(line).unwrap(), Progress::AwaitQuiet);
+                    assert_eq!(
+                        collector.push_line(line).unwrap(),
+                        CollectorState::AwaitQuiet
+                    );
                 }
                 collector.finish_quiet().unwrap()
             }

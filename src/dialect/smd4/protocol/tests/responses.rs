@@ -5,7 +5,7 @@ use proptest::prelude::*;
 
 use crate::dialect::smd4::protocol::format::{format_error, format_flags, format_float};
 use crate::dialect::smd4::protocol::{
-    ErrorCode, ErrorSpelling, Expectation, FlagCase, FloatStyle, Progress, ReplyCollector,
+    CollectorState, ErrorCode, ErrorSpelling, Expectation, FlagCase, FloatStyle, ReplyCollector,
     Smd4Spec, Value, parse_reply,
 };
 
@@ -116,7 +116,7 @@ fn multi_line_collector() {
     let mut single = ReplyCollector::new(expect("SYS:FW"));
     assert!(matches!(
         single.push_line("0x0000,0x0000,24044.12"),
-        Ok(Progress::Complete(_))
+        Ok(CollectorState::Complete(_))
     ));
     // A multi-line command that failed completes at once too: no waiting for quiet.
     let mut failed = ReplyCollector::new(expect("SYS:FLAGSV"));
@@ -124,7 +124,7 @@ fn multi_line_collector() {
         .push_line("0x0000,0x0000,-102 (Argument count)")
         .unwrap()
     {
-        Progress::Complete(reply) => {
+        CollectorState::Complete(reply) => {
             assert_eq!(reply.error.unwrap().code, ErrorCode::ArgumentCount)
         }
         other => panic!("{other:?}"),
@@ -135,12 +135,12 @@ fn multi_line_collector() {
     assert!(!flagsv.awaiting_quiet());
     assert_eq!(
         flagsv.push_line("0x0080,0x0000,\r\n").unwrap(),
-        Progress::AwaitQuiet
+        CollectorState::AwaitQuiet
     );
     assert!(flagsv.awaiting_quiet());
     assert_eq!(
         flagsv.push_line("[X]Standby\r\n").unwrap(),
-        Progress::AwaitQuiet
+        CollectorState::AwaitQuiet
     );
     let reply = flagsv.finish_quiet().unwrap();
     assert_eq!(reply.lines, ["[X]Standby"]);

@@ -12,11 +12,12 @@ mod replies;
 use std::time::Duration;
 
 use crate::dialect::smd4::protocol::{
-    Expectation, Progress, ReplyCollector, Request, Smd4Reply, Smd4Spec, check_reply, parse_reply,
+    CollectorState, Expectation, ReplyCollector, Request, Smd4Reply, Smd4Spec, check_reply,
+    parse_reply,
 };
 use crate::sim::Device;
 
-use super::{Smd4Options, Smd4Sim};
+use super::{Smd4Sim, Smd4SimOptions};
 
 /// A simulator and the time the next bytes arrive at.
 pub struct Bench {
@@ -26,10 +27,10 @@ pub struct Bench {
 
 impl Bench {
     pub fn new() -> Bench {
-        Bench::with(Smd4Options::default())
+        Bench::with(Smd4SimOptions::default())
     }
 
-    pub fn with(options: Smd4Options) -> Bench {
+    pub fn with(options: Smd4SimOptions) -> Bench {
         Bench {
             sim: Smd4Sim::new(options),
             now: Duration::ZERO,
@@ -79,14 +80,14 @@ impl Bench {
         let mut lines = text.split_terminator("\r\n");
         let first = lines.next().unwrap_or_else(|| panic!("no reply to {line}"));
         match collector.push_line(first).unwrap() {
-            Progress::Complete(reply) => {
+            CollectorState::Complete(reply) => {
                 assert!(
                     lines.next().is_none(),
                     "{line}: one line expected in {text:?}"
                 );
                 *reply
             }
-            Progress::AwaitQuiet => {
+            CollectorState::AwaitQuiet => {
                 for more in lines {
                     collector.push_line(more).unwrap();
                 }
