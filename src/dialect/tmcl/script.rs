@@ -24,6 +24,17 @@ pub type Shared = Rc<RefCell<TmclSession>>;
 
 /// Registers the TMCL functions over `session`.
 pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
+    register_lines(engine, session);
+    register_parameters(engine, session, Table::Axis);
+    register_parameters(engine, session, Table::Global);
+    register_motion(engine, session);
+    register_io(engine, session);
+    register_module(engine, session);
+    register_programs(engine, session, sandbox);
+}
+
+/// `send(line)` and `reply(line)`: a line as typed.
+fn register_lines(engine: &mut Engine, session: &Shared) {
     let s = session.clone();
     volatile!(engine, "send", move |line: &str| value_of(checked(
         s.borrow_mut().exchange_line(line)
@@ -33,57 +44,80 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         s.borrow_mut().exchange_line(line)
     )
     .map(reply_map));
+}
 
-    let s = session.clone();
-    volatile!(engine, "gap", move |param: Dynamic, motor: INT| {
-        let p = axis(&s, &param)?;
-        request(&s, 6, p, byte("motor", motor)?, 0)
-    });
-    let s = session.clone();
-    volatile!(
-        engine,
-        "sap",
-        move |param: Dynamic, motor: INT, value: INT| {
-            let p = axis(&s, &param)?;
-            request(&s, 5, p, byte("motor", motor)?, word("value", value)?).map(|_| ())
-        }
-    );
-    let s = session.clone();
-    volatile!(engine, "stap", move |param: Dynamic, motor: INT| {
-        let p = axis(&s, &param)?;
-        request(&s, 7, p, byte("motor", motor)?, 0).map(|_| ())
-    });
-    let s = session.clone();
-    volatile!(engine, "rsap", move |param: Dynamic, motor: INT| {
-        let p = axis(&s, &param)?;
-        request(&s, 8, p, byte("motor", motor)?, 0).map(|_| ())
-    });
-    let s = session.clone();
-    volatile!(engine, "ggp", move |param: Dynamic, bank: INT| {
-        let p = global(&s, &param, bank)?;
-        request(&s, 10, p, byte("bank", bank)?, 0)
-    });
-    let s = session.clone();
-    volatile!(
-        engine,
-        "sgp",
-        move |param: Dynamic, bank: INT, value: INT| {
-            let p = global(&s, &param, bank)?;
-            request(&s, 9, p, byte("bank", bank)?, word("value", value)?).map(|_| ())
-        }
-    );
-    let s = session.clone();
-    volatile!(engine, "stgp", move |param: Dynamic, bank: INT| {
-        let p = global(&s, &param, bank)?;
-        request(&s, 11, p, byte("bank", bank)?, 0).map(|_| ())
-    });
-    let s = session.clone();
-    volatile!(engine, "rsgp", move |param: Dynamic, bank: INT| {
-        let p = global(&s, &param, bank)?;
-        request(&s, 12, p, byte("bank", bank)?, 0).map(|_| ())
-    });
+/// Which parameters a family of functions reaches.
+#[derive(Debug, Clone, Copy)]
+enum Table {
+    /// Axis parameters, by motor: GAP, SAP, STAP, RSAP.
+    Axis,
+    /// Global parameters, by bank: GGP, SGP, STGP, RSGP.
+    Global,
+}
 
-    // Motion: (name, command, type).
+impl Table {
+    /// The function names and commands of get, set, store and restore.
+    fn functions(self) -> [(&'static str, u8); 4] {
+        match self {
+            Table::Axis => [("gap", 6), ("sap", 5), ("stap", 7), ("rsap", 8)],
+            Table::Global => [("ggp", 10), ("sgp", 9), ("stgp", 11), ("rsgp", 12)],
+        }
+    }
+
+    /// What the second argument is.
+    fn index(self) -> &'static str {
+        match self {
+            Table::Axis => "motor",
+            Table::Global => "bank",
+        }
+    }
+
+    /// The number of a parameter given by number or name; a global parameter named must be in
+    /// bank `index`.
+    fn number(self, session: &Shared, param: &Dynamic, index: INT) -> Fallible<u8> {
+        match self {
+            Table::Axis => axis(session, param),
+            Table::Global => global(session, param, index),
+        }
+    }
+}
+
+/// The get, set, store and restore functions of `table` (TMCL order: parameter, motor/bank,
+/// value).
+fn register_parameters(engine: &mut Engine, session: &Shared, table: Table) {
+    let [(get, get_command), (set, set_command), store, restore] = table.functions();
+    let what = table.index();
+    let s = session.clone();
+    volatile!(engine, get, move |param: Dynamic, index: INT| {
+        let p = table.number(&s, &param, index)?;
+        request(&s, get_command, p, byte(what, index)?, 0)
+    });
+    let s = session.clone();
+    volatile!(engine, set, move |param: Dynamic,
+                                 index: INT,
+                                 value: INT| {
+        let p = table.number(&s, &param, index)?;
+        request(
+            &s,
+            set_command,
+            p,
+            byte(what, index)?,
+            word("value", value)?,
+        )
+        .map(|_| ())
+    });
+    for (name, command) in [store, restore] {
+        let s = session.clone();
+        volatile!(engine, name, move |param: Dynamic, index: INT| {
+            let p = table.number(&s, &param, index)?;
+            request(&s, command, p, byte(what, index)?, 0).map(|_| ())
+        });
+    }
+}
+
+/// Moves, stops and reference searches.
+fn register_motion(engine: &mut Engine, session: &Shared) {
+    // (name, command, type): MVP and the rotations take a motor and a value.
     for (name, command, type_) in [
         ("mvp_abs", 4, 0),
         ("mvp_rel", 4, 1),
@@ -93,35 +127,16 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     ] {
         let s = session.clone();
         volatile!(engine, name, move |motor: INT, value: INT| {
-            request(
-                &s,
-                command,
-                type_,
-                byte("motor", motor)?,
-                word("value", value)?,
-            )
-            .map(|_| ())
+            let (motor, value) = (byte("motor", motor)?, word("value", value)?);
+            request(&s, command, type_, motor, value).map(|_| ())
         });
     }
-    let s = session.clone();
-    volatile!(engine, "mst", move |motor: INT| request(
-        &s,
-        3,
-        0,
-        byte("motor", motor)?,
-        0
-    )
-    .map(|_| ()));
-    for (name, type_) in [("rfs_start", 0), ("rfs_stop", 1)] {
+    // (name, command, type): these take a motor only.
+    for (name, command, type_) in [("mst", 3, 0), ("rfs_start", 13, 0), ("rfs_stop", 13, 1)] {
         let s = session.clone();
-        volatile!(engine, name, move |motor: INT| request(
-            &s,
-            13,
-            type_,
-            byte("motor", motor)?,
-            0
-        )
-        .map(|_| ()));
+        volatile!(engine, name, move |motor: INT| {
+            request(&s, command, type_, byte("motor", motor)?, 0).map(|_| ())
+        });
     }
     let s = session.clone();
     volatile!(engine, "rfs_status", move |motor: INT| request(
@@ -131,17 +146,22 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         byte("motor", motor)?,
         0
     ));
+    let s = session.clone();
+    volatile!(engine, "wait_pos", move |motor: INT, timeout_ms: INT| {
+        let motor = byte("motor", motor)?;
+        let what = format!("motor {motor} to reach its target position");
+        waiting::until(&what, duration(timeout_ms)?, || {
+            Ok(request(&s, 6, 8, motor, 0)? == 1)
+        })
+    });
+}
 
+/// Inputs and outputs (SIO, GIO) and stored coordinates (SCO, GCO).
+fn register_io(engine: &mut Engine, session: &Shared) {
     let s = session.clone();
     volatile!(engine, "sio", move |port: INT, bank: INT, value: INT| {
-        request(
-            &s,
-            14,
-            byte("port", port)?,
-            byte("bank", bank)?,
-            word("value", value)?,
-        )
-        .map(|_| ())
+        let (port, bank) = (byte("port", port)?, byte("bank", bank)?);
+        request(&s, 14, port, bank, word("value", value)?).map(|_| ())
     });
     let s = session.clone();
     volatile!(engine, "gio", move |port: INT, bank: INT| request(
@@ -153,14 +173,8 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     ));
     let s = session.clone();
     volatile!(engine, "sco", move |n: INT, motor: INT, position: INT| {
-        request(
-            &s,
-            30,
-            byte("coordinate", n)?,
-            byte("motor", motor)?,
-            word("position", position)?,
-        )
-        .map(|_| ())
+        let (n, motor) = (byte("coordinate", n)?, byte("motor", motor)?);
+        request(&s, 30, n, motor, word("position", position)?).map(|_| ())
     });
     let s = session.clone();
     volatile!(engine, "gco", move |n: INT, motor: INT| request(
@@ -170,16 +184,10 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         byte("motor", motor)?,
         0
     ));
+}
 
-    let s = session.clone();
-    volatile!(engine, "wait_pos", move |motor: INT, timeout_ms: INT| {
-        let motor = byte("motor", motor)?;
-        let what = format!("motor {motor} to reach its target position");
-        waiting::until(&what, duration(timeout_ms)?, || {
-            Ok(request(&s, 6, 8, motor, 0)? == 1)
-        })
-    });
-
+/// Which module the functions talk to, and what it is.
+fn register_module(engine: &mut Engine, session: &Shared) {
     let s = session.clone();
     volatile!(engine, "target", move |address: Dynamic| {
         let module = module_address(&address)?;
@@ -198,6 +206,10 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
             _ => exchange.raw,
         })
     });
+}
+
+/// Programs in the module's memory: download (through the sandbox), status, run and stop.
+fn register_programs(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     let s = session.clone();
     let files = sandbox.clone();
     volatile!(engine, "download", move |path: &str| -> Fallible<INT> {
