@@ -225,32 +225,8 @@ fn record(
             .map(|p| p.name.clone())
             .collect::<Vec<_>>(),
     )?;
-    let count = Cell::new(0usize);
-    let interrupted = Cell::new(false);
-    let result = if terminal {
-        let mut screen = TerminalScreen::new(&mut *out)?;
-        let mut stop = || {
-            let status = format!(
-                "recording to {file}: {} samples — any key stops",
-                count.get()
-            );
-            let key = screen
-                .draw(&[status])
-                .and_then(|()| screen.key(Duration::ZERO));
-            match key {
-                Ok(Some(Key::Interrupt)) => {
-                    interrupted.set(true);
-                    true
-                }
-                Ok(Some(Key::Stop)) | Err(_) => true,
-                Ok(None) => false,
-            }
-        };
-        let mut sink = |s: &record::Sample| {
-            count.set(count.get() + 1);
-            csv.append(s)
-        };
-        record::record(session, &plan, &SystemClock::new(), &mut stop, &mut sink)
+    let recording = if terminal {
+        record_on_terminal(session, &plan, file, &mut csv, out)?
     } else {
         let mut sink = |s: &record::Sample| csv.append(s);
         record::record(
@@ -259,12 +235,8 @@ fn record(
             &SystemClock::new(),
             &mut || false,
             &mut sink,
-        )
+        )?
     };
-    let recording = result?;
-    if interrupted.get() {
-        return Err(SessionError::Interrupted);
-    }
     writeln!(
         out,
         "recorded {} samples of {} to {file}; :plot draws them",
@@ -272,6 +244,46 @@ fn record(
         recording.columns.join(", ")
     )?;
     Ok((path, recording))
+}
+
+/// Records with a status line on the terminal, until the duration or a key (Ctrl-C as a key
+/// ends the recording as an interrupt).
+fn record_on_terminal(
+    session: &mut dyn ParamDevice,
+    plan: &record::Plan,
+    file: &str,
+    csv: &mut CsvFile,
+    out: &mut dyn Write,
+) -> Result<Recording, SessionError> {
+    let count = Cell::new(0usize);
+    let interrupted = Cell::new(false);
+    let mut screen = TerminalScreen::new(out)?;
+    let mut stop = || {
+        let status = format!(
+            "recording to {file}: {} samples — any key stops",
+            count.get()
+        );
+        let key = screen
+            .draw(&[status])
+            .and_then(|()| screen.key(Duration::ZERO));
+        match key {
+            Ok(Some(Key::Interrupt)) => {
+                interrupted.set(true);
+                true
+            }
+            Ok(Some(Key::Stop)) | Err(_) => true,
+            Ok(None) => false,
+        }
+    };
+    let mut sink = |s: &record::Sample| {
+        count.set(count.get() + 1);
+        csv.append(s)
+    };
+    let recording = record::record(session, plan, &SystemClock::new(), &mut stop, &mut sink)?;
+    if interrupted.get() {
+        return Err(SessionError::Interrupted);
+    }
+    Ok(recording)
 }
 
 fn plot(state: &State, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {

@@ -50,83 +50,99 @@ impl TmclSession {
         let deadline = Instant::now() + self.core.options.timeout;
         loop {
             while self.core.wire.rx.len() >= FRAME_LEN {
-                let mut raw = [0u8; FRAME_LEN];
-                raw.copy_from_slice(&self.core.wire.rx.bytes()[..FRAME_LEN]);
-                if instruction.command == 136 && instruction.type_ == 0 {
-                    let (_, text) = decode_version_string(&raw);
-                    self.settle_binary(module, &raw, deadline)?;
-                    self.core
-                        .wire
-                        .log_received(FRAME_LEN, format_args!("version {text}"));
-                    return Ok(exchange(TmclReply::Version(text.clone()), text));
+                if let Some((reply, raw)) = self.binary_frame(module, instruction, deadline)? {
+                    return Ok(exchange(reply, raw));
                 }
-                let reply = match ReplyFrame::decode(&raw) {
-                    Ok(reply) => reply,
-                    Err(e) => {
-                        return Err(self.binary_noise(
-                            "bad checksum",
-                            format!("corrupted reply from module {module}: {e}"),
-                        ));
-                    }
-                };
-                if reply.command == 138 && reply.status == Status::PositionReachedEvent {
-                    self.core.wire.notices.push(format!(
-                        "module {}: target position reached (event)",
-                        reply.module
-                    ));
-                    self.core.wire.log_received(
-                        FRAME_LEN,
-                        "target position reached event, not a reply; discarded",
-                    );
-                    continue;
-                }
-                if reply.module != module || reply.command != instruction.command {
-                    let kind = format!("a reply frame not for module {module}'s request");
-                    self.core.wire.discard(FRAME_LEN, &kind);
-                    continue;
-                }
-                if let Status::Other(code) = reply.status {
-                    return Err(self.binary_noise(
-                        "unknown status",
-                        format!(
-                            "line noise: module {module} answered with status {code}, which no \
-                             module sends; not taken"
-                        ),
-                    ));
-                }
-                self.settle_binary(module, &raw, deadline)?;
-                self.core.wire.log_received(
-                    FRAME_LEN,
-                    format_args!(
-                        "from module {}: {}, value {}",
-                        reply.module, reply.status, reply.value
-                    ),
-                );
-                return Ok(exchange(
-                    TmclReply::Status {
-                        status: reply.status,
-                        value: reply.value,
-                    },
-                    binary_reply_text(&reply),
-                ));
             }
             if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
-                let partial = self.core.wire.rx.clear();
-                if !partial.is_empty() {
-                    self.core
-                        .wire
-                        .log(Entry::Received, &partial, "incomplete frame, no reply");
-                }
-                return Err(SessionError::Timeout {
-                    module: address_char(module).unwrap_or('?').to_string(),
-                    timeout: self.core.options.timeout,
-                    hint: if partial.is_empty() {
-                        String::new()
-                    } else {
-                        format!(" (received only {})", hex(&partial))
-                    },
-                });
+                return Err(self.binary_timeout(module));
             }
+        }
+    }
+
+    /// Takes the frame at the front of the buffer as the reply to `instruction`: the reply and
+    /// its text, or `None` when it was an event or another module's reply (logged and dropped).
+    fn binary_frame(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+        deadline: Instant,
+    ) -> Result<Option<(TmclReply, String)>, SessionError> {
+        let mut raw = [0u8; FRAME_LEN];
+        raw.copy_from_slice(&self.core.wire.rx.bytes()[..FRAME_LEN]);
+        if instruction.command == 136 && instruction.type_ == 0 {
+            let (_, text) = decode_version_string(&raw);
+            self.settle_binary(module, &raw, deadline)?;
+            self.core
+                .wire
+                .log_received(FRAME_LEN, format_args!("version {text}"));
+            return Ok(Some((TmclReply::Version(text.clone()), text)));
+        }
+        let reply = match ReplyFrame::decode(&raw) {
+            Ok(reply) => reply,
+            Err(e) => {
+                return Err(self.binary_noise(
+                    "bad checksum",
+                    format!("corrupted reply from module {module}: {e}"),
+                ));
+            }
+        };
+        if reply.command == 138 && reply.status == Status::PositionReachedEvent {
+            self.core.wire.notices.push(format!(
+                "module {}: target position reached (event)",
+                reply.module
+            ));
+            self.core.wire.log_received(
+                FRAME_LEN,
+                "target position reached event, not a reply; discarded",
+            );
+            return Ok(None);
+        }
+        if reply.module != module || reply.command != instruction.command {
+            let kind = format!("a reply frame not for module {module}'s request");
+            self.core.wire.discard(FRAME_LEN, &kind);
+            return Ok(None);
+        }
+        if let Status::Other(code) = reply.status {
+            return Err(self.binary_noise(
+                "unknown status",
+                format!(
+                    "line noise: module {module} answered with status {code}, which no module \
+                     sends; not taken"
+                ),
+            ));
+        }
+        self.settle_binary(module, &raw, deadline)?;
+        self.core.wire.log_received(
+            FRAME_LEN,
+            format_args!(
+                "from module {}: {}, value {}",
+                reply.module, reply.status, reply.value
+            ),
+        );
+        let status = TmclReply::Status {
+            status: reply.status,
+            value: reply.value,
+        };
+        Ok(Some((status, binary_reply_text(&reply))))
+    }
+
+    /// No (whole) reply frame in time: what arrived is logged and named in the error.
+    fn binary_timeout(&mut self, module: u8) -> SessionError {
+        let partial = self.core.wire.rx.clear();
+        if !partial.is_empty() {
+            self.core
+                .wire
+                .log(Entry::Received, &partial, "incomplete frame, no reply");
+        }
+        SessionError::Timeout {
+            module: address_char(module).unwrap_or('?').to_string(),
+            timeout: self.core.options.timeout,
+            hint: if partial.is_empty() {
+                String::new()
+            } else {
+                format!(" (received only {})", hex(&partial))
+            },
         }
     }
 
