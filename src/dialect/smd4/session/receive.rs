@@ -72,12 +72,7 @@ impl Smd4Session {
                 let line = String::from_utf8_lossy(&self.core.wire.rx.bytes()[..end]).into_owned();
                 match collector.push_line(&line) {
                     Ok(CollectorState::Complete(reply)) if foreign(&reply, request) => {
-                        let kind = format!(
-                            "a reply from drive {} while waiting for {}",
-                            drive_name(reply.address),
-                            drive_name(request.address)
-                        );
-                        self.core.wire.discard(used, &kind);
+                        self.discard_foreign(used, &reply, request);
                         collector = ReplyCollector::new(expect.clone());
                     }
                     Ok(CollectorState::Complete(reply)) => {
@@ -86,11 +81,8 @@ impl Smd4Session {
                     Ok(CollectorState::AwaitQuiet) => {
                         reply_bytes.extend(self.core.wire.rx.take(used));
                         if reply_bytes.len() > MAX_REPLY {
-                            return Err(self.endless(
-                                request,
-                                reply_bytes,
-                                "is longer than 64 KiB",
-                            ));
+                            let what = "is longer than 64 KiB";
+                            return Err(self.endless(request, reply_bytes, what));
                         }
                     }
                     Err(_) => self.core.wire.discard(used, UNEXPECTED),
@@ -112,21 +104,37 @@ impl Smd4Session {
                     return self.finish(reply, &reply_bytes, &expect, request);
                 }
             } else if now >= deadline || !self.core.wire.fill(deadline)? {
-                let partial = self.core.wire.rx.clear();
-                reply_bytes.extend_from_slice(&partial);
-                if !reply_bytes.is_empty() {
-                    self.core
-                        .wire
-                        .log(Entry::Received, &reply_bytes, "no complete reply");
-                }
-                let module = drive_name(request.address);
-                self.core.wire.note(&format!("no reply from {module}"));
-                return Err(SessionError::Timeout {
-                    module,
-                    timeout: self.core.options.timeout,
-                    hint: timeout_hint(&partial, request.address, self.smd4.prefix),
-                });
+                return Err(self.no_reply(request, reply_bytes));
             }
+        }
+    }
+
+    /// Drops the line of `used` bytes that carried `reply`, another drive's.
+    fn discard_foreign(&mut self, used: usize, reply: &Smd4Reply, request: &Request) {
+        let kind = format!(
+            "a reply from drive {} while waiting for {}",
+            drive_name(reply.address),
+            drive_name(request.address)
+        );
+        self.core.wire.discard(used, &kind);
+    }
+
+    /// Nothing (complete) came back in time: what did is logged, and the error says what may
+    /// be wrong.
+    fn no_reply(&mut self, request: &Request, mut reply_bytes: Vec<u8>) -> SessionError {
+        let partial = self.core.wire.rx.clear();
+        reply_bytes.extend_from_slice(&partial);
+        if !reply_bytes.is_empty() {
+            self.core
+                .wire
+                .log(Entry::Received, &reply_bytes, "no complete reply");
+        }
+        let module = drive_name(request.address);
+        self.core.wire.note(&format!("no reply from {module}"));
+        SessionError::Timeout {
+            module,
+            timeout: self.core.options.timeout,
+            hint: timeout_hint(&partial, request.address, self.smd4.prefix),
         }
     }
 
