@@ -12,8 +12,8 @@ use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use tmclsh::clock::SystemClock;
-use tmclsh::dialect::smd4::protocol::{Expectation, Smd4Spec, check_reply, parse_response};
-use tmclsh::dialect::smd4::sim::{Smd4Options, Smd4Sim};
+use tmclsh::dialect::smd4::protocol::{Expectation, Smd4Spec, check_reply, parse_reply};
+use tmclsh::dialect::smd4::sim::{Smd4Sim, Smd4SimOptions};
 use tmclsh::dialect::tmcl::protocol::{CommandFrame, Instruction};
 use tmclsh::dialect::tmcl::sim::{Bus, BusOptions};
 use tmclsh::sim::Device;
@@ -100,7 +100,7 @@ fn smd4_drive_via(via: Via, rules: &[(&str, &[u8])]) -> Vec<String> {
     let device = Scripted {
         end: b'\n',
         rules: own(rules),
-        inner: Box::new(Smd4Sim::new(Smd4Options::default())),
+        inner: Box::new(Smd4Sim::new(Smd4SimOptions::default())),
         line: Vec::new(),
         out: Vec::new(),
     };
@@ -296,7 +296,7 @@ fn after_noise_the_next_commands_get_their_own_answers() {
         assert_eq!(lines[1], firmware(), "{request}");
         let spec = Smd4Spec::builtin().commands.get(request).unwrap();
         let expect = Expectation::for_command(spec);
-        let again = parse_response(lines[2], &expect).unwrap();
+        let again = parse_reply(lines[2], &expect).unwrap();
         assert!(again.is_ok(), "{request}: {}", lines[2]);
         assert_eq!(check_reply(&again, &expect, None), Ok(()), "{}", lines[2]);
         assert!(text(&out.stderr).contains(message), "{}", text(&out.stderr));

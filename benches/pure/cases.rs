@@ -7,7 +7,7 @@
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use tmclsh::dialect::smd4::protocol::{Expectation, Smd4Spec, check_reply, parse_response};
+use tmclsh::dialect::smd4::protocol::{self as smd4, Expectation, Smd4Spec, check_reply};
 use tmclsh::dialect::tmcl::profile::Profile;
 use tmclsh::dialect::tmcl::protocol::{
     CommandFrame, FrameDecoder, Instruction, ReplyFrame, Status, format_line, parse, parse_reply,
@@ -106,14 +106,14 @@ pub fn run() -> Vec<Case> {
         case(
             "SMD4 response parse (`0x0000,0x0000,1000.00`)",
             time(|| {
-                black_box(parse_response(black_box("0x0000,0x0000,1000.00"), &pact).ok());
+                black_box(smd4::parse_reply(black_box("0x0000,0x0000,1000.00"), &pact).ok());
             }),
         ),
         case(
             "SMD4 reply check (`0x0888,0x0000,1.0000E+03,1.0000E+03`, parsed)",
             {
                 let line = "0x0888,0x0000,1.0000E+03,1.0000E+03";
-                let reply = parse_response(line, &vmax).expect("a reply");
+                let reply = smd4::parse_reply(line, &vmax).expect("a reply");
                 time(|| {
                     black_box(check_reply(black_box(&reply), &vmax, None).is_ok());
                 })

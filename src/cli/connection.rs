@@ -11,13 +11,11 @@ use crate::dialect::{
     Configured, DIALECTS, Dialect, DialectConfig, DialectSession, Opening, Purpose,
     default_dialect, protocol_parser,
 };
-use crate::exit::Exit;
-use crate::exit::ExitStatus;
+use crate::exit::{Exit, Failure};
 use crate::link::Link;
 use crate::session::transcript::Header;
 use crate::session::{SessionOptions, Transcript};
 
-use super::Failure;
 use super::target::{Target, is_log_dir, log_file};
 
 /// Where the module is: a serial port, a TCP address, or (neither) the built-in simulator.
@@ -156,10 +154,10 @@ impl SessionArgs {
         let Some(path) = self.log.as_deref() else {
             return Ok(None);
         };
-        let failed =
-            |e: crate::session::transcript::TranscriptError| Failure::new(e.exit(), e.to_string());
         if !is_log_dir(path) {
-            return Transcript::open(path, header).map(Some).map_err(failed);
+            return Transcript::open(path, header)
+                .map(Some)
+                .map_err(Failure::from);
         }
         std::fs::create_dir_all(path).map_err(|e| {
             Failure::new(
@@ -168,7 +166,9 @@ impl SessionArgs {
             )
         })?;
         let file = log_file(path, device, std::time::SystemTime::now());
-        Transcript::open(&file, header).map(Some).map_err(failed)
+        Transcript::open(&file, header)
+            .map(Some)
+            .map_err(Failure::from)
     }
 }
 
@@ -292,6 +292,6 @@ impl ModuleArgs {
                 flags: Some(&self.command_line.0),
                 purpose,
             })
-            .map_err(|e| Failure::new(e.exit(), e.to_string()))
+            .map_err(Failure::from)
     }
 }

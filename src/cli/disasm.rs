@@ -5,9 +5,7 @@ use std::path::PathBuf;
 
 use crate::dialect::tmcl::asm;
 use crate::dialect::tmcl::profile::Profile;
-use crate::exit::Exit;
-
-use super::Failure;
+use crate::exit::{Exit, Failure};
 
 /// Arguments of `disasm`.
 #[derive(Debug, clap::Args)]

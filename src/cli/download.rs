@@ -6,10 +6,9 @@ use std::path::PathBuf;
 
 use crate::dialect::tmcl::program::download::{download_and_run, load};
 use crate::dialect::{Configured, Purpose, tmcl};
-use crate::exit::{Exit, ExitStatus};
+use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
 
-use super::Failure;
 use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `download`.
@@ -29,9 +28,8 @@ pub struct DownloadArgs {
 /// Runs `download`.
 pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
     interrupt::install();
-    let failed = |e: crate::session::SessionError| Failure::new(e.exit(), e.to_string());
     let profile = super::tmcl_profile(configs);
-    let instructions = load(&args.file, profile).map_err(failed)?;
+    let instructions = load(&args.file, profile)?;
     if !tmcl::is(args.module.protocol()) {
         return Err(Failure::new(
             Exit::Refused,
@@ -47,7 +45,7 @@ pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Res
     for message in session.close() {
         super::diagnose(&message);
     }
-    let text = result.map_err(failed)?;
+    let text = result?;
     writeln!(out, "{text}").map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
     Ok(Exit::Success)
 }

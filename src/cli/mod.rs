@@ -13,6 +13,7 @@ pub(crate) mod params;
 mod ports;
 mod position;
 mod profiles;
+mod progress;
 mod relevance;
 pub mod run;
 mod scan;
@@ -29,7 +30,7 @@ use std::path::PathBuf;
 use clap::{FromArgMatches, Parser, Subcommand};
 
 use crate::dialect::Configured;
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 
 /// Terminal and scripting shell for TMCL and SMD4 stepper-motor modules.
 #[derive(Debug, Parser)]
@@ -83,6 +84,7 @@ enum Command {
 
 /// Parses the process arguments and runs; returns the exit code.
 pub fn main() -> Exit {
+    crate::progress::install(Box::new(progress::TerminalProgress));
     let defaults = match config::Defaults::load() {
         Ok(defaults) => defaults,
         Err(message) => {
@@ -137,25 +139,6 @@ pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cl
 /// One line of diagnostics on stderr, its device and input text escaped.
 pub(crate) fn diagnose(message: &str) {
     eprintln!("tmclsh: {}", crate::escape::escape_control(message));
-}
-
-/// An error on its way to stderr, with the exit code it means.
-#[derive(Debug)]
-pub struct Failure {
-    /// What to print.
-    pub message: String,
-    /// The exit code.
-    pub exit: Exit,
-}
-
-impl Failure {
-    /// A failure with its exit code.
-    pub fn new(exit: Exit, message: impl Into<String>) -> Self {
-        Failure {
-            message: message.into(),
-            exit,
-        }
-    }
 }
 
 /// Runs a parsed command line, printing results to `out`.

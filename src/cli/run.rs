@@ -4,12 +4,11 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use crate::dialect::{Configured, Purpose};
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 use crate::script::limits::DEFAULT_MAX_MEMORY_MIB;
 use crate::script::{self, Limits};
 use crate::session::interrupt;
 
-use super::Failure;
 use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `run`.
@@ -51,7 +50,7 @@ pub struct RunArgs {
 /// module is put back in the mode it was found in before exiting.
 pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
     interrupt::install();
-    script::check_file(&args.script).map_err(|r| Failure::new(r.exit, r.message))?;
+    script::check_file(&args.script)?;
     for dir in &args.allow_dir {
         if !dir.is_dir() {
             return Err(Failure::new(
@@ -98,7 +97,7 @@ pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
 
 /// A time for `--max-time`: `500ms`, `30s`, `2m`, or a number of milliseconds; at least 1 ms.
 fn parse_time(text: &str) -> Result<Duration, String> {
-    let time = crate::commission::record::parse_duration(text)?;
+    let time = crate::duration::parse(text)?;
     if time.is_zero() {
         return Err("the time must be at least 1 ms".into());
     }

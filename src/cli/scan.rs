@@ -6,10 +6,9 @@ use std::io::Write;
 
 use crate::commission::scan::parse_addresses;
 use crate::dialect::{Configured, Purpose};
-use crate::exit::{Exit, ExitStatus};
+use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
 
-use super::Failure;
 use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `scan`.
@@ -44,7 +43,7 @@ pub fn run(args: ScanArgs, configs: &Configured, out: &mut dyn Write) -> Result<
     for message in session.close() {
         super::diagnose(&message);
     }
-    let scan = result.map_err(|e| Failure::new(e.exit(), e.to_string()))?;
+    let scan = result?;
     if scan.found == 0 {
         return Err(Failure::new(Exit::Link, scan.summary));
     }

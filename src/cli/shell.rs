@@ -5,12 +5,11 @@ use std::io::IsTerminal;
 use std::time::{Duration, Instant};
 
 use crate::dialect::{Configured, DialectSession, Purpose};
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
 use crate::shell::Shell;
 use crate::shell::batch::{self, Lines, Output};
 
-use super::Failure;
 use super::connection::{Audience, ModuleArgs};
 use super::ports;
 

@@ -10,14 +10,12 @@ use clap::{ArgMatches, Args, Command, FromArgMatches};
 
 use crate::clock::{Clock, ManualClock, SystemClock};
 use crate::dialect::{Configured, DIALECTS, Dialect, SimFlags, default_dialect, protocol_parser};
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 use crate::sim::Device;
 use crate::sim::console::{self, Answer, Console};
 use crate::sim::fault::{Faults, Faulty};
 use crate::sim::inprocess::SharedDevice;
 use crate::sim::pacing::Paced;
-
-use super::Failure;
 
 /// Arguments of `sim`.
 #[derive(Debug, clap::Args)]

@@ -8,10 +8,9 @@ use std::path::PathBuf;
 use crate::commission::ParamDevice;
 use crate::commission::actions::{self, RestoreOptions};
 use crate::dialect::{Configured, Purpose};
-use crate::exit::{Exit, ExitStatus};
+use crate::exit::{Exit, Failure};
 use crate::session::{SessionError, interrupt};
 
-use super::Failure;
 use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `snapshot`.
@@ -84,7 +83,7 @@ pub fn run(args: SnapshotArgs, configs: &Configured, out: &mut dyn Write) -> Res
             module,
         } => {
             // Refused before the link is opened: nothing is sent for a save that cannot be kept.
-            actions::check_new(&file, force).map_err(|e| Failure::new(e.exit(), e.to_string()))?;
+            actions::check_new(&file, force)?;
             with_device(&module, configs, |d| {
                 actions::save_new(d, &file, force, out).map(|_| ())
             })
@@ -159,10 +158,8 @@ fn with_device(
 }
 
 fn finish(result: Result<(), SessionError>) -> Result<Exit, Failure> {
-    match result {
-        Ok(()) => Ok(Exit::Success),
-        Err(e) => Err(Failure::new(e.exit(), e.to_string())),
-    }
+    result?;
+    Ok(Exit::Success)
 }
 
 /// Output that ignores a closed pipe (`| head`): the work goes on, the rest of the report is

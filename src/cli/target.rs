@@ -6,10 +6,9 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
 
 use crate::dialect::{Dialect, DialectConfig};
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 use crate::link::{Link, SerialLink, TcpLink};
 
-use super::Failure;
 use super::ports::usb::{UsbSpec, find};
 
 /// The place a link goes to.

@@ -6,9 +6,7 @@ use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 
 use crate::dialect::{Configured, replay};
-use crate::exit::Exit;
-
-use super::Failure;
+use crate::exit::{Exit, Failure};
 
 /// Arguments of `transcript`.
 #[derive(Debug, Clone, clap::Args)]

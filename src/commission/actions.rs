@@ -4,7 +4,7 @@
 use std::io::Write;
 use std::path::Path;
 
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, ParamRef};
@@ -14,10 +14,7 @@ use super::snapshot::Snapshot;
 
 /// A failure that is not the module's status nor the link's: differences, failed verifications.
 pub fn failed(message: impl Into<String>) -> SessionError {
-    SessionError::Script {
-        exit: Exit::DeviceError,
-        message: message.into(),
-    }
+    Failure::new(Exit::DeviceError, message).into()
 }
 
 /// Reads the module and writes the snapshot to `path`; fails (exit 1) after saving when some
@@ -176,10 +173,8 @@ pub fn restore_snapshot(
     let blocking = check::blocking(&plan.problems, options.force);
     if !blocking.is_empty() {
         let target = format!("{} ({})", device.who(), device.module_name());
-        return Err(SessionError::Script {
-            exit: Exit::Refused,
-            message: check::refusal(label, &target, &blocking, !options.redact),
-        });
+        let refusal = check::refusal(label, &target, &blocking, !options.redact);
+        return Err(Failure::refused(refusal).into());
     }
     for problem in &plan.problems {
         writeln!(out, "forced: {}", problem.text(!options.redact))?;

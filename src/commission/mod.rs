@@ -14,7 +14,6 @@ pub mod actions;
 pub mod device;
 pub mod diff;
 pub mod plot;
-pub mod progress;
 pub mod record;
 
 pub mod restore;

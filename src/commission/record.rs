@@ -215,52 +215,6 @@ impl CsvFile {
     }
 }
 
-/// The longest time `:record`, `:watch` and `:scan` accept: a week of recording is plenty, and a
-/// bound keeps every deadline computed from a time far inside what the clock can represent.
-pub const MAX_TIME: Duration = Duration::from_secs(7 * 24 * 3600);
-
-/// Parses a time for `:record`, `:watch` and `:scan`: `250ms`, `2s`, `1m` (humantime), or a bare
-/// number of milliseconds; at most [`MAX_TIME`].
-pub fn parse_duration(text: &str) -> Result<Duration, String> {
-    read_time(text).map_err(|error| match error {
-        TimeError::NotATime => {
-            format!("'{text}' is not a time (e.g. 100ms, 2s, or a number of milliseconds)")
-        }
-        TimeError::TooLong => format!(
-            "'{text}' is longer than {}, the longest time allowed here",
-            humantime::format_duration(MAX_TIME)
-        ),
-    })
-}
-
-/// Whether `text` is written as a time, allowed or too long (so a time too long is refused as
-/// such, not taken for a parameter name).
-pub fn is_time(text: &str) -> bool {
-    !matches!(read_time(text), Err(TimeError::NotATime))
-}
-
-enum TimeError {
-    NotATime,
-    TooLong,
-}
-
-fn read_time(text: &str) -> Result<Duration, TimeError> {
-    let time = match text.parse::<u64>() {
-        Ok(ms) => Duration::from_millis(ms),
-        Err(_) if !text.is_empty() && text.bytes().all(|b| b.is_ascii_digit()) => {
-            return Err(TimeError::TooLong);
-        }
-        Err(_) => humantime::parse_duration(text).map_err(|e| match e {
-            humantime::DurationError::NumberOverflow => TimeError::TooLong,
-            _ => TimeError::NotATime,
-        })?,
-    };
-    if time > MAX_TIME {
-        return Err(TimeError::TooLong);
-    }
-    Ok(time)
-}
-
 #[cfg(test)]
 mod tests {
     use super::super::device::StoreStep;
@@ -455,39 +409,5 @@ mod tests {
         assert_eq!(back, rec);
         assert!(back.numeric(0) && !back.numeric(1));
         assert_eq!(back.series(1), []);
-    }
-
-    #[test]
-    fn times_are_milliseconds_or_humantime() {
-        assert_eq!(parse_duration("250").unwrap(), Duration::from_millis(250));
-        assert_eq!(parse_duration("2s").unwrap(), Duration::from_secs(2));
-        assert_eq!(parse_duration("100ms").unwrap(), Duration::from_millis(100));
-        assert!(
-            parse_duration("soon")
-                .unwrap_err()
-                .contains("'soon' is not a time")
-        );
-    }
-
-    #[test]
-    fn times_longer_than_a_week_are_refused_before_any_clock_sees_them() {
-        assert_eq!(parse_duration("7days").unwrap(), MAX_TIME);
-        assert_eq!(parse_duration("604800000").unwrap(), MAX_TIME);
-        for text in [
-            "300000000000y",
-            "8days",
-            "604800001",
-            "18446744073709551615",
-        ] {
-            assert_eq!(
-                parse_duration(text).unwrap_err(),
-                format!("'{text}' is longer than 7days, the longest time allowed here"),
-            );
-        }
-        for text in ["99999999999999999999999y", "99999999999999999999999"] {
-            assert!(parse_duration(text).unwrap_err().contains("is longer than"));
-            assert!(is_time(text), "{text}");
-        }
-        assert!(is_time("2s") && !is_time("actual_position") && !is_time("-1s"));
     }
 }

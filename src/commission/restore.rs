@@ -24,9 +24,9 @@ use crate::commission::SnapshotRole;
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, ParamRef, Scope};
-use super::progress::Progress;
 use super::snapshot::{Entry, Snapshot};
 use super::value::ParamValue;
+use crate::progress::Progress;
 use check::{Problem, Subject};
 
 /// What a restore will do.
@@ -419,7 +419,7 @@ type Stop = (Option<usize>, SessionError);
 impl Run {
     fn go(&mut self, device: &mut dyn ParamDevice, plan: &Plan) -> Result<(), Stop> {
         self.outcome.by_hand = by_hand(device, plan).map_err(|e| (None, e))?;
-        let progress = Progress::new(plan.writes.len(), "writing");
+        let progress = Progress::steps(plan.writes.len(), 2, "writing");
         let mut failures: Vec<(usize, String)> = Vec::new();
         let mut refused = Vec::new();
         for (i, (param, value)) in plan.writes.iter().enumerate() {
@@ -529,7 +529,7 @@ pub fn store(
 ) -> Result<(), SessionError> {
     let params: Vec<&ParamRef> = storable(plan, &outcome.verified).collect();
     let steps = device.store_steps(&params);
-    let progress = Progress::new(steps.len(), "storing");
+    let progress = Progress::steps(steps.len(), 2, "storing");
     for step in &steps {
         // A step of one parameter is named by it; one for the whole configuration by its line.
         let name = match step.params.as_slice() {

@@ -38,8 +38,8 @@ use serde::Deserialize;
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, Scope};
-use super::progress::Progress;
 use super::value::{ParamValue, Reading};
+use crate::progress::Progress;
 
 /// The first line of every snapshot file: how a file tmclsh wrote is recognised.
 pub const HEADER: &str = "# tmclsh parameter snapshot";
@@ -92,7 +92,7 @@ impl Snapshot {
             .filter(|p| p.access.read)
             .collect();
         let firmware = device.firmware();
-        let progress = Progress::new(params.len(), "reading");
+        let progress = Progress::steps(params.len(), 2, "reading");
         let mut entries = Vec::with_capacity(params.len());
         for param in &params {
             progress.step(&param.name);

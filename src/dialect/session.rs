@@ -11,7 +11,8 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use crate::commission::ParamDevice;
-use crate::script::{Report, Script};
+use crate::exit::Failure;
+use crate::script::Script;
 use crate::session::core::SessionCore;
 use crate::session::transcript::{Header, Transcript};
 use crate::session::{SessionError, SessionOptions};
@@ -199,7 +200,7 @@ pub trait DialectSession: AsAny {
     fn run_script(
         self: Box<Self>,
         script: &Script,
-    ) -> (Box<dyn DialectSession>, Result<(), Report>);
+    ) -> (Box<dyn DialectSession>, Result<(), Failure>);
 
     /// After the link was reopened: puts the modules back in the mode the session had them in.
     fn reenter(&mut self) -> Result<(), SessionError> {

@@ -27,53 +27,13 @@ pub fn register<S: ParamDevice + 'static>(
     sandbox: &Rc<Sandbox>,
 ) {
     let (s, b) = (session.clone(), sandbox.clone());
-    volatile!(
-        engine,
-        "snapshot_save",
-        move |path: &str| -> Fallible<INT> {
-            // Checked before the module is read, so a refused path costs no time.
-            b.check_writable(path, Kind::Snapshot)
-                .map_err(|r| refused(r.to_string()))?;
-            let mut session = s.borrow_mut();
-            let mut write = |snapshot: &Snapshot| {
-                let mut file = b
-                    .create(path, Kind::Snapshot)
-                    .map_err(|r| crate::session::SessionError::Usage(r.to_string()))?;
-                std::io::Write::write_all(&mut file, snapshot.to_toml().as_bytes())?;
-                Ok(())
-            };
-            let snapshot = device(actions::save_with(
-                &mut *session,
-                path,
-                &mut write,
-                &mut std::io::sink(),
-            ))?;
-            Ok(snapshot.entries.len() as INT)
-        }
-    );
+    volatile!(engine, "snapshot_save", move |path: &str| snapshot_save(
+        &s, &b, path
+    ));
     let (s, b) = (session.clone(), sandbox.clone());
-    volatile!(
-        engine,
-        "snapshot_diff",
-        move |path: &str| -> Fallible<Array> {
-            let file = load(&b, path)?;
-            let mut session = s.borrow_mut();
-            let comparison = device(diff::with_device(&file, &mut *session))?;
-            Ok(comparison
-                .differences
-                .iter()
-                .map(|d| {
-                    let mut map = Map::new();
-                    map.insert("name".into(), d.name.clone().into());
-                    map.insert("place".into(), d.place.clone().into());
-                    map.insert("file".into(), side(&d.left));
-                    map.insert("current".into(), side(&d.right));
-                    map.insert("unit".into(), d.unit.clone().into());
-                    Dynamic::from_map(map)
-                })
-                .collect())
-        }
-    );
+    volatile!(engine, "snapshot_diff", move |path: &str| snapshot_diff(
+        &s, &b, path
+    ));
     let (s, b) = (session.clone(), sandbox.clone());
     volatile!(engine, "snapshot_restore", move |path: &str| restore(
         &s, &b, path, false, false
@@ -91,37 +51,100 @@ pub fn register<S: ParamDevice + 'static>(
         move |path: &str, store: bool, force: bool| restore(&s, &b, path, store, force)
     );
     let (s, b) = (session.clone(), sandbox.clone());
-    volatile!(engine, "record_csv", move |path: &str,
-                                          params: Dynamic,
-                                          interval_ms: INT,
-                                          duration_ms: INT|
-          -> Fallible<INT> {
-        let interval = positive(interval_ms, "interval")?;
-        let length = duration(duration_ms)?;
-        let mut session = s.borrow_mut();
-        let params = names(&params)?
-            .iter()
-            .map(|n| session.find(n).map_err(refused))
-            .collect::<Fallible<Vec<_>>>()?;
-        let plan = record::Plan {
-            params,
-            interval,
-            duration: Some(length),
-        };
-        let columns: Vec<String> = plan.params.iter().map(|p| p.name.clone()).collect();
-        let file = b
-            .create(path, Kind::Recording)
-            .map_err(|r| refused(r.to_string()))?;
-        let mut csv = device(CsvFile::start(file, &columns))?;
-        let recording = device(record::record(
-            &mut *session,
-            &plan,
-            &SystemClock::new(),
-            &mut || false,
-            &mut |sample| csv.append(sample),
-        ))?;
-        Ok(recording.samples.len() as INT)
-    });
+    volatile!(
+        engine,
+        "record_csv",
+        move |path: &str, params: Dynamic, interval_ms: INT, duration_ms: INT| {
+            record_csv(&s, &b, path, &params, interval_ms, duration_ms)
+        }
+    );
+}
+
+/// `snapshot_save(path)`: every readable parameter to a new snapshot file; how many were saved.
+fn snapshot_save<S: ParamDevice>(
+    session: &Rc<RefCell<S>>,
+    sandbox: &Sandbox,
+    path: &str,
+) -> Fallible<INT> {
+    // Checked before the module is read, so a refused path costs no time.
+    sandbox
+        .check_writable(path, Kind::Snapshot)
+        .map_err(|r| refused(r.to_string()))?;
+    let mut session = session.borrow_mut();
+    let mut write = |snapshot: &Snapshot| {
+        let mut file = sandbox
+            .create(path, Kind::Snapshot)
+            .map_err(|r| crate::session::SessionError::Usage(r.to_string()))?;
+        std::io::Write::write_all(&mut file, snapshot.to_toml().as_bytes())?;
+        Ok(())
+    };
+    let snapshot = device(actions::save_with(
+        &mut *session,
+        path,
+        &mut write,
+        &mut std::io::sink(),
+    ))?;
+    Ok(snapshot.entries.len() as INT)
+}
+
+/// `snapshot_diff(path)`: the differences between the file and the module, one map each.
+fn snapshot_diff<S: ParamDevice>(
+    session: &Rc<RefCell<S>>,
+    sandbox: &Sandbox,
+    path: &str,
+) -> Fallible<Array> {
+    let file = load(sandbox, path)?;
+    let mut session = session.borrow_mut();
+    let comparison = device(diff::with_device(&file, &mut *session))?;
+    Ok(comparison
+        .differences
+        .iter()
+        .map(|d| {
+            let mut map = Map::new();
+            map.insert("name".into(), d.name.clone().into());
+            map.insert("place".into(), d.place.clone().into());
+            map.insert("file".into(), side(&d.left));
+            map.insert("current".into(), side(&d.right));
+            map.insert("unit".into(), d.unit.clone().into());
+            Dynamic::from_map(map)
+        })
+        .collect())
+}
+
+/// `record_csv(path, params, interval_ms, duration_ms)`: samples to a new CSV file; how many.
+fn record_csv<S: ParamDevice>(
+    session: &Rc<RefCell<S>>,
+    sandbox: &Sandbox,
+    path: &str,
+    params: &Dynamic,
+    interval_ms: INT,
+    duration_ms: INT,
+) -> Fallible<INT> {
+    let interval = positive(interval_ms, "interval")?;
+    let length = duration(duration_ms)?;
+    let mut session = session.borrow_mut();
+    let params = names(params)?
+        .iter()
+        .map(|n| session.find(n).map_err(refused))
+        .collect::<Fallible<Vec<_>>>()?;
+    let plan = record::Plan {
+        params,
+        interval,
+        duration: Some(length),
+    };
+    let columns: Vec<String> = plan.params.iter().map(|p| p.name.clone()).collect();
+    let file = sandbox
+        .create(path, Kind::Recording)
+        .map_err(|r| refused(r.to_string()))?;
+    let mut csv = device(CsvFile::start(file, &columns))?;
+    let recording = device(record::record(
+        &mut *session,
+        &plan,
+        &SystemClock::new(),
+        &mut || false,
+        &mut |sample| csv.append(sample),
+    ))?;
+    Ok(recording.samples.len() as INT)
 }
 
 /// Reads and parses the snapshot at `path` through the sandbox; errors never quote the file.

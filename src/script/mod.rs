@@ -35,31 +35,26 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rhai::{Dynamic, Engine, EvalAltResult, OptimizationLevel, Position, Scope};
 
 use crate::escape::escape_control;
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
-
-pub use failure::ScriptFailure;
 
 pub use limits::Limits;
 use memory::Budget;
 use sandbox::Sandbox;
 
-/// A script's failure as reported: `file:line:column: message` and the exit code.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Report {
-    /// The exit code.
-    pub exit: Exit,
-    /// The message, with file, line and column where known.
-    pub message: String,
-}
+/// Where a script's `print` lines go, their control characters already escaped (see
+/// [`print_to_stdout`]): stdout by default; tests and embedders capture them with their own.
+pub type PrintSink = Rc<dyn Fn(&str)>;
 
-/// A script ready to run: its text, its arguments, its limits and the files it may reach.
+/// A script ready to run: its text, its arguments, its limits, the files it may reach and where
+/// it prints.
 pub struct Script {
     name: String,
     source: String,
     args: Vec<String>,
     limits: Limits,
     sandbox: Rc<Sandbox>,
+    print: PrintSink,
 }
 
 /// The functions a dialect adds to the engine: over the session, with the sandbox for files.
@@ -68,7 +63,7 @@ pub type Registrar<S> = fn(&mut Engine, &Rc<RefCell<S>>, &Rc<Sandbox>);
 impl Script {
     /// The script at `path` with `args`; its file functions reach the script's directory, the
     /// working directory and `limits.allow_dirs`.
-    pub fn from_file(path: &Path, args: &[String], limits: Limits) -> Result<Script, Report> {
+    pub fn from_file(path: &Path, args: &[String], limits: Limits) -> Result<Script, Failure> {
         let name = path.display().to_string();
         let sandbox = Sandbox::for_script(path, &limits.allow_dirs, limits.overwrite);
         match std::fs::read_to_string(path) {
@@ -78,11 +73,9 @@ impl Script {
                 args: args.to_vec(),
                 limits,
                 sandbox: Rc::new(sandbox),
+                print: Rc::new(print_to_stdout),
             }),
-            Err(e) => Err(Report {
-                exit: Exit::Refused,
-                message: format!("cannot read script {name}: {e}"),
-            }),
+            Err(e) => Err(Failure::refused(format!("cannot read script {name}: {e}"))),
         }
     }
 
@@ -98,7 +91,14 @@ impl Script {
             args: args.to_vec(),
             limits,
             sandbox: Rc::new(sandbox),
+            print: Rc::new(print_to_stdout),
         }
+    }
+
+    /// The script with its `print` lines sent to `sink` instead of stdout.
+    pub fn print_to(mut self, sink: PrintSink) -> Script {
+        self.print = sink;
+        self
     }
 
     /// Runs over a session of type `S`, with the functions `register` adds (a dialect's device
@@ -110,12 +110,12 @@ impl Script {
         session: S,
         annotate: fn(&mut S, &str) -> bool,
         register: Registrar<S>,
-    ) -> (S, Result<(), Report>) {
+    ) -> (S, Result<(), Failure>) {
         let shared = Rc::new(RefCell::new(session));
         let watchdog = limits::Watchdog::start(self.limits.max_time);
         let result = {
             let budget = self.limits.max_memory.map(Budget::from_now);
-            let mut engine = base_engine(&self.limits, budget, watchdog.flag());
+            let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &self.print);
             let log_session = shared.clone();
             common::register(&mut engine, move |message| {
                 if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
@@ -126,7 +126,7 @@ impl Script {
             execute(&engine, &self.name, &self.source, &self.args)
         };
         let result = if watchdog.stop(result.is_ok()) && result.is_err() {
-            Err(Report {
+            Err(Failure {
                 exit: Exit::DeviceError,
                 message: format!(
                     "{}: {}",
@@ -145,13 +145,18 @@ impl Script {
 }
 
 /// Checks that a script compiles, before any connection is opened.
-pub fn check_file(path: &Path) -> Result<(), Report> {
+pub fn check_file(path: &Path) -> Result<(), Failure> {
     let name = path.display().to_string();
-    let source = std::fs::read_to_string(path).map_err(|e| Report {
+    let source = std::fs::read_to_string(path).map_err(|e| Failure {
         exit: Exit::Refused,
         message: format!("cannot read script {name}: {e}"),
     })?;
-    let engine = base_engine(&Limits::default(), None, Arc::default());
+    let engine = base_engine(
+        &Limits::default(),
+        None,
+        Arc::default(),
+        &(Rc::new(print_to_stdout) as PrintSink),
+    );
     compile(&engine, &name, &source).map(|_| ())
 }
 
@@ -159,10 +164,15 @@ pub fn check_file(path: &Path) -> Result<(), Report> {
 const MEMORY: &str = "memory";
 const TIME: &str = "time";
 
-/// The engine with limits and sandboxing, without device functions. Rhai's data-size limits are
+/// The engine with limits and sandboxing, printing to `print`, without device functions. Rhai's data-size limits are
 /// not set: they walk whole values after every call (see [`memory`]); `budget` bounds memory
 /// instead, checked at every operation like Ctrl-C and the deadline (`expired`).
-fn base_engine(limits: &Limits, budget: Option<Budget>, expired: Arc<AtomicBool>) -> Engine {
+fn base_engine(
+    limits: &Limits,
+    budget: Option<Budget>,
+    expired: Arc<AtomicBool>,
+    print: &PrintSink,
+) -> Engine {
     let mut engine = Engine::new();
     engine.set_optimization_level(OptimizationLevel::Simple);
     engine.set_max_operations(limits.max_operations);
@@ -170,7 +180,8 @@ fn base_engine(limits: &Limits, budget: Option<Budget>, expired: Arc<AtomicBool>
     engine.set_max_expr_depths(128, 64);
     engine.set_module_resolver(rhai::module_resolvers::DummyModuleResolver::new());
     engine.disable_symbol("eval");
-    engine.on_print(print);
+    let print = print.clone();
+    engine.on_print(move |text| print(&escape_control(text)));
     engine.on_debug(|text, _, pos| eprintln!("debug {pos}: {}", escape_control(text)));
     engine.on_progress(move |_| {
         if expired.load(Ordering::Relaxed) {
@@ -186,23 +197,24 @@ fn base_engine(limits: &Limits, budget: Option<Budget>, expired: Arc<AtomicBool>
     if let Some(budget) = budget {
         memory::register_builders(&mut engine, budget);
     }
-    engine.register_type_with_name::<ScriptFailure>("Failure");
-    engine.register_fn("to_string", |f: &mut ScriptFailure| f.message.clone());
+    engine.register_type_with_name::<Failure>("Failure");
+    engine.register_fn("to_string", |f: &mut Failure| f.message.clone());
     engine
 }
 
-/// Rhai's `print`: the text on stdout, its control characters escaped like all other output
-/// (a line feed stays a line break). A script's strings routinely carry device text — a reply's
-/// `raw`, its items, a caught error's message — and by then nothing tells those bytes from the
-/// script's own, so a device could retitle or clear the terminal, or hide a failed verdict behind
-/// a carriage return, in the output a user or a CI log trusts. The price is that a script cannot
-/// colour its output or move the cursor; a verdict needs neither.
-fn print(text: &str) {
-    println!("{}", escape_control(text));
+/// Rhai's `print` by default: the line on stdout. Every sink gets the text with its control
+/// characters escaped like all other output (a line feed stays a line break). A script's strings
+/// routinely carry device text — a reply's `raw`, its items, a caught error's message — and by
+/// then nothing tells those bytes from the script's own, so a device could retitle or clear the
+/// terminal, or hide a failed verdict behind a carriage return, in the output a user or a CI log
+/// trusts. The price is that a script cannot colour its output or move the cursor; a verdict needs
+/// neither.
+pub fn print_to_stdout(escaped: &str) {
+    println!("{escaped}");
 }
 
-fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Report> {
-    engine.compile(source).map_err(|e| Report {
+fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Failure> {
+    engine.compile(source).map_err(|e| Failure {
         exit: Exit::Refused,
         message: at(
             name,
@@ -212,7 +224,7 @@ fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Repor
     })
 }
 
-fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result<(), Report> {
+fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result<(), Failure> {
     let ast = compile(engine, name, source)?;
     let mut scope = Scope::new();
     let args: rhai::Array = args.iter().map(|a| Dynamic::from(a.clone())).collect();
@@ -223,7 +235,7 @@ fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result
 }
 
 /// Maps a Rhai error to the exit code and message the user sees.
-fn report(name: &str, error: EvalAltResult) -> Report {
+fn report(name: &str, error: EvalAltResult) -> Failure {
     let position = error.position();
     match error {
         EvalAltResult::ErrorInFunctionCall(function, _, inner, _) => {
@@ -235,22 +247,22 @@ fn report(name: &str, error: EvalAltResult) -> Report {
             }
             inner
         }
-        EvalAltResult::ErrorRuntime(value, _) if value.is::<ScriptFailure>() => {
-            let failure = value.cast::<ScriptFailure>();
-            Report {
+        EvalAltResult::ErrorRuntime(value, _) if value.is::<Failure>() => {
+            let failure = value.cast::<Failure>();
+            Failure {
                 exit: failure.exit,
                 message: at(name, position, &failure.message),
             }
         }
-        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == MEMORY => Report {
+        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == MEMORY => Failure {
             exit: Exit::DeviceError,
             message: at(name, position, memory::MESSAGE),
         },
-        EvalAltResult::ErrorTerminated(..) => Report {
+        EvalAltResult::ErrorTerminated(..) => Failure {
             exit: Exit::Interrupted,
             message: at(name, position, "interrupted"),
         },
-        EvalAltResult::ErrorTooManyOperations(..) => Report {
+        EvalAltResult::ErrorTooManyOperations(..) => Failure {
             exit: Exit::DeviceError,
             message: at(
                 name,
@@ -258,7 +270,7 @@ fn report(name: &str, error: EvalAltResult) -> Report {
                 "runaway script: too many operations (raise the cap with --max-operations)",
             ),
         },
-        EvalAltResult::ErrorStackOverflow(..) => Report {
+        EvalAltResult::ErrorStackOverflow(..) => Failure {
             exit: Exit::DeviceError,
             message: at(
                 name,
@@ -266,14 +278,18 @@ fn report(name: &str, error: EvalAltResult) -> Report {
                 "calls nested too deeply (raise the cap with --max-call-depth)",
             ),
         },
-        EvalAltResult::ErrorRuntime(value, _) => Report {
+        EvalAltResult::ErrorRuntime(value, _) => Failure {
             exit: Exit::DeviceError,
             message: at(name, position, &format!("error: {value}")),
         },
-        other => Report {
-            exit: Exit::DeviceError,
-            message: at(name, position, &strip_position(&other.to_string())),
-        },
+        mut other => {
+            // Rhai writes the position after the message; it is already in front.
+            other.clear_position();
+            Failure {
+                exit: Exit::DeviceError,
+                message: at(name, position, &other.to_string()),
+            }
+        }
     }
 }
 
@@ -282,14 +298,6 @@ fn at(name: &str, position: Position, message: &str) -> String {
         (Some(line), Some(column)) => format!("{name}:{line}:{column}: {message}"),
         (Some(line), None) => format!("{name}:{line}: {message}"),
         _ => format!("{name}: {message}"),
-    }
-}
-
-/// Rhai appends " (line L, position P)" to its messages; the position is already in front.
-fn strip_position(message: &str) -> String {
-    match message.rfind(" (line ") {
-        Some(i) if message.ends_with(')') => message[..i].to_string(),
-        _ => message.to_string(),
     }
 }
 

@@ -66,7 +66,7 @@ pub struct Sandbox {
 /// Why a file function may not use a path (the message names the path, never the contents).
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("{path}: {reason}")]
-pub struct Refusal {
+pub struct PathRefusal {
     /// The path as the script gave it.
     pub path: String,
     /// What is wrong with it.
@@ -109,7 +109,7 @@ impl Sandbox {
         self.roots.iter().any(|root| path.starts_with(root))
     }
 
-    fn outside(&self, path: &str) -> Refusal {
+    fn outside(&self, path: &str) -> PathRefusal {
         let roots: Vec<String> = self.roots.iter().map(|r| r.display().to_string()).collect();
         refusal(
             path,
@@ -121,7 +121,7 @@ impl Sandbox {
     }
 
     /// Reads the regular file at `path` inside the sandbox, at most `limit` bytes.
-    pub fn read(&self, path: &str, limit: u64) -> Result<Vec<u8>, Refusal> {
+    pub fn read(&self, path: &str, limit: u64) -> Result<Vec<u8>, PathRefusal> {
         let real = Path::new(path)
             .canonicalize()
             .map_err(|e| refusal(path, format!("cannot read it: {}", io_reason(&e))))?;
@@ -135,7 +135,7 @@ impl Sandbox {
 
     /// Checks that [`Sandbox::create`] would open `path` for a file of `kind`, without creating
     /// or changing anything (so a script learns of a refused path before a long capture).
-    pub fn check_writable(&self, path: &str, kind: Kind) -> Result<(), Refusal> {
+    pub fn check_writable(&self, path: &str, kind: Kind) -> Result<(), PathRefusal> {
         let target = self.target(path, kind)?;
         match std::fs::symlink_metadata(&target) {
             Err(_) => Ok(()),
@@ -153,7 +153,7 @@ impl Sandbox {
     /// Opens `path` inside the sandbox for writing a file of `kind`, replacing an existing file
     /// only when tmclsh wrote it (or the sandbox allows overwriting). The file is empty when
     /// returned.
-    pub fn create(&self, path: &str, kind: Kind) -> Result<File, Refusal> {
+    pub fn create(&self, path: &str, kind: Kind) -> Result<File, PathRefusal> {
         let target = self.target(path, kind)?;
         if let Ok(meta) = std::fs::symlink_metadata(&target) {
             if !meta.is_file() {
@@ -178,7 +178,7 @@ impl Sandbox {
     }
 
     /// Refuses an opened existing file that tmclsh did not write as a `kind`.
-    fn check_ours(&self, path: &str, file: &File, kind: Kind) -> Result<(), Refusal> {
+    fn check_ours(&self, path: &str, file: &File, kind: Kind) -> Result<(), PathRefusal> {
         let mut head = [0u8; 64];
         let n = read_head(file, &mut head)
             .map_err(|e| refusal(path, format!("cannot read it: {}", io_reason(&e))))?;
@@ -196,7 +196,7 @@ impl Sandbox {
     }
 
     /// The extension checked, and the real path a write of `kind` to `path` goes to.
-    fn target(&self, path: &str, kind: Kind) -> Result<PathBuf, Refusal> {
+    fn target(&self, path: &str, kind: Kind) -> Result<PathBuf, PathRefusal> {
         let extension_ok = Path::new(path)
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case(kind.extension()));
@@ -215,7 +215,7 @@ impl Sandbox {
 
     /// The real path a write to `path` goes to: its directory canonicalised and inside the
     /// sandbox; a last component that is a symlink is followed only to a place inside.
-    fn resolve_for_writing(&self, path: &str) -> Result<PathBuf, Refusal> {
+    fn resolve_for_writing(&self, path: &str) -> Result<PathBuf, PathRefusal> {
         let given = Path::new(path);
         let Some(Component::Normal(name)) = given.components().next_back() else {
             return Err(refusal(path, "not a file name".into()));
@@ -247,7 +247,7 @@ impl Sandbox {
     }
 
     /// Checks the file really opened (not only the path looked at before) is inside.
-    fn check_opened(&self, path: &str, file: &File) -> Result<(), Refusal> {
+    fn check_opened(&self, path: &str, file: &File) -> Result<(), PathRefusal> {
         match opened_path(file) {
             Some(real) if !self.inside(&real) => Err(self.outside(path)),
             _ => Ok(()),
@@ -255,8 +255,8 @@ impl Sandbox {
     }
 }
 
-fn refusal(path: &str, reason: String) -> Refusal {
-    Refusal {
+fn refusal(path: &str, reason: String) -> PathRefusal {
+    PathRefusal {
         path: path.to_string(),
         reason,
     }

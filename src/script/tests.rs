@@ -50,7 +50,12 @@ fn session() -> (TmclSession, Arc<AtomicUsize>) {
 fn device_functions_never_run_while_compiling_even_at_full_optimisation() {
     let (session, sent) = session();
     let shared = Rc::new(RefCell::new(session));
-    let mut engine = base_engine(&Limits::default(), None, Arc::default());
+    let mut engine = base_engine(
+        &Limits::default(),
+        None,
+        Arc::default(),
+        &(Rc::new(print_to_stdout) as PrintSink),
+    );
     let sandbox = Rc::new(Sandbox::new([std::path::Path::new(".")], false));
     crate::dialect::tmcl::script::register(&mut engine, &shared, &sandbox);
     engine.set_optimization_level(OptimizationLevel::Full);
@@ -115,5 +120,28 @@ fn errors_inside_script_functions_keep_their_exit_code() {
         report.message.contains("(in function check)"),
         "{}",
         report.message
+    );
+}
+
+#[test]
+fn print_goes_to_the_sink_given_escaped_like_all_output() {
+    let (session, _) = session();
+    let printed = Rc::new(RefCell::new(Vec::<String>::new()));
+    let lines = printed.clone();
+    let script = Script::from_source(
+        "p.rhai",
+        "print(\"pos \" + gap(1, 0));\nprint(\"a\\x1b]0;owned\\x07b\\rc\\nd\");",
+        &[],
+        Limits::default(),
+    )
+    .print_to(Rc::new(move |line: &str| {
+        lines.borrow_mut().push(line.to_string())
+    }));
+    let (_, result) = crate::dialect::DialectSession::run_script(Box::new(session), &script);
+    result.unwrap();
+    assert_eq!(
+        *printed.borrow(),
+        ["pos 0", "a\\x1B]0;owned\\x07b\\rc\nd"],
+        "captured, nothing on stdout, device-like text escaped and a line feed kept"
     );
 }

@@ -12,7 +12,7 @@ pub(crate) mod wire;
 
 use std::time::Duration;
 
-use crate::exit::{Exit, ExitStatus};
+use crate::exit::{Exit, ExitStatus, Failure};
 
 pub use transcript::Transcript;
 
@@ -89,14 +89,10 @@ pub enum SessionError {
     /// Ctrl-C.
     #[error("interrupted")]
     Interrupted,
-    /// A script (`:source`) failed; the message names file, line and column.
-    #[error("{message}")]
-    Script {
-        /// The exit code the failure means.
-        exit: Exit,
-        /// What happened.
-        message: String,
-    },
+    /// A failure with its own exit code: a script (`:source`, its message naming file, line and
+    /// column), a download as a whole, a snapshot's differences.
+    #[error(transparent)]
+    Failed(#[from] Failure),
 }
 
 impl ExitStatus for SessionError {
@@ -110,7 +106,7 @@ impl ExitStatus for SessionError {
                 Exit::Link
             }
             SessionError::Interrupted => Exit::Interrupted,
-            SessionError::Script { exit, .. } => *exit,
+            SessionError::Failed(failure) => failure.exit,
         }
     }
 }

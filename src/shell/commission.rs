@@ -3,7 +3,7 @@
 //! `:record` without a duration) need a terminal.
 
 use std::cell::Cell;
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
@@ -13,9 +13,11 @@ use crate::commission::device::{ParamDevice, ParamRef};
 use crate::commission::plot;
 use crate::commission::record::{self, CsvFile, Recording};
 use crate::commission::scan::parse_addresses;
-use crate::commission::watch::{self, Key, Screen, TerminalScreen};
+use crate::commission::watch::{self, Key, Screen};
 use crate::dialect::DialectSession;
 use crate::session::SessionError;
+
+use super::terminal::{TerminalScreen, interactive, width};
 
 /// What the helpers remember between commands.
 #[derive(Debug, Default)]
@@ -124,7 +126,7 @@ fn scan(
     let addresses = parse_addresses(words.first().copied().unwrap_or(dialect.scan_addresses))
         .map_err(|e| usage(&format!("{usage_text}; {e}")))?;
     let per_reply = match words.get(1) {
-        Some(t) => record::parse_duration(t).map_err(|e| usage(&format!("{usage_text}; {e}")))?,
+        Some(t) => crate::duration::parse(t).map_err(|e| usage(&format!("{usage_text}; {e}")))?,
         None => session.options().timeout,
     };
     if words.len() > 2 {
@@ -142,12 +144,13 @@ fn params_and_times(
     times: usize,
 ) -> Result<(Vec<ParamRef>, Vec<Duration>), String> {
     let mut split = words.len();
-    while split > 1 && words.len() - split < times && record::is_time(words[split - 1]) {
+    while split > 1 && words.len() - split < times && crate::duration::is_duration(words[split - 1])
+    {
         split -= 1;
     }
     let durations = words[split..]
         .iter()
-        .map(|w| record::parse_duration(w))
+        .map(|w| crate::duration::parse(w))
         .collect::<Result<Vec<_>, _>>()?;
     let joined = words[..split].join(",");
     let names: Vec<&str> = joined.split(',').filter(|n| !n.is_empty()).collect();
@@ -165,10 +168,6 @@ fn params_and_times(
         return Err("a time of 0 makes no sense here".into());
     }
     Ok((params, durations))
-}
-
-fn interactive() -> bool {
-    std::io::stdin().is_terminal() && std::io::stdout().is_terminal()
 }
 
 fn watch(
@@ -226,32 +225,8 @@ fn record(
             .map(|p| p.name.clone())
             .collect::<Vec<_>>(),
     )?;
-    let count = Cell::new(0usize);
-    let interrupted = Cell::new(false);
-    let result = if terminal {
-        let mut screen = TerminalScreen::new(&mut *out)?;
-        let mut stop = || {
-            let status = format!(
-                "recording to {file}: {} samples — any key stops",
-                count.get()
-            );
-            let key = screen
-                .draw(&[status])
-                .and_then(|()| screen.key(Duration::ZERO));
-            match key {
-                Ok(Some(Key::Interrupt)) => {
-                    interrupted.set(true);
-                    true
-                }
-                Ok(Some(Key::Stop)) | Err(_) => true,
-                Ok(None) => false,
-            }
-        };
-        let mut sink = |s: &record::Sample| {
-            count.set(count.get() + 1);
-            csv.append(s)
-        };
-        record::record(session, &plan, &SystemClock::new(), &mut stop, &mut sink)
+    let recording = if terminal {
+        record_on_terminal(session, &plan, file, &mut csv, out)?
     } else {
         let mut sink = |s: &record::Sample| csv.append(s);
         record::record(
@@ -260,12 +235,8 @@ fn record(
             &SystemClock::new(),
             &mut || false,
             &mut sink,
-        )
+        )?
     };
-    let recording = result?;
-    if interrupted.get() {
-        return Err(SessionError::Interrupted);
-    }
     writeln!(
         out,
         "recorded {} samples of {} to {file}; :plot draws them",
@@ -273,6 +244,46 @@ fn record(
         recording.columns.join(", ")
     )?;
     Ok((path, recording))
+}
+
+/// Records with a status line on the terminal, until the duration or a key (Ctrl-C as a key
+/// ends the recording as an interrupt).
+fn record_on_terminal(
+    session: &mut dyn ParamDevice,
+    plan: &record::Plan,
+    file: &str,
+    csv: &mut CsvFile,
+    out: &mut dyn Write,
+) -> Result<Recording, SessionError> {
+    let count = Cell::new(0usize);
+    let interrupted = Cell::new(false);
+    let mut screen = TerminalScreen::new(out)?;
+    let mut stop = || {
+        let status = format!(
+            "recording to {file}: {} samples — any key stops",
+            count.get()
+        );
+        let key = screen
+            .draw(&[status])
+            .and_then(|()| screen.key(Duration::ZERO));
+        match key {
+            Ok(Some(Key::Interrupt)) => {
+                interrupted.set(true);
+                true
+            }
+            Ok(Some(Key::Stop)) | Err(_) => true,
+            Ok(None) => false,
+        }
+    };
+    let mut sink = |s: &record::Sample| {
+        count.set(count.get() + 1);
+        csv.append(s)
+    };
+    let recording = record::record(session, plan, &SystemClock::new(), &mut stop, &mut sink)?;
+    if interrupted.get() {
+        return Err(SessionError::Interrupted);
+    }
+    Ok(recording)
 }
 
 fn plot(state: &State, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
@@ -296,11 +307,6 @@ fn plot(state: &State, arg: &str, out: &mut dyn Write) -> Result<(), SessionErro
         }
         _ => return Err(usage(":plot [FILE.csv]")),
     };
-    let width = if std::io::stdout().is_terminal() {
-        crossterm::terminal::size().map_or(80, |(w, _)| w as usize)
-    } else {
-        80
-    };
-    plot::write_recording(recording, width.clamp(30, 200), out)?;
+    plot::write_recording(recording, width().clamp(30, 200), out)?;
     Ok(())
 }

@@ -7,6 +7,10 @@ use crate::dialect::DialectSession;
 
 use super::helpers;
 
+/// `:help time`: the one grammar of times (`crate::duration`).
+const TIMES: &str = "Times (:scan, :watch, :record, run --max-time, the simulator's advance) are a number with a unit \
+(250ms, 2s, 1.5s, 1m) or a bare number of milliseconds (250 is 250ms), at most 7 days.";
+
 /// Writes the help on `topic` (empty: the overview).
 pub fn write_help(
     topic: &str,
@@ -37,6 +41,9 @@ pub fn write_help(
             out,
             "Exit codes: 0 success, 1 device error or failed assertion, 2 refused before sending, 3 connection/timeout/lost link, 130 Ctrl-C."
         );
+    }
+    if word == "time" || word == "times" {
+        return writeln!(out, "{TIMES}");
     }
     if session.help_topic(&word, out)? {
         return Ok(());

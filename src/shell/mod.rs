@@ -6,6 +6,7 @@ pub mod commission;
 mod help;
 pub mod helpers;
 mod script;
+pub mod terminal;
 pub mod words;
 
 use std::io::Write;
@@ -125,15 +126,12 @@ impl Shell {
         let args: Vec<String> = words.map(String::from).collect();
         let outcome =
             self.lend(|session| run_file(Path::new(path), &args, session, Limits::default()));
-        let Err(report) = outcome else { return Ok(()) };
+        let Err(failure) = outcome else { return Ok(()) };
         interrupt::take();
         for message in self.session().stop_motion() {
             writeln!(out, "{}", crate::escape::escape_control(&message))?;
         }
-        Err(SessionError::Script {
-            exit: report.exit,
-            message: report.message,
-        })
+        Err(failure.into())
     }
 
     fn set_log(&mut self, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {

@@ -4,7 +4,8 @@
 use std::path::Path;
 
 use crate::dialect::DialectSession;
-use crate::script::{Limits, Report, Script};
+use crate::exit::Failure;
+use crate::script::{Limits, Script};
 
 /// Runs the script at `path` with `args` over `session`; returns the session and the outcome.
 /// Its file functions reach the script's directory, the working directory and
@@ -14,10 +15,10 @@ pub fn run_file(
     args: &[String],
     session: Box<dyn DialectSession>,
     limits: Limits,
-) -> (Box<dyn DialectSession>, Result<(), Report>) {
+) -> (Box<dyn DialectSession>, Result<(), Failure>) {
     match Script::from_file(path, args, limits) {
         Ok(script) => session.run_script(&script),
-        Err(report) => (session, Err(report)),
+        Err(failure) => (session, Err(failure)),
     }
 }
 
@@ -29,6 +30,6 @@ pub fn run_source(
     args: &[String],
     session: Box<dyn DialectSession>,
     limits: Limits,
-) -> (Box<dyn DialectSession>, Result<(), Report>) {
+) -> (Box<dyn DialectSession>, Result<(), Failure>) {
     session.run_script(&Script::from_source(name, source, args, limits))
 }

@@ -3,7 +3,6 @@
 //! simulator runs, and wait for the answer before going on.
 
 use std::sync::Arc;
-use std::time::Duration;
 
 use super::inprocess::SharedDevice;
 use crate::clock::{Clock, ManualClock};
@@ -17,7 +16,7 @@ const SHARED_HELP: &str = " Both:
   delay RATE MS                      hold replies back by MS milliseconds
   silent on|off                      stop or resume answering (commands still execute)
   hangup                             hang up the connection now
-  advance DURATION                   with --manual-clock: let time pass (2s, 250ms, 1.5; plain = s)
+  advance DURATION                   with --manual-clock: let time pass (2s, 250ms, 1.5s; plain = ms)
   time                               show the simulation time
   quit                               end the simulator";
 
@@ -89,7 +88,7 @@ impl Console {
             ["quit" | "exit"] => Answer::Quit,
             ["help"] => Answer::Ok(summary(&self.help)),
             ["time"] => Answer::Ok(format!("{:.6} s", self.clock.now().as_secs_f64())),
-            ["advance", amount] => match (&self.manual, parse_duration(amount)) {
+            ["advance", amount] => match (&self.manual, crate::duration::parse(amount)) {
                 (None, _) => Answer::Error("advance needs --manual-clock".into()),
                 (_, Err(e)) => Answer::Error(e),
                 (Some(clock), Ok(d)) => {
@@ -129,43 +128,10 @@ fn summary(help: &str) -> String {
     )
 }
 
-/// `2s`, `250ms`, `10us`, `1.5` (seconds); decimal digits are taken exactly, to the
-/// nanosecond.
-pub fn parse_duration(text: &str) -> Result<Duration, String> {
-    let (number, unit_ns) = if let Some(n) = text.strip_suffix("ms") {
-        (n, 1_000_000u128)
-    } else if let Some(n) = text.strip_suffix("us") {
-        (n, 1_000)
-    } else if let Some(n) = text.strip_suffix('s') {
-        (n, 1_000_000_000)
-    } else {
-        (text, 1_000_000_000)
-    };
-    let bad = || format!("'{text}' is not a duration (e.g. 2s, 250ms)");
-    let (whole, fraction) = number.split_once('.').unwrap_or((number, ""));
-    let digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
-    if (whole.is_empty() && fraction.is_empty()) || !digits(whole) || !digits(fraction) {
-        return Err(bad());
-    }
-    let whole: u128 = if whole.is_empty() {
-        0
-    } else {
-        whole.parse().map_err(|_| bad())?
-    };
-    let mut nanos = whole.checked_mul(unit_ns).ok_or_else(bad)?;
-    let mut scale = unit_ns;
-    for digit in fraction.bytes() {
-        scale /= 10;
-        nanos += u128::from(digit - b'0') * scale;
-    }
-    u64::try_from(nanos)
-        .map(Duration::from_nanos)
-        .map_err(|_| bad())
-}
-
 #[cfg(test)]
 mod tests {
     use std::sync::Mutex;
+    use std::time::Duration;
 
     use super::*;
     use crate::dialect::tmcl::sim::Bus;
@@ -184,14 +150,19 @@ mod tests {
     }
 
     #[test]
-    fn durations_take_units() {
-        assert_eq!(parse_duration("2s"), Ok(Duration::from_secs(2)));
-        assert_eq!(parse_duration("250ms"), Ok(Duration::from_millis(250)));
-        assert_eq!(parse_duration("1.5"), Ok(Duration::from_millis(1500)));
-        assert_eq!(parse_duration("18.75ms"), Ok(Duration::from_micros(18_750)));
-        assert_eq!(parse_duration("5.24s"), Ok(Duration::from_millis(5240)));
-        assert!(parse_duration("-1s").is_err());
-        assert!(parse_duration("soon").is_err());
+    fn advance_reads_times_as_everything_else_does() {
+        // The grammar is `crate::duration`'s (tested there): a bare number is milliseconds.
+        let (console, clock) = console(true);
+        assert_eq!(console.run("advance 1.5"), Answer::Ok("0.001500 s".into()));
+        assert_eq!(console.run("advance 2s"), Answer::Ok("2.001500 s".into()));
+        assert_eq!(clock.now(), Duration::from_micros(2_001_500));
+        for refused in ["-1s", "soon", "8days"] {
+            assert!(
+                matches!(console.run(&format!("advance {refused}")), Answer::Error(_)),
+                "{refused}"
+            );
+        }
+        assert_eq!(clock.now(), Duration::from_micros(2_001_500));
     }
 
     #[test]

@@ -12,8 +12,12 @@ pub mod inprocess;
 pub mod pacing;
 #[cfg(unix)]
 pub mod serve;
+pub mod store;
 
 pub use builtin::builtin_link;
+
+/// Where a simulator logs its traffic (`tmclsh sim --verbose`): one decoded line at a time.
+pub type LogSink = Box<dyn FnMut(&str) + Send>;
 
 use std::time::Duration;
 

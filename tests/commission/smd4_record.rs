@@ -47,12 +47,12 @@ fn trapezoid(distance: f64, v0: f64, v: f64, a: f64, t: f64) -> (f64, f64) {
 #[test]
 fn samples_follow_a_move_exactly_on_a_shared_manual_clock() {
     let clock = Arc::new(ManualClock::new());
-    let drive = Smd4Sim::new(tmclsh::dialect::smd4::sim::Smd4Options::default());
+    let drive = Smd4Sim::new(tmclsh::dialect::smd4::sim::Smd4SimOptions::default());
     let link = SimLink::new(Box::new(drive), clock.clone());
     let mut session = Smd4Session::open(
         Box::new(link),
         SessionOptions::default(),
-        tmclsh::dialect::smd4::session::Smd4Options::default(),
+        tmclsh::dialect::smd4::session::Smd4SessionOptions::default(),
         None,
     )
     .unwrap();

@@ -8,13 +8,13 @@ use std::path::Path;
 use std::process::Output;
 
 use tmclsh::commission::{ParamValue, Scope, Snapshot, Tolerance};
-use tmclsh::dialect::smd4::protocol::{CommandSpec, Smd4Spec};
+use tmclsh::dialect::smd4::protocol::{Smd4Command, Smd4Spec};
 
 use super::arg;
 use crate::smd4::{Drive, Via, assert_exit, client, lines};
 use crate::util::tempdir;
 
-fn command(mnemonic: &str) -> &'static CommandSpec {
+fn command(mnemonic: &str) -> &'static Smd4Command {
     Smd4Spec::builtin().commands.get(mnemonic).unwrap()
 }
 

@@ -12,7 +12,7 @@ use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use tmclsh::dialect::smd4::sim::{Smd4Options, Smd4Sim};
+use tmclsh::dialect::smd4::sim::{Smd4Sim, Smd4SimOptions};
 use tmclsh::dialect::tmcl::profile::Profile;
 use tmclsh::dialect::tmcl::sim::{Bus, BusOptions};
 use tmclsh::sim::Device;
@@ -120,7 +120,9 @@ impl Fake {
 
     /// A simulated SMD4 drive behind `rule`.
     pub fn smd4(via: Via, rule: Rule) -> Fake {
-        Fake::start(via, rule, || Box::new(Smd4Sim::new(Smd4Options::default())))
+        Fake::start(via, rule, || {
+            Box::new(Smd4Sim::new(Smd4SimOptions::default()))
+        })
     }
 
     fn start(via: Via, rule: Rule, device: fn() -> Box<dyn Device>) -> Fake {

@@ -13,7 +13,7 @@ use crate::commission::Access;
 use crate::dialect::session::DialectSession;
 use crate::dialect::smd4::protocol::validate::validate;
 use crate::dialect::smd4::protocol::{
-    CommandSpec, ItemType, Kind, ReplyShape, Request, Response, Smd4Spec,
+    ItemType, Kind, ReplyShape, Request, Smd4Command, Smd4Reply, Smd4Spec,
 };
 use crate::dialect::smd4::protocol::{Value, items::DataItem};
 use crate::dialect::smd4::session::{Smd4Exchange, Smd4Session};
@@ -136,7 +136,7 @@ impl ParamDevice for Smd4Session {
 
 impl Smd4Session {
     /// The command behind `param`.
-    fn command(&self, param: &ParamRef) -> Result<&'static CommandSpec, SessionError> {
+    fn command(&self, param: &ParamRef) -> Result<&'static Smd4Command, SessionError> {
         let spec: &'static Smd4Spec = self.spec();
         spec.commands
             .get(&param.name)
@@ -144,10 +144,10 @@ impl Smd4Session {
     }
 
     /// Sends `request` and returns its reply, or why there is none.
-    fn reply(&mut self, request: Request) -> Result<Response, SessionError> {
+    fn reply(&mut self, request: Request) -> Result<Smd4Reply, SessionError> {
         let exchange = self.request(request)?.checked()?;
-        let Smd4Exchange { response, sent, .. } = exchange;
-        response.ok_or_else(|| {
+        let Smd4Exchange { reply, sent, .. } = exchange;
+        reply.ok_or_else(|| {
             SessionError::Usage(format!(
                 "'{sent}' gets no reply (broadcast @0): choose one drive with --address N or :target N"
             ))
@@ -166,7 +166,7 @@ pub fn spec_params(spec: &Smd4Spec) -> Vec<ParamRef> {
 
 /// Whether a command reads a value: readable, with one value, a user/real pair, a named number
 /// or (SYS:FLAGS) the flag words alone. Multi-line listings are text for people, not values.
-fn is_param(command: &CommandSpec) -> bool {
+fn is_param(command: &Smd4Command) -> bool {
     command.readable
         && matches!(
             command.reply,
@@ -174,7 +174,7 @@ fn is_param(command: &CommandSpec) -> bool {
         )
 }
 
-fn why_not(command: &CommandSpec) -> &'static str {
+fn why_not(command: &Smd4Command) -> &'static str {
     match (command.kind, &command.reply) {
         (_, ReplyShape::MultiLine) => "a multi-line listing for people",
         (Kind::Motion, _) => "it starts a move",
@@ -183,7 +183,7 @@ fn why_not(command: &CommandSpec) -> &'static str {
     }
 }
 
-fn param_ref(spec: &Smd4Spec, command: &CommandSpec) -> ParamRef {
+fn param_ref(spec: &Smd4Spec, command: &Smd4Command) -> ParamRef {
     let rules = &spec.snapshot.rules;
     let writable = command.writable && command.kind == Kind::Setting && command.arg.is_some();
     let mut role = rules.role_of(&command.mnemonic, writable);
@@ -207,7 +207,7 @@ fn param_ref(spec: &Smd4Spec, command: &CommandSpec) -> ParamRef {
 }
 
 /// Currents round to `max / levels`; other real values compare to the digits replies carry.
-fn tolerance(spec: &Smd4Spec, command: &CommandSpec) -> Tolerance {
+fn tolerance(spec: &Smd4Spec, command: &Smd4Command) -> Tolerance {
     let arg = command.arg.as_ref();
     if let (Some(levels), Some(max)) = (arg.and_then(|a| a.levels), arg.and_then(|a| a.max)) {
         if levels > 0 {
@@ -224,18 +224,18 @@ fn tolerance(spec: &Smd4Spec, command: &CommandSpec) -> Tolerance {
 
 /// The command a user means: its mnemonic in any case (or an alias), or the unique command whose
 /// last segment it is (`VACT` for MOTOR:VACT, as the document itself abbreviates).
-fn find_command<'a>(spec: &'a Smd4Spec, name: &str) -> Result<&'a CommandSpec, String> {
+fn find_command<'a>(spec: &'a Smd4Spec, name: &str) -> Result<&'a Smd4Command, String> {
     let wanted = name.trim();
     if let Some(command) = spec.commands.get(wanted) {
         return Ok(command);
     }
-    let leaf = |c: &&CommandSpec| {
+    let leaf = |c: &&Smd4Command| {
         c.mnemonic
             .rsplit(':')
             .next()
             .is_some_and(|l| l.eq_ignore_ascii_case(wanted))
     };
-    let matches: Vec<&CommandSpec> = spec.commands.iter().filter(leaf).collect();
+    let matches: Vec<&Smd4Command> = spec.commands.iter().filter(leaf).collect();
     match matches.as_slice() {
         [one] => Ok(one),
         [] => {
@@ -256,7 +256,7 @@ fn find_command<'a>(spec: &'a Smd4Spec, name: &str) -> Result<&'a CommandSpec, S
 }
 
 /// The value of a reply to `command`.
-fn reading(command: &CommandSpec, response: &Response) -> Option<Reading> {
+fn reading(command: &Smd4Command, response: &Smd4Reply) -> Option<Reading> {
     match &command.reply {
         ReplyShape::UserReal => {
             let (user, real) = response.user_real()?;
@@ -322,7 +322,7 @@ fn store_mnemonic(spec: &Smd4Spec) -> String {
 mod tests {
     use super::*;
     use crate::commission::SnapshotRole;
-    use crate::dialect::smd4::protocol::{Expectation, parse_response};
+    use crate::dialect::smd4::protocol::{Expectation, parse_reply};
 
     fn spec() -> &'static Smd4Spec {
         Smd4Spec::builtin()
@@ -337,7 +337,7 @@ mod tests {
 
     fn read(name: &str, line: &str) -> Reading {
         let command = spec().commands.get(name).unwrap();
-        let response = parse_response(line, &Expectation::for_command(command)).unwrap();
+        let response = parse_reply(line, &Expectation::for_command(command)).unwrap();
         reading(command, &response).unwrap()
     }
 

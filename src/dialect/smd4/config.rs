@@ -15,7 +15,7 @@ use crate::sim::Device;
 
 use super::protocol::Smd4Spec;
 use super::session::Smd4Session;
-use super::sim::{Smd4Options, Smd4Sim};
+use super::sim::{Smd4Sim, Smd4SimOptions};
 
 /// SMD4 with its built-in command table.
 pub struct Smd4Config;
@@ -49,7 +49,7 @@ impl DialectConfig for Smd4Config {
     }
 
     fn simulator(&self) -> Box<dyn Device> {
-        Box::new(Smd4Sim::new(Smd4Options::default()))
+        Box::new(Smd4Sim::new(Smd4SimOptions::default()))
     }
 
     fn served_simulator(

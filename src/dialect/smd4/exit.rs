@@ -3,7 +3,7 @@
 
 use crate::exit::{Exit, ExitStatus};
 
-use super::protocol::{DeviceError, RequestError, ResponseError, ValidationError};
+use super::protocol::{DeviceError, ReplyError, RequestError, ValidationError};
 
 impl ExitStatus for DeviceError {
     /// A device error code means exit 1.
@@ -19,7 +19,7 @@ impl ExitStatus for RequestError {
     }
 }
 
-impl ExitStatus for ResponseError {
+impl ExitStatus for ReplyError {
     /// Garbage from the link is a link failure: exit 3.
     fn exit(&self) -> Exit {
         Exit::Link

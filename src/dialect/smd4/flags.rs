@@ -6,7 +6,7 @@ use std::time::Duration;
 use clap::{ArgMatches, FromArgMatches};
 
 use super::protocol::PrefixStyle;
-use super::session::Smd4Options;
+use super::session::Smd4SessionOptions;
 
 /// Settings of the SMD4 dialect.
 #[derive(Debug, Clone, clap::Args)]
@@ -26,9 +26,9 @@ pub struct SessionFlags {
 
 impl SessionFlags {
     /// The SMD4 session options these flags select.
-    pub fn options(&self) -> Smd4Options {
-        let defaults = Smd4Options::default();
-        Smd4Options {
+    pub fn options(&self) -> Smd4SessionOptions {
+        let defaults = Smd4SessionOptions::default();
+        Smd4SessionOptions {
             address: self.address,
             prefix: if self.prefix_comma {
                 PrefixStyle::Comma
@@ -44,8 +44,8 @@ impl SessionFlags {
 }
 
 /// The SMD4 session options a command line selects; the defaults without one.
-pub fn options(matches: Option<&ArgMatches>) -> Smd4Options {
+pub fn options(matches: Option<&ArgMatches>) -> Smd4SessionOptions {
     matches
         .and_then(|m| SessionFlags::from_arg_matches(m).ok())
-        .map_or_else(Smd4Options::default, |flags| flags.options())
+        .map_or_else(Smd4SessionOptions::default, |flags| flags.options())
 }

@@ -2,7 +2,7 @@
 //! completed from the command table, hints with usage, unit and range, and the validator.
 
 use crate::dialect::Dialect;
-use crate::dialect::grammar::{Candidate, Completion, Grammar};
+use crate::dialect::grammar::{Completion, Grammar};
 
 use super::protocol::{self, Request, Smd4Spec};
 
@@ -25,17 +25,9 @@ impl Grammar for Smd4Grammar {
 
     fn complete(&self, line: &str, pos: usize) -> Completion {
         let found = protocol::complete(&self.spec.commands, &line[..pos]);
-        let candidates = found
-            .candidates
-            .into_iter()
-            .map(|c| Candidate {
-                display: c.display,
-                replacement: c.replacement,
-            })
-            .collect();
         Completion::Words {
             start: found.start,
-            candidates,
+            candidates: found.candidates,
         }
     }
 

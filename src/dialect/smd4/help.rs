@@ -17,7 +17,7 @@ pub fn intro(out: &mut dyn Write) -> io::Result<()> {
 }
 
 /// The topics named at the end of `:help`.
-pub const MORE: &str = ":help MNEMONIC, :help addressing, :help exit";
+pub const MORE: &str = ":help MNEMONIC, :help addressing, :help exit, :help time";
 
 /// `:help addressing`; false for other topics.
 pub fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {

@@ -37,7 +37,7 @@ pub fn run(
         "flags" => {
             let reply = session.exchange_line("SYS:FLAGS")?.checked()?;
             let (sflags, eflags) = reply
-                .response
+                .reply
                 .map(|r| (r.sflags.0, r.eflags.0))
                 .unwrap_or((0, 0));
             let spec = session.spec();

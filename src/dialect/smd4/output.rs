@@ -11,7 +11,7 @@ impl ReplyForms for Smd4Exchange {
     /// The data items as received, comma-separated, with any further lines of a listing after
     /// them; empty when the drive sends no reply.
     fn value(&self) -> String {
-        match &self.response {
+        match &self.reply {
             None => String::new(),
             Some(r) => {
                 let mut text = r.data_strings().join(",");
@@ -27,7 +27,7 @@ impl ReplyForms for Smd4Exchange {
     /// The address, the line sent, success, the flag words and error, the items and further
     /// lines, the reply as received.
     fn json_fields(&self) -> Vec<(&'static str, Value)> {
-        let response = self.response.as_ref();
+        let response = self.reply.as_ref();
         let error = response.and_then(|r| r.error.as_ref()).map(|e| {
             json!({
                 "code": e.code.code(),

@@ -9,7 +9,7 @@ use crate::dialect::smd4::session::Smd4Exchange;
 /// Decodes an SMD4 reply: error codes with their meaning, user/real pairs, named values with
 /// units, and the flags that are set.
 pub fn decode(exchange: &Smd4Exchange, spec: &Smd4Spec) -> Decoded {
-    let Some(response) = &exchange.response else {
+    let Some(response) = &exchange.reply else {
         return Decoded {
             text: "sent (no reply for broadcasts and this command)".into(),
             ok: true,

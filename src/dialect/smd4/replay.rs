@@ -13,7 +13,7 @@ use std::fmt::Write as _;
 use crate::commission::SnapshotRole;
 use crate::dialect::smd4::commission::spec_params;
 use crate::dialect::smd4::protocol::{
-    Expectation, ReplyShape, Request, Response, Smd4Spec, Value, parse_response,
+    Expectation, ReplyShape, Request, Smd4Reply, Smd4Spec, Value, parse_reply,
 };
 
 use crate::dialect::replay::parse::{Entry, Record};
@@ -33,7 +33,7 @@ pub enum Step {
         /// The request it parses to.
         request: Request,
         /// The reply.
-        response: Option<Response>,
+        response: Option<Smd4Reply>,
     },
     /// Kept as a comment.
     Comment(String),
@@ -90,11 +90,11 @@ pub fn steps(entries: &[Entry], spec: &Smd4Spec) -> Vec<Step> {
 }
 
 /// The reply to `request` among the received lines (a reply from another drive is skipped).
-fn reply_to(bytes: &[u8], request: &Request, spec: &Smd4Spec) -> Option<Response> {
+fn reply_to(bytes: &[u8], request: &Request, spec: &Smd4Spec) -> Option<Smd4Reply> {
     let expect = Expectation::for_request(&spec.commands, request);
     String::from_utf8_lossy(bytes)
         .split(['\r', '\n'])
-        .filter_map(|l| parse_response(l, &expect).ok())
+        .filter_map(|l| parse_reply(l, &expect).ok())
         .find(|r| match (r.address, request.address) {
             (Some(got), Some(wanted)) => got == wanted,
             _ => true,
@@ -115,7 +115,7 @@ enum Check {
     Live,
 }
 
-fn check_of(request: &Request, response: &Response, spec: &Smd4Spec) -> Check {
+fn check_of(request: &Request, response: &Smd4Reply, spec: &Smd4Spec) -> Check {
     if let Some(error) = &response.error {
         return Check::Error(error.code.code());
     }
@@ -267,7 +267,7 @@ fn settled(steps: &[Step], k: usize) -> bool {
 
 /// The reply's values as a Rhai array literal, decoded as the script's `reply().values` decodes
 /// them: integers, real numbers, booleans, named values as their number, the rest as strings.
-fn values(response: &Response) -> String {
+fn values(response: &Smd4Reply) -> String {
     let items: Vec<String> = response
         .data
         .iter()

@@ -15,13 +15,13 @@ use crate::dialect::smd4::protocol::{MAX_ADDRESS, Request};
 use crate::dialect::smd4::session::Smd4Session;
 use crate::session::SessionError;
 
-use crate::commission::progress::Progress;
 use crate::commission::scan::describe_addresses;
 use crate::dialect::session::{BusScan, DialectSession};
+use crate::progress::Progress;
 
 /// A drive that answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Found {
+pub struct FoundDrive {
     /// Its bus address (COMS:SERIAL:SLAVEADDR).
     pub address: u32,
     /// Its firmware version (SYS:FW), unless it answered with an error code.
@@ -32,11 +32,11 @@ pub struct Found {
 
 /// What a scan found.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Report {
+pub struct Smd4Scan {
     /// The addresses tried.
     pub scanned: Vec<u32>,
     /// The drives that answered, by address.
-    pub found: Vec<Found>,
+    pub found: Vec<FoundDrive>,
     /// How long each reply was awaited.
     pub per_reply: Duration,
 }
@@ -47,7 +47,7 @@ pub fn scan(
     session: &mut Smd4Session,
     addresses: &[u32],
     per_reply: Duration,
-) -> Result<Report, SessionError> {
+) -> Result<Smd4Scan, SessionError> {
     let mut addresses = addresses.to_vec();
     addresses.sort_unstable();
     addresses.dedup();
@@ -56,7 +56,7 @@ pub fn scan(
             "SMD4 addresses are 1..{MAX_ADDRESS}, not {bad}"
         )));
     }
-    let progress = Progress::new(addresses.len(), "scanning");
+    let progress = Progress::steps(addresses.len(), 2, "scanning");
     let mut found = Vec::new();
     for &address in &addresses {
         progress.step(&format!("@{address}"));
@@ -65,13 +65,13 @@ pub fn scan(
         let serial = session
             .with_timeout(per_reply, |s| ask(s, address, "SYS:BSN"))?
             .flatten();
-        found.push(Found {
+        found.push(FoundDrive {
             address,
             firmware,
             serial,
         });
     }
-    Ok(Report {
+    Ok(Smd4Scan {
         scanned: addresses,
         found,
         per_reply,
@@ -86,7 +86,7 @@ fn ask(
     mnemonic: &str,
 ) -> Result<Option<Option<String>>, SessionError> {
     match session.request(Request::new(mnemonic).to(address)) {
-        Ok(exchange) => Ok(exchange.response.map(|r| {
+        Ok(exchange) => Ok(exchange.reply.map(|r| {
             r.is_ok()
                 .then(|| r.data_strings().join(","))
                 .filter(|t| !t.is_empty())
@@ -114,7 +114,7 @@ pub fn bus_scan(
 }
 
 /// Prints the table of drives found, a summary line, and what the probes left behind.
-pub fn write_report(report: &Report, out: &mut dyn Write) -> io::Result<()> {
+pub fn write_report(report: &Smd4Scan, out: &mut dyn Write) -> io::Result<()> {
     if !report.found.is_empty() {
         writeln!(out, "address  firmware  serial")?;
     }
@@ -132,7 +132,7 @@ pub const ADDRESSING_NOTE: &str = "note: the drives on this bus saw @N packets a
 addressing mode until they restart: talk to them with --address N (:target N)";
 
 /// "2 drives answered at 1-247 (at most 100 ms per reply)".
-pub fn summary(report: &Report) -> String {
+pub fn summary(report: &Smd4Scan) -> String {
     let who = match report.found.len() {
         0 => "no drive answered".to_string(),
         1 => "1 drive answered".to_string(),
@@ -156,15 +156,15 @@ mod tests {
 
     #[test]
     fn the_table_lists_each_drive_and_the_note_on_addressing_mode() {
-        let report = Report {
+        let report = Smd4Scan {
             scanned: (1..=247).collect(),
             found: vec![
-                Found {
+                FoundDrive {
                     address: 3,
                     firmware: Some("24044.12".into()),
                     serial: Some("1234ABCD".into()),
                 },
-                Found {
+                FoundDrive {
                     address: 200,
                     firmware: None,
                     serial: None,

@@ -10,7 +10,7 @@ use std::rc::Rc;
 
 use rhai::{Array, Dynamic, Engine, INT, Map};
 
-use crate::dialect::smd4::protocol::{DataItem, MAX_ADDRESS, Response, Value, items};
+use crate::dialect::smd4::protocol::{DataItem, MAX_ADDRESS, Smd4Reply, Value, items};
 use crate::dialect::smd4::session::{Smd4Exchange, Smd4Session};
 
 use crate::script::common::duration;
@@ -31,7 +31,7 @@ pub fn register(engine: &mut Engine, session: &Shared) {
                 .and_then(Smd4Exchange::checked),
         )?;
         Ok(exchange
-            .response
+            .reply
             .map(|r| r.data_strings().into_iter().map(Dynamic::from).collect())
             .unwrap_or_default())
     });
@@ -94,21 +94,21 @@ pub fn register(engine: &mut Engine, session: &Shared) {
 }
 
 /// A fresh reply carrying the flags (SYS:FLAGS).
-fn read_flags(session: &Shared) -> Fallible<Response> {
+fn read_flags(session: &Shared) -> Fallible<Smd4Reply> {
     let exchange = device(
         session
             .borrow_mut()
             .exchange_line("SYS:FLAGS")
             .and_then(Smd4Exchange::checked),
     )?;
-    exchange.response.ok_or_else(|| {
+    exchange.reply.ok_or_else(|| {
         refused("SYS:FLAGS got no reply (a broadcast address is set; use target(N))")
     })
 }
 
 fn reply_map(exchange: &Smd4Exchange) -> Map {
     let mut map = Map::new();
-    let response = exchange.response.as_ref();
+    let response = exchange.reply.as_ref();
     map.insert(
         "sflags".into(),
         INT::from(response.map_or(0, |r| r.sflags.0)).into(),

@@ -6,7 +6,7 @@ use crate::dialect::tmcl::profile::{Param, Profile};
 use crate::dialect::tmcl::protocol::line::Op;
 use crate::dialect::tmcl::protocol::validate::{Mode, validate_instruction};
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
-use crate::dialect::tmcl::session::{Answer, TmclSession};
+use crate::dialect::tmcl::session::{TmclReply, TmclSession};
 use crate::session::SessionError;
 
 use crate::commission::device::{ParamDevice, ParamRef, Scope, StoreStep};
@@ -36,8 +36,8 @@ impl ParamDevice for TmclSession {
                 s.request(target, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0))
             })
             .ok()?;
-        match exchange.answer {
-            Answer::Version(text) if !text.trim().is_empty() => Some(text.trim().to_string()),
+        match exchange.reply {
+            TmclReply::Version(text) if !text.trim().is_empty() => Some(text.trim().to_string()),
             _ => None,
         }
     }

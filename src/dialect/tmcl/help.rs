@@ -21,7 +21,7 @@ pub fn intro(out: &mut dyn Write) -> io::Result<()> {
 }
 
 /// The topics named at the end of `:help`.
-pub const MORE: &str = ":help COMMAND, :help params, :help exit, :help ascii";
+pub const MORE: &str = ":help COMMAND, :help params, :help exit, :help time, :help ascii";
 
 /// `:help params` and `:help ascii` (the ASCII commands of `profile`'s module); false for other
 /// topics.

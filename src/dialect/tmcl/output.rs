@@ -5,24 +5,24 @@ use serde_json::{Value, json};
 
 use crate::dialect::session::ReplyForms;
 
-use super::session::{Answer, Exchange};
+use super::session::{TmclExchange, TmclReply};
 
-impl ReplyForms for Exchange {
+impl ReplyForms for TmclExchange {
     /// The number, or the version string of 136; empty when the module sends no reply.
     fn value(&self) -> String {
-        match &self.answer {
-            Answer::Reply { value, .. } => value.to_string(),
-            Answer::Version(version) => version.clone(),
-            Answer::Nothing => String::new(),
+        match &self.reply {
+            TmclReply::Status { value, .. } => value.to_string(),
+            TmclReply::Version(version) => version.clone(),
+            TmclReply::Nothing => String::new(),
         }
     }
 
     /// The module, the line sent, success, status and value, the reply as received.
     fn json_fields(&self) -> Vec<(&'static str, Value)> {
-        let (status, value) = match &self.answer {
-            Answer::Reply { status, value } => (json!(status.code()), json!(value)),
-            Answer::Version(version) => (Value::Null, json!(version)),
-            Answer::Nothing => (Value::Null, Value::Null),
+        let (status, value) = match &self.reply {
+            TmclReply::Status { status, value } => (json!(status.code()), json!(value)),
+            TmclReply::Version(version) => (Value::Null, json!(version)),
+            TmclReply::Nothing => (Value::Null, Value::Null),
         };
         vec![
             ("module", json!(self.module)),

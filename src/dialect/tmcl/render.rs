@@ -5,24 +5,24 @@ use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::commands::{Field, OperandKind, ParamUse};
 use crate::dialect::tmcl::protocol::Opcode;
 use crate::dialect::tmcl::protocol::line::Op;
-use crate::dialect::tmcl::session::{Answer, Exchange};
+use crate::dialect::tmcl::session::{TmclExchange, TmclReply};
 
 /// Decodes an exchange using the profile's names and units.
-pub fn decode(exchange: &Exchange, profile: &Profile) -> Decoded {
-    let (status, value) = match &exchange.answer {
-        Answer::Nothing => {
+pub fn decode(exchange: &TmclExchange, profile: &Profile) -> Decoded {
+    let (status, value) = match &exchange.reply {
+        TmclReply::Nothing => {
             return Decoded {
                 text: "sent (the module sends no reply)".into(),
                 ok: true,
             };
         }
-        Answer::Version(text) => {
+        TmclReply::Version(text) => {
             return Decoded {
                 text: format!("firmware version {text}"),
                 ok: true,
             };
         }
-        Answer::Reply { status, value } => (*status, *value),
+        TmclReply::Status { status, value } => (*status, *value),
     };
     if !status.is_success() {
         return Decoded {
@@ -92,12 +92,12 @@ mod tests {
     use super::*;
     use crate::dialect::tmcl::protocol::{Instruction, Status};
 
-    fn exchange(i: Instruction, status: Status, value: i32) -> Exchange {
-        Exchange {
+    fn exchange(i: Instruction, status: Status, value: i32) -> TmclExchange {
+        TmclExchange {
             module: 1,
             sent: String::new(),
             op: Some(Op::Command(i)),
-            answer: Answer::Reply { status, value },
+            reply: TmclReply::Status { status, value },
             raw: String::new(),
         }
     }
@@ -152,8 +152,8 @@ mod tests {
             decode(&exchange(Instruction::new(135, 0, 0, 0), Status::Ok, 1), &p).text,
             "application running"
         );
-        let version = Exchange {
-            answer: Answer::Version("142V1.06".into()),
+        let version = TmclExchange {
+            reply: TmclReply::Version("142V1.06".into()),
             ..exchange(Instruction::new(136, 0, 0, 0), Status::Ok, 0)
         };
         assert_eq!(decode(&version, &p).text, "firmware version 142V1.06");

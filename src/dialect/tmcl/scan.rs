@@ -21,16 +21,16 @@ use std::time::Duration;
 
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
-use crate::dialect::tmcl::session::{Answer, Echo, TmclSession, WireMode};
+use crate::dialect::tmcl::session::{Echo, TmclReply, TmclSession, WireMode};
 use crate::session::SessionError;
 
-use crate::commission::progress::Progress;
 use crate::commission::scan::describe_addresses;
 use crate::dialect::session::{BusScan, DialectSession};
+use crate::progress::Progress;
 
 /// A module that answered.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Found {
+pub struct FoundModule {
     /// Its bus address.
     pub address: u8,
     /// The mode it was in when found.
@@ -43,11 +43,11 @@ pub struct Found {
 
 /// What a scan found.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Report {
+pub struct TmclScan {
     /// The addresses tried.
     pub scanned: Vec<u8>,
     /// The modules that answered, by address.
-    pub found: Vec<Found>,
+    pub found: Vec<FoundModule>,
     /// How long each reply was awaited.
     pub per_reply: Duration,
 }
@@ -60,13 +60,13 @@ pub fn scan(
     addresses: &[u8],
     per_reply: Duration,
     quiet: Duration,
-) -> Result<Report, SessionError> {
+) -> Result<TmclScan, SessionError> {
     let original = session.target();
     let mut addresses = addresses.to_vec();
     addresses.sort_unstable();
     addresses.dedup();
-    let progress = Progress::new(addresses.len(), "scanning (binary)");
-    let mut found: BTreeMap<u8, Found> = BTreeMap::new();
+    let progress = Progress::steps(addresses.len(), 2, "scanning (binary)");
+    let mut found: BTreeMap<u8, FoundModule> = BTreeMap::new();
     for &address in &addresses {
         progress.step(&address.to_string());
         if let Some(module) = session.with_timeout(per_reply, |s| probe_binary(s, address))? {
@@ -84,7 +84,7 @@ pub fn scan(
         session.end_partial_line()?;
     }
     drop(progress);
-    let progress = Progress::new(candidates.len(), "scanning (ASCII)");
+    let progress = Progress::steps(candidates.len(), 2, "scanning (ASCII)");
     for &address in &candidates {
         progress.step(&address.to_string());
         if let Some(module) = session.with_timeout(per_reply, |s| probe_ascii(s, address))? {
@@ -93,7 +93,7 @@ pub fn scan(
     }
     // Round 3: the echo setting of the modules found in binary mode.
     let in_ascii =
-        |m: &Found| m.mode == WireMode::Ascii || session.module_state(m.address).is_some();
+        |m: &FoundModule| m.mode == WireMode::Ascii || session.module_state(m.address).is_some();
     let c_in_ascii = found.get(&3).is_some_and(in_ascii);
     let ascii_modules = found.values().any(in_ascii);
     let binary: Vec<u8> = found
@@ -118,7 +118,7 @@ pub fn scan(
     if session.module_state(original).is_some() && session.target() != original {
         session.set_target(original)?;
     }
-    Ok(Report {
+    Ok(TmclScan {
         scanned: addresses,
         found: found.into_values().collect(),
         per_reply,
@@ -157,7 +157,10 @@ fn absent(error: &SessionError) -> bool {
 }
 
 /// Round 1: a module in binary mode answers 136 type 1; then its version string.
-fn probe_binary(session: &mut TmclSession, address: u8) -> Result<Option<Found>, SessionError> {
+fn probe_binary(
+    session: &mut TmclSession,
+    address: u8,
+) -> Result<Option<FoundModule>, SessionError> {
     if session.module_state(address).is_some() {
         return Ok(None); // already reached by this session: round 2 reports it
     }
@@ -167,13 +170,12 @@ fn probe_binary(session: &mut TmclSession, address: u8) -> Result<Option<Found>,
         Err(e) if absent(&e) => return Ok(None),
         Err(e) => return Err(e),
     }
-    let firmware =
-        match session.probe_binary(address, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0)) {
-            Ok(x) => version_text(&x.answer),
-            Err(e) if absent(&e) => None,
-            Err(e) => return Err(e),
-        };
-    Ok(Some(Found {
+    let firmware = match session.probe_binary(address, Instruction::new(136, 0, 0, 0)) {
+        Ok(x) => version_text(&x.reply),
+        Err(e) if absent(&e) => None,
+        Err(e) => return Err(e),
+    };
+    Ok(Some(FoundModule {
         address,
         mode: WireMode::Binary,
         firmware,
@@ -182,7 +184,10 @@ fn probe_binary(session: &mut TmclSession, address: u8) -> Result<Option<Found>,
 }
 
 /// Round 2: a module in ASCII mode (or one this session already reached) answers in ASCII.
-fn probe_ascii(session: &mut TmclSession, address: u8) -> Result<Option<Found>, SessionError> {
+fn probe_ascii(
+    session: &mut TmclSession,
+    address: u8,
+) -> Result<Option<FoundModule>, SessionError> {
     let known = session.found_in(address);
     match session.set_target(address) {
         Ok(()) => {}
@@ -197,11 +202,11 @@ fn probe_ascii(session: &mut TmclSession, address: u8) -> Result<Option<Found>, 
         s.request(address, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0))
     });
     let firmware = match version {
-        Ok(x) => version_text(&x.answer),
+        Ok(x) => version_text(&x.reply),
         Err(e) if absent(&e) => None,
         Err(e) => return Err(e),
     };
-    Ok(Some(Found {
+    Ok(Some(FoundModule {
         address,
         mode,
         firmware,
@@ -219,15 +224,15 @@ fn read_echo_binary(session: &mut TmclSession, address: u8) -> Result<Option<Ech
     }
 }
 
-fn version_text(answer: &Answer) -> Option<String> {
+fn version_text(answer: &TmclReply) -> Option<String> {
     match answer {
-        Answer::Version(text) if !text.trim().is_empty() => Some(text.trim().to_string()),
+        TmclReply::Version(text) if !text.trim().is_empty() => Some(text.trim().to_string()),
         _ => None,
     }
 }
 
 /// Prints the table of modules found and a summary line.
-pub fn write_report(report: &Report, out: &mut dyn Write) -> io::Result<()> {
+pub fn write_report(report: &TmclScan, out: &mut dyn Write) -> io::Result<()> {
     if !report.found.is_empty() {
         writeln!(out, "address  char  found in  firmware  echo")?;
     }
@@ -249,7 +254,7 @@ pub fn write_report(report: &Report, out: &mut dyn Write) -> io::Result<()> {
 }
 
 /// "3 modules answered at 1-26 (at most 200 ms per reply)".
-pub fn summary(report: &Report) -> String {
+pub fn summary(report: &TmclScan) -> String {
     let n = report.found.len();
     let who = match n {
         0 => "no module answered".to_string(),
@@ -269,22 +274,22 @@ mod tests {
 
     #[test]
     fn the_table_lists_each_module_with_mode_firmware_and_echo() {
-        let report = Report {
+        let report = TmclScan {
             scanned: (1..=30).collect(),
             found: vec![
-                Found {
+                FoundModule {
                     address: 1,
                     mode: WireMode::Binary,
                     firmware: Some("142V1.00".into()),
                     echo: Some(Echo::Character),
                 },
-                Found {
+                FoundModule {
                     address: 3,
                     mode: WireMode::Ascii,
                     firmware: None,
                     echo: Some(Echo::None),
                 },
-                Found {
+                FoundModule {
                     address: 30,
                     mode: WireMode::Binary,
                     firmware: Some("142V1.00".into()),

@@ -7,10 +7,11 @@ use std::rc::Rc;
 
 use rhai::{Dynamic, Engine, INT, Map};
 
+use crate::dialect::tmcl::asm::{self, LoadError};
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::protocol::line::address_of;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
-use crate::dialect::tmcl::session::{Answer, Exchange, TmclSession};
+use crate::dialect::tmcl::session::{TmclExchange, TmclReply, TmclSession};
 
 use crate::script::common::duration;
 use crate::script::failure::{Fallible, device, refused};
@@ -23,6 +24,17 @@ pub type Shared = Rc<RefCell<TmclSession>>;
 
 /// Registers the TMCL functions over `session`.
 pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
+    register_lines(engine, session);
+    register_parameters(engine, session, Table::Axis);
+    register_parameters(engine, session, Table::Global);
+    register_motion(engine, session);
+    register_io(engine, session);
+    register_module(engine, session);
+    register_programs(engine, session, sandbox);
+}
+
+/// `send(line)` and `reply(line)`: a line as typed.
+fn register_lines(engine: &mut Engine, session: &Shared) {
     let s = session.clone();
     volatile!(engine, "send", move |line: &str| value_of(checked(
         s.borrow_mut().exchange_line(line)
@@ -32,71 +44,90 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         s.borrow_mut().exchange_line(line)
     )
     .map(reply_map));
+}
 
-    let s = session.clone();
-    volatile!(engine, "gap", move |param: Dynamic, motor: INT| {
-        let p = axis(&s, &param)?;
-        request(&s, Opcode::Gap, p, byte("motor", motor)?, 0)
-    });
-    let s = session.clone();
-    volatile!(
-        engine,
-        "sap",
-        move |param: Dynamic, motor: INT, value: INT| {
-            let p = axis(&s, &param)?;
-            request(
-                &s,
-                Opcode::Sap,
-                p,
-                byte("motor", motor)?,
-                word("value", value)?,
-            )
-            .map(|_| ())
-        }
-    );
-    let s = session.clone();
-    volatile!(engine, "stap", move |param: Dynamic, motor: INT| {
-        let p = axis(&s, &param)?;
-        request(&s, Opcode::Stap, p, byte("motor", motor)?, 0).map(|_| ())
-    });
-    let s = session.clone();
-    volatile!(engine, "rsap", move |param: Dynamic, motor: INT| {
-        let p = axis(&s, &param)?;
-        request(&s, Opcode::Rsap, p, byte("motor", motor)?, 0).map(|_| ())
-    });
-    let s = session.clone();
-    volatile!(engine, "ggp", move |param: Dynamic, bank: INT| {
-        let p = global(&s, &param, bank)?;
-        request(&s, Opcode::Ggp, p, byte("bank", bank)?, 0)
-    });
-    let s = session.clone();
-    volatile!(
-        engine,
-        "sgp",
-        move |param: Dynamic, bank: INT, value: INT| {
-            let p = global(&s, &param, bank)?;
-            request(
-                &s,
-                Opcode::Sgp,
-                p,
-                byte("bank", bank)?,
-                word("value", value)?,
-            )
-            .map(|_| ())
-        }
-    );
-    let s = session.clone();
-    volatile!(engine, "stgp", move |param: Dynamic, bank: INT| {
-        let p = global(&s, &param, bank)?;
-        request(&s, Opcode::Stgp, p, byte("bank", bank)?, 0).map(|_| ())
-    });
-    let s = session.clone();
-    volatile!(engine, "rsgp", move |param: Dynamic, bank: INT| {
-        let p = global(&s, &param, bank)?;
-        request(&s, Opcode::Rsgp, p, byte("bank", bank)?, 0).map(|_| ())
-    });
+/// Which parameters a family of functions reaches.
+#[derive(Debug, Clone, Copy)]
+enum Table {
+    /// Axis parameters, by motor: GAP, SAP, STAP, RSAP.
+    Axis,
+    /// Global parameters, by bank: GGP, SGP, STGP, RSGP.
+    Global,
+}
 
-    // Motion: (name, command, type).
+impl Table {
+    /// The function names and commands of get, set, store and restore.
+    fn functions(self) -> [(&'static str, Opcode); 4] {
+        match self {
+            Table::Axis => [
+                ("gap", Opcode::Gap),
+                ("sap", Opcode::Sap),
+                ("stap", Opcode::Stap),
+                ("rsap", Opcode::Rsap),
+            ],
+            Table::Global => [
+                ("ggp", Opcode::Ggp),
+                ("sgp", Opcode::Sgp),
+                ("stgp", Opcode::Stgp),
+                ("rsgp", Opcode::Rsgp),
+            ],
+        }
+    }
+
+    /// What the second argument is.
+    fn index(self) -> &'static str {
+        match self {
+            Table::Axis => "motor",
+            Table::Global => "bank",
+        }
+    }
+
+    /// The number of a parameter given by number or name; a global parameter named must be in
+    /// bank `index`.
+    fn number(self, session: &Shared, param: &Dynamic, index: INT) -> Fallible<u8> {
+        match self {
+            Table::Axis => axis(session, param),
+            Table::Global => global(session, param, index),
+        }
+    }
+}
+
+/// The get, set, store and restore functions of `table` (TMCL order: parameter, motor/bank,
+/// value).
+fn register_parameters(engine: &mut Engine, session: &Shared, table: Table) {
+    let [(get, get_command), (set, set_command), store, restore] = table.functions();
+    let what = table.index();
+    let s = session.clone();
+    volatile!(engine, get, move |param: Dynamic, index: INT| {
+        let p = table.number(&s, &param, index)?;
+        request(&s, get_command, p, byte(what, index)?, 0)
+    });
+    let s = session.clone();
+    volatile!(engine, set, move |param: Dynamic,
+                                 index: INT,
+                                 value: INT| {
+        let p = table.number(&s, &param, index)?;
+        request(
+            &s,
+            set_command,
+            p,
+            byte(what, index)?,
+            word("value", value)?,
+        )
+        .map(|_| ())
+    });
+    for (name, command) in [store, restore] {
+        let s = session.clone();
+        volatile!(engine, name, move |param: Dynamic, index: INT| {
+            let p = table.number(&s, &param, index)?;
+            request(&s, command, p, byte(what, index)?, 0).map(|_| ())
+        });
+    }
+}
+
+/// Moves, stops and reference searches.
+fn register_motion(engine: &mut Engine, session: &Shared) {
+    // (name, command, type): MVP and the rotations take a motor and a value.
     for (name, command, type_) in [
         ("mvp_abs", Opcode::Mvp, 0),
         ("mvp_rel", Opcode::Mvp, 1),
@@ -106,35 +137,20 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     ] {
         let s = session.clone();
         volatile!(engine, name, move |motor: INT, value: INT| {
-            request(
-                &s,
-                command,
-                type_,
-                byte("motor", motor)?,
-                word("value", value)?,
-            )
-            .map(|_| ())
+            let (motor, value) = (byte("motor", motor)?, word("value", value)?);
+            request(&s, command, type_, motor, value).map(|_| ())
         });
     }
-    let s = session.clone();
-    volatile!(engine, "mst", move |motor: INT| request(
-        &s,
-        Opcode::Mst,
-        0,
-        byte("motor", motor)?,
-        0
-    )
-    .map(|_| ()));
-    for (name, type_) in [("rfs_start", 0), ("rfs_stop", 1)] {
+    // (name, command, type): these take a motor only.
+    for (name, command, type_) in [
+        ("mst", Opcode::Mst, 0),
+        ("rfs_start", Opcode::Rfs, 0),
+        ("rfs_stop", Opcode::Rfs, 1),
+    ] {
         let s = session.clone();
-        volatile!(engine, name, move |motor: INT| request(
-            &s,
-            Opcode::Rfs,
-            type_,
-            byte("motor", motor)?,
-            0
-        )
-        .map(|_| ()));
+        volatile!(engine, name, move |motor: INT| {
+            request(&s, command, type_, byte("motor", motor)?, 0).map(|_| ())
+        });
     }
     let s = session.clone();
     volatile!(engine, "rfs_status", move |motor: INT| request(
@@ -144,17 +160,22 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         byte("motor", motor)?,
         0
     ));
+    let s = session.clone();
+    volatile!(engine, "wait_pos", move |motor: INT, timeout_ms: INT| {
+        let motor = byte("motor", motor)?;
+        let what = format!("motor {motor} to reach its target position");
+        waiting::until(&what, duration(timeout_ms)?, || {
+            Ok(request(&s, Opcode::Gap, 8, motor, 0)? == 1)
+        })
+    });
+}
 
+/// Inputs and outputs (SIO, GIO) and stored coordinates (SCO, GCO).
+fn register_io(engine: &mut Engine, session: &Shared) {
     let s = session.clone();
     volatile!(engine, "sio", move |port: INT, bank: INT, value: INT| {
-        request(
-            &s,
-            Opcode::Sio,
-            byte("port", port)?,
-            byte("bank", bank)?,
-            word("value", value)?,
-        )
-        .map(|_| ())
+        let (port, bank) = (byte("port", port)?, byte("bank", bank)?);
+        request(&s, Opcode::Sio, port, bank, word("value", value)?).map(|_| ())
     });
     let s = session.clone();
     volatile!(engine, "gio", move |port: INT, bank: INT| request(
@@ -166,14 +187,8 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     ));
     let s = session.clone();
     volatile!(engine, "sco", move |n: INT, motor: INT, position: INT| {
-        request(
-            &s,
-            Opcode::Sco,
-            byte("coordinate", n)?,
-            byte("motor", motor)?,
-            word("position", position)?,
-        )
-        .map(|_| ())
+        let (n, motor) = (byte("coordinate", n)?, byte("motor", motor)?);
+        request(&s, Opcode::Sco, n, motor, word("position", position)?).map(|_| ())
     });
     let s = session.clone();
     volatile!(engine, "gco", move |n: INT, motor: INT| request(
@@ -183,16 +198,10 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         byte("motor", motor)?,
         0
     ));
+}
 
-    let s = session.clone();
-    volatile!(engine, "wait_pos", move |motor: INT, timeout_ms: INT| {
-        let motor = byte("motor", motor)?;
-        let what = format!("motor {motor} to reach its target position");
-        waiting::until(&what, duration(timeout_ms)?, || {
-            Ok(request(&s, Opcode::Gap, 8, motor, 0)? == 1)
-        })
-    });
-
+/// Which module the functions talk to, and what it is.
+fn register_module(engine: &mut Engine, session: &Shared) {
     let s = session.clone();
     volatile!(engine, "target", move |address: Dynamic| {
         let module = module_address(&address)?;
@@ -206,11 +215,15 @@ pub fn register(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
         let exchange = checked(session.in_binary(target, |x| {
             x.request(target, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0))
         }))?;
-        Ok(match exchange.answer {
-            Answer::Version(text) => text,
+        Ok(match exchange.reply {
+            TmclReply::Version(text) => text,
             _ => exchange.raw,
         })
     });
+}
+
+/// Programs in the module's memory: download (through the sandbox), status, run and stop.
+fn register_programs(engine: &mut Engine, session: &Shared, sandbox: &Rc<Sandbox>) {
     let s = session.clone();
     let files = sandbox.clone();
     volatile!(engine, "download", move |path: &str| -> Fallible<INT> {
@@ -250,28 +263,28 @@ fn request(session: &Shared, command: Opcode, type_: u8, motor: u8, value: i32) 
     value_of(checked(session.borrow_mut().request(target, instruction))?)
 }
 
-fn checked(result: Result<Exchange, crate::session::SessionError>) -> Fallible<Exchange> {
-    device(result.and_then(Exchange::checked))
+fn checked(result: Result<TmclExchange, crate::session::SessionError>) -> Fallible<TmclExchange> {
+    device(result.and_then(TmclExchange::checked))
 }
 
-fn value_of(exchange: Exchange) -> Fallible<INT> {
-    match exchange.answer {
-        Answer::Reply { value, .. } => Ok(value.into()),
+fn value_of(exchange: TmclExchange) -> Fallible<INT> {
+    match exchange.reply {
+        TmclReply::Status { value, .. } => Ok(value.into()),
         _ => Ok(0),
     }
 }
 
-fn reply_map(exchange: Exchange) -> Map {
-    let (status, value) = match &exchange.answer {
-        Answer::Reply { status, value } => (*status, *value),
+fn reply_map(exchange: TmclExchange) -> Map {
+    let (status, value) = match &exchange.reply {
+        TmclReply::Status { status, value } => (*status, *value),
         _ => (Status::Ok, 0),
     };
     let mut map = Map::new();
     map.insert("status".into(), INT::from(status.code()).into());
     map.insert("value".into(), INT::from(value).into());
     map.insert("ok".into(), exchange.ok().into());
-    let raw = match &exchange.answer {
-        Answer::Version(text) => text.clone(),
+    let raw = match &exchange.reply {
+        TmclReply::Version(text) => text.clone(),
         _ => exchange.raw.clone(),
     };
     map.insert("raw".into(), raw.into());
@@ -351,23 +364,20 @@ fn program(sandbox: &Sandbox, path: &str, profile: &Profile) -> Fallible<Vec<Ins
     let bytes = sandbox
         .read(path, READ_LIMIT)
         .map_err(|r| refused(r.to_string()))?;
-    crate::dialect::tmcl::asm::load_program(&bytes, path, profile).map_err(|e| {
-        let first = e.to_string();
-        let place = first
-            .strip_prefix(path)
-            .and_then(|rest| rest.strip_prefix(':'))
-            .and_then(|rest| {
-                let mut parts = rest.splitn(3, ':');
-                let line = parts.next()?.parse::<usize>().ok()?;
-                let column = parts.next()?.parse::<usize>().ok()?;
-                Some(format!(
-                    " (the first problem is at line {line}, column {column})"
-                ))
-            })
-            .unwrap_or_default();
+    asm::load_program(&bytes, path, profile).map_err(|e| {
+        let place = match &e {
+            LoadError::Source(errors) => errors.errors.first().map(|first| {
+                format!(
+                    " (the first problem is at line {}, column {})",
+                    first.at.line, first.at.column
+                )
+            }),
+            _ => None,
+        };
         refused(format!(
-            "{path} is not a program for the {}{place}; `tmclsh asm {path}` shows why",
-            profile.module
+            "{path} is not a program for the {}{}; `tmclsh asm {path}` shows why",
+            profile.module,
+            place.unwrap_or_default()
         ))
     })
 }

@@ -30,7 +30,7 @@
 use super::commands::ReplyShape;
 use super::format::{FIXED_DECIMALS, FLOAT_DECIMALS};
 use super::items::{DataItem, Value, is_uuid, parse_hms, parse_named, parse_reply_float};
-use super::response::{Expectation, Response, full_width_flags};
+use super::reply::{Expectation, Smd4Reply, full_width_flags};
 use super::types::{ItemType, parse_dotted};
 
 /// Why a reply is line noise rather than the answer to the request.
@@ -88,7 +88,7 @@ pub fn is_reply_to(from: Option<u32>, to: Option<u32>) -> bool {
 }
 
 /// Checks `reply` to a request sent to address `to` against what its command declares.
-pub fn check_reply(reply: &Response, expect: &Expectation, to: Option<u32>) -> Result<(), Noise> {
+pub fn check_reply(reply: &Smd4Reply, expect: &Expectation, to: Option<u32>) -> Result<(), Noise> {
     let printable = |line: &String| line.bytes().all(|b| (0x20..=0x7E).contains(&b));
     let mut lines = std::iter::once(&reply.raw).chain(&reply.lines);
     if let Some(index) = lines.position(|l| !printable(l)) {

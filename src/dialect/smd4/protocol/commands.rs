@@ -136,7 +136,7 @@ pub struct Example {
 
 /// One command of the SMD4.
 #[derive(Debug, Clone, PartialEq)]
-pub struct CommandSpec {
+pub struct Smd4Command {
     /// Canonical mnemonic, upper case (`MOTOR:VMAX`).
     pub mnemonic: String,
     /// Other spellings the drive may accept (`SYS:STORE`).
@@ -185,7 +185,7 @@ pub struct CommandSpec {
     pub uncertain_reason: String,
 }
 
-impl CommandSpec {
+impl Smd4Command {
     /// The type of the reply's value item.
     pub fn value_item_type(&self) -> Option<ItemType> {
         self.value_type.or(self.arg.as_ref().map(|a| a.ty))
@@ -215,7 +215,7 @@ impl CommandSpec {
         self.arg.is_some()
     }
 
-    pub(crate) fn from_row(row: &CommandRow) -> Result<CommandSpec, String> {
+    pub(crate) fn from_row(row: &CommandRow) -> Result<Smd4Command, String> {
         let name = &row.mnemonic;
         let kind = match row.kind.as_str() {
             "setting" => Kind::Setting,
@@ -268,7 +268,7 @@ impl CommandSpec {
                 "{name}: a value reply needs value_type or arg_type"
             ));
         }
-        Ok(CommandSpec {
+        Ok(Smd4Command {
             mnemonic: name.to_ascii_uppercase(),
             aliases: row.aliases.iter().map(|a| a.to_ascii_uppercase()).collect(),
             group: row.group.clone(),
@@ -327,26 +327,26 @@ fn choices(row: &CommandRow, labels: &[Choice]) -> Vec<Choice> {
 
 /// All commands, looked up by mnemonic in any case.
 #[derive(Debug, Clone)]
-pub struct CommandTable {
-    commands: Vec<CommandSpec>,
+pub struct Smd4CommandTable {
+    commands: Vec<Smd4Command>,
 }
 
-impl CommandTable {
-    pub(crate) fn from_rows(rows: &[CommandRow]) -> Result<CommandTable, String> {
+impl Smd4CommandTable {
+    pub(crate) fn from_rows(rows: &[CommandRow]) -> Result<Smd4CommandTable, String> {
         let commands = rows
             .iter()
-            .map(CommandSpec::from_row)
+            .map(Smd4Command::from_row)
             .collect::<Result<Vec<_>, _>>()?;
-        Ok(CommandTable { commands })
+        Ok(Smd4CommandTable { commands })
     }
 
     /// Every command, in the document's order.
-    pub fn iter(&self) -> impl Iterator<Item = &CommandSpec> {
+    pub fn iter(&self) -> impl Iterator<Item = &Smd4Command> {
         self.commands.iter()
     }
 
     /// The command `name` (any case, aliases included).
-    pub fn get(&self, name: &str) -> Option<&CommandSpec> {
+    pub fn get(&self, name: &str) -> Option<&Smd4Command> {
         self.commands.iter().find(|c| c.answers_to(name.trim()))
     }
 

@@ -1,10 +1,12 @@
 //! Completion of the hierarchical mnemonics (`MOTOR:`, `SYS:`, `COMS:NET:` …) and of argument
 //! values, and the hint text (usage, unit, range, default) shown while typing. All from the table.
 
-use super::commands::{CommandSpec, CommandTable, ReplyShape};
+use crate::dialect::grammar::Candidate;
+
+use super::commands::{ReplyShape, Smd4Command, Smd4CommandTable};
 
 /// The line with its placeholder: `MOTOR:VMAX[,<FLOAT Hz>]`, `MOTOR:RUNV,<+|->`, `SYS:CLR`.
-pub fn usage(spec: &CommandSpec) -> String {
+pub fn usage(spec: &Smd4Command) -> String {
     match &spec.arg {
         None => spec.mnemonic.clone(),
         Some(_) if spec.readable => format!("{}[,{}]", spec.mnemonic, placeholder(spec)),
@@ -12,7 +14,7 @@ pub fn usage(spec: &CommandSpec) -> String {
     }
 }
 
-fn placeholder(spec: &CommandSpec) -> String {
+fn placeholder(spec: &Smd4Command) -> String {
     let Some(arg) = &spec.arg else {
         return String::new();
     };
@@ -27,7 +29,7 @@ fn placeholder(spec: &CommandSpec) -> String {
 }
 
 /// What the argument accepts: `1..15000 Hz, default 1000` or `0 Thermocouple | 1 RTD, default 0`.
-pub fn arg_summary(spec: &CommandSpec) -> String {
+pub fn arg_summary(spec: &Smd4Command) -> String {
     let Some(arg) = &spec.arg else {
         return "no argument".into();
     };
@@ -64,15 +66,15 @@ pub fn arg_summary(spec: &CommandSpec) -> String {
 /// The commands whose mnemonic contains `filter` (any case), in the document's order: what
 /// `tmclsh --protocol smd4 params` and the shell's `:params` list.
 pub fn matching<'a>(
-    table: &'a CommandTable,
+    table: &'a Smd4CommandTable,
     filter: &str,
-) -> impl Iterator<Item = &'a CommandSpec> + 'a {
+) -> impl Iterator<Item = &'a Smd4Command> + 'a {
     let needle = filter.to_ascii_uppercase();
     table.iter().filter(move |s| s.mnemonic.contains(&needle))
 }
 
 /// One row of the command table: mnemonic, access (R, W, R/W) and what the argument accepts.
-pub fn table_row(spec: &CommandSpec) -> String {
+pub fn table_row(spec: &Smd4Command) -> String {
     let access = match (spec.readable, spec.writable) {
         (true, true) => "R/W",
         (true, false) => "R",
@@ -83,7 +85,7 @@ pub fn table_row(spec: &CommandSpec) -> String {
 }
 
 /// One line of help: usage, accepted values, access, the reply and the description.
-pub fn hint(spec: &CommandSpec) -> String {
+pub fn hint(spec: &Smd4Command) -> String {
     let access = match (spec.readable, spec.writable, spec.arg.is_some()) {
         (true, true, true) => "read/write",
         (true, _, _) => "read-only",
@@ -108,18 +110,9 @@ pub fn hint(spec: &CommandSpec) -> String {
     format!("{text} — {}", spec.description)
 }
 
-/// A completion candidate.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Candidate {
-    /// Text that replaces the word being completed.
-    pub replacement: String,
-    /// What to show in a list (`1 (Remote)`).
-    pub display: String,
-}
-
 /// Candidates for the word that starts at byte `start` of the line.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub struct Completion {
+pub struct WordCompletion {
     /// Byte offset where the replaced word starts.
     pub start: usize,
     /// Candidates, sorted.
@@ -128,17 +121,17 @@ pub struct Completion {
 
 /// Completes `line` (the text before the cursor): the mnemonic one level at a time (`M` →
 /// `MOTOR:`, `COMS:` → `COMS:NET:`, `COMS:SERIAL:`), or the value of the first argument.
-pub fn complete(table: &CommandTable, line: &str) -> Completion {
+pub fn complete(table: &Smd4CommandTable, line: &str) -> WordCompletion {
     let start = prefix_len(line);
     let body = &line[start..];
     match body.split_once(',') {
-        None => Completion {
+        None => WordCompletion {
             start,
             candidates: complete_mnemonic(table, body),
         },
         Some((mnemonic, arg)) if !arg.contains(',') => {
             let lead = arg.len() - arg.trim_start().len();
-            Completion {
+            WordCompletion {
                 start: start + mnemonic.len() + 1 + lead,
                 candidates: table
                     .get(mnemonic)
@@ -146,7 +139,7 @@ pub fn complete(table: &CommandTable, line: &str) -> Completion {
                     .unwrap_or_default(),
             }
         }
-        Some(_) => Completion {
+        Some(_) => WordCompletion {
             start: line.len(),
             candidates: Vec::new(),
         },
@@ -155,7 +148,7 @@ pub fn complete(table: &CommandTable, line: &str) -> Completion {
 
 /// The hint for what has been typed so far: the command's help once the mnemonic is complete,
 /// the accepted values after the comma.
-pub fn hint_for_line(table: &CommandTable, line: &str) -> Option<String> {
+pub fn hint_for_line(table: &Smd4CommandTable, line: &str) -> Option<String> {
     let body = &line[prefix_len(line)..];
     match body.split_once(',') {
         None => table.get(body).map(hint),
@@ -173,7 +166,7 @@ fn prefix_len(line: &str) -> usize {
     1 + digits + comma
 }
 
-fn complete_mnemonic(table: &CommandTable, typed: &str) -> Vec<Candidate> {
+fn complete_mnemonic(table: &Smd4CommandTable, typed: &str) -> Vec<Candidate> {
     let typed_upper = typed.to_ascii_uppercase();
     let mut words: Vec<String> = table
         .mnemonics()
@@ -194,7 +187,7 @@ fn complete_mnemonic(table: &CommandTable, typed: &str) -> Vec<Candidate> {
         .collect()
 }
 
-fn complete_arg(spec: &CommandSpec, typed: &str) -> Vec<Candidate> {
+fn complete_arg(spec: &Smd4Command, typed: &str) -> Vec<Candidate> {
     let Some(arg) = &spec.arg else {
         return Vec::new();
     };
@@ -216,7 +209,7 @@ mod tests {
     use super::*;
     use crate::dialect::smd4::protocol::Smd4Spec;
 
-    fn words(completion: &Completion) -> Vec<&str> {
+    fn words(completion: &WordCompletion) -> Vec<&str> {
         completion
             .candidates
             .iter()

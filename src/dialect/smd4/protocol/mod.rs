@@ -5,7 +5,7 @@
 //!
 //! A session uses it like this: [`validate()`] the typed [`Request`] (refuse with exit 2), send
 //! [`Request::wire`], feed the received lines to a [`ReplyCollector`] built from
-//! [`Expectation::for_request`], [`check_reply`] the [`Response`] (a [`Noise`] means exit 3) and
+//! [`Expectation::for_request`], [`check_reply`] the [`Smd4Reply`] (a [`Noise`] means exit 3) and
 //! look at it (a [`DeviceError`] means exit 1).
 
 pub mod check;
@@ -17,8 +17,8 @@ pub mod hints;
 pub mod items;
 pub(crate) mod load;
 pub mod multiline;
+pub mod reply;
 pub mod request;
-pub mod response;
 pub mod spec;
 pub mod types;
 pub mod validate;
@@ -28,16 +28,16 @@ mod tests;
 
 pub use check::{Noise, check_reply, is_reply_to};
 pub use commands::{
-    ArgProblem, ArgSpec, Choice, CommandSpec, CommandTable, Example, Kind, ReplyShape,
+    ArgProblem, ArgSpec, Choice, Example, Kind, ReplyShape, Smd4Command, Smd4CommandTable,
 };
 pub use errors::{DeviceError, ErrorCode, ErrorInfo};
 pub use flags::{Eflags, FlagBit, FlagTable, Sflags};
 pub use format::{ErrorSpelling, FlagCase, FloatStyle};
-pub use hints::{Candidate, Completion, complete, hint, hint_for_line, usage};
+pub use hints::{WordCompletion, complete, hint, hint_for_line, usage};
 pub use items::{DataItem, Value};
-pub use multiline::{Progress, ReplyCollector, default_quiet_gap};
+pub use multiline::{CollectorState, ReplyCollector, default_quiet_gap};
+pub use reply::{Expectation, ReplyError, Smd4Reply, parse_reply};
 pub use request::{ADDRESSING_HELP, PrefixStyle, Request, RequestError};
-pub use response::{Expectation, Response, ResponseError, parse_response};
 pub use spec::{SimConstants, Smd4Spec, SnapshotSpec};
 pub use types::{ArgValue, ItemType};
-pub use validate::{Access, Checked, MAX_ADDRESS, ValidationError, validate};
+pub use validate::{Action, Checked, MAX_ADDRESS, ValidationError, validate};

@@ -7,13 +7,13 @@
 //! `data/smd4.toml`; make it configurable, e.g. longer on slow RS485 links):
 //!
 //! ```
-//! use tmclsh::dialect::smd4::protocol::{Expectation, Progress, ReplyCollector, Smd4Spec};
+//! use tmclsh::dialect::smd4::protocol::{Expectation, CollectorState, ReplyCollector, Smd4Spec};
 //! let table = &Smd4Spec::builtin().commands;
 //! let mut collector = ReplyCollector::new(Expectation::for_command(table.get("COMS:NET:IPCONF").unwrap()));
 //! // The session reads a line, feeds it, and looks at what the collector needs next:
-//! assert_eq!(collector.push_line("0x0000,0x0000,\r\n").unwrap(), Progress::AwaitQuiet);
+//! assert_eq!(collector.push_line("0x0000,0x0000,\r\n").unwrap(), CollectorState::AwaitQuiet);
 //! // … more lines arrive; each is fed the same way …
-//! assert_eq!(collector.push_line("Ethernet interface:").unwrap(), Progress::AwaitQuiet);
+//! assert_eq!(collector.push_line("Ethernet interface:").unwrap(), CollectorState::AwaitQuiet);
 //! // … until nothing arrived for the quiet gap after the last byte:
 //! let reply = collector.finish_quiet().unwrap();
 //! assert_eq!(reply.lines, ["Ethernet interface:"]);
@@ -25,7 +25,7 @@
 use std::time::Duration;
 
 use super::Smd4Spec;
-use super::response::{Expectation, Response, ResponseError, parse_response};
+use super::reply::{Expectation, ReplyError, Smd4Reply, parse_reply};
 
 /// The quiet gap that ends a multi-line reply, from `data/smd4.toml`.
 pub fn default_quiet_gap() -> Duration {
@@ -34,9 +34,9 @@ pub fn default_quiet_gap() -> Duration {
 
 /// What the collector needs after a line.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Progress {
+pub enum CollectorState {
     /// The reply is complete.
-    Complete(Box<Response>),
+    Complete(Box<Smd4Reply>),
     /// More lines may follow: keep reading until the line has been quiet for the gap, then call
     /// [`ReplyCollector::finish_quiet`].
     AwaitQuiet,
@@ -46,7 +46,7 @@ pub enum Progress {
 #[derive(Debug, Clone)]
 pub struct ReplyCollector {
     expect: Expectation,
-    head: Option<Response>,
+    head: Option<Smd4Reply>,
 }
 
 impl ReplyCollector {
@@ -57,18 +57,18 @@ impl ReplyCollector {
 
     /// Feeds one received line (line ending optional). The first line must be a reply; an error
     /// leaves the collector as it was, so a session may skip line noise and go on.
-    pub fn push_line(&mut self, line: &str) -> Result<Progress, ResponseError> {
+    pub fn push_line(&mut self, line: &str) -> Result<CollectorState, ReplyError> {
         let text = line.trim_end_matches(['\r', '\n']);
         if let Some(head) = &mut self.head {
             head.lines.push(text.to_string());
-            return Ok(Progress::AwaitQuiet);
+            return Ok(CollectorState::AwaitQuiet);
         }
-        let reply = parse_response(text, &self.expect)?;
+        let reply = parse_reply(text, &self.expect)?;
         if self.expect.multi_line() && reply.is_ok() {
             self.head = Some(reply);
-            Ok(Progress::AwaitQuiet)
+            Ok(CollectorState::AwaitQuiet)
         } else {
-            Ok(Progress::Complete(Box::new(reply)))
+            Ok(CollectorState::Complete(Box::new(reply)))
         }
     }
 
@@ -78,7 +78,7 @@ impl ReplyCollector {
     }
 
     /// The line has been quiet for the gap: the reply is complete. `None` if no first line came.
-    pub fn finish_quiet(self) -> Option<Response> {
+    pub fn finish_quiet(self) -> Option<Smd4Reply> {
         self.head
     }
 }

@@ -5,7 +5,7 @@ use std::net::Ipv4Addr;
 use std::sync::OnceLock;
 use std::time::Duration;
 
-use super::commands::CommandTable;
+use super::commands::Smd4CommandTable;
 use super::errors::ErrorInfo;
 use super::flags::FlagTable;
 use super::load::Smd4File;
@@ -46,7 +46,7 @@ pub struct SnapshotSpec {
 #[derive(Debug, Clone)]
 pub struct Smd4Spec {
     /// The commands.
-    pub commands: CommandTable,
+    pub commands: Smd4CommandTable,
     /// SFLAGS bits.
     pub sflags: FlagTable,
     /// EFLAGS bits.
@@ -77,7 +77,7 @@ impl Smd4Spec {
                 .map(|t| t.parse().map_err(|_| format!("bad IPv4 address '{t}'")))
                 .unwrap_or(Ok(fallback))
         };
-        let commands = CommandTable::from_rows(&file.command)?;
+        let commands = Smd4CommandTable::from_rows(&file.command)?;
         let rules = file.snapshot.rules.clone();
         rules.check_names(|name| commands.get(name).is_some_and(|c| c.mnemonic == name))?;
         Ok(Smd4Spec {

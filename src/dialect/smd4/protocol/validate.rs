@@ -4,7 +4,7 @@
 
 use crate::suggest::did_you_mean;
 
-use super::commands::{ArgProblem, CommandSpec, CommandTable};
+use super::commands::{ArgProblem, Smd4Command, Smd4CommandTable};
 use super::hints::usage;
 use super::request::Request;
 use super::types::{ArgValue, ItemType};
@@ -14,7 +14,7 @@ pub const MAX_ADDRESS: u32 = 247;
 
 /// What a valid request does.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Access {
+pub enum Action {
     /// Reads the value.
     Read,
     /// Writes this value (or starts motion with it).
@@ -27,9 +27,9 @@ pub enum Access {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Checked<'a> {
     /// Its command.
-    pub spec: &'a CommandSpec,
+    pub spec: &'a Smd4Command,
     /// What it does.
-    pub access: Access,
+    pub action: Action,
 }
 
 /// Why a request is refused before sending.
@@ -124,7 +124,7 @@ fn unit_suffix(unit: &str) -> String {
 /// Validates `request` against `table`.
 pub fn validate<'a>(
     request: &Request,
-    table: &'a CommandTable,
+    table: &'a Smd4CommandTable,
 ) -> Result<Checked<'a>, ValidationError> {
     if let Some(address) = request.address.filter(|a| *a > MAX_ADDRESS) {
         return Err(ValidationError::BadAddress(address));
@@ -142,22 +142,22 @@ pub fn validate<'a>(
         got: request.args.len(),
         usage: usage(spec),
     };
-    let access = match (request.args.as_slice(), &spec.arg) {
-        ([], Some(_)) if spec.readable => Access::Read,
+    let action = match (request.args.as_slice(), &spec.arg) {
+        ([], Some(_)) if spec.readable => Action::Read,
         ([], Some(_)) => {
             return Err(ValidationError::NotReadable {
                 mnemonic,
                 usage: usage(spec),
             });
         }
-        ([], None) if spec.readable => Access::Read,
-        ([], None) => Access::Run,
+        ([], None) if spec.readable => Action::Read,
+        ([], None) => Action::Run,
         ([_, ..], None) if spec.readable && !spec.writable => {
             return Err(ValidationError::NotWritable { mnemonic });
         }
         ([_, ..], None) => return Err(count_error("no arguments")),
         ([text], Some(arg)) => match arg.check(text) {
-            Ok(value) => Access::Write(value),
+            Ok(value) => Action::Write(value),
             Err(ArgProblem::Type) => {
                 return Err(ValidationError::ArgumentType {
                     mnemonic,
@@ -184,5 +184,5 @@ pub fn validate<'a>(
         },
         (_, Some(_)) => return Err(count_error("one argument")),
     };
-    Ok(Checked { spec, access })
+    Ok(Checked { spec, action })
 }

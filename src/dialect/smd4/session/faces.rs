@@ -9,7 +9,8 @@ use crate::commission::ParamDevice;
 use crate::dialect::session::{BusScan, DialectSession, Reply};
 use crate::dialect::smd4::{Smd4Grammar, config, help, helpers, render, scan};
 use crate::dialect::{Dialect, Grammar, Helper};
-use crate::script::{Report, Script};
+use crate::exit::Failure;
+use crate::script::Script;
 use crate::session::SessionError;
 use crate::session::core::SessionCore;
 use crate::session::transcript::Header;
@@ -110,7 +111,7 @@ impl DialectSession for Smd4Session {
     fn run_script(
         self: Box<Self>,
         script: &Script,
-    ) -> (Box<dyn DialectSession>, Result<(), Report>) {
+    ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
         let (session, result) = script.run(
             *self,
             |s, text| s.annotate(text),

@@ -16,7 +16,7 @@ mod receive;
 use std::time::Duration;
 
 use crate::dialect::session::{DialectSession, Refusal};
-use crate::dialect::smd4::protocol::{PrefixStyle, Request, Response, Smd4Spec, validate};
+use crate::dialect::smd4::protocol::{PrefixStyle, Request, Smd4Reply, Smd4Spec, validate};
 use crate::link::Link;
 use crate::session::core::SessionCore;
 use crate::session::transcript::Transcript;
@@ -25,7 +25,7 @@ use crate::session::{SessionError, SessionOptions};
 
 /// SMD4-specific settings.
 #[derive(Debug, Clone, Copy)]
-pub struct Smd4Options {
+pub struct Smd4SessionOptions {
     /// `@N` prefix for requests without one (`--address`); `None` sends no prefix.
     pub address: Option<u32>,
     /// Whether a comma follows the prefix (`--prefix-comma`).
@@ -34,9 +34,9 @@ pub struct Smd4Options {
     pub quiet_gap: Duration,
 }
 
-impl Default for Smd4Options {
+impl Default for Smd4SessionOptions {
     fn default() -> Self {
-        Smd4Options {
+        Smd4SessionOptions {
             address: None,
             prefix: PrefixStyle::Attached,
             quiet_gap: crate::dialect::smd4::protocol::default_quiet_gap(),
@@ -52,18 +52,18 @@ pub struct Smd4Exchange {
     /// What was sent.
     pub request: Request,
     /// The reply; `None` for broadcasts and commands the drive does not answer.
-    pub response: Option<Response>,
+    pub reply: Option<Smd4Reply>,
 }
 
 impl Smd4Exchange {
     /// Whether no error code came back.
     pub fn ok(&self) -> bool {
-        self.response.as_ref().is_none_or(Response::is_ok)
+        self.reply.as_ref().is_none_or(Smd4Reply::is_ok)
     }
 
     /// The reply as received: the first line, then any following lines, without line endings.
     pub fn raw(&self) -> String {
-        match &self.response {
+        match &self.reply {
             None => String::new(),
             Some(r) if r.lines.is_empty() => r.raw.clone(),
             Some(r) => format!("{}\n{}", r.raw, r.lines.join("\n")),
@@ -80,7 +80,7 @@ impl Smd4Exchange {
 
     /// The error code the drive answered with, if any.
     pub fn refusal(&self) -> Option<Refusal> {
-        let error = self.response.as_ref()?.error.as_ref()?;
+        let error = self.reply.as_ref()?.error.as_ref()?;
         Some(Refusal {
             module: drive_name(self.request.address),
             sent: self.sent.clone(),
@@ -98,7 +98,7 @@ pub fn drive_name(address: Option<u32>) -> String {
 pub struct Smd4Session {
     core: SessionCore,
     spec: &'static Smd4Spec,
-    smd4: Smd4Options,
+    smd4: Smd4SessionOptions,
     /// An addressed drive answered without its `@N,` prefix: replies cannot be told apart.
     unprefixed_replies: bool,
 }
@@ -108,7 +108,7 @@ impl Smd4Session {
     pub fn open(
         link: Box<dyn Link>,
         options: SessionOptions,
-        smd4: Smd4Options,
+        smd4: Smd4SessionOptions,
         transcript: Option<Transcript>,
     ) -> Result<Self, SessionError> {
         let mut session = Smd4Session {
@@ -189,7 +189,7 @@ impl Smd4Session {
         let exchange = Smd4Exchange {
             sent,
             request,
-            response: result?,
+            reply: result?,
         };
         if exchange.ok() && spec.is_some_and(|s| s.starts_motion) {
             self.core.moved.insert(exchange.request.address);
@@ -203,7 +203,7 @@ impl Smd4Session {
         &mut self,
         request: &Request,
         silent: bool,
-    ) -> Result<Option<Response>, SessionError> {
+    ) -> Result<Option<Smd4Reply>, SessionError> {
         self.core.wire.send(
             &request.wire(self.smd4.prefix),
             format_args!("to {}", drive_name(request.address)),

@@ -5,7 +5,8 @@
 use std::time::Instant;
 
 use crate::dialect::smd4::protocol::{
-    Expectation, PrefixStyle, Progress, ReplyCollector, Request, Response, check_reply, is_reply_to,
+    CollectorState, Expectation, PrefixStyle, ReplyCollector, Request, Smd4Reply, check_reply,
+    is_reply_to,
 };
 use crate::session::SessionError;
 use crate::session::rx::is_line_break;
@@ -25,7 +26,7 @@ impl Smd4Session {
     /// when nothing arrived for the quiet gap, a single-line one once the bytes after it were
     /// seen. Lines are consumed as they are judged, so a flood costs neither time beyond the
     /// deadline nor memory.
-    pub(super) fn receive(&mut self, request: &Request) -> Result<Response, SessionError> {
+    pub(super) fn receive(&mut self, request: &Request) -> Result<Smd4Reply, SessionError> {
         let expect = Expectation::for_request(&self.spec.commands, request);
         let mut collector = ReplyCollector::new(expect.clone());
         let deadline = Instant::now() + self.core.options.timeout;
@@ -70,26 +71,18 @@ impl Smd4Session {
                 }
                 let line = String::from_utf8_lossy(&self.core.wire.rx.bytes()[..end]).into_owned();
                 match collector.push_line(&line) {
-                    Ok(Progress::Complete(reply)) if foreign(&reply, request) => {
-                        let kind = format!(
-                            "a reply from drive {} while waiting for {}",
-                            drive_name(reply.address),
-                            drive_name(request.address)
-                        );
-                        self.core.wire.discard(used, &kind);
+                    Ok(CollectorState::Complete(reply)) if foreign(&reply, request) => {
+                        self.discard_foreign(used, &reply, request);
                         collector = ReplyCollector::new(expect.clone());
                     }
-                    Ok(Progress::Complete(reply)) => {
+                    Ok(CollectorState::Complete(reply)) => {
                         return self.settle(*reply, reply_bytes, used, deadline, &expect, request);
                     }
-                    Ok(Progress::AwaitQuiet) => {
+                    Ok(CollectorState::AwaitQuiet) => {
                         reply_bytes.extend(self.core.wire.rx.take(used));
                         if reply_bytes.len() > MAX_REPLY {
-                            return Err(self.endless(
-                                request,
-                                reply_bytes,
-                                "is longer than 64 KiB",
-                            ));
+                            let what = "is longer than 64 KiB";
+                            return Err(self.endless(request, reply_bytes, what));
                         }
                     }
                     Err(_) => self.core.wire.discard(used, UNEXPECTED),
@@ -111,21 +104,37 @@ impl Smd4Session {
                     return self.finish(reply, &reply_bytes, &expect, request);
                 }
             } else if now >= deadline || !self.core.wire.fill(deadline)? {
-                let partial = self.core.wire.rx.clear();
-                reply_bytes.extend_from_slice(&partial);
-                if !reply_bytes.is_empty() {
-                    self.core
-                        .wire
-                        .log(Entry::Received, &reply_bytes, "no complete reply");
-                }
-                let module = drive_name(request.address);
-                self.core.wire.note(&format!("no reply from {module}"));
-                return Err(SessionError::Timeout {
-                    module,
-                    timeout: self.core.options.timeout,
-                    hint: timeout_hint(&partial, request.address, self.smd4.prefix),
-                });
+                return Err(self.no_reply(request, reply_bytes));
             }
+        }
+    }
+
+    /// Drops the line of `used` bytes that carried `reply`, another drive's.
+    fn discard_foreign(&mut self, used: usize, reply: &Smd4Reply, request: &Request) {
+        let kind = format!(
+            "a reply from drive {} while waiting for {}",
+            drive_name(reply.address),
+            drive_name(request.address)
+        );
+        self.core.wire.discard(used, &kind);
+    }
+
+    /// Nothing (complete) came back in time: what did is logged, and the error says what may
+    /// be wrong.
+    fn no_reply(&mut self, request: &Request, mut reply_bytes: Vec<u8>) -> SessionError {
+        let partial = self.core.wire.rx.clear();
+        reply_bytes.extend_from_slice(&partial);
+        if !reply_bytes.is_empty() {
+            self.core
+                .wire
+                .log(Entry::Received, &reply_bytes, "no complete reply");
+        }
+        let module = drive_name(request.address);
+        self.core.wire.note(&format!("no reply from {module}"));
+        SessionError::Timeout {
+            module,
+            timeout: self.core.options.timeout,
+            hint: timeout_hint(&partial, request.address, self.smd4.prefix),
         }
     }
 
@@ -133,13 +142,13 @@ impl Smd4Session {
     /// follows it has been seen: nothing but line ends.
     fn settle(
         &mut self,
-        reply: Response,
+        reply: Smd4Reply,
         mut reply_bytes: Vec<u8>,
         used: usize,
         deadline: Instant,
         expect: &Expectation,
         request: &Request,
-    ) -> Result<Response, SessionError> {
+    ) -> Result<Smd4Reply, SessionError> {
         match self.core.wire.settle(used, deadline, &mut |_| false)? {
             Settled::Clean(n) => {
                 reply_bytes.extend(self.core.wire.rx.take(n));
@@ -189,11 +198,11 @@ impl Smd4Session {
     /// noise, never a value.
     fn finish(
         &mut self,
-        reply: Response,
+        reply: Smd4Reply,
         consumed: &[u8],
         expect: &Expectation,
         request: &Request,
-    ) -> Result<Response, SessionError> {
+    ) -> Result<Smd4Reply, SessionError> {
         if let Err(noise) = check_reply(&reply, expect, request.address) {
             self.core.wire.log(
                 Entry::Received,
@@ -219,7 +228,7 @@ impl Smd4Session {
 }
 
 /// A reply carrying another drive's address prefix (any prefix when the request had none).
-fn foreign(reply: &Response, request: &Request) -> bool {
+fn foreign(reply: &Smd4Reply, request: &Request) -> bool {
     !is_reply_to(reply.address, request.address)
 }
 

@@ -1,14 +1,13 @@
 //! The configuration sets of a simulated SMD4 — working, stored and factory — and where the
 //! stored set lives between runs. SYS:LOAD copies stored → working, SYS:LOADFD factory → working,
-//! STORE working → stored and writes it out at once, so killing the simulator loses nothing.
+//! STORE working → stored and writes it out at once (to its [`crate::sim::store::Store`]), so
+//! killing the simulator loses nothing.
 
 use std::collections::BTreeMap;
-use std::path::PathBuf;
-use std::sync::{Arc, Mutex};
 
 use serde::{Deserialize, Serialize};
 
-use crate::dialect::smd4::protocol::{ArgValue, CommandTable};
+use crate::dialect::smd4::protocol::{ArgValue, Smd4CommandTable};
 
 /// One setting's value.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -56,7 +55,7 @@ impl Setting {
 pub type Settings = BTreeMap<String, Setting>;
 
 /// The factory defaults of every setting that has one (from `data/smd4.toml`).
-pub fn factory(table: &CommandTable) -> Settings {
+pub fn factory(table: &Smd4CommandTable) -> Settings {
     table
         .iter()
         .filter(|c| c.readable && c.writable && c.arg.is_some())
@@ -69,7 +68,7 @@ pub fn factory(table: &CommandTable) -> Settings {
 }
 
 /// The settings STORE saves.
-pub fn persistent(table: &CommandTable, working: &Settings) -> Settings {
+pub fn persistent(table: &Smd4CommandTable, working: &Settings) -> Settings {
     working
         .iter()
         .filter(|(name, _)| table.get(name).is_some_and(|c| c.persistent))
@@ -96,7 +95,7 @@ pub fn to_text(stored: &Settings) -> String {
 /// Reads a state file over `factory`: each valid stored setting replaces its default. `Err` says
 /// what was wrong (the drive then reports a configuration error), with the usable rest.
 pub fn from_text(
-    table: &CommandTable,
+    table: &Smd4CommandTable,
     factory: &Settings,
     text: &str,
 ) -> Result<Settings, Settings> {
@@ -118,63 +117,6 @@ pub fn from_text(
         }
     }
     if intact { Ok(settings) } else { Err(settings) }
-}
-
-/// Where the stored configuration lives.
-pub trait ConfigStore: Send {
-    /// The saved text, if any was saved.
-    fn load(&mut self) -> Result<Option<String>, String>;
-    /// Saves the text.
-    fn save(&mut self, text: &str) -> Result<(), String>;
-}
-
-/// A state file: written to a temporary name, then renamed, so a kill mid-write loses nothing.
-#[derive(Debug, Clone)]
-pub struct FileStore {
-    path: PathBuf,
-}
-
-impl FileStore {
-    /// A store at `path` (its directory must exist).
-    pub fn new(path: PathBuf) -> FileStore {
-        FileStore { path }
-    }
-}
-
-impl ConfigStore for FileStore {
-    fn load(&mut self) -> Result<Option<String>, String> {
-        match std::fs::read_to_string(&self.path) {
-            Ok(text) => Ok(Some(text)),
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
-            Err(e) => Err(format!("{}: {e}", self.path.display())),
-        }
-    }
-
-    fn save(&mut self, text: &str) -> Result<(), String> {
-        let mut temporary = self.path.clone().into_os_string();
-        temporary.push(".tmp");
-        let temporary = PathBuf::from(temporary);
-        std::fs::write(&temporary, text)
-            .and_then(|()| std::fs::rename(&temporary, &self.path))
-            .map_err(|e| format!("{}: {e}", self.path.display()))
-    }
-}
-
-/// A store in memory; clones share it, so a re-created simulator can find what STORE saved.
-#[derive(Debug, Clone, Default)]
-pub struct MemoryStore {
-    text: Arc<Mutex<Option<String>>>,
-}
-
-impl ConfigStore for MemoryStore {
-    fn load(&mut self) -> Result<Option<String>, String> {
-        Ok(self.text.lock().map_err(|e| e.to_string())?.clone())
-    }
-
-    fn save(&mut self, text: &str) -> Result<(), String> {
-        *self.text.lock().map_err(|e| e.to_string())? = Some(text.to_string());
-        Ok(())
-    }
 }
 
 #[cfg(test)]

@@ -15,7 +15,7 @@
 
 use std::time::Duration;
 
-use super::{Side, Smd4Sim};
+use super::{Limit, Smd4Sim};
 
 /// Runs `command` if it is an SMD4 console command (`None` when it is not one).
 pub(super) fn run(
@@ -29,8 +29,8 @@ pub(super) fn run(
             let high = level_of(level)?;
             sim.set_limit_input(now, side, high);
             let name = match side {
-                Side::Positive => "pos",
-                Side::Negative => "neg",
+                Limit::Positive => "pos",
+                Limit::Negative => "neg",
             };
             Ok(format!("limit {name} = {}", u8::from(high)))
         }),
@@ -86,10 +86,10 @@ pub(super) fn run(
     Some(result)
 }
 
-fn side_of(text: &str) -> Result<Side, String> {
+fn side_of(text: &str) -> Result<Limit, String> {
     match text {
-        "pos" | "positive" | "+" | "1" => Ok(Side::Positive),
-        "neg" | "negative" | "-" | "2" => Ok(Side::Negative),
+        "pos" | "positive" | "+" | "1" => Ok(Limit::Positive),
+        "neg" | "negative" | "-" | "2" => Ok(Limit::Negative),
         other => Err(format!("'{other}' is not a limit; use pos or neg")),
     }
 }
@@ -136,7 +136,7 @@ fn fault_bit(sim: &Smd4Sim, text: &str) -> Result<u8, String> {
 mod tests {
     use std::time::Duration;
 
-    use crate::dialect::smd4::sim::{Smd4Options, Smd4Sim};
+    use crate::dialect::smd4::sim::{Smd4Sim, Smd4SimOptions};
     use crate::sim::Device;
 
     fn control(sim: &mut Smd4Sim, command: &str) -> Result<String, String> {
@@ -146,7 +146,7 @@ mod tests {
 
     #[test]
     fn inputs_change_the_status_word() {
-        let mut sim = Smd4Sim::new(Smd4Options::default());
+        let mut sim = Smd4Sim::new(Smd4SimOptions::default());
         assert_eq!(control(&mut sim, "limit pos 1"), Ok("limit pos = 1".into()));
         assert_eq!(control(&mut sim, "limit - 1"), Ok("limit neg = 1".into()));
         assert_eq!(control(&mut sim, "exten 0"), Ok("exten = 0".into()));
@@ -162,7 +162,7 @@ mod tests {
 
     #[test]
     fn faults_by_number_or_name() {
-        let mut sim = Smd4Sim::new(Smd4Options::default());
+        let mut sim = Smd4Sim::new(Smd4SimOptions::default());
         assert_eq!(
             control(&mut sim, "fault TempOver"),
             Ok("fault bit 2 latched, eflags 0x0004".into())
@@ -179,7 +179,7 @@ mod tests {
 
     #[test]
     fn flash_failure_and_state_queries() {
-        let mut sim = Smd4Sim::new(Smd4Options::default());
+        let mut sim = Smd4Sim::new(Smd4SimOptions::default());
         assert!(control(&mut sim, "flash-failure on").is_ok());
         sim.receive(Duration::ZERO, b"STORE\r\n");
         let mut out = Vec::new();

@@ -3,7 +3,7 @@
 //! command. Plain settings need no code here: they are stored and echoed as the table says.
 
 use crate::dialect::smd4::protocol::{
-    Access, ArgValue, CommandSpec, Eflags, ErrorCode, Request, ValidationError, validate,
+    Action, ArgValue, Eflags, ErrorCode, Request, Smd4Command, ValidationError, validate,
 };
 
 use super::Smd4Sim;
@@ -41,10 +41,10 @@ impl Smd4Sim {
             Err(error) => return Outcome::Failed(code_of(&error)),
         };
         let spec = checked.spec;
-        let result = match checked.access {
-            Access::Read => self.read(t, spec),
+        let result = match checked.action {
+            Action::Read => self.read(t, spec),
             access => self.gate(t, spec).and_then(|()| match access {
-                Access::Write(value) => self.write(t, spec, value),
+                Action::Write(value) => self.write(t, spec, value),
                 _ => self.run(t, spec),
             }),
         };
@@ -60,7 +60,7 @@ impl Smd4Sim {
     }
 
     /// The documented refusals of writes and actions: −1, −6, −7.
-    fn gate(&self, t: f64, spec: &CommandSpec) -> Result<(), ErrorCode> {
+    fn gate(&self, t: f64, spec: &Smd4Command) -> Result<(), ErrorCode> {
         if spec.requires_standby && !self.motion.at(t).standby {
             return Err(ErrorCode::StopMotorFirst);
         }
@@ -73,7 +73,7 @@ impl Smd4Sim {
         Ok(())
     }
 
-    fn read(&self, t: f64, spec: &CommandSpec) -> Handled {
+    fn read(&self, t: f64, spec: &Smd4Command) -> Handled {
         let now = self.motion.at(t);
         let value = match spec.mnemonic.as_str() {
             "SYS:UPTIME" => Setting::Int(((t - self.boot) * 1000.0) as i64),
@@ -93,7 +93,7 @@ impl Smd4Sim {
         Ok(Some(value))
     }
 
-    fn write(&mut self, t: f64, spec: &CommandSpec, value: ArgValue) -> Handled {
+    fn write(&mut self, t: f64, spec: &Smd4Command, value: ArgValue) -> Handled {
         let name = spec.mnemonic.as_str();
         let mut setting = Setting::from_arg(&value);
         match name {
@@ -171,7 +171,7 @@ impl Smd4Sim {
         }
     }
 
-    fn run(&mut self, t: f64, spec: &CommandSpec) -> Handled {
+    fn run(&mut self, t: f64, spec: &Smd4Command) -> Handled {
         match spec.mnemonic.as_str() {
             "SYS:CLR" => {
                 self.eflags = Eflags::default();

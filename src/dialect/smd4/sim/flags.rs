@@ -9,7 +9,7 @@ use crate::dialect::SimFlags;
 use crate::dialect::smd4::protocol::{ErrorSpelling, FlagCase, FloatStyle, PrefixStyle};
 use crate::sim::Device;
 
-use super::{PositionFormat, PrefixAcceptance, Smd4Options, Smd4Sim};
+use super::{PositionFormat, PrefixAcceptance, Smd4Sim, Smd4SimOptions};
 
 /// Quirk switches of the simulated SMD4.
 #[derive(Debug, Clone, clap::Args)]
@@ -59,8 +59,8 @@ fn positive(text: &str) -> Result<f64, String> {
 
 impl QuirkFlags {
     /// The options these switches select; `state` keeps STORE'd settings across restarts.
-    pub fn options(&self, state: Option<&Path>) -> Smd4Options {
-        Smd4Options {
+    pub fn options(&self, state: Option<&Path>) -> Smd4SimOptions {
+        Smd4SimOptions {
             flag_case: if self.flag_case == "lower" {
                 FlagCase::Lower
             } else {

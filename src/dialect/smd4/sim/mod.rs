@@ -1,12 +1,12 @@
 //! A simulated AML SMD4 drive: a pure state machine behind [`crate::sim::Device`] — bytes in,
 //! bytes out, time as an input; no threads, clocks or I/O inside, except that STORE writes the
-//! state file it was given (through a [`ConfigStore`]).
+//! state file it was given (through a [`Store`]).
 //!
 //! It answers every command of `data/smd4.toml` as the document describes: rounding of currents,
 //! the run/acceleration current and start/stop frequency couplings, standby gating, latching error
 //! flags, limits, an analytic trapezoid motion model, bake, the three configuration sets and the
 //! addressing state machine. Each point where the document contradicts itself is an option
-//! ([`Smd4Options`]), so clients can be tested against every reading.
+//! ([`Smd4SimOptions`]), so clients can be tested against every reading.
 //!
 //! Addressing (document §"Addressing"): until the first well-formed packet with an `@N` prefix
 //! arrives, un-prefixed packets are executed and answered (malformed ones with −104). From then
@@ -27,33 +27,31 @@ use std::time::Duration;
 
 use crate::dialect::smd4::protocol::{Eflags, Request, Sflags, Smd4Spec};
 
-use crate::sim::Device;
-pub use config::{ConfigStore, FileStore, MemoryStore, Setting, Settings};
-pub use motion::Snapshot;
-use motion::{Goal, Motion, Profile};
-pub use options::{PositionFormat, PrefixAcceptance, Smd4Options};
-
-/// A sink for log lines (`tmclsh sim --verbose`): lines received, replies sent, lines ignored.
-pub type LogSink = Box<dyn FnMut(&str) + Send>;
+use crate::sim::store::{FileStore, MemoryStore, Store};
+use crate::sim::{Device, LogSink};
+pub use config::{Setting, Settings};
+pub use motion::MotorState;
+use motion::{Goal, Motion, Ramp};
+pub use options::{PositionFormat, PrefixAcceptance, Smd4SimOptions};
 
 /// Longest line accepted; longer ones are malformed packets (the document gives no limit).
 pub const MAX_LINE: usize = 1024;
 
 /// A limit input.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Side {
+pub enum Limit {
     /// Limit 1, reached while the step counter increases.
     Positive,
     /// Limit 2, reached while the step counter decreases.
     Negative,
 }
 
-impl Side {
-    fn of_direction(direction: f64) -> Option<Side> {
+impl Limit {
+    fn of_direction(direction: f64) -> Option<Limit> {
         if direction > 0.0 {
-            Some(Side::Positive)
+            Some(Limit::Positive)
         } else if direction < 0.0 {
-            Some(Side::Negative)
+            Some(Limit::Negative)
         } else {
             None
         }
@@ -61,8 +59,8 @@ impl Side {
 
     fn suffix(self) -> char {
         match self {
-            Side::Positive => '+',
-            Side::Negative => '-',
+            Limit::Positive => '+',
+            Limit::Negative => '-',
         }
     }
 }
@@ -79,8 +77,8 @@ struct Inputs {
 /// A simulated SMD4.
 pub struct Smd4Sim {
     spec: &'static Smd4Spec,
-    options: Smd4Options,
-    store: Box<dyn ConfigStore>,
+    options: Smd4SimOptions,
+    store: Box<dyn Store>,
     factory: Settings,
     stored: Settings,
     working: Settings,
@@ -105,16 +103,16 @@ impl Smd4Sim {
     /// A drive powered up at time zero, its stored configuration in `options.state_file` (or in
     /// memory). A missing file means factory settings; a damaged one latches the configuration
     /// error flag (EFLAGS bit 6) and uses what it can.
-    pub fn new(options: Smd4Options) -> Smd4Sim {
-        let store: Box<dyn ConfigStore> = match &options.state_file {
-            Some(path) => Box::new(FileStore::new(path.clone())),
+    pub fn new(options: Smd4SimOptions) -> Smd4Sim {
+        let store: Box<dyn Store> = match &options.state_file {
+            Some(path) => Box::new(FileStore::new(path)),
             None => Box::new(MemoryStore::default()),
         };
         Smd4Sim::with_store(options, store)
     }
 
     /// A drive whose stored configuration lives in `store`.
-    pub fn with_store(options: Smd4Options, mut store: Box<dyn ConfigStore>) -> Smd4Sim {
+    pub fn with_store(options: Smd4SimOptions, store: Box<dyn Store>) -> Smd4Sim {
         let spec = Smd4Spec::builtin();
         let factory = config::factory(&spec.commands);
         let (stored, config_damaged) = match store.load() {
@@ -197,10 +195,10 @@ impl Smd4Sim {
 
     /// Sets the electrical level of a limit input (whether it counts as active depends on its
     /// polarity). An enabled limit that becomes active stops a motion towards it.
-    pub fn set_limit_input(&mut self, now: Duration, side: Side, high: bool) {
+    pub fn set_limit_input(&mut self, now: Duration, side: Limit, high: bool) {
         match side {
-            Side::Positive => self.inputs.limit_positive_high = high,
-            Side::Negative => self.inputs.limit_negative_high = high,
+            Limit::Positive => self.inputs.limit_positive_high = high,
+            Limit::Negative => self.inputs.limit_negative_high = high,
         }
         self.update(now.as_secs_f64());
     }
@@ -237,7 +235,7 @@ impl Smd4Sim {
     }
 
     /// The motor at `now`.
-    pub fn motion_state(&self, now: Duration) -> Snapshot {
+    pub fn motion_state(&self, now: Duration) -> MotorState {
         self.motion.at(now.as_secs_f64())
     }
 
@@ -262,7 +260,7 @@ impl Smd4Sim {
     }
 
     /// The options the drive was built with.
-    pub fn options(&self) -> &Smd4Options {
+    pub fn options(&self) -> &Smd4SimOptions {
         &self.options
     }
 
@@ -270,8 +268,8 @@ impl Smd4Sim {
         self.working.get(mnemonic).map_or(0.0, Setting::number)
     }
 
-    fn profile(&self) -> Profile {
-        Profile {
+    fn profile(&self) -> Ramp {
+        Ramp {
             vstart: self.number("MOTOR:VSTART"),
             vstop: self.number("MOTOR:VSTOP"),
             vmax: self.number("MOTOR:VMAX"),
@@ -286,16 +284,16 @@ impl Smd4Sim {
     }
 
     /// Whether a limit input is active after its polarity (1 = active low).
-    fn limit_active(&self, side: Side) -> bool {
+    fn limit_active(&self, side: Limit) -> bool {
         let high = match side {
-            Side::Positive => self.inputs.limit_positive_high,
-            Side::Negative => self.inputs.limit_negative_high,
+            Limit::Positive => self.inputs.limit_positive_high,
+            Limit::Negative => self.inputs.limit_negative_high,
         };
         let active_low = self.number(&format!("LIMIT:POL{}", side.suffix())) == 1.0;
         high != active_low
     }
 
-    fn limit_enabled(&self, side: Side) -> bool {
+    fn limit_enabled(&self, side: Limit) -> bool {
         self.number("LIMIT:EN") == 1.0 && self.number(&format!("LIMIT:EN{}", side.suffix())) == 1.0
     }
 
@@ -303,8 +301,8 @@ impl Smd4Sim {
         let now = self.motion.at(t);
         let mut s = Sflags::default();
         s.set(Sflags::JOYSTICK, self.inputs.joystick);
-        s.set(Sflags::LIMIT_NEGATIVE, self.limit_active(Side::Negative));
-        s.set(Sflags::LIMIT_POSITIVE, self.limit_active(Side::Positive));
+        s.set(Sflags::LIMIT_NEGATIVE, self.limit_active(Limit::Negative));
+        s.set(Sflags::LIMIT_POSITIVE, self.limit_active(Limit::Positive));
         s.set(Sflags::EXTERNAL_ENABLE, self.inputs.external_enable);
         s.set(Sflags::IDENT, self.number("SYS:IDENT") == 1.0);
         s.set(Sflags::STANDBY, now.standby);
@@ -327,12 +325,12 @@ impl Smd4Sim {
             self.motion.halt(t);
             return;
         }
-        let Some(side) = Side::of_direction(self.motion.direction(t)) else {
+        let Some(side) = Limit::of_direction(self.motion.direction(t)) else {
             return;
         };
         let homed = self
             .homing
-            .is_some_and(|d| Side::of_direction(d) == Some(side));
+            .is_some_and(|d| Limit::of_direction(d) == Some(side));
         let blocked = self.limit_active(side) && (homed || self.limit_enabled(side));
         if !blocked {
             return;

@@ -3,9 +3,9 @@
 //! any time is exact. A motion is a list of phases of constant acceleration; the motor rests at
 //! the end of the last one.
 
-/// The profile settings a plan uses (Hz, Hz/s, s).
+/// The ramp settings a plan uses (Hz, Hz/s, s): the drive's motion profile.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Profile {
+pub struct Ramp {
     /// MOTOR:VSTART.
     pub vstart: f64,
     /// MOTOR:VSTOP.
@@ -69,7 +69,7 @@ pub enum Resumable {
 
 /// The motor at one instant.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Snapshot {
+pub struct MotorState {
     /// Position in steps.
     pub position: f64,
     /// Velocity in steps/s, negative while the counter decreases.
@@ -105,18 +105,18 @@ impl Motion {
     }
 
     /// The state at time `t`.
-    pub fn at(&self, t: f64) -> Snapshot {
+    pub fn at(&self, t: f64) -> MotorState {
         match self.phases.iter().find(|p| t < p.end()) {
             Some(phase) => {
                 let (position, velocity) = phase.at(t);
-                Snapshot {
+                MotorState {
                     position,
                     velocity,
                     standby: false,
                     at_target_velocity: phase.at_target && t >= phase.start,
                 }
             }
-            None => Snapshot {
+            None => MotorState {
                 position: self.rest,
                 velocity: 0.0,
                 standby: true,
@@ -164,7 +164,7 @@ impl Motion {
     }
 
     /// Starts running towards `goal` from the state at `t`.
-    pub fn plan(&mut self, t: f64, goal: Goal, profile: &Profile) {
+    pub fn plan(&mut self, t: f64, goal: Goal, profile: &Ramp) {
         let mut plan = self.plan_from(t);
         match goal {
             Goal::Idle => plan.halt(),
@@ -191,7 +191,7 @@ impl Motion {
 
     /// The profile changed at `t`: a running move is replanned with it. A stop ramp is cancelled
     /// and the interrupted goal resumed only when `cancel_stop` (AMAX/DMAX changes, as documented).
-    pub fn profile_changed(&mut self, t: f64, profile: &Profile, cancel_stop: bool) {
+    pub fn profile_changed(&mut self, t: f64, profile: &Ramp, cancel_stop: bool) {
         let goal = match self.goal(t) {
             Goal::Idle => return,
             Goal::Stop(Some(Resumable::Velocity(d))) if cancel_stop => Goal::Velocity(d),
@@ -293,7 +293,7 @@ impl Plan {
     }
 
     /// Speed a move starts at, and the direction it goes: from standstill VSTART (after TZW).
-    fn start(&mut self, direction: f64, profile: &Profile) -> f64 {
+    fn start(&mut self, direction: f64, profile: &Ramp) -> f64 {
         if self.v != 0.0 && self.v.signum() != direction {
             self.ramp_down(profile.dmax, profile.vstop);
         }
@@ -305,7 +305,7 @@ impl Plan {
         }
     }
 
-    fn velocity(&mut self, direction: f64, profile: &Profile) {
+    fn velocity(&mut self, direction: f64, profile: &Ramp) {
         let u0 = self.start(direction, profile);
         self.v = direction * u0;
         let rate = if u0 < profile.vmax {
@@ -321,7 +321,7 @@ impl Plan {
         self.push(f64::INFINITY, 0.0, true);
     }
 
-    fn position(&mut self, target: f64, profile: &Profile) {
+    fn position(&mut self, target: f64, profile: &Ramp) {
         let distance = target - self.p;
         if distance == 0.0 && self.v == 0.0 {
             return;

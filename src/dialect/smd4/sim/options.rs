@@ -38,7 +38,7 @@ pub enum PositionFormat {
 
 /// Options of a simulated SMD4.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Smd4Options {
+pub struct Smd4SimOptions {
     /// Hex case of the flag words (text: upper; many examples: lower).
     pub flag_case: FlagCase,
     /// Decimals of FLOATs (examples: 4; type table: 5) and the `E`-less form of two examples.
@@ -62,9 +62,9 @@ pub struct Smd4Options {
     pub state_file: Option<PathBuf>,
 }
 
-impl Default for Smd4Options {
+impl Default for Smd4SimOptions {
     fn default() -> Self {
-        Smd4Options {
+        Smd4SimOptions {
             flag_case: FlagCase::Upper,
             float_style: FloatStyle::default(),
             error_spelling: ErrorSpelling::Parenthesised,

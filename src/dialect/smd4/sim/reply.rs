@@ -4,7 +4,7 @@
 use crate::dialect::smd4::protocol::format::{
     format_error, format_fixed, format_flags, format_float, format_hms,
 };
-use crate::dialect::smd4::protocol::{CommandSpec, ErrorCode, ItemType, ReplyShape};
+use crate::dialect::smd4::protocol::{ErrorCode, ItemType, ReplyShape, Smd4Command};
 
 use super::Smd4Sim;
 use super::config::Setting;
@@ -62,7 +62,7 @@ impl Smd4Sim {
     }
 
     /// The data items for `value` in the command's reply shape.
-    pub(super) fn items(&self, spec: &CommandSpec, value: Option<&Setting>) -> Vec<String> {
+    pub(super) fn items(&self, spec: &Smd4Command, value: Option<&Setting>) -> Vec<String> {
         match (&spec.reply, value) {
             (ReplyShape::Literal(text), _) => vec![text.clone()],
             (ReplyShape::Value, Some(v)) => vec![self.item(spec, v)],
@@ -83,7 +83,7 @@ impl Smd4Sim {
         }
     }
 
-    fn item(&self, spec: &CommandSpec, value: &Setting) -> String {
+    fn item(&self, spec: &Smd4Command, value: &Setting) -> String {
         match spec.value_item_type() {
             Some(ItemType::Float) => {
                 let x = value.number();

@@ -1,30 +1,28 @@
 //! Downloading a program file or TMCL source to the module, with a progress bar on a terminal:
 //! what `tmclsh download` and the shell's `:download` share.
 
-use std::io::IsTerminal;
 use std::path::Path;
-
-use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::dialect::tmcl::asm;
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::protocol::Instruction;
 use crate::dialect::tmcl::session::TmclSession;
-use crate::exit::{Exit, ExitStatus};
+use crate::exit::Failure;
+use crate::progress::Progress;
 use crate::session::SessionError;
 
-/// A failure of the download as a whole: its exit code and message, never taken for a lost link
-/// or Ctrl-C at the prompt (the download has already handled those).
-fn failure(exit: Exit, message: String) -> SessionError {
-    SessionError::Script { exit, message }
+/// A failure of the download as a whole, with the exit code of what went wrong, never taken for a
+/// lost link or Ctrl-C at the prompt (the download has already handled those).
+fn failed(error: impl Into<Failure>) -> SessionError {
+    SessionError::Failed(error.into())
 }
 
 /// Loads a program file or assembles a source file.
 pub fn load(path: &Path, profile: &Profile) -> Result<Vec<Instruction>, SessionError> {
     let name = path.display().to_string();
     let bytes = std::fs::read(path)
-        .map_err(|e| failure(Exit::Refused, format!("cannot read {name}: {e}")))?;
-    asm::load_program(&bytes, &name, profile).map_err(|e| failure(Exit::Refused, e.to_string()))
+        .map_err(|e| failed(Failure::refused(format!("cannot read {name}: {e}"))))?;
+    asm::load_program(&bytes, &name, profile).map_err(|e| failed(Failure::refused(e.to_string())))
 }
 
 /// Downloads with a progress bar on a terminal, then optionally runs; returns what to tell the
@@ -34,18 +32,13 @@ pub fn download_and_run(
     instructions: &[Instruction],
     run: bool,
 ) -> Result<String, SessionError> {
-    let failed = |e: SessionError| failure(e.exit(), e.to_string());
     let module = session.target();
-    let bar = progress_bar(instructions.len() * 2);
+    // Each instruction is written and read back; a short program is done before a bar shows.
+    let progress = Progress::steps(instructions.len() * 2, 64, "download and verify");
     let report = super::download(session, module, instructions, |done, total| {
-        if let Some(bar) = &bar {
-            bar.set_length(total as u64);
-            bar.set_position(done as u64);
-        }
+        progress.set(done, total)
     });
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
+    drop(progress);
     let report = report.map_err(failed)?;
     let mut text = format!(
         "downloaded {} instruction{} to module {}{}",
@@ -70,14 +63,4 @@ pub fn download_and_run(
         super::mode_text(session, module)
     ));
     Ok(text)
-}
-
-fn progress_bar(total: usize) -> Option<ProgressBar> {
-    if !std::io::stderr().is_terminal() || total < 64 {
-        return None;
-    }
-    let bar = ProgressBar::new(total as u64);
-    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}").ok()?);
-    bar.set_message("download and verify");
-    Some(bar)
 }

@@ -10,7 +10,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 use crate::dialect::tmcl::render::application_status;
-use crate::dialect::tmcl::session::{Exchange, TmclSession, WireMode};
+use crate::dialect::tmcl::session::{TmclExchange, TmclSession, WireMode};
 use crate::session::{SessionError, interrupt};
 
 /// What a download did.
@@ -75,7 +75,7 @@ impl<'s> DownloadMode<'s> {
         let quit = self
             .session
             .request(self.module, Instruction::new(Opcode::QuitDownload, 0, 0, 0))
-            .and_then(Exchange::checked);
+            .and_then(TmclExchange::checked);
         if interrupted {
             interrupt::raise();
         }
@@ -159,7 +159,7 @@ pub fn control(
     session: &mut TmclSession,
     module: u8,
     instruction: Instruction,
-) -> Result<Exchange, SessionError> {
+) -> Result<TmclExchange, SessionError> {
     session.in_binary(module, |s| s.request(module, instruction)?.checked())
 }
 
@@ -186,7 +186,7 @@ pub fn still_turning(session: &mut TmclSession, module: u8) -> Vec<String> {
     for motor in 0..session.profile().axes {
         let read = session
             .request(module, Instruction::new(Opcode::Gap, number, motor, 0))
-            .and_then(Exchange::checked);
+            .and_then(TmclExchange::checked);
         match read.map(|x| x.value().unwrap_or(0)) {
             Ok(0) => {}
             Ok(value) => warnings.push(format!(

@@ -16,7 +16,7 @@ use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::reply::{AsciiReply, parse_reply_bytes};
 use crate::dialect::tmcl::protocol::{AsciiWord, Status};
 
-use super::{Answer, Exchange, TmclSession};
+use super::{TmclExchange, TmclReply, TmclSession};
 use crate::session::SessionError;
 use crate::session::rx::is_line_break;
 use crate::session::transcript::{Entry, escape_into};
@@ -69,7 +69,7 @@ impl TmclSession {
         module: u8,
         text: &str,
         op: Option<Op>,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         self.ascii_request_with(module, text, op, None)
     }
 
@@ -81,7 +81,7 @@ impl TmclSession {
         text: &str,
         op: Option<Op>,
         optional_wait: Option<Duration>,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         let wire_text = self.spelling(text);
         let optional = optional_wait.is_some();
         let mut echoed = false;
@@ -104,7 +104,7 @@ impl TmclSession {
         op: Option<Op>,
         optional_wait: Option<Duration>,
         echoed: &mut bool,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         let c = address_char(module).unwrap_or('?');
         let mut line = Vec::with_capacity(wire_text.len() + 1);
         line.extend_from_slice(wire_text.as_bytes());
@@ -154,7 +154,6 @@ impl TmclSession {
         module: u8,
         echo_required: bool,
     ) -> Result<Option<Found>, SessionError> {
-        let c = address_char(module).unwrap_or('?');
         loop {
             if scan.in_junk {
                 match self.core.wire.rx.line_end(0) {
@@ -202,67 +201,84 @@ impl TmclSession {
                 continue;
             }
             let line = self.core.wire.rx.bytes()[..end].to_vec();
-            let acceptable = scan.echo_seen || !echo_required;
-            match parse_reply_bytes(&line) {
-                Some(reply) if reply.status == Status::PositionReachedEvent => {
-                    self.core.wire.notices.push(format!(
-                        "module {}: target position reached (event)",
-                        reply.module
-                    ));
-                    self.core
-                        .wire
-                        .discard_quietly(used, "target position reached event, not a reply");
-                }
-                Some(reply) if reply.module == c && acceptable => {
-                    return Ok(Some((reply, latin1(&line), used)));
-                }
-                Some(reply) if reply.module == c && self.unanswered.reply_arrived(c) => {
-                    self.core
-                        .wire
-                        .discard_quietly(used, "late reply to a request given up earlier");
-                    // Every request to this module given up has now been answered: nothing
-                    // more is on its way.
-                    if !self.unanswered.pending(c) {
-                        self.core.wire.trust(Peer::Module(module.into()));
-                    }
-                }
-                Some(reply) if reply.module == c => {
-                    self.core
-                        .wire
-                        .discard(used, "a reply that came before the echo (stale?)");
-                }
-                Some(reply) => {
-                    let kind = format!(
-                        "a reply from module {} while waiting for module {c}",
-                        reply.module
-                    );
-                    self.core.wire.discard(used, &kind);
-                }
-                None if !scan.echo_seen && self.unanswered.echo_arrived(&line) => {
-                    self.core
-                        .wire
-                        .discard_quietly(used, "late echo of a request given up earlier");
-                }
-                None if !scan.echo_seen && looks_like_echo(&line, scan.sent) => {
-                    let sent = latin1(scan.sent);
-                    let message = format!(
-                        "line noise: module {c} echoed '{}' for '{sent}', so it may have executed \
-                         something else; check the cabling and the baud rate",
-                        latin1(&line)
-                    );
-                    return Err(self.noise(scan, used, "garbled echo", message));
-                }
-                None if acceptable && reply_shaped(&line, c) => {
-                    let message = format!(
-                        "line noise: module {c} answered '{}', which is not a valid reply \
-                         (garbled, or an unknown status); not taken",
-                        latin1(&line)
-                    );
-                    return Err(self.noise(scan, used, "not a valid reply", message));
-                }
-                None => self.core.wire.discard(used, UNEXPECTED),
+            if let Some(found) = self.judge(scan, module, &line, used, echo_required)? {
+                return Ok(Some(found));
             }
         }
+    }
+
+    /// Judges a whole line of `used` bytes at the front of the buffer: this exchange's reply
+    /// (returned), an event, a late or stray reply or echo (discarded), or line noise (an error).
+    fn judge(
+        &mut self,
+        scan: &mut Scan,
+        module: u8,
+        line: &[u8],
+        used: usize,
+        echo_required: bool,
+    ) -> Result<Option<Found>, SessionError> {
+        let c = address_char(module).unwrap_or('?');
+        let acceptable = scan.echo_seen || !echo_required;
+        match parse_reply_bytes(line) {
+            Some(reply) if reply.status == Status::PositionReachedEvent => {
+                self.core.wire.notices.push(format!(
+                    "module {}: target position reached (event)",
+                    reply.module
+                ));
+                self.core
+                    .wire
+                    .discard_quietly(used, "target position reached event, not a reply");
+            }
+            Some(reply) if reply.module == c && acceptable => {
+                return Ok(Some((reply, latin1(line), used)));
+            }
+            Some(reply) if reply.module == c && self.unanswered.reply_arrived(c) => {
+                self.core
+                    .wire
+                    .discard_quietly(used, "late reply to a request given up earlier");
+                // Every request to this module given up has now been answered: nothing
+                // more is on its way.
+                if !self.unanswered.pending(c) {
+                    self.core.wire.trust(Peer::Module(module.into()));
+                }
+            }
+            Some(reply) if reply.module == c => {
+                self.core
+                    .wire
+                    .discard(used, "a reply that came before the echo (stale?)");
+            }
+            Some(reply) => {
+                let kind = format!(
+                    "a reply from module {} while waiting for module {c}",
+                    reply.module
+                );
+                self.core.wire.discard(used, &kind);
+            }
+            None if !scan.echo_seen && self.unanswered.echo_arrived(line) => {
+                self.core
+                    .wire
+                    .discard_quietly(used, "late echo of a request given up earlier");
+            }
+            None if !scan.echo_seen && looks_like_echo(line, scan.sent) => {
+                let sent = latin1(scan.sent);
+                let message = format!(
+                    "line noise: module {c} echoed '{}' for '{sent}', so it may have executed \
+                     something else; check the cabling and the baud rate",
+                    latin1(line)
+                );
+                return Err(self.noise(scan, used, "garbled echo", message));
+            }
+            None if acceptable && reply_shaped(line, c) => {
+                let message = format!(
+                    "line noise: module {c} answered '{}', which is not a valid reply \
+                     (garbled, or an unknown status); not taken",
+                    latin1(line)
+                );
+                return Err(self.noise(scan, used, "not a valid reply", message));
+            }
+            None => self.core.wire.discard(used, UNEXPECTED),
+        }
+        Ok(None)
     }
 
     /// Whether the echo of this request follows a reply found before any echo: waits as long
@@ -294,7 +310,7 @@ impl TmclSession {
         mut record: Vec<u8>,
         (reply, raw, used): Found,
         deadline: Instant,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         let c = reply.module;
         let mut events = Vec::new();
         let settled =
@@ -320,11 +336,11 @@ impl TmclSession {
                     &record,
                     format_args!("{c}: {}, value {}", reply.status, reply.value),
                 );
-                Ok(Exchange {
+                Ok(TmclExchange {
                     module,
                     sent: text.to_string(),
                     op,
-                    answer: Answer::Reply {
+                    reply: TmclReply::Status {
                         status: reply.status,
                         value: reply.value,
                     },

@@ -9,7 +9,7 @@ use crate::dialect::tmcl::protocol::frame::{
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
-use super::{Answer, Exchange, TmclSession};
+use super::{TmclExchange, TmclReply, TmclSession};
 use crate::session::SessionError;
 use crate::session::transcript::Entry;
 
@@ -19,7 +19,7 @@ impl TmclSession {
         &mut self,
         module: u8,
         instruction: Instruction,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         self.exchange(module, false, |s| s.binary_exchange(module, instruction))
     }
 
@@ -27,7 +27,7 @@ impl TmclSession {
         &mut self,
         module: u8,
         instruction: Instruction,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         let sent = self.describe_instruction(&instruction);
         let frame = CommandFrame {
             address: module,
@@ -37,15 +37,15 @@ impl TmclSession {
         self.core
             .wire
             .send(&frame, format_args!("{sent} to module {module} (binary)"))?;
-        let exchange = |(answer, raw)| Exchange {
+        let exchange = |(reply, raw)| TmclExchange {
             module,
             sent,
             op: Some(Op::Command(instruction)),
-            answer,
+            reply,
             raw,
         };
         if instruction.command == Opcode::FactoryDefaults {
-            return Ok(exchange((Answer::Nothing, String::new())));
+            return Ok(exchange((TmclReply::Nothing, String::new())));
         }
         let deadline = Instant::now() + self.core.options.timeout;
         loop {
@@ -76,14 +76,14 @@ impl TmclSession {
         instruction: Instruction,
         raw: &[u8; FRAME_LEN],
         deadline: Instant,
-    ) -> Result<Option<(Answer, String)>, SessionError> {
+    ) -> Result<Option<(TmclReply, String)>, SessionError> {
         if instruction.command == Opcode::FirmwareVersion && instruction.type_ == 0 {
             let (_, text) = decode_version_string(raw);
             self.settle_binary(module, raw, deadline)?;
             self.core
                 .wire
                 .log_received(FRAME_LEN, format_args!("version {text}"));
-            return Ok(Some((Answer::Version(text.clone()), text)));
+            return Ok(Some((TmclReply::Version(text.clone()), text)));
         }
         let reply = ReplyFrame::decode(raw).map_err(|e| {
             self.binary_noise(
@@ -121,7 +121,7 @@ impl TmclSession {
                 reply.module, reply.status, reply.value
             ),
         );
-        let answer = Answer::Reply {
+        let answer = TmclReply::Status {
             status: reply.status,
             value: reply.value,
         };

@@ -1,4 +1,4 @@
-//! What a TMCL request got back: the module's answer, and the exchange as the session reports it
+//! What a TMCL request got back: the module's reply, and the exchange as the session reports it
 //! (the line sent, what it resolved to, the reply as received).
 
 use crate::dialect::session::Refusal;
@@ -6,11 +6,11 @@ use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::{InputError, Status};
 use crate::session::SessionError;
 
-/// What a module answered.
+/// What a module replied, from either form (an ASCII reply line or a binary reply frame).
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Answer {
-    /// A status and value (ASCII reply line or binary reply frame).
-    Reply {
+pub enum TmclReply {
+    /// A status and value.
+    Status {
         /// Outcome.
         status: Status,
         /// Returned value.
@@ -22,48 +22,48 @@ pub enum Answer {
     Nothing,
 }
 
-/// One request and its answer.
+/// One request and its reply.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Exchange {
+pub struct TmclExchange {
     /// The module addressed.
     pub module: u8,
     /// The line sent, in canonical form (`AGAP 1, 0`; binary: `GAP 1, 0`).
     pub sent: String,
     /// What was sent, when the line resolved.
     pub op: Option<Op>,
-    /// The answer.
-    pub answer: Answer,
+    /// What the module replied.
+    pub reply: TmclReply,
     /// The reply as the module sent it, without echo and line ending (`BA 100 -5000`).
     pub raw: String,
 }
 
-impl Exchange {
+impl TmclExchange {
     /// Whether the module reported success (or nothing was expected).
     pub fn ok(&self) -> bool {
-        match self.answer {
-            Answer::Reply { status, .. } => status.is_success(),
+        match self.reply {
+            TmclReply::Status { status, .. } => status.is_success(),
             _ => true,
         }
     }
 
     /// The returned value of a status reply.
     pub fn value(&self) -> Option<i32> {
-        match self.answer {
-            Answer::Reply { value, .. } => Some(value),
+        match self.reply {
+            TmclReply::Status { value, .. } => Some(value),
             _ => None,
         }
     }
 
     /// The status of a status reply.
     pub fn status(&self) -> Option<Status> {
-        match self.answer {
-            Answer::Reply { status, .. } => Some(status),
+        match self.reply {
+            TmclReply::Status { status, .. } => Some(status),
             _ => None,
         }
     }
 
     /// The exchange, or a device error when the module answered with an error status.
-    pub fn checked(self) -> Result<Exchange, SessionError> {
+    pub fn checked(self) -> Result<TmclExchange, SessionError> {
         match self.refusal() {
             Some(refusal) => Err(refusal.into()),
             None => Ok(self),
@@ -72,8 +72,8 @@ impl Exchange {
 
     /// The error status the module answered with, if any.
     pub fn refusal(&self) -> Option<Refusal> {
-        match self.answer {
-            Answer::Reply { status, .. } if !status.is_success() => Some(Refusal {
+        match self.reply {
+            TmclReply::Status { status, .. } if !status.is_success() => Some(Refusal {
                 module: address_char(self.module).unwrap_or('?').to_string(),
                 sent: self.sent.clone(),
                 reason: format!("status {status}"),
@@ -85,8 +85,8 @@ impl Exchange {
     /// The answer as the module sent it: the reply line without echo and line ending, or the
     /// version string of 136.
     pub fn shown(&self) -> String {
-        match &self.answer {
-            Answer::Version(version) => version.clone(),
+        match &self.reply {
+            TmclReply::Version(version) => version.clone(),
             _ => self.raw.clone(),
         }
     }

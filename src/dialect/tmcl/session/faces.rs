@@ -11,7 +11,8 @@ use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::validate::Mode;
 use crate::dialect::tmcl::{TmclGrammar, config, help, helpers, render, scan};
 use crate::dialect::{Dialect, Grammar, Helper};
-use crate::script::{Report, Script};
+use crate::exit::Failure;
+use crate::script::Script;
 use crate::session::SessionError;
 use crate::session::core::SessionCore;
 use crate::session::transcript::Header;
@@ -120,7 +121,7 @@ impl DialectSession for TmclSession {
     fn run_script(
         self: Box<Self>,
         script: &Script,
-    ) -> (Box<dyn DialectSession>, Result<(), Report>) {
+    ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
         let (session, result) = script.run(
             *self,
             |s, text| s.annotate(text),

@@ -33,7 +33,7 @@ use crate::session::transcript::Transcript;
 use crate::session::wire::Peer;
 use crate::session::{SessionError, SessionOptions};
 
-pub use exchange::{Answer, Exchange};
+pub use exchange::{TmclExchange, TmclReply};
 pub use mode::{Echo, WireMode};
 
 use unanswered::{Unanswered, harmless};
@@ -119,8 +119,8 @@ impl TmclSession {
     }
 
     /// Parses, validates and sends one command line; returns the module's answer. An error
-    /// status is an `Ok` exchange whose [`Exchange::ok`] is false.
-    pub fn exchange_line(&mut self, text: &str) -> Result<Exchange, SessionError> {
+    /// status is an `Ok` exchange whose [`TmclExchange::ok`] is false.
+    pub fn exchange_line(&mut self, text: &str) -> Result<TmclExchange, SessionError> {
         match line::parse(text, &self.profile) {
             Ok(line) => {
                 let module = line.address.unwrap_or(self.target);
@@ -151,11 +151,11 @@ impl TmclSession {
         &mut self,
         module: u8,
         instruction: Instruction,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         self.perform(module, Op::Command(instruction))
     }
 
-    fn perform(&mut self, module: u8, op: Op) -> Result<Exchange, SessionError> {
+    fn perform(&mut self, module: u8, op: Op) -> Result<TmclExchange, SessionError> {
         let wire = self.contact(module)?;
         let mode = match wire {
             WireMode::Ascii => Mode::Ascii,
@@ -200,7 +200,7 @@ impl TmclSession {
     }
 
     /// Bookkeeping after an answer: which modules move, what echo a module now uses.
-    fn after(&mut self, exchange: &Exchange) {
+    fn after(&mut self, exchange: &TmclExchange) {
         if !exchange.ok() {
             return;
         }
@@ -246,7 +246,7 @@ impl TmclSession {
         &mut self,
         module: u8,
         instruction: Instruction,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         if self.contact(module)? != WireMode::Binary {
             return Err(SessionError::Usage(format!(
                 "module {module} must be in binary mode to store a program"
@@ -273,7 +273,7 @@ impl TmclSession {
         &mut self,
         module: u8,
         address: Option<i32>,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         let run_from = |address: Option<i32>| {
             Op::Command(Instruction::new(
                 Opcode::RunApplication,
@@ -293,7 +293,7 @@ impl TmclSession {
     }
 
     /// Stops the module's running TMCL program: ASCII `STOP`, or command 128 in binary mode.
-    pub fn stop_program(&mut self, module: u8) -> Result<Exchange, SessionError> {
+    pub fn stop_program(&mut self, module: u8) -> Result<TmclExchange, SessionError> {
         let op = match self.contact(module)? {
             WireMode::Ascii => Op::Ascii(AsciiWord::Stop),
             WireMode::Binary => Op::Command(Instruction::new(Opcode::StopApplication, 0, 0, 0)),

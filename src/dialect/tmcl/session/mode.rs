@@ -14,7 +14,7 @@ use crate::dialect::tmcl::protocol::frame::{CommandFrame, FRAME_LEN, ReplyFrame,
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Opcode};
 
-use super::{Answer, Exchange, TmclSession};
+use super::{TmclExchange, TmclReply, TmclSession};
 use crate::session::SessionError;
 use crate::session::transcript::Entry;
 
@@ -274,8 +274,8 @@ impl TmclSession {
                 return Err(e);
             }
         };
-        let value = match exchange.answer {
-            Answer::Reply { status, value } if status.is_success() => value,
+        let value = match exchange.reply {
+            TmclReply::Status { status, value } if status.is_success() => value,
             _ => 0,
         };
         let state = self
@@ -320,7 +320,7 @@ impl TmclSession {
     }
 
     /// Sends BIN; the module answers or not, and is in binary mode afterwards.
-    pub fn leave_ascii(&mut self, module: u8) -> Result<Exchange, SessionError> {
+    pub fn leave_ascii(&mut self, module: u8) -> Result<TmclExchange, SessionError> {
         let c = address_char(module).unwrap_or('?');
         let text = format!("{c}BIN");
         let wait = self.optional_wait(BIN_EXCHANGE_BYTES);
@@ -328,11 +328,11 @@ impl TmclSession {
             self.ascii_request_with(module, &text, Some(Op::Ascii(AsciiWord::Bin)), Some(wait));
         let exchange = match result {
             Ok(x) => x,
-            Err(SessionError::Timeout { .. }) => Exchange {
+            Err(SessionError::Timeout { .. }) => TmclExchange {
                 module,
                 sent: text,
                 op: Some(Op::Ascii(AsciiWord::Bin)),
-                answer: Answer::Nothing,
+                reply: TmclReply::Nothing,
                 raw: String::new(),
             },
             Err(e) => return Err(e),

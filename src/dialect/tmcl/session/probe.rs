@@ -5,7 +5,7 @@ use std::time::{Duration, Instant};
 
 use crate::dialect::tmcl::protocol::Instruction;
 
-use super::{Exchange, TmclSession, WireMode};
+use super::{TmclExchange, TmclSession, WireMode};
 use crate::session::SessionError;
 
 impl TmclSession {
@@ -30,7 +30,7 @@ impl TmclSession {
         &mut self,
         address: u8,
         instruction: Instruction,
-    ) -> Result<Exchange, SessionError> {
+    ) -> Result<TmclExchange, SessionError> {
         self.binary_request(address, instruction)
     }
 

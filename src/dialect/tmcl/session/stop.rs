@@ -7,14 +7,14 @@ use std::time::Duration;
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 
-use super::{Exchange, TmclSession, modules};
+use super::{TmclExchange, TmclSession, modules};
 use crate::dialect::session::DialectSession;
 use crate::session::SessionError;
 
 impl TmclSession {
     /// Sends MST to every motor of `module` at once, even on a line that has not settled since a
     /// failure; the answer for each motor.
-    pub fn stop_motors(&mut self, module: u8) -> Vec<(u8, Result<Exchange, SessionError>)> {
+    pub fn stop_motors(&mut self, module: u8) -> Vec<(u8, Result<TmclExchange, SessionError>)> {
         self.urgently(|s| {
             (0..s.profile.axes)
                 .map(|motor| {

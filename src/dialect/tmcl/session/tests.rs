@@ -12,7 +12,7 @@ use crate::dialect::tmcl::protocol::line::{self, Op};
 use crate::dialect::tmcl::protocol::{Instruction, Status};
 use crate::link::{Link, LinkError};
 
-use super::{Answer, Echo, TmclSession, WireMode};
+use super::{Echo, TmclReply, TmclSession, WireMode};
 use crate::session::{SessionError, SessionOptions};
 
 /// How the scripted module behaves.
@@ -295,8 +295,8 @@ fn enters_ascii_mode_reads_a_value_and_restores_binary_mode() {
     assert_eq!(x.sent, "AGAP 1, 0");
     assert_eq!(x.raw, "BA 100 -5000");
     assert_eq!(
-        x.answer,
-        Answer::Reply {
+        x.reply,
+        TmclReply::Status {
             status: Status::Ok,
             value: -5000
         }
@@ -693,7 +693,7 @@ fn no_cr_follows_a_bin_that_got_no_answer() {
         ..Quirks::default()
     });
     let x = s.exchange_line("BIN").unwrap();
-    assert_eq!(x.answer, Answer::Nothing);
+    assert_eq!(x.reply, TmclReply::Nothing);
     assert!(sent_text(&wire).ends_with("ABIN\r"), "{}", sent_text(&wire));
     assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
     let frame = CommandFrame {

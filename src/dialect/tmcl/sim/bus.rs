@@ -6,17 +6,14 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use crate::dialect::tmcl::profile::Profile;
-use crate::sim::Device;
+use crate::sim::{Device, LogSink};
 
 use super::control_cmd;
 use super::machine::Machine;
 use super::module::{Module, Sink};
 use super::motion::{Switch, Switches};
 use super::options::Quirks;
-use super::state::{BusImage, StateStore};
-
-/// A sink for log lines (`--verbose`): decoded bytes in and out.
-pub type LogSink = Box<dyn FnMut(&str) + Send>;
+use super::state::{BusImage, Eeprom};
 
 /// How to build a bus.
 pub struct BusOptions {
@@ -26,8 +23,8 @@ pub struct BusOptions {
     pub quirks: Quirks,
     /// Where each module's virtual switches are (the same for every module).
     pub switches: Switches,
-    /// Where the EEPROM lives between runs; `None` starts from factory settings every time.
-    pub store: Option<Box<dyn StateStore>>,
+    /// The EEPROM kept between runs; `None` starts from factory settings every time.
+    pub eeprom: Option<Eeprom>,
     /// Where to log decoded traffic; `None` logs nothing (and costs nothing).
     pub log: Option<LogSink>,
 }
@@ -38,7 +35,7 @@ impl Default for BusOptions {
             addresses: vec![1],
             quirks: Quirks::default(),
             switches: Switches::default(),
-            store: None,
+            eeprom: None,
             log: None,
         }
     }
@@ -64,7 +61,7 @@ pub struct Bus {
     modules: Vec<Module>,
     out: Vec<u8>,
     quirks: Quirks,
-    store: Option<Box<dyn StateStore>>,
+    eeprom: Option<Eeprom>,
     log: Option<LogSink>,
 }
 
@@ -75,13 +72,13 @@ fn secs(now: Duration) -> f64 {
 impl Bus {
     /// Modules as `options` say, with their EEPROM from the store, powered up at time 0.
     pub fn new(profile: Arc<Profile>, options: BusOptions) -> Bus {
-        let image = options.store.as_ref().and_then(|s| s.load());
+        let image = options.eeprom.as_ref().and_then(Eeprom::loaded);
         let modules = options
             .addresses
             .iter()
             .map(|&slot| {
                 let mut machine = Machine::new(profile.clone(), slot, options.switches);
-                if let Some(stored) = image.as_ref().and_then(|i| i.module(slot)) {
+                if let Some(stored) = image.and_then(|i| i.module(slot)) {
                     machine.load(stored);
                 }
                 Module::new(machine)
@@ -91,7 +88,7 @@ impl Bus {
             modules,
             out: Vec::new(),
             quirks: options.quirks,
-            store: options.store,
+            eeprom: options.eeprom,
             log: options.log,
         };
         bus.save_if_changed(true);
@@ -136,19 +133,19 @@ impl Bus {
     /// Saves the EEPROM image when a module's EEPROM changed (or when `force`d at start).
     fn save_if_changed(&mut self, force: bool) {
         let changed = self.modules.iter().any(|m| m.machine.eeprom_changed);
-        let Some(store) = self.store.as_mut() else {
+        let Some(eeprom) = self.eeprom.as_mut() else {
             return;
         };
         if !changed && !force {
             return;
         }
-        if !changed && store.load().is_some() {
+        if !changed && eeprom.loaded().is_some() {
             return;
         }
         let image = BusImage {
             modules: self.modules.iter().map(|m| m.machine.image()).collect(),
         };
-        store.save(&image);
+        eeprom.save(&image);
         for module in &mut self.modules {
             module.machine.eeprom_changed = false;
         }

@@ -8,11 +8,10 @@ use clap::{ArgMatches, Args, Command, FromArgMatches};
 
 use crate::dialect::SimFlags;
 use crate::dialect::tmcl::profile::Profile;
-use crate::sim::Device;
+use crate::sim::store::FileStore;
+use crate::sim::{Device, LogSink};
 
-use super::{
-    Backspace, Bus, BusOptions, FileStore, LineEnd, LogSink, Quirks, StateStore, Switches,
-};
+use super::{Backspace, Bus, BusOptions, Eeprom, LineEnd, Quirks, Switches};
 
 /// The bus layout.
 #[derive(Debug, Clone, clap::Args)]
@@ -131,9 +130,9 @@ pub fn served(
         }
         seen.push(address);
     }
-    let store = match state {
+    let eeprom = match state {
         Some(path) => {
-            Some(Box::new(FileStore::open(path).map_err(|e| e.to_string())?) as Box<dyn StateStore>)
+            Some(Eeprom::open(Box::new(FileStore::new(path))).map_err(|e| e.to_string())?)
         }
         None => None,
     };
@@ -152,7 +151,7 @@ pub fn served(
             right: module.right_switch,
             home: module.home_switch,
         },
-        store,
+        eeprom,
         log,
     };
     Ok(Box::new(Bus::new(profile.clone(), options)))

@@ -23,10 +23,10 @@ mod ramp;
 mod state;
 mod vm;
 
-pub use bus::{Bus, BusOptions, LogSink, MotorState};
+pub use bus::{Bus, BusOptions, MotorState};
 pub use motion::{Switch, Switches};
 pub use options::{Backspace, LineEnd, Quirks};
-pub use state::{BusImage, FileStore, MemoryStore, ModuleImage, StateError, StateStore};
+pub use state::{BusImage, Eeprom, ModuleImage, StateError};
 
 #[cfg(test)]
 mod tests;

@@ -1,12 +1,11 @@
 //! The simulated EEPROM of a bus, kept in a state file (`tmclsh sim --state FILE`) so that a
 //! restarted simulator keeps stored parameters, coordinates and programs like a power-cycled
-//! module. The core only sees the [`StateStore`] trait; the file is written at once whenever a
-//! stored value changes, so killing the simulator loses nothing.
-
-use std::path::{Path, PathBuf};
-use std::sync::{Arc, Mutex};
+//! module. The image lives in a [`Store`] (a file, or memory in tests) and is written at once
+//! whenever a stored value changes, so killing the simulator loses nothing.
 
 use serde::{Deserialize, Serialize};
+
+use crate::sim::store::{Store, StoreError};
 
 /// The EEPROM contents of every module on a bus.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
@@ -42,26 +41,12 @@ impl BusImage {
     }
 }
 
-/// Where the EEPROM image lives between runs.
-pub trait StateStore: Send {
-    /// The image saved last, if any.
-    fn load(&self) -> Option<BusImage>;
-
-    /// Saves the image (called whenever it changes).
-    fn save(&mut self, image: &BusImage);
-}
-
-/// Why a state file could not be used.
+/// Why a state file cannot be used.
 #[derive(Debug, thiserror::Error)]
 pub enum StateError {
     /// The file exists but cannot be read.
-    #[error("cannot read state file {path}: {source}")]
-    Read {
-        /// The file.
-        path: String,
-        /// What the OS said.
-        source: std::io::Error,
-    },
+    #[error(transparent)]
+    Store(#[from] StoreError),
     /// The file is not a state file.
     #[error("state file {path} is damaged ({message}); delete it to start from factory settings")]
     Parse {
@@ -72,96 +57,46 @@ pub enum StateError {
     },
 }
 
-/// A state file on disk, replaced atomically (write aside, then rename) on every save.
-#[derive(Debug)]
-pub struct FileStore {
-    path: PathBuf,
+/// The EEPROM image of a bus in its [`Store`]: read once when the simulator starts (a damaged file
+/// is refused then, before anything runs), written whenever a stored value changes.
+pub struct Eeprom {
+    store: Box<dyn Store>,
     loaded: Option<BusImage>,
 }
 
-impl FileStore {
-    /// Opens `path`; a missing file means factory state and is created on the first save.
-    pub fn open(path: &Path) -> Result<FileStore, StateError> {
-        let shown = path.display().to_string();
-        let loaded = match std::fs::read_to_string(path) {
-            Ok(text) => Some(toml::from_str(&text).map_err(|e| StateError::Parse {
-                path: shown,
+impl Eeprom {
+    /// Reads the image in `store`; an empty store means factory state.
+    pub fn open(store: Box<dyn Store>) -> Result<Eeprom, StateError> {
+        let loaded = match store.load()? {
+            Some(text) => Some(toml::from_str(&text).map_err(|e| StateError::Parse {
+                path: store.name(),
                 message: e.message().to_string(),
             })?),
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
-            Err(source) => {
-                return Err(StateError::Read {
-                    path: shown,
-                    source,
-                });
-            }
+            None => None,
         };
-        Ok(FileStore {
-            path: path.to_path_buf(),
-            loaded,
-        })
+        Ok(Eeprom { store, loaded })
     }
 
-    fn write(&self, image: &BusImage) -> std::io::Result<()> {
-        let body = toml::to_string_pretty(image).map_err(std::io::Error::other)?;
-        let text = format!(
-            "# Simulated TMCL module EEPROM (tmclsh sim --state). Delete for factory settings.\n{body}"
-        );
-        let mut aside = self.path.clone().into_os_string();
-        aside.push(".tmp");
-        std::fs::write(&aside, text)?;
-        std::fs::rename(&aside, &self.path)
-    }
-}
-
-impl StateStore for FileStore {
-    fn load(&self) -> Option<BusImage> {
-        self.loaded.clone()
+    /// The image the store held when the simulator started.
+    pub fn loaded(&self) -> Option<&BusImage> {
+        self.loaded.as_ref()
     }
 
-    fn save(&mut self, image: &BusImage) {
-        if let Err(e) = self.write(image) {
-            // The simulator keeps running; the user learns that persistence failed.
-            eprintln!(
-                "tmclsh sim: cannot write state file {}: {e}",
-                self.path.display()
-            );
+    /// Writes `image`. A failure is told on stderr and the simulator keeps running: the user
+    /// learns that persistence failed, the session on the other end sees a module that works.
+    pub fn save(&mut self, image: &BusImage) {
+        let written = toml::to_string_pretty(image)
+            .map_err(|e| e.to_string())
+            .and_then(|body| {
+                let text = format!("{HEADER}\n{body}");
+                self.store.save(&text).map_err(|e| e.to_string())
+            });
+        if let Err(e) = written {
+            eprintln!("tmclsh sim: {e}");
         }
     }
 }
 
-/// A state store in memory, shared between clones: "restart" a simulator in a test by building
-/// a new bus on a clone.
-#[derive(Debug, Clone, Default)]
-pub struct MemoryStore {
-    image: Arc<Mutex<Option<BusImage>>>,
-    saves: Arc<Mutex<usize>>,
-}
-
-impl MemoryStore {
-    /// An empty store (factory state).
-    pub fn new() -> Self {
-        Self::default()
-    }
-
-    /// The image saved last.
-    pub fn image(&self) -> Option<BusImage> {
-        self.image.lock().expect("store lock").clone()
-    }
-
-    /// How many times the image was saved.
-    pub fn saves(&self) -> usize {
-        *self.saves.lock().expect("store lock")
-    }
-}
-
-impl StateStore for MemoryStore {
-    fn load(&self) -> Option<BusImage> {
-        self.image()
-    }
-
-    fn save(&mut self, image: &BusImage) {
-        *self.image.lock().expect("store lock") = Some(image.clone());
-        *self.saves.lock().expect("store lock") += 1;
-    }
-}
+/// The first line of a state file.
+const HEADER: &str =
+    "# Simulated TMCL module EEPROM (tmclsh sim --state). Delete for factory settings.";

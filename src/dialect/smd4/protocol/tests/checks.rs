@@ -6,7 +6,7 @@ use proptest::prelude::*;
 use crate::dialect::smd4::protocol::format::{format_flags, format_float};
 use crate::dialect::smd4::protocol::{
     ErrorCode, Expectation, FlagCase, FloatStyle, Noise, Smd4Spec, check_reply, is_reply_to,
-    parse_response,
+    parse_reply,
 };
 
 fn expect(mnemonic: &str) -> Expectation {
@@ -20,7 +20,7 @@ fn check(mnemonic: &str, line: &str) -> Result<(), Noise> {
 
 fn check_to(mnemonic: &str, line: &str, to: Option<u32>) -> Result<(), Noise> {
     let expect = expect(mnemonic);
-    let reply = parse_response(line, &expect).unwrap_or_else(|e| panic!("{e}"));
+    let reply = parse_reply(line, &expect).unwrap_or_else(|e| panic!("{e}"));
     check_reply(&reply, &expect, to)
 }
 
@@ -214,13 +214,13 @@ fn control_and_non_ascii_bytes_are_noise_on_every_line() {
         );
     }
     // Unknown commands (sent with --no-validate) are held to printable text too.
-    let reply = parse_response("0x0888,0x0000,\x1b[2J", &Expectation::unknown()).unwrap();
+    let reply = parse_reply("0x0888,0x0000,\x1b[2J", &Expectation::unknown()).unwrap();
     assert_eq!(
         check_reply(&reply, &Expectation::unknown(), None),
         Err(Noise::NotPrintable { line: 1 })
     );
     // A line of a multi-line listing.
-    let mut reply = parse_response("0x0888,0x0000,", &expect("SYS:FLAGSV")).unwrap();
+    let mut reply = parse_reply("0x0888,0x0000,", &expect("SYS:FLAGSV")).unwrap();
     reply.lines = vec!["[X]Standby".into(), "[ ]Ident\x1b[2J".into()];
     let got = check_reply(&reply, &expect("SYS:FLAGSV"), None).unwrap_err();
     assert_eq!(got, Noise::NotPrintable { line: 3 });
@@ -310,7 +310,7 @@ fn error_codes_that_do_not_fit_are_noise_and_never_wrap() {
         ("MOTOR:T", ",-99999999999 (Action failed)"),
         ("MOTOR:T", ",-2147483649,Action failed"),
     ] {
-        let reply = parse_response(&format!("0x0888,0x0000{data}"), &expect(mnemonic)).unwrap();
+        let reply = parse_reply(&format!("0x0888,0x0000{data}"), &expect(mnemonic)).unwrap();
         assert!(reply.error.is_none(), "{data}: never a wrapped code");
         let code = data[1..].split([' ', ',']).next().unwrap();
         assert_eq!(
@@ -323,7 +323,7 @@ fn error_codes_that_do_not_fit_are_noise_and_never_wrap() {
     passes("MOTOR:T", ",-99999999999");
     // The edges of an i32 are codes.
     for code in [i32::MIN, -1] {
-        let reply = parse_response(
+        let reply = parse_reply(
             &format!("0x0888,0x0000,{code} (Edge)"),
             &expect("MOTOR:VACT"),
         )
@@ -339,7 +339,7 @@ fn error_codes_that_do_not_fit_are_noise_and_never_wrap() {
 #[test]
 fn unknown_error_codes_are_device_errors_shown_as_received() {
     let line = "0x0888,0x0000,-42 (Something new)";
-    let reply = parse_response(line, &expect("MOTOR:VACT")).unwrap();
+    let reply = parse_reply(line, &expect("MOTOR:VACT")).unwrap();
     assert_eq!(check_reply(&reply, &expect("MOTOR:VACT"), None), Ok(()));
     let error = reply.error.unwrap();
     assert_eq!(error.code, ErrorCode::Other(-42));
@@ -357,10 +357,10 @@ fn unknown_commands_are_checked_for_form_only() {
         "0x0888,0x0000,1,2,3,abc",
         "0x0888,0x0000,-42",
     ] {
-        let reply = parse_response(line, &unknown).unwrap();
+        let reply = parse_reply(line, &unknown).unwrap();
         assert_eq!(check_reply(&reply, &unknown, None), Ok(()), "{line}");
     }
-    let reply = parse_response("0x0888,0x0000,-99999999999,Oops", &unknown).unwrap();
+    let reply = parse_reply("0x0888,0x0000,-99999999999,Oops", &unknown).unwrap();
     assert_eq!(
         check_reply(&reply, &unknown, None),
         Err(Noise::ErrorCode("-99999999999".into()))
@@ -399,7 +399,7 @@ proptest! {
     #[test]
     fn any_line_is_checked_without_panicking(line in "\\PC{0,60}|[@0-9xX,.Ee+-]{0,40}") {
         for mnemonic in ["MOTOR:VMAX", "MOTOR:PACT", "SYS:MODE", "SYS:FLAGSV", "MOTOR:T", "SYS:BSN"] {
-            if let Ok(reply) = parse_response(&line, &expect(mnemonic)) {
+            if let Ok(reply) = parse_reply(&line, &expect(mnemonic)) {
                 let _ = check_reply(&reply, &expect(mnemonic), None);
                 let _ = check_reply(&reply, &expect(mnemonic), Some(3));
             }

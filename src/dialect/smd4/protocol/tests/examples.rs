@@ -3,8 +3,8 @@
 //! the test names the example and says what is wrong with it.
 
 use crate::dialect::smd4::protocol::{
-    Example, Expectation, ItemType, Progress, ReplyCollector, ReplyShape, Request, Smd4Spec,
-    ValidationError, Value, check_reply, parse_response, validate,
+    CollectorState, Example, Expectation, ItemType, ReplyCollector, ReplyShape, Request, Smd4Spec,
+    ValidationError, Value, check_reply, parse_reply, validate,
 };
 
 fn all_examples() -> Vec<(String, Example)> {
@@ -65,11 +65,14 @@ fn every_reply_parses_with_the_types_its_command_returns() {
             .unwrap();
         let mut collector = ReplyCollector::new(Expectation::for_command(spec));
         let reply = match collector.push_line(rx).unwrap() {
-            Progress::Complete(reply) => *reply,
-            Progress::AwaitQuiet => {
+            CollectorState::Complete(reply) => *reply,
+            CollectorState::AwaitQuiet => {
                 assert!(spec.multi_line(), "{rx}");
                 for line in &example.rx_more {
-                    assert_eq!(collector.push_line(line).unwrap(), Progress::AwaitQuiet);
+                    assert_eq!(
+                        collector.push_line(line).unwrap(),
+                        CollectorState::AwaitQuiet
+                    );
                 }
                 collector.finish_quiet().unwrap()
             }
@@ -132,7 +135,7 @@ fn writes_echo_the_value_set_except_where_the_document_is_wrong() {
         else {
             continue;
         };
-        let reply = parse_response(rx, &Expectation::for_command(spec)).unwrap();
+        let reply = parse_reply(rx, &Expectation::for_command(spec)).unwrap();
         let echoed = &reply.data[0];
         let same = match (arg.parse::<f64>(), echoed.value.as_f64()) {
             (Ok(sent), Some(got)) => (sent - got).abs() < 1e-9,
@@ -159,7 +162,7 @@ fn writes_echo_the_value_set_except_where_the_document_is_wrong() {
 fn notable_examples_decode_to_the_documented_values() {
     let table = &Smd4Spec::builtin().commands;
     let parse = |mnemonic: &str, rx: &str| {
-        parse_response(rx, &Expectation::for_command(table.get(mnemonic).unwrap())).unwrap()
+        parse_reply(rx, &Expectation::for_command(table.get(mnemonic).unwrap())).unwrap()
     };
     // §7.5: the VSTOP example lacks the `E`; user 10 Hz, real 9.9996 Hz.
     assert_eq!(

@@ -1,13 +1,13 @@
 //! Each validation error, with the message the user sees.
 
 use crate::dialect::smd4::protocol::{
-    Access, ArgValue, Request, Smd4Spec, ValidationError, validate,
+    Action, ArgValue, Request, Smd4Spec, ValidationError, validate,
 };
 use crate::exit::{Exit, ExitStatus};
 
-fn check(line: &str) -> Result<Access, ValidationError> {
+fn check(line: &str) -> Result<Action, ValidationError> {
     let request = Request::parse(line).unwrap();
-    validate(&request, &Smd4Spec::builtin().commands).map(|c| c.access)
+    validate(&request, &Smd4Spec::builtin().commands).map(|c| c.action)
 }
 
 fn message(line: &str) -> String {
@@ -18,27 +18,27 @@ fn message(line: &str) -> String {
 
 #[test]
 fn valid_requests_say_what_they_do() {
-    assert_eq!(check("MOTOR:VMAX"), Ok(Access::Read));
+    assert_eq!(check("MOTOR:VMAX"), Ok(Action::Read));
     assert_eq!(
         check("motor:vmax,1000"),
-        Ok(Access::Write(ArgValue::Float(1000.0)))
+        Ok(Action::Write(ArgValue::Float(1000.0)))
     );
-    assert_eq!(check("SYS:CLR"), Ok(Access::Run));
+    assert_eq!(check("SYS:CLR"), Ok(Action::Run));
     assert_eq!(
         check("MOTOR:RUNV,-"),
-        Ok(Access::Write(ArgValue::Text("-".into())))
+        Ok(Action::Write(ArgValue::Text("-".into())))
     );
     assert_eq!(
         check("MOTOR:RES,0x80"),
-        Ok(Access::Write(ArgValue::Int(128)))
+        Ok(Action::Write(ArgValue::Int(128)))
     );
-    assert_eq!(check("@247MOTOR:STOP"), Ok(Access::Run));
-    assert_eq!(check("@0SYS:CLR"), Ok(Access::Run));
+    assert_eq!(check("@247MOTOR:STOP"), Ok(Action::Run));
+    assert_eq!(check("@0SYS:CLR"), Ok(Action::Run));
     assert_eq!(
         check("MOTOR:IR,100e-3"),
-        Ok(Access::Write(ArgValue::Float(0.1)))
+        Ok(Action::Write(ArgValue::Float(0.1)))
     );
-    assert_eq!(check("SYS:STORE"), Ok(Access::Run));
+    assert_eq!(check("SYS:STORE"), Ok(Action::Run));
     assert!(check("COMS:SERIAL:BAUD,115200").is_ok());
 }
 

@@ -347,7 +347,7 @@ fn joystick_and_limit_polarity() {
     let flags = b.reply("SYS:FW").sflags;
     assert!(flags.is_set(Sflags::LIMIT_POSITIVE) && flags.is_set(Sflags::LIMIT_NEGATIVE));
     b.sim
-        .set_limit_input(b.now, super::super::Side::Positive, true);
+        .set_limit_input(b.now, super::super::Limit::Positive, true);
     let flags = b.reply("SYS:FW").sflags;
     assert!(!flags.is_set(Sflags::LIMIT_POSITIVE) && flags.is_set(Sflags::LIMIT_NEGATIVE));
 }

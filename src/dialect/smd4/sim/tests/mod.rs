@@ -12,11 +12,12 @@ mod replies;
 use std::time::Duration;
 
 use crate::dialect::smd4::protocol::{
-    Expectation, Progress, ReplyCollector, Request, Response, Smd4Spec, check_reply, parse_response,
+    CollectorState, Expectation, ReplyCollector, Request, Smd4Reply, Smd4Spec, check_reply,
+    parse_reply,
 };
 use crate::sim::Device;
 
-use super::{Smd4Options, Smd4Sim};
+use super::{Smd4Sim, Smd4SimOptions};
 
 /// A simulator and the time the next bytes arrive at.
 pub struct Bench {
@@ -26,10 +27,10 @@ pub struct Bench {
 
 impl Bench {
     pub fn new() -> Bench {
-        Bench::with(Smd4Options::default())
+        Bench::with(Smd4SimOptions::default())
     }
 
-    pub fn with(options: Smd4Options) -> Bench {
+    pub fn with(options: Smd4SimOptions) -> Bench {
         Bench {
             sim: Smd4Sim::new(options),
             now: Duration::ZERO,
@@ -60,7 +61,7 @@ impl Bench {
 
     /// Sends `line` and parses and checks the reply as a client would, multi-line replies
     /// included.
-    pub fn reply(&mut self, line: &str) -> Response {
+    pub fn reply(&mut self, line: &str) -> Smd4Reply {
         let request = Request::parse(line).unwrap();
         let expect = Expectation::for_request(&Smd4Spec::builtin().commands, &request);
         let reply = self.collect(line, expect.clone());
@@ -73,20 +74,20 @@ impl Bench {
         reply
     }
 
-    fn collect(&mut self, line: &str, expect: Expectation) -> Response {
+    fn collect(&mut self, line: &str, expect: Expectation) -> Smd4Reply {
         let text = self.raw(format!("{line}\r\n").as_bytes());
         let mut collector = ReplyCollector::new(expect);
         let mut lines = text.split_terminator("\r\n");
         let first = lines.next().unwrap_or_else(|| panic!("no reply to {line}"));
         match collector.push_line(first).unwrap() {
-            Progress::Complete(reply) => {
+            CollectorState::Complete(reply) => {
                 assert!(
                     lines.next().is_none(),
                     "{line}: one line expected in {text:?}"
                 );
                 *reply
             }
-            Progress::AwaitQuiet => {
+            CollectorState::AwaitQuiet => {
                 for more in lines {
                     collector.push_line(more).unwrap();
                 }
@@ -114,7 +115,7 @@ impl Bench {
 
     /// A number read back.
     pub fn number(&mut self, line: &str) -> f64 {
-        let reply = parse_response(&self.send(line), &Expectation::unknown()).unwrap();
+        let reply = parse_reply(&self.send(line), &Expectation::unknown()).unwrap();
         reply.data[0].value.as_f64().unwrap()
     }
 

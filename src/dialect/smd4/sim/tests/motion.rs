@@ -3,7 +3,7 @@
 
 use super::Bench;
 use crate::dialect::smd4::protocol::Sflags;
-use crate::dialect::smd4::sim::Side;
+use crate::dialect::smd4::sim::Limit;
 
 /// Position and velocity read back over the protocol.
 fn state(b: &mut Bench, t: f64) -> (f64, f64) {
@@ -196,7 +196,7 @@ fn enabled_limits_stop_motion_hard_or_soft() {
     // Globally disabled (the default): an active input shows in SFLAGS but stops nothing.
     b.send("MOTOR:RUNV,+");
     b.at(2.0);
-    b.sim.set_limit_input(b.now, Side::Positive, true);
+    b.sim.set_limit_input(b.now, Limit::Positive, true);
     assert!(b.reply("SYS:FW").sflags.is_set(Sflags::LIMIT_POSITIVE));
     assert!(!b.standby());
     // Enabled with hard stop: the motor stops where it is.
@@ -214,12 +214,12 @@ fn enabled_limits_stop_motion_hard_or_soft() {
     b.send("MOTOR:STOP");
     b.at(8.0);
     // Per-side enable, and soft stop: ramps down at DMAX.
-    b.sim.set_limit_input(b.now, Side::Positive, false);
+    b.sim.set_limit_input(b.now, Limit::Positive, false);
     b.send("LIMIT:EN+,0");
     b.send("LIMIT:STOPMODE,1");
     b.send("MOTOR:RUNV,+");
     b.at(10.0);
-    b.sim.set_limit_input(b.now, Side::Positive, true);
+    b.sim.set_limit_input(b.now, Limit::Positive, true);
     assert!(!b.standby(), "positive limit disabled");
     b.send("LIMIT:EN+,1");
     let (_, v) = state(&mut b, 10.5);
@@ -241,7 +241,7 @@ fn homing_runs_to_the_limit_and_prel_counts_along() {
     assert!(b.reply("MOTOR:RUNH,-").is_ok());
     b.at(12.0);
     assert!(!b.standby());
-    b.sim.set_limit_input(b.now, Side::Negative, true);
+    b.sim.set_limit_input(b.now, Limit::Negative, true);
     assert!(b.standby(), "stopped on the home switch");
     let (p, _) = state(&mut b, 12.0);
     assert!(p < 1500.0);

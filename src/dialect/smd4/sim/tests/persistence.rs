@@ -5,7 +5,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use super::Bench;
 use crate::dialect::smd4::protocol::Eflags;
-use crate::dialect::smd4::sim::Smd4Options;
+use crate::dialect::smd4::sim::Smd4SimOptions;
 
 /// A fresh directory for one test's state file.
 fn scratch(name: &str) -> PathBuf {
@@ -18,9 +18,9 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 fn drive(state: &Path) -> Bench {
-    Bench::with(Smd4Options {
+    Bench::with(Smd4SimOptions {
         state_file: Some(state.to_path_buf()),
-        ..Smd4Options::default()
+        ..Smd4SimOptions::default()
     })
 }
 

@@ -1,12 +1,12 @@
-//! Each switch of Smd4Options changes exactly what it says, and the client parser reads every
+//! Each switch of Smd4SimOptions changes exactly what it says, and the client parser reads every
 //! variant.
 
 use super::Bench;
 use crate::dialect::smd4::protocol::{ErrorSpelling, FlagCase, FloatStyle, PrefixStyle};
-use crate::dialect::smd4::sim::{PositionFormat, PrefixAcceptance, Side, Smd4Options};
+use crate::dialect::smd4::sim::{Limit, PositionFormat, PrefixAcceptance, Smd4SimOptions};
 
-fn with(change: impl FnOnce(&mut Smd4Options)) -> Bench {
-    let mut options = Smd4Options::default();
+fn with(change: impl FnOnce(&mut Smd4SimOptions)) -> Bench {
+    let mut options = Smd4SimOptions::default();
     change(&mut options);
     Bench::with(options)
 }
@@ -15,7 +15,7 @@ fn with(change: impl FnOnce(&mut Smd4Options)) -> Bench {
 fn flag_hex_case() {
     let setup = |b: &mut Bench| {
         b.send("SYS:IDENT,1");
-        b.sim.set_limit_input(b.now, Side::Positive, true);
+        b.sim.set_limit_input(b.now, Limit::Positive, true);
     };
     let mut upper = Bench::new();
     setup(&mut upper);

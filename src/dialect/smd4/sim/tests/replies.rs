@@ -4,12 +4,12 @@
 
 use super::Bench;
 use crate::dialect::smd4::protocol::{ErrorSpelling, FlagCase, FloatStyle, Smd4Spec};
-use crate::dialect::smd4::sim::{PositionFormat, Smd4Options};
+use crate::dialect::smd4::sim::{PositionFormat, Smd4SimOptions};
 
 /// Every combination of the switches that change how replies are spelled.
-fn every_spelling() -> Vec<Smd4Options> {
-    let mut all = vec![Smd4Options::default()];
-    let mut vary = |change: &dyn Fn(&mut Smd4Options, usize), ways: usize| {
+fn every_spelling() -> Vec<Smd4SimOptions> {
+    let mut all = vec![Smd4SimOptions::default()];
+    let mut vary = |change: &dyn Fn(&mut Smd4SimOptions, usize), ways: usize| {
         all = all
             .iter()
             .flat_map(|o| {

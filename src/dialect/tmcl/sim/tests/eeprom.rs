@@ -1,13 +1,14 @@
 //! The simulated EEPROM: persistence across a restart through the state store, factory reset,
 //! start-up in ASCII mode, the state file on disk.
 
-use crate::dialect::tmcl::sim::{BusOptions, FileStore, MemoryStore, StateStore};
+use crate::dialect::tmcl::sim::{BusOptions, Eeprom};
+use crate::sim::store::{FileStore, MemoryStore};
 
 use super::Sim;
 
 fn with_store(store: &MemoryStore) -> Sim {
     Sim::with(BusOptions {
-        store: Some(Box::new(store.clone())),
+        eeprom: Some(Eeprom::open(Box::new(store.clone())).unwrap()),
         ..BusOptions::default()
     })
 }
@@ -108,10 +109,10 @@ fn the_state_file_round_trips_and_reports_damage() {
     let path = dir.join("eeprom.toml");
     let _ = std::fs::remove_file(&path);
     {
-        let store = FileStore::open(&path).unwrap();
-        assert!(store.load().is_none());
+        let eeprom = Eeprom::open(Box::new(FileStore::new(&path))).unwrap();
+        assert!(eeprom.loaded().is_none());
         let mut sim = Sim::with(BusOptions {
-            store: Some(Box::new(store)),
+            eeprom: Some(eeprom),
             addresses: vec![1, 2],
             ..BusOptions::default()
         });
@@ -120,11 +121,29 @@ fn the_state_file_round_trips_and_reports_damage() {
     }
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(text.contains("31337"), "{text}");
-    let store = FileStore::open(&path).unwrap();
-    let image = store.load().unwrap();
+    let eeprom = Eeprom::open(Box::new(FileStore::new(&path))).unwrap();
+    let image = eeprom.loaded().unwrap();
     assert!(image.module(2).unwrap().axis.contains(&(4, 31_337)));
     std::fs::write(&path, "[[module]]\nslot = \"x\"\n").unwrap();
-    let error = FileStore::open(&path).unwrap_err().to_string();
+    let error = Eeprom::open(Box::new(FileStore::new(&path)))
+        .err()
+        .unwrap()
+        .to_string();
     assert!(error.contains("damaged"), "{error}");
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_state_file_written_by_an_earlier_version_still_loads() {
+    let store = MemoryStore::new();
+    let mut writer = store.clone();
+    crate::sim::store::Store::save(
+        &mut writer,
+        "# Simulated TMCL module EEPROM (tmclsh sim --state). Delete for factory settings.\n\
+         [[module]]\nslot = 1\naxis = [[4, 4242]]\nglobal = [[2, 12, -9]]\n",
+    )
+    .unwrap();
+    let mut sim = with_store(&store);
+    assert_eq!(sim.gap(4), 4242);
+    assert_eq!(sim.ok(10, 12, 2, 0), -9);
 }

@@ -2,8 +2,9 @@
 //! 131 reset, 135 status), arithmetic and jumps, waits, and the errors that stop a program.
 
 use crate::dialect::tmcl::protocol::Status;
-use crate::dialect::tmcl::sim::{BusOptions, MemoryStore, Switches};
+use crate::dialect::tmcl::sim::{BusOptions, Eeprom, Switches};
 use crate::sim::Device;
+use crate::sim::store::MemoryStore;
 
 use super::Sim;
 
@@ -302,7 +303,7 @@ fn program_errors_stop_the_program_and_say_why() {
 fn auto_start_runs_the_stored_program_at_power_up() {
     let store = MemoryStore::new();
     let options = || BusOptions {
-        store: Some(Box::new(store.clone())),
+        eeprom: Some(Eeprom::open(Box::new(store.clone())).unwrap()),
         ..BusOptions::default()
     };
     let mut sim = Sim::with(options());

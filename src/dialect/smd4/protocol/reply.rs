@@ -11,7 +11,7 @@ use nom::character::complete::{char, digit1, one_of};
 use nom::combinator::opt;
 use nom::{IResult, Parser};
 
-use super::commands::{CommandSpec, CommandTable, ReplyShape};
+use super::commands::{ReplyShape, Smd4Command, Smd4CommandTable};
 use super::errors::{DeviceError, ErrorCode};
 use super::flags::{Eflags, Sflags};
 use super::items::{DataItem, Value, parse_named};
@@ -20,7 +20,7 @@ use super::types::{ItemType, parse_int};
 
 /// A parsed reply.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Response {
+pub struct Smd4Reply {
     /// The `@N,` prefix of a reply from an addressed drive.
     pub address: Option<u32>,
     /// Status word.
@@ -38,7 +38,7 @@ pub struct Response {
     pub raw: String,
 }
 
-impl Response {
+impl Smd4Reply {
     /// Whether the command succeeded.
     pub fn is_ok(&self) -> bool {
         self.error.is_none()
@@ -58,7 +58,7 @@ impl Response {
     }
 
     /// The reply, or the device error it carries.
-    pub fn into_result(self) -> Result<Response, DeviceError> {
+    pub fn into_result(self) -> Result<Smd4Reply, DeviceError> {
         match self.error {
             Some(error) => Err(error),
             None => Ok(self),
@@ -69,7 +69,7 @@ impl Response {
 /// Why a line is not a reply.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("not an SMD4 reply: '{line}' ({why})")]
-pub struct ResponseError {
+pub struct ReplyError {
     /// The line.
     pub line: String,
     /// What is wrong with it.
@@ -92,7 +92,7 @@ impl Expectation {
     }
 
     /// The reply of `spec`.
-    pub fn for_command(spec: &CommandSpec) -> Expectation {
+    pub fn for_command(spec: &Smd4Command) -> Expectation {
         Expectation {
             shape: Some(spec.reply.clone()),
             value: spec.value_item_type(),
@@ -101,7 +101,7 @@ impl Expectation {
     }
 
     /// The reply to `request`, looked up in `table`.
-    pub fn for_request(table: &CommandTable, request: &Request) -> Expectation {
+    pub fn for_request(table: &Smd4CommandTable, request: &Request) -> Expectation {
         table
             .get(&request.mnemonic)
             .map(Expectation::for_command)
@@ -128,9 +128,9 @@ impl Expectation {
 }
 
 /// Parses one reply line (line ending optional).
-pub fn parse_response(line: &str, expect: &Expectation) -> Result<Response, ResponseError> {
+pub fn parse_reply(line: &str, expect: &Expectation) -> Result<Smd4Reply, ReplyError> {
     let text = line.trim_end_matches(['\r', '\n']);
-    let fail = |why| ResponseError {
+    let fail = |why| ReplyError {
         line: text.to_string(),
         why,
     };
@@ -157,7 +157,7 @@ pub fn parse_response(line: &str, expect: &Expectation) -> Result<Response, Resp
             .map(|(i, raw)| typed_item(raw, i, expect))
             .collect(),
     };
-    Ok(Response {
+    Ok(Smd4Reply {
         address,
         sflags: Sflags(sflags),
         eflags: Eflags(eflags),
@@ -207,7 +207,7 @@ fn error_item(items: &[&str], expect: &Expectation) -> Option<DeviceError> {
 }
 
 /// Whether both flag words of a reply line are written as the type table says: `0x` and exactly
-/// four hex digits. [`parse_response`] reads shorter words too, so that a line is still
+/// four hex digits. [`parse_reply`] reads shorter words too, so that a line is still
 /// recognised as a reply; a reply with a short word lost a digit on the way.
 pub(super) fn full_width_flags(line: &str) -> bool {
     head_of_width(line, 4).is_ok()
