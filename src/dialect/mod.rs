@@ -8,6 +8,7 @@
 //! folder, never outside it.
 
 mod config;
+pub mod elsewhere;
 pub mod grammar;
 pub mod guard;
 pub mod helper;
@@ -39,6 +40,15 @@ pub struct Dialect {
     pub summary: &'static str,
     /// What its modules are called in messages (`TMCL modules`, `SMD4 drives`).
     pub devices: &'static str,
+    /// Its name for messages with the indefinite article (`a TMCL`, `an SMD4`).
+    pub indefinite: &'static str,
+    /// Whether a typed line reads as one of its commands by its own grammar and built-in
+    /// tables, right arguments or not: how a line typed in the wrong session is told
+    /// ([`elsewhere`]).
+    pub recognises: fn(&str) -> bool,
+    /// The device functions its scripts have, besides those every script has: how a script
+    /// run in the wrong session is told.
+    pub script_functions: &'static [&'static str],
     /// Its helper commands besides those every dialect has (`:bin`, `:flags` …).
     pub helpers: &'static [Helper],
     /// Reads the dialect's tables (TMCL: the `--profile` file) into a [`DialectConfig`].

@@ -18,7 +18,7 @@ use rustyline::{CompletionType, Config, Editor};
 use crate::escape::escape_control;
 use crate::exit::Exit;
 use crate::session::{SessionError, interrupt};
-use crate::shell::words::{Everyday, everyday};
+use crate::shell::words::{Everyday, everyday, only_remark};
 use crate::shell::{Flow, Shell};
 
 use editor::ReplHelper;
@@ -97,7 +97,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
 
 /// Runs one typed line and shows its outcome.
 fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Flow {
-    if text.is_empty() {
+    if only_remark(text) {
         return Flow::Continue;
     }
     crate::crash::point("repl", text);

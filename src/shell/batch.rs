@@ -22,7 +22,7 @@ use crate::escape::escape_control;
 use crate::exit::{Exit, ExitStatus};
 use crate::session::{SessionError, interrupt};
 
-use super::words::{Everyday, everyday};
+use super::words::{Everyday, everyday, only_remark};
 use super::{Flow, Shell};
 pub use format::Output;
 use lines::{LineError, LineReader, MAX_LINE};
@@ -123,7 +123,7 @@ pub fn run(
             }
         };
         let text = line.trim();
-        if text.is_empty() || text.starts_with('#') {
+        if only_remark(text) {
             continue;
         }
         let outcome = step(shell, number, text, options.output, out, err)

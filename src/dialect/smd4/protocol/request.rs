@@ -161,6 +161,40 @@ impl Request {
     }
 }
 
+/// A typed line without its trailing `//` comment (as `.tmc` files and people write them), where
+/// `//` cannot be part of the request: anywhere but in the free text argument of a command of
+/// `table` that takes one.
+pub fn without_comment<'a>(table: &super::Smd4CommandTable, line: &'a str) -> &'a str {
+    let Some(at) = line.find("//") else {
+        return line;
+    };
+    let text = line.trim_start();
+    let free_text = prefix(text)
+        .ok()
+        .and_then(|(rest, _)| mnemonic(rest).ok())
+        .and_then(|(_, word)| table.get(word))
+        .and_then(|command| command.arg.as_ref())
+        .is_some_and(|arg| arg.ty == super::ItemType::Str && arg.choices.is_empty());
+    if free_text {
+        line
+    } else {
+        line[..at].trim_end()
+    }
+}
+
+/// Whether `line` reads as a request for a command of the built-in table, whatever follows the
+/// mnemonic (for [`Dialect::recognises`](crate::dialect::Dialect::recognises)).
+pub fn recognises(line: &str) -> bool {
+    let text = line.trim();
+    let Ok((rest, _)) = prefix(text) else {
+        return false;
+    };
+    match mnemonic(rest) {
+        Ok((_, word)) => super::Smd4Spec::builtin().commands.get(word).is_some(),
+        Err(_) => false,
+    }
+}
+
 fn bad_prefix(text: &str) -> RequestError {
     let end = text
         .find(|c: char| c.is_ascii_alphabetic())
