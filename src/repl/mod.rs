@@ -33,6 +33,8 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
     let color = color_enabled();
     let config = Config::builder()
         .completion_type(CompletionType::List)
+        // One Tab lists what an ambiguous word may become (`MOTOR:` and its commands).
+        .completion_show_all_if_ambiguous(true)
         .auto_add_history(true)
         .history_ignore_space(true)
         .max_history_size(5000)

@@ -152,3 +152,36 @@ fn a_trailing_comment_is_accepted_in_typed_and_piped_lines() {
     let transcript = std::fs::read_to_string(&log).unwrap();
     assert!(!transcript.contains("//"), "{transcript}");
 }
+
+#[test]
+fn smd4_near_misses_are_judged_by_the_segment_that_differs() {
+    let smd4 = |line: &str| {
+        let out = run(&["--protocol", "smd4", "-c", line]);
+        assert_eq!(code(&out), 2, "{line}: {}", stderr(&out));
+        stderr(&out)
+    };
+    let err = smd4("MOTOR:FOO");
+    assert!(
+        err.contains("unknown mnemonic 'MOTOR:FOO'") && !err.contains("did you mean"),
+        "{err}"
+    );
+    assert!(smd4("MOTOR:VMXA").contains("did you mean MOTOR:VMAX?"));
+    assert!(smd4("MOTR:AMAX").contains("did you mean MOTOR:AMAX?"));
+    assert!(smd4("MOTOR:VMAX 2000").contains("did you mean MOTOR:VMAX,2000?"));
+    assert!(smd4("@3MOTOR:VMAX=2000").contains("did you mean @3MOTOR:VMAX,2000?"));
+}
+
+#[test]
+fn one_tab_after_an_smd4_group_lists_its_commands() {
+    let (mut p, _) = repl(&["--protocol", "smd4"]);
+    p.exp_string("> ").unwrap();
+    type_in(&mut p, "MOTOR:");
+    type_in(&mut p, "\t");
+    p.exp_string("MOTOR:AMAX").unwrap();
+    p.exp_string("MOTOR:VMAX").unwrap();
+    // The line is kept: typing on completes it.
+    type_in(&mut p, "VMAX\r");
+    p.exp_string("1000 Hz requested").unwrap();
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
