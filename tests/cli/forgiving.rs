@@ -185,3 +185,42 @@ fn one_tab_after_an_smd4_group_lists_its_commands() {
     p.send_control('d').unwrap();
     p.exp_eof().unwrap();
 }
+
+/// The REPL on the built-in simulator with colours on (no NO_COLOR).
+fn coloured_repl() -> rexpect::session::PtySession {
+    let data = tempdir();
+    let mut command = std::process::Command::new(crate::util::bin());
+    command
+        .env_remove("NO_COLOR")
+        .env("TERM", "xterm")
+        .env("XDG_DATA_HOME", &data)
+        .env("XDG_CONFIG_HOME", &data)
+        .env("HOME", &data);
+    let mut p = rexpect::session::spawn_command(command, Some(crate::util::EXPECT_MS)).unwrap();
+    p.exp_string("A> ").unwrap();
+    p
+}
+
+/// What the terminal shows up to the next line end, after typing `text`.
+fn typed_shows(p: &mut rexpect::session::PtySession, text: &str, until: &str) -> String {
+    type_in(p, text);
+    p.exp_string(until).unwrap()
+}
+
+#[test]
+fn an_incomplete_line_stays_neutral_and_an_invalid_one_turns_red_with_its_reason() {
+    const RED: &str = "\x1b[38;5;9m";
+    let mut p = coloured_repl();
+    // On its way: a mnemonic being typed, then a parameter, no red, the parameter's hint.
+    let shown = typed_shows(&mut p, "GAP max_cur", "max_current [0..15, RWE]");
+    assert!(!shown.contains(RED), "{shown:?}");
+    type_in(&mut p, "\x15"); // Ctrl-U: clear the line.
+    // Invalid: red, and the hint says why instead of describing the parameter.
+    let shown = typed_shows(&mut p, "GAP 4, 7", "motor 7 does not exist");
+    assert!(shown.contains(RED), "{shown:?}");
+    type_in(&mut p, "\x15");
+    typed_shows(&mut p, "MOTOR:VMAX", "this looks like an SMD4 command");
+    type_in(&mut p, "\x15");
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
