@@ -171,6 +171,7 @@ mod log;
 mod output;
 mod ports;
 mod snapshot_save;
+mod values;
 mod words;
 
 #[test]

@@ -28,6 +28,11 @@ pub use grammar::Grammar;
 pub use helper::{ArgKind, Helper, Section};
 pub use session::{DialectSession, Reply};
 
+/// The mark of a value the module's documentation does not confirm (a parameter row taken from a
+/// sibling module, a command the document leaves open), the same in every dialect's tables and
+/// help; `:help params` explains it.
+pub const UNCERTAIN: &str = "*";
+
 /// Every dialect, the default first: `--protocol` offers them in this order.
 pub static DIALECTS: &[&Dialect] = &[&tmcl::DIALECT, &smd4::DIALECT];
 

@@ -10,14 +10,14 @@ pub const SHARED: &[Helper] = &[
     helper(
         "help",
         ":help [topic]",
-        "this help; topics: a command, a helper, params, exit, ascii or addressing",
+        "this help; topics: a command, a parameter, a helper, params, exit, ascii or addressing",
         ArgKind::Topic,
         Section::Session,
     ),
     helper(
         "params",
-        ":params [filter]",
-        "list the module's parameters or settings (matching filter)",
+        ":params [--values] [filter]",
+        "list the module's parameters or settings (matching filter); --values reads them",
         ArgKind::Param,
         Section::Session,
     ),

@@ -69,6 +69,6 @@ impl Grammar for Smd4Grammar {
     }
 
     fn topics(&self) -> &'static [&'static str] {
-        &["exit", "addressing"]
+        &["params", "exit", "addressing"]
     }
 }

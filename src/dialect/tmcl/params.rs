@@ -3,6 +3,7 @@
 use std::io::{self, Write};
 
 use super::profile::{Param, ParamKind, Profile};
+use crate::dialect::UNCERTAIN;
 
 /// The parameters of `profile` matching `filter`, as a table; when none matches, says so on
 /// stderr and returns false.
@@ -38,8 +39,14 @@ pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
         .max(5);
     writeln!(
         out,
-        "{:<8} {:>3}  {:<ident_width$}  {:<3}  {:<range_width$}  unit",
-        "kind", "no", "name", "acc", "range"
+        "{:<8} {:>3}{:mark$} {:<ident_width$}  {:<3}  {:<range_width$}  unit",
+        "kind",
+        "no",
+        "",
+        "name",
+        "acc",
+        "range",
+        mark = UNCERTAIN.len()
     )?;
     for p in rows {
         // A range that applies while another parameter has a value follows the unit.
@@ -50,9 +57,10 @@ pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
             .collect();
         writeln!(
             out,
-            "{:<8} {:>3}  {:<ident_width$}  {:<3}  {:<range_width$}  {}{when}",
+            "{:<8} {:>3}{} {:<ident_width$}  {:<3}  {:<range_width$}  {}{when}",
             kind(p),
             p.number,
+            uncertain_mark(p),
             p.ident,
             p.access.letters(),
             p.range_text(),
@@ -60,4 +68,13 @@ pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
         )?;
     }
     Ok(())
+}
+
+/// The uncertain mark of a row, or as many spaces.
+pub fn uncertain_mark(p: &Param) -> String {
+    if p.uncertain {
+        UNCERTAIN.to_string()
+    } else {
+        " ".repeat(UNCERTAIN.len())
+    }
 }

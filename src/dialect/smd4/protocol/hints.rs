@@ -81,7 +81,17 @@ pub fn table_row(spec: &Smd4Command) -> String {
         (false, true) => "W",
         (false, false) => "",
     };
-    format!("{:<22} {:<4} {}", spec.mnemonic, access, arg_summary(spec))
+    let mark = if spec.uncertain {
+        crate::dialect::UNCERTAIN
+    } else {
+        " "
+    };
+    format!(
+        "{:<22}{mark} {:<4} {}",
+        spec.mnemonic,
+        access,
+        arg_summary(spec)
+    )
 }
 
 /// One line of help: usage, accepted values, access, the reply and the description.
