@@ -131,11 +131,15 @@ impl Script {
             let budget = self.limits.max_memory.map(Budget::from_now);
             let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &self.print);
             let log_session = shared.clone();
-            common::register(&mut engine, move |message| {
-                if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
-                    eprintln!("log: {}", escape_control(message));
-                }
-            });
+            common::register(
+                &mut engine,
+                Rc::from(self.source.as_str()),
+                move |message| {
+                    if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
+                        eprintln!("log: {}", escape_control(message));
+                    }
+                },
+            );
             register(&mut engine, &shared, &self.sandbox);
             execute(&engine, self)
         };

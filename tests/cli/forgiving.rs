@@ -224,3 +224,22 @@ fn an_incomplete_line_stays_neutral_and_an_invalid_one_turns_red_with_its_reason
     p.send_control('d').unwrap();
     p.exp_eof().unwrap();
 }
+
+#[test]
+fn a_suggestion_ends_its_message() {
+    let csv = tempdir().join("r.csv");
+    let record = format!(":record {} MOTOR:VMXA 10ms 20ms", csv.display());
+    for args in [
+        &["-c", ":prams"][..],
+        &["-c", "GPA 4, 0"],
+        &["--protocol", "smd4", "-c", "MOTOR:VMXA"],
+        &["--protocol", "smd4", "-c", &record],
+    ] {
+        let err = stderr(&run(args));
+        assert!(err.contains("did you mean"), "{args:?}: {err}");
+        assert!(
+            !err.contains("?;") && !err.contains("? ;"),
+            "{args:?}: {err}"
+        );
+    }
+}

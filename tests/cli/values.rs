@@ -40,7 +40,9 @@ fn help_describes_a_parameter_and_explains_the_uncertain_sign_once() {
     assert!(text.contains("(*: see :help params)"), "{text}");
     let text = ok(&["-c", ":help params"]);
     assert!(
-        text.contains("* after a number: the TMCM-142 manual does not confirm"),
+        text.contains(
+            "* after the access letters (or the number in :help NAME): the TMCM-142 manual"
+        ),
         "{text}"
     );
     let text = ok(&["-c", ":help MVP"]);
@@ -77,4 +79,28 @@ fn a_read_value_is_decoded_in_the_repl() {
     p.exp_string("standing)").unwrap();
     p.send_control('d').unwrap();
     p.exp_eof().unwrap();
+}
+
+#[test]
+fn a_wait_until_timeout_names_its_condition_and_the_last_value() {
+    let dir = crate::util::tempdir();
+    let script = dir.join("wait.rhai");
+    std::fs::write(
+        &script,
+        "let motor = 0;\nwait_until(|| gap(\"actual_position\", motor) == 100, 50);\n",
+    )
+    .unwrap();
+    let out = run(&["run", script.to_str().unwrap()]);
+    let err = stderr(&out);
+    assert_eq!(code(&out), 1, "{err}");
+    assert!(
+        err.contains(
+            "timed out after 50 ms waiting for `gap(\"actual_position\", motor) == 100` (last value: false)"
+        ),
+        "{err}"
+    );
+    assert!(!err.contains("anon$"), "{err}");
+    std::fs::write(&script, "wait_until(|| gap(1, 0), 30);\n").unwrap();
+    let err = stderr(&run(&["run", script.to_str().unwrap()]));
+    assert!(err.contains("`gap(1, 0)` (last value: 0)"), "{err}");
 }

@@ -73,7 +73,7 @@ impl ParamDevice for TmclSession {
                         axis.to_string()
                     }
                     _ => format!(
-                        "unknown parameter '{name}'{}; :params lists them",
+                        "unknown parameter '{name}' (:params lists them){}",
                         crate::suggest::did_you_mean(&nearest)
                     ),
                 })

@@ -37,12 +37,12 @@ pub fn topic(profile: &Profile, topic: &str, out: &mut dyn Write) -> io::Result<
             writeln!(out, "SAP/GAP/SGP/GGP lines; :help NAME describes one.")?;
             writeln!(
                 out,
-                "{UNCERTAIN} after a number: the {} manual does not confirm the row (taken from sibling modules or inferred);",
+                "{UNCERTAIN} after the access letters (or the number in :help NAME): the {} manual does not confirm",
                 profile.module
             )?;
             writeln!(
                 out,
-                "  `tmclsh profiles {}` names the sources.",
+                "  the row (taken from sibling modules or inferred); `tmclsh profiles {}` names the sources.",
                 profile.name
             )?
         }

@@ -39,12 +39,12 @@ pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
         .max(5);
     writeln!(
         out,
-        "{:<8} {:>3}{:mark$} {:<ident_width$}  {:<3}  {:<range_width$}  unit",
+        "{:<8} {:>3}  {:<ident_width$}  {:<3} {:mark$}  {:<range_width$}  unit",
         "kind",
         "no",
-        "",
         "name",
         "acc",
+        "",
         "range",
         mark = UNCERTAIN.len()
     )?;
@@ -57,12 +57,12 @@ pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
             .collect();
         writeln!(
             out,
-            "{:<8} {:>3}{} {:<ident_width$}  {:<3}  {:<range_width$}  {}{when}",
+            "{:<8} {:>3}  {:<ident_width$}  {:<3} {}  {:<range_width$}  {}{when}",
             kind(p),
             p.number,
-            uncertain_mark(p),
             p.ident,
             p.access.letters(),
+            uncertain_mark(p),
             p.range_text(),
             p.unit
         )?;
