@@ -11,6 +11,7 @@
 pub mod cli;
 pub mod clock;
 pub mod commission;
+pub mod count;
 pub mod crash;
 pub mod dialect;
 pub mod duration;
