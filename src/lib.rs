@@ -25,3 +25,4 @@ pub mod session;
 pub mod shell;
 pub mod sim;
 pub mod suggest;
+pub mod wrap;

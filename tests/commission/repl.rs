@@ -196,6 +196,49 @@ fn on_a_narrow_terminal_each_frame_moves_up_over_exactly_the_rows_it_drew() {
     assert_eq!(term.exit_code(), 0);
 }
 
+/// Text as a terminal shows it: control sequences (CSI … letter) taken out.
+fn visible(text: &str) -> String {
+    let mut out = String::new();
+    let mut chars = text.chars();
+    while let Some(c) = chars.next() {
+        if c == '\x1b' {
+            if chars.next() == Some('[') {
+                for c in chars.by_ref() {
+                    if c.is_ascii_alphabetic() || c == '~' {
+                        break;
+                    }
+                }
+            }
+            continue;
+        }
+        out.push(c);
+    }
+    out
+}
+
+#[test]
+fn tables_and_help_fit_a_narrow_terminal() {
+    let mut term = Terminal::spawn_sized(&[], Some(60));
+    term.until("A> ");
+    for (command, last) in [
+        (":params max\r", "max_encoder_deviation"),
+        (":help\r", "More:"),
+        (":help MVP\r", "usable in"),
+        (":help ascii_mode\r", "echo:"),
+    ] {
+        term.send(command);
+        let shown = term.until(last) + term.until("A> ").as_str();
+        let shown = visible(&shown);
+        for line in shown.split(['\r', '\n']) {
+            assert!(line.chars().count() <= 60, "{command:?}: {line:?}");
+        }
+        // Nothing was cut: a continuation line starts under its column.
+        assert!(shown.contains(last), "{shown}");
+    }
+    term.send(":quit\r");
+    assert_eq!(term.exit_code(), 0);
+}
+
 #[test]
 fn ctrl_c_in_a_watch_stops_the_motor() {
     let sim = Sim::start(&["--listen", "127.0.0.1:0"]);

@@ -4,16 +4,27 @@ use std::io::{self, Write};
 
 use super::protocol::{ADDRESSING_HELP, Smd4Spec, hints};
 use crate::dialect::UNCERTAIN;
+use crate::wrap::{fit, terminal_width};
 
 /// How SMD4 requests are typed: the first lines of `:help`.
 pub fn intro(out: &mut dyn Write) -> io::Result<()> {
     writeln!(
         out,
-        "Type SMD4 requests, e.g. MOTOR:VMAX (read) or MOTOR:VMAX,2000 (write); @N addresses a drive."
+        "{}",
+        fit(
+            "Type SMD4 requests, e.g. MOTOR:VMAX (read) or MOTOR:VMAX,2000 (write); @N addresses a drive.",
+            0,
+            terminal_width()
+        )
     )?;
     writeln!(
         out,
-        "Tab completes the hierarchical mnemonics (MOTOR:, SYS:, LIMIT:, BAKE:, BOOST:, COMS:NET:, COMS:SERIAL:).\n"
+        "{}\n",
+        fit(
+            "Tab completes the hierarchical mnemonics (MOTOR:, SYS:, LIMIT:, BAKE:, BOOST:, COMS:NET:, COMS:SERIAL:).",
+            0,
+            terminal_width()
+        )
     )
 }
 
@@ -53,11 +64,11 @@ pub fn command(spec: &Smd4Spec, word: &str, out: &mut dyn Write) -> io::Result<b
         String::new()
     };
     writeln!(out, "{usage}{mark}")?;
-    writeln!(
-        out,
+    let text = format!(
         "  {}",
         hint.strip_prefix(&usage).unwrap_or(&hint).trim_start()
-    )?;
+    );
+    writeln!(out, "{}", fit(&text, 2, terminal_width()))?;
     if spec.uncertain {
         writeln!(out, "  ({UNCERTAIN}: see :help params)")?;
     }

@@ -5,20 +5,36 @@ use std::io::{self, Write};
 use super::params::uncertain_mark;
 use super::profile::{Param, ParamKind, Profile};
 use crate::dialect::UNCERTAIN;
+use crate::wrap::{fit, terminal_width};
 
 /// How TMCL lines are typed: the first lines of `:help`.
 pub fn intro(out: &mut dyn Write) -> io::Result<()> {
     writeln!(
         out,
-        "Type TMCL commands as in the TMCL-IDE, e.g. GAP actual_position, 0 or MVP ABS, 0, 1000."
+        "{}",
+        fit(
+            "Type TMCL commands as in the TMCL-IDE, e.g. GAP actual_position, 0 or MVP ABS, 0, 1000.",
+            0,
+            terminal_width()
+        )
     )?;
     writeln!(
         out,
-        "Parameter names work in place of numbers; Tab completes, hints show units and ranges."
+        "{}",
+        fit(
+            "Parameter names work in place of numbers; Tab completes, hints show units and ranges.",
+            0,
+            terminal_width()
+        )
     )?;
     writeln!(
         out,
-        "A leading address character reaches another module: CGAP 4, 0.\n"
+        "{}\n",
+        fit(
+            "A leading address character reaches another module: CGAP 4, 0.",
+            0,
+            terminal_width()
+        )
     )
 }
 
@@ -91,15 +107,11 @@ pub fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io::Result
             None => Ok(false),
         };
     };
-    writeln!(
-        out,
-        "{} — {} (command {})",
-        spec.usage(),
-        spec.name,
-        spec.number
-    )?;
+    let first = format!("{} — {} (command {})", spec.usage(), spec.name, spec.number);
+    writeln!(out, "{}", fit(&first, 0, terminal_width()))?;
     for k in &spec.keywords {
-        writeln!(out, "  {:<8} {}", k.name, k.meaning)?;
+        let row = format!("  {:<8} {}", k.name, k.meaning);
+        writeln!(out, "{}", fit(&row, 11, terminal_width()))?;
     }
     let place = match (spec.ascii_allowed, spec.direct_mode) {
         (true, _) => "ASCII and binary direct mode",
@@ -128,14 +140,14 @@ fn describe_param(p: &Param, out: &mut dyn Write) -> io::Result<()> {
         ParamKind::Global { bank } => format!("global parameter, bank {bank},"),
     };
     let mark = uncertain_mark(p);
-    writeln!(
-        out,
+    let first = format!(
         "{} — {kind} {}{} ({})",
         p.ident,
         p.number,
         mark.trim_end(),
         p.name
-    )?;
+    );
+    writeln!(out, "{}", fit(&first, 0, terminal_width()))?;
     let mut facts = vec![format!("access {}", p.access.letters())];
     if let Some((lo, hi)) = p.range {
         facts.push(format!("range {lo}..{hi}"));
@@ -146,12 +158,17 @@ fn describe_param(p: &Param, out: &mut dyn Write) -> io::Result<()> {
     if let Some(default) = p.default {
         facts.push(format!("default {default}"));
     }
-    writeln!(out, "  {}", facts.join(", "))?;
+    writeln!(
+        out,
+        "{}",
+        fit(&format!("  {}", facts.join(", ")), 2, terminal_width())
+    )?;
     for when in &p.range_when {
         writeln!(out, "  {}", when.describe())?;
     }
     if !p.description.is_empty() {
-        writeln!(out, "  {}", p.description)?;
+        let row = format!("  {}", p.description);
+        writeln!(out, "{}", fit(&row, 2, terminal_width()))?;
     }
     let decoding = &p.decoding;
     for (value, meaning) in &decoding.values {

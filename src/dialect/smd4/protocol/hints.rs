@@ -94,6 +94,11 @@ pub fn table_row(spec: &Smd4Command) -> String {
     )
 }
 
+/// [`table_row`] fitted to the terminal: what the argument accepts continues under itself.
+pub fn fitted_row(spec: &Smd4Command) -> String {
+    crate::wrap::fit(&table_row(spec), 29, crate::wrap::terminal_width())
+}
+
 /// One line of help: usage, accepted values, access, the reply and the description.
 pub fn hint(spec: &Smd4Command) -> String {
     let access = match (spec.readable, spec.writable, spec.arg.is_some()) {
