@@ -11,6 +11,8 @@
 //!
 //! Piped lines end with CR, LF or CRLF ([`lines`]); a line that is too long or not UTF-8 is
 //! refused like a line the validator refuses.
+//! Empty lines and lines that are only a comment (`#`, `//`) are skipped; a trailing `//` comment
+//! is the dialect's to drop (as the REPL's).
 
 pub mod format;
 pub mod lines;
