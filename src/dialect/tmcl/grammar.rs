@@ -119,9 +119,21 @@ impl Grammar for TmclGrammar {
         &["params", "exit", "ascii"]
     }
 
-    /// Command mnemonics.
+    /// Command mnemonics and, once a lower-case word is typed, parameter names (`:help max_c`).
     fn topic_words(&self, word: &str) -> Vec<Candidate> {
-        complete::mnemonics(word, &self.profile)
+        let mut out = complete::mnemonics(word, &self.profile);
+        if word.starts_with(|c: char| c.is_ascii_lowercase()) {
+            out.extend(
+                self.names()
+                    .into_iter()
+                    .filter(|n| n.starts_with(word))
+                    .map(|n| Candidate {
+                        display: n.clone(),
+                        replacement: n,
+                    }),
+            );
+        }
+        out
     }
 }
 
@@ -183,6 +195,21 @@ mod tests {
         for line in ["MOTOR:VMAX", "MOTOR:VMAX,2000 // top", "@3SYS:FW"] {
             assert_eq!(smd4(line), Check::Valid, "{line}");
         }
+    }
+
+    #[test]
+    fn help_completes_commands_and_parameter_names() {
+        let grammar = TmclGrammar::new(Profile::builtin(), Mode::Ascii);
+        let words = |w: &str| -> Vec<String> {
+            grammar
+                .topic_words(w)
+                .into_iter()
+                .map(|c| c.display)
+                .collect()
+        };
+        assert!(words("max_c").contains(&"max_current".to_string()));
+        assert!(words("GA").contains(&"GAP".to_string()));
+        assert!(!words("GA").iter().any(|w| w.starts_with("ga")));
     }
 
     #[test]
