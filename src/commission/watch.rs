@@ -1,14 +1,17 @@
 //! `:watch`: a table of parameters redrawn in place at an interval while the user keeps control —
 //! any key stops it, Ctrl-C stops it and the motor (the REPL's usual Ctrl-C handling).
 //!
-//! The loop talks to a [`Screen`]; [`TerminalScreen`] is the crossterm one, which puts the
+//! The loop talks to a [`Screen`]; [`terminal_screen`] is the crossterm one, which puts the
 //! terminal in raw mode (so a key arrives without Enter and Ctrl-C arrives as a key) and restores
-//! it on every way out, panics included, through its `Drop`.
+//! it on every way out, panics included, through its `Drop`. It comes with the `cli` feature (the
+//! terminal faces); without it there is no terminal screen.
 
 use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
+#[cfg(feature = "cli")]
 use crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers};
+#[cfg(feature = "cli")]
 use crossterm::{cursor, queue, terminal};
 
 use crate::session::{SessionError, interrupt};
@@ -120,12 +123,29 @@ pub fn render(
     lines
 }
 
+/// The terminal as a [`Screen`], drawing to `out`: raw mode and a hidden cursor until dropped.
+#[cfg(feature = "cli")]
+pub fn terminal_screen(out: &mut dyn Write) -> io::Result<Box<dyn Screen + '_>> {
+    Ok(Box::new(TerminalScreen::new(out)?))
+}
+
+/// Without the `cli` feature there is no terminal screen: a watch has nowhere to draw.
+#[cfg(not(feature = "cli"))]
+pub fn terminal_screen(_out: &mut dyn Write) -> io::Result<Box<dyn Screen + '_>> {
+    Err(io::Error::new(
+        io::ErrorKind::Unsupported,
+        "no terminal screen: built without the terminal faces (the cli feature)",
+    ))
+}
+
 /// The terminal as a [`Screen`]: raw mode and a hidden cursor while it lives.
+#[cfg(feature = "cli")]
 pub struct TerminalScreen<'a> {
     out: &'a mut dyn Write,
     drawn: u16,
 }
 
+#[cfg(feature = "cli")]
 impl<'a> TerminalScreen<'a> {
     /// Takes over the terminal (raw mode, hidden cursor) until dropped.
     pub fn new(out: &'a mut dyn Write) -> io::Result<TerminalScreen<'a>> {
@@ -136,6 +156,7 @@ impl<'a> TerminalScreen<'a> {
     }
 }
 
+#[cfg(feature = "cli")]
 impl Screen for TerminalScreen<'_> {
     fn draw(&mut self, lines: &[String]) -> io::Result<()> {
         if self.drawn > 0 {
@@ -179,6 +200,7 @@ impl Screen for TerminalScreen<'_> {
     }
 }
 
+#[cfg(feature = "cli")]
 impl Drop for TerminalScreen<'_> {
     fn drop(&mut self) {
         let _ = queue!(&mut self.out, cursor::Show);

@@ -1,8 +1,11 @@
-//! Waiting inside scripts: sliced so Ctrl-C interrupts promptly, with a spinner on a terminal.
+//! Waiting inside scripts: sliced so Ctrl-C interrupts promptly, with a spinner on a terminal
+//! (with the `cli` feature, which brings the terminal faces).
 
+#[cfg(feature = "cli")]
 use std::io::IsTerminal;
 use std::time::{Duration, Instant};
 
+#[cfg(feature = "cli")]
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::exit::Exit;
@@ -36,6 +39,7 @@ pub fn until(
     mut check: impl FnMut() -> Fallible<bool>,
 ) -> Fallible<()> {
     let start = Instant::now();
+    #[cfg(feature = "cli")]
     let spinner = spinner(what, timeout);
     let result = loop {
         match check() {
@@ -57,12 +61,14 @@ pub fn until(
             break Err(e);
         }
     };
+    #[cfg(feature = "cli")]
     if let Some(spinner) = spinner {
         spinner.finish_and_clear();
     }
     result
 }
 
+#[cfg(feature = "cli")]
 fn spinner(what: &str, timeout: Duration) -> Option<ProgressBar> {
     if !std::io::stderr().is_terminal() || timeout < Duration::from_millis(500) {
         return None;

@@ -13,7 +13,7 @@ use crate::commission::device::{ParamDevice, ParamRef};
 use crate::commission::plot;
 use crate::commission::record::{self, CsvFile, Recording};
 use crate::commission::scan::parse_addresses;
-use crate::commission::watch::{self, Key, Screen, TerminalScreen};
+use crate::commission::watch::{self, Key};
 use crate::dialect::DialectSession;
 use crate::session::SessionError;
 
@@ -188,8 +188,8 @@ fn watch(
         ));
     }
     let interval = times.first().copied().unwrap_or(Duration::from_millis(250));
-    let mut screen = TerminalScreen::new(out)?;
-    watch::watch(session, &params, interval, &mut screen).map(|_| ())
+    let mut screen = watch::terminal_screen(out)?;
+    watch::watch(session, &params, interval, &mut *screen).map(|_| ())
 }
 
 fn record(
@@ -229,7 +229,7 @@ fn record(
     let count = Cell::new(0usize);
     let interrupted = Cell::new(false);
     let result = if terminal {
-        let mut screen = TerminalScreen::new(&mut *out)?;
+        let mut screen = watch::terminal_screen(&mut *out)?;
         let mut stop = || {
             let status = format!(
                 "recording to {file}: {} samples — any key stops",
@@ -297,10 +297,22 @@ fn plot(state: &State, arg: &str, out: &mut dyn Write) -> Result<(), SessionErro
         _ => return Err(usage(":plot [FILE.csv]")),
     };
     let width = if std::io::stdout().is_terminal() {
-        crossterm::terminal::size().map_or(80, |(w, _)| w as usize)
+        terminal_width().unwrap_or(80)
     } else {
         80
     };
     plot::write_recording(recording, width.clamp(30, 200), out)?;
     Ok(())
+}
+
+/// The width of the terminal, in columns.
+#[cfg(feature = "cli")]
+fn terminal_width() -> Option<usize> {
+    crossterm::terminal::size().ok().map(|(w, _)| w as usize)
+}
+
+/// Without the `cli` feature (and crossterm) the width is not asked.
+#[cfg(not(feature = "cli"))]
+fn terminal_width() -> Option<usize> {
+    None
 }

@@ -1,9 +1,12 @@
-//! Downloading a program file or TMCL source to the module, with a progress bar on a terminal:
-//! what `tmclsh download` and the shell's `:download` share.
+//! Downloading a program file or TMCL source to the module, with a progress bar on a terminal
+//! (with the `cli` feature, which brings the terminal faces): what `tmclsh download` and the
+//! shell's `:download` share.
 
+#[cfg(feature = "cli")]
 use std::io::IsTerminal;
 use std::path::Path;
 
+#[cfg(feature = "cli")]
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::dialect::tmcl::asm;
@@ -36,16 +39,22 @@ pub fn download_and_run(
 ) -> Result<String, SessionError> {
     let failed = |e: SessionError| failure(e.exit(), e.to_string());
     let module = session.target();
-    let bar = progress_bar(instructions.len() * 2);
-    let report = super::download(session, module, instructions, |done, total| {
+    #[cfg(feature = "cli")]
+    let report = {
+        let bar = progress_bar(instructions.len() * 2);
+        let report = super::download(session, module, instructions, |done, total| {
+            if let Some(bar) = &bar {
+                bar.set_length(total as u64);
+                bar.set_position(done as u64);
+            }
+        });
         if let Some(bar) = &bar {
-            bar.set_length(total as u64);
-            bar.set_position(done as u64);
+            bar.finish_and_clear();
         }
-    });
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
+        report
+    };
+    #[cfg(not(feature = "cli"))]
+    let report = super::download(session, module, instructions, |_, _| {});
     let report = report.map_err(failed)?;
     let mut text = format!(
         "downloaded {} instruction{} to module {}{}",
@@ -72,6 +81,7 @@ pub fn download_and_run(
     Ok(text)
 }
 
+#[cfg(feature = "cli")]
 fn progress_bar(total: usize) -> Option<ProgressBar> {
     if !std::io::stderr().is_terminal() || total < 64 {
         return None;
