@@ -1,10 +1,16 @@
 //! A real third-party client: PyTrinamic (the vendor's Python library) over the pty in binary
-//! mode, through its own serial TMCL interface, unchanged. Runs when python3 can import it.
+//! mode, through its own serial TMCL interface, unchanged. Runs when python3 can import it;
+//! otherwise it reports a skip — or fails, where PyTrinamic is required
+//! (`TMCLSH_REQUIRE_PYTRINAMIC=1`, which `.ci/run` sets after installing it), so a CI run that
+//! lost it cannot pass unnoticed.
 
 use std::process::Command;
 
 use super::Sim;
 use crate::util::repo;
+
+/// Set to 1 where PyTrinamic must be there.
+const REQUIRE: &str = "TMCLSH_REQUIRE_PYTRINAMIC";
 
 fn pytrinamic_available() -> Result<(), String> {
     let probe = Command::new("python3")
@@ -24,6 +30,10 @@ fn pytrinamic_available() -> Result<(), String> {
 #[test]
 fn pytrinamic_reads_writes_and_moves_over_the_pty() {
     if let Err(reason) = pytrinamic_available() {
+        assert!(
+            std::env::var(REQUIRE).as_deref() != Ok("1"),
+            "{REQUIRE}=1, but {reason}"
+        );
         eprintln!("skipped pytrinamic_reads_writes_and_moves_over_the_pty: {reason}");
         return;
     }

@@ -6,11 +6,9 @@ use std::io::{self, Write};
 use std::path::Path;
 use std::sync::Arc;
 
-use clap::ArgMatches;
-
 use crate::commission::ParamRef;
 use crate::dialect::replay::parse::Entry;
-use crate::dialect::{Dialect, DialectConfig, DialectSession, Opening, Purpose};
+use crate::dialect::{CommandLine, Dialect, DialectConfig, DialectSession, Opening, Purpose};
 use crate::session::SessionError;
 use crate::session::transcript::Header;
 use crate::sim::Device;
@@ -66,9 +64,16 @@ impl TmclConfig {
 }
 
 /// The echo `--echo` (or a configuration file) asks the target module to use, by its word.
-fn echo_flag(flags: Option<&ArgMatches>) -> Option<Echo> {
+#[cfg(feature = "cli")]
+fn echo_flag(flags: Option<&CommandLine>) -> Option<Echo> {
     let mut words = flags?.try_get_raw("echo").ok().flatten()?;
     words.next().and_then(|w| Echo::parse(&w.to_string_lossy()))
+}
+
+/// Without a command line, the module's own echo setting is kept.
+#[cfg(not(feature = "cli"))]
+fn echo_flag(flags: Option<&CommandLine>) -> Option<Echo> {
+    flags.map(|never| match *never {})
 }
 
 impl DialectConfig for TmclConfig {
@@ -88,9 +93,10 @@ impl DialectConfig for TmclConfig {
         Box::new(Bus::new(self.simulated_profile(), BusOptions::default()))
     }
 
+    #[cfg(feature = "cli")]
     fn served_simulator(
         &self,
-        flags: &ArgMatches,
+        flags: &CommandLine,
         state: Option<&Path>,
         verbose: bool,
     ) -> Result<Box<dyn Device>, String> {

@@ -24,7 +24,7 @@ pub mod sim;
 
 pub use grammar::TmclGrammar;
 
-use crate::dialect::{Dialect, DialectSession, no_flags};
+use crate::dialect::{Dialect, DialectSession};
 
 use session::TmclSession;
 
@@ -37,8 +37,11 @@ pub static DIALECT: Dialect = Dialect {
     configure: config::configure,
     own_options: &["module", "no_enter", "stay_ascii", "profile", "echo"],
     refusal: "is for TMCL modules, and the protocol is {protocol}",
-    session_flags: no_flags,
+    #[cfg(feature = "cli")]
+    session_flags: crate::dialect::no_flags,
+    #[cfg(feature = "cli")]
     sim_flags: sim::flags::add,
+    #[cfg(feature = "cli")]
     sim_flag_given: sim::flags::given,
     simulated: "TMCM-142",
     console_help: CONSOLE_HELP,

@@ -11,6 +11,7 @@ mod bus;
 mod control;
 mod control_cmd;
 mod exec;
+#[cfg(feature = "cli")]
 pub mod flags;
 mod io;
 mod machine;
