@@ -122,6 +122,15 @@ pub struct SessionArgs {
     /// Leave the modules in ASCII mode on exit instead of restoring the mode they were found in.
     #[arg(long)]
     pub stay_ascii: bool,
+    /// Talk to the modules in binary direct mode (typed lines go out as binary frames), whether
+    /// or not they have the ASCII interface.
+    #[arg(long)]
+    pub binary: bool,
+    /// Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131,
+    /// profile tmcm-6110 (built in)).
+    // Its own id: `tmclsh sim --verbose` logs traffic, and `-v` before `sim` is not that.
+    #[arg(long, short = 'v', id = "say_module")]
+    pub verbose: bool,
 }
 
 /// The echo modes of a TMCL module, as `--echo` and `:echo` name them; the TMCL session reads
@@ -284,7 +293,7 @@ impl ModuleArgs {
         let config = configs.of(self.protocol());
         let options = self.session.options();
         let (transcript, link) = self.connect(config, options.timeout, audience)?;
-        config
+        let session = config
             .open(Opening {
                 link,
                 options,
@@ -292,6 +301,10 @@ impl ModuleArgs {
                 flags: Some(&self.command_line.0),
                 purpose,
             })
-            .map_err(Failure::from)
+            .map_err(Failure::from)?;
+        if self.session.verbose && purpose == Purpose::Talk {
+            super::diagnose(&session.banner());
+        }
+        Ok(session)
     }
 }
