@@ -851,7 +851,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__scan)
-            opts="-m -v -h --addresses --port --baud --tcp --protocol --timeout --log --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --addresses --first --port --baud --tcp --protocol --timeout --log --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

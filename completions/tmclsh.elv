@@ -251,7 +251,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;snapshot;help;help'= {
         }
         &'tmclsh;scan'= {
-            cand --addresses 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each (an empty bus takes 247 times --timeout)'
+            cand --addresses 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each. Each reply is awaited 100 ms unless --timeout is set'
             cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
@@ -264,6 +264,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
+            cand --first 'Stop at the first module found, trying the addresses in ascending order'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'

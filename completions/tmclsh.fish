@@ -210,7 +210,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "diff" -d 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "restore" -d 'Write FILE\'s settings back (unit mode and limits first; SMD4: resolution, currents and frequencies first, the mode last, only while the motor stands still), verifying each by reading it back; read-only, live and link settings are skipped and listed'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l addresses -d 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each (an empty bus takes 247 times --timeout)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l addresses -d 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each. Each reply is awaited 100 ms unless --timeout is set' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
@@ -225,6 +225,7 @@ line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l first -d 'Stop at the first module found, trying the addresses in ascending order'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'

@@ -276,3 +276,38 @@ fn no_enter_asks_nothing_before_the_first_line() {
     let transcript = std::fs::read_to_string(&log).unwrap();
     assert!(!transcript.contains("136"), "{transcript}");
 }
+
+#[test]
+fn a_scan_names_a_boot_loader_and_an_unknown_module_and_asks_the_loader_nothing_more() {
+    let dir = tempdir();
+    let loader = Sim::start_capturing_stderr(&[
+        "--pty",
+        "--verbose",
+        "--profile",
+        module_answering(&dir, "142B1.06").to_str().unwrap(),
+    ]);
+    let out = run(&["scan", "--port", &loader.first, "--addresses", "1-2"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(
+        stdout(&out).contains("142B1.06  ?     TMCM-142 (boot loader)"),
+        "{}",
+        stdout(&out)
+    );
+    // 136 type 1 and type 0 only: no echo read.
+    let traffic = loader.quit();
+    let received: Vec<&str> = traffic.lines().filter(|l| l.contains(" <- ")).collect();
+    assert_eq!(received.len(), 2, "{traffic}");
+
+    let unknown = Sim::start(&[
+        "--pty",
+        "--profile",
+        module_answering(&dir, "9999V100").to_str().unwrap(),
+    ]);
+    let out = run(&["scan", "--port", &unknown.first, "--addresses", "1"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(
+        stdout(&out).contains("9999V100  char  TMCM-9999 (no profile)"),
+        "{}",
+        stdout(&out)
+    );
+}

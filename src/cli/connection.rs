@@ -96,6 +96,9 @@ impl Args for DialectFlags {
     }
 }
 
+/// `--timeout` when neither the command line, the environment nor a configuration file sets it.
+pub const DEFAULT_TIMEOUT_MS: u64 = 1000;
+
 /// How requests are sent and checked.
 #[derive(Debug, Clone, clap::Args)]
 pub struct SessionArgs {
@@ -103,7 +106,7 @@ pub struct SessionArgs {
     #[arg(long, short = 'm', value_name = "N", env = "TMCLSH_MODULE", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
     pub module: u8,
     /// Milliseconds to wait for a reply before giving up (exit code 3).
-    #[arg(long, value_name = "MS", env = "TMCLSH_TIMEOUT", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "MS", env = "TMCLSH_TIMEOUT", default_value_t = DEFAULT_TIMEOUT_MS, value_parser = clap::value_parser!(u64).range(1..))]
     pub timeout: u64,
     /// Set the target module's echo on opening: char, line (every reply attributed to its
     /// request) or none (global parameter 67 in RAM; it stays after tmclsh ends).
@@ -235,6 +238,14 @@ pub enum Audience {
 }
 
 impl ModuleArgs {
+    /// Whether `--timeout` was set by anyone (the command line, `TMCLSH_TIMEOUT`, a configuration
+    /// file), not left at its built-in default.
+    pub fn timeout_given(&self) -> bool {
+        let source = self.command_line.0.value_source("timeout");
+        source != Some(clap::parser::ValueSource::DefaultValue)
+            || self.session.timeout != DEFAULT_TIMEOUT_MS
+    }
+
     /// The protocol the module speaks.
     pub fn protocol(&self) -> &'static Dialect {
         self.dialect.protocol

@@ -185,7 +185,7 @@ impl TmclSession {
 
     /// How long the line stays quiet before a binary-mode receiver takes a new frame: its frame
     /// time-out, and a tenth more.
-    fn resync_gap(&self) -> Duration {
+    pub(super) fn resync_gap(&self) -> Duration {
         Duration::from_millis(u64::from(self.profile.sim.frame_timeout_ms) * 11 / 10)
     }
 
@@ -304,7 +304,11 @@ impl TmclSession {
 
     /// Reads global parameter 67 in ASCII mode to learn the echo; decides the mode the module
     /// was found in when `found` is not already known.
-    fn learn_echo(&mut self, module: u8, found: Option<WireMode>) -> Result<(), SessionError> {
+    pub(super) fn learn_echo(
+        &mut self,
+        module: u8,
+        found: Option<WireMode>,
+    ) -> Result<(), SessionError> {
         let c = address_char(module).unwrap_or('?');
         let probe = Instruction::new(Opcode::Ggp, 67, 0, 0);
         let text = format!("{c}{}", self.describe_instruction(&probe));
