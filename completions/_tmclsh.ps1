@@ -50,7 +50,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('params', 'params', [CompletionResultType]::ParameterValue, 'Print the module''s axis and global parameters (those matching FILTER)')
             [CompletionResult]::new('profiles', 'profiles', [CompletionResultType]::ParameterValue, 'List the built-in TMCL module profiles with their sources, or show one in full')
-            [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports of this machine')
+            [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports of this machine (--probe: and what module answers on each)')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
             [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the manual page (roff; man/tmclsh.1 in the source)')
             [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)')
@@ -80,6 +80,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
         }
         'tmclsh;ports' {
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)')
+            [CompletionResult]::new('--probe', '--probe', [CompletionResultType]::ParameterName, 'Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             break
@@ -393,7 +394,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
         'tmclsh;help' {
             [CompletionResult]::new('params', 'params', [CompletionResultType]::ParameterValue, 'Print the module''s axis and global parameters (those matching FILTER)')
             [CompletionResult]::new('profiles', 'profiles', [CompletionResultType]::ParameterValue, 'List the built-in TMCL module profiles with their sources, or show one in full')
-            [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports of this machine')
+            [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'List the serial ports of this machine (--probe: and what module answers on each)')
             [CompletionResult]::new('completions', 'completions', [CompletionResultType]::ParameterValue, 'Print a shell completion script')
             [CompletionResult]::new('man', 'man', [CompletionResultType]::ParameterValue, 'Print the manual page (roff; man/tmclsh.1 in the source)')
             [CompletionResult]::new('run', 'run', [CompletionResultType]::ParameterValue, 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)')

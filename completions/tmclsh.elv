@@ -47,7 +47,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --version 'Print version'
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand profiles 'List the built-in TMCL module profiles with their sources, or show one in full'
-            cand ports 'List the serial ports of this machine'
+            cand ports 'List the serial ports of this machine (--probe: and what module answers on each)'
             cand completions 'Print a shell completion script'
             cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
@@ -74,6 +74,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         }
         &'tmclsh;ports'= {
             cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
+            cand --probe 'Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
@@ -363,7 +364,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help'= {
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
             cand profiles 'List the built-in TMCL module profiles with their sources, or show one in full'
-            cand ports 'List the serial ports of this machine'
+            cand ports 'List the serial ports of this machine (--probe: and what module answers on each)'
             cand completions 'Print a shell completion script'
             cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'

@@ -52,7 +52,7 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -s h -l help -d 'Print help 
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s V -l version -d 'Print version'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "profiles" -d 'List the built-in TMCL module profiles with their sources, or show one in full'
-complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "ports" -d 'List the serial ports of this machine'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "ports" -d 'List the serial ports of this machine (--probe: and what module answers on each)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "completions" -d 'Print a shell completion script'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "man" -d 'Print the manual page (roff; man/tmclsh.1 in the source)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
@@ -72,6 +72,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'P
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l probe -d 'Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -s h -l help -d 'Print help'
@@ -306,7 +307,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l prefix-comma -d
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "profiles" -d 'List the built-in TMCL module profiles with their sources, or show one in full'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "ports" -d 'List the serial ports of this machine'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "ports" -d 'List the serial ports of this machine (--probe: and what module answers on each)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "completions" -d 'Print a shell completion script'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "man" -d 'Print the manual page (roff; man/tmclsh.1 in the source)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
