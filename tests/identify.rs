@@ -311,3 +311,32 @@ fn a_scan_names_a_boot_loader_and_an_unknown_module_and_asks_the_loader_nothing_
         stdout(&out)
     );
 }
+
+#[test]
+fn a_transcript_of_an_identified_module_replays_with_that_module_s_profile() {
+    let sim = Sim::start(&["--pty", "--profile", "tmcm-6110"]);
+    let dir = tempdir();
+    let log = dir.join("session.log");
+    let log = log.to_str().unwrap();
+    let out = on(&sim, &["--log", log, "-c", "GAP 4, 5"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    // The header was written before the module was asked: it names the default profile.
+    let text = std::fs::read_to_string(log).unwrap();
+    assert!(text.contains("module \"TMCM-142\""), "{text}");
+    let out = run(&["--profile", "tmcm-6110", "transcript", "to-rhai", log]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(
+        stdout(&out).contains("send(\"AGAP 4, 5\")"),
+        "{}",
+        stdout(&out)
+    );
+    // The identification is the session's own business, not replayed.
+    assert!(!stdout(&out).contains("6110V131"), "{}", stdout(&out));
+    let out = run(&["transcript", "to-rhai", log]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("a transcript of a TMCM-6110"),
+        "{}",
+        stderr(&out)
+    );
+}

@@ -15,7 +15,7 @@
 
 use std::fmt::Write as _;
 
-use crate::dialect::tmcl::profile::{Profile, SnapshotRole};
+use crate::dialect::tmcl::profile::{Profile, SnapshotRole, catalogue};
 use crate::dialect::tmcl::protocol::frame::{
     CommandFrame, FRAME_LEN, ReplyFrame, decode_version_string,
 };
@@ -37,12 +37,17 @@ pub fn script(
     wait_ms: u64,
 ) -> Result<String, String> {
     if let Some(header) = header {
-        if header.module != profile.module {
+        let (module, origin) = match identified_profile(entries) {
+            Some(used) => (used.module.clone(), used.name.clone()),
+            None => (
+                header.module.clone(),
+                header.profile.clone().unwrap_or_else(|| "unknown".into()),
+            ),
+        };
+        if module != profile.module {
             return Err(format!(
-                "a transcript of a {} (profile {}), but the profile in use is the {}'s; \
-                 give --profile",
-                header.module,
-                header.profile.as_deref().unwrap_or("unknown"),
+                "a transcript of a {module} (profile {origin}), but the profile in use is the \
+                 {}'s; give --profile",
                 profile.module
             ));
         }
@@ -95,6 +100,21 @@ const PROBE_NOTE: &str = "in ASCII mode, echo";
 /// The session's note after asking for the firmware version on connect (see
 /// `session::tmcl::identify`): "identified: …" or "not identified: …".
 const IDENTIFIED_NOTE: &str = "identified: ";
+
+/// The built-in profile the session took from the module's answer on connect, where its note
+/// names one (`identified: TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`): the
+/// header, written before the module was asked, names the profile it started with.
+fn identified_profile(entries: &[Entry]) -> Option<std::sync::Arc<Profile>> {
+    entries.iter().find_map(|e| {
+        let Record::Note(note) = &e.record else {
+            return None;
+        };
+        let (_, profile) = note
+            .strip_prefix(IDENTIFIED_NOTE)?
+            .rsplit_once(", profile ")?;
+        catalogue::by_name(profile.strip_suffix(" (built in)")?)
+    })
+}
 
 /// Pairs what was sent with what came back, leaving out what the session did on its own.
 pub fn steps(entries: &[Entry], profile: &Profile) -> Vec<Step> {
