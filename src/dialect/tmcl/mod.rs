@@ -35,7 +35,14 @@ pub static DIALECT: Dialect = Dialect {
     devices: "TMCL modules",
     helpers: helpers::HELPERS,
     configure: config::configure,
-    own_options: &["module", "no_enter", "stay_ascii", "profile", "echo"],
+    own_options: &[
+        "module",
+        "no_enter",
+        "stay_ascii",
+        "profile",
+        "echo",
+        "binary",
+    ],
     refusal: "is for TMCL modules, and the protocol is {protocol}",
     #[cfg(feature = "cli")]
     session_flags: crate::dialect::no_flags,

@@ -1,6 +1,7 @@
 //! The control functions 128–139 (manual §6.5): program control, download mode, memory read-back,
 //! firmware version, factory reset, the position-reached event and the switch to ASCII mode.
 
+use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
 use super::exec::{Effect, Outcome, Reply};
@@ -75,6 +76,10 @@ impl Machine {
                 0 | 1 => Err(Status::InvalidValue),
                 _ => Err(Status::WrongType),
             },
+            // A binary-only firmware does not know 139.
+            Opcode::EnterAscii if self.profile.identity.ascii_interface() == AsciiInterface::No => {
+                Err(Status::InvalidCommand)
+            }
             Opcode::EnterAscii => {
                 return reply(Reply::Normal(Status::Ok, i.value), Effect::EnterAscii);
             }
