@@ -20,9 +20,12 @@ pub struct BusImage {
 pub struct ModuleImage {
     /// The module's factory address (its entry in `--modules`); GP 66 may since have changed.
     pub slot: u8,
-    /// EEPROM-backed axis parameters as `[number, value]`.
+    /// EEPROM-backed axis parameters of motor 0 as `[number, value]`.
     #[serde(default)]
     pub axis: Vec<(u8, i32)>,
+    /// EEPROM-backed axis parameters of the other motors as `[motor, number, value]`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub motors: Vec<(u8, u8, i32)>,
     /// EEPROM-backed global parameters as `[bank, number, value]`.
     #[serde(default)]
     pub global: Vec<(u8, u8, i32)>,
