@@ -240,3 +240,23 @@ fn the_builtin_simulator_is_the_profiles_module() {
         stdout(&out)
     );
 }
+
+#[test]
+fn a_boot_loader_names_itself_and_refuses_the_rest() {
+    let sim = Sim::start(&["--pty", "--profile", "tmcm-6110", "--boot-loader"]);
+    let mut port = sim.pty();
+    assert_eq!(version(&mut port, 1), "6110B131");
+    assert_eq!(
+        port.transact(1, GAP, 1, 0, 0).status,
+        Status::InvalidCommand
+    );
+    assert_eq!(
+        port.transact(1, 139, 0, 0, 0).status,
+        Status::InvalidCommand
+    );
+    assert_eq!(
+        port.transact(1, 136, 1, 0, 0).value,
+        287,
+        "136 type 1 still answers"
+    );
+}

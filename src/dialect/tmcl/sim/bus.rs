@@ -29,6 +29,8 @@ pub struct BusOptions {
     pub motor_switches: Vec<(u8, Switch, i64)>,
     /// The EEPROM kept between runs; `None` starts from factory settings every time.
     pub eeprom: Option<Eeprom>,
+    /// Every module runs its boot loader instead of its firmware.
+    pub boot_loader: bool,
     /// Where to log decoded traffic; `None` logs nothing (and costs nothing).
     pub log: Option<LogSink>,
 }
@@ -42,6 +44,7 @@ impl Default for BusOptions {
             switches: Switches::default(),
             motor_switches: Vec::new(),
             eeprom: None,
+            boot_loader: false,
             log: None,
         }
     }
@@ -111,7 +114,9 @@ impl Bus {
                 if let Some(stored) = image.and_then(|i| i.module(slot)) {
                     machine.load(stored);
                 }
-                Module::new(machine)
+                let mut module = Module::new(machine);
+                module.boot_loader = options.boot_loader;
+                module
             })
             .collect();
         let mut bus = Bus {

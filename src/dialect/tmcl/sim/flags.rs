@@ -77,6 +77,11 @@ pub struct BusFlags {
     /// (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`).
     #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = "1", value_parser = module_spec)]
     pub modules: Vec<ModuleSpec>,
+
+    /// The modules run their boot loader: 136 answers with B for V (`6110B131`), every other
+    /// command with invalid command.
+    #[arg(long)]
+    pub boot_loader: bool,
 }
 
 /// The simulated motors' switches and the choices the manual leaves open.
@@ -174,6 +179,7 @@ pub fn given(matches: &ArgMatches) -> Option<&'static str> {
     );
     [
         (!default_bus, "--modules"),
+        (bus.boot_loader, "--boot-loader"),
         (!module.left_switch.is_empty(), "--left-switch"),
         (!module.right_switch.is_empty(), "--right-switch"),
         (!module.home_switch.is_empty(), "--home-switch"),
@@ -235,6 +241,7 @@ pub fn served(
         switches,
         motor_switches,
         eeprom,
+        boot_loader: bus.boot_loader,
         log,
     };
     Ok(Box::new(Bus::new(profile.clone(), options)))

@@ -312,3 +312,37 @@ fn a_role_naming_no_parameter_is_refused() {
     let error = crate::dialect::tmcl::profile::Profile::from_toml(&typo, None).unwrap_err();
     assert!(error.contains("max_sped"), "{error}");
 }
+
+#[test]
+fn a_boot_loader_answers_136_with_b_and_nothing_else() {
+    for (name, expected) in [("tmcm-142", "142B1.06"), ("tmcm-6110", "6110B131")] {
+        let options = BusOptions {
+            boot_loader: true,
+            ..BusOptions::default()
+        };
+        let mut sim = Sim {
+            bus: Bus::new(catalogue::by_name(name).unwrap(), options),
+            now: std::time::Duration::ZERO,
+        };
+        let frame = crate::dialect::tmcl::protocol::CommandFrame {
+            address: 1,
+            instruction: crate::dialect::tmcl::protocol::Instruction::new(136, 0, 0, 0),
+        };
+        let out = sim.send(&frame.encode());
+        assert_eq!(&out[1..9], expected.as_bytes());
+        let identified = catalogue::identify(expected).unwrap();
+        assert!(matches!(
+            identified,
+            catalogue::Identified::BootLoader { .. }
+        ));
+        assert_eq!(sim.status(GAP, 4, 0, 0), Status::InvalidCommand, "{name}");
+        assert_eq!(sim.status(MVP, 0, 0, 100), Status::InvalidCommand);
+        assert_eq!(sim.status(139, 0, 0, 0), Status::InvalidCommand);
+        assert_eq!(sim.bus.is_ascii(1), Some(false));
+        assert_eq!(
+            sim.bus.motor(sim.now, 1).unwrap().target,
+            0,
+            "nothing moved"
+        );
+    }
+}
