@@ -247,13 +247,16 @@ pub fn served(
     Ok(Box::new(Bus::new(profile.clone(), options)))
 }
 
+/// One motor's own switch: the motor, which switch, where.
+type MotorSwitch = (u8, Switch, i64);
+
 /// The switches of every motor and those of single motors, from the switch flags: a motor's own
 /// position wins over the every-motor one, and of the same form the last given; a motor no module
 /// on the bus has is refused.
 fn switch_layout(
     flags: &ModuleFlags,
     modules: &[(u8, Arc<Profile>)],
-) -> Result<(Switches, Vec<(u8, Switch, i64)>), String> {
+) -> Result<(Switches, Vec<MotorSwitch>), String> {
     let most = modules
         .iter()
         .map(|(_, p)| p.axes.max(1))
