@@ -305,14 +305,14 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;sim' {
-            [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4)')
+            [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol of the simulated module: a bus of TMCL modules (tmcl) or an SMD4 drive (smd4)')
             [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed')
-            [CompletionResult]::new('--modules', '--modules', [CompletionResultType]::ParameterName, 'Module addresses on the simulated RS-485 bus')
+            [CompletionResult]::new('--modules', '--modules', [CompletionResultType]::ParameterName, 'Modules on the simulated RS-485 bus: addresses, each optionally with its own profile (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`)')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Pace bytes like a serial line at N baud (10 bits per byte, both directions)')
             [CompletionResult]::new('--state', '--state', [CompletionResultType]::ParameterName, 'Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts')
-            [CompletionResult]::new('--left-switch', '--left-switch', [CompletionResultType]::ParameterName, 'Position of the left limit switch (microsteps); not connected by default')
-            [CompletionResult]::new('--right-switch', '--right-switch', [CompletionResultType]::ParameterName, 'Position of the right limit switch')
-            [CompletionResult]::new('--home-switch', '--home-switch', [CompletionResultType]::ParameterName, 'Position of the reference (home) switch, active at and right of it')
+            [CompletionResult]::new('--left-switch', '--left-switch', [CompletionResultType]::ParameterName, 'Position of the left limit switch (microsteps) of every motor, or MOTOR:POS for one motor (repeatable); not connected by default')
+            [CompletionResult]::new('--right-switch', '--right-switch', [CompletionResultType]::ParameterName, 'Position of the right limit switch, of every motor or MOTOR:POS')
+            [CompletionResult]::new('--home-switch', '--home-switch', [CompletionResultType]::ParameterName, 'Position of the reference (home) switch, active at and right of it; of every motor or MOTOR:POS')
             [CompletionResult]::new('--reply-end', '--reply-end', [CompletionResultType]::ParameterName, 'Ending of ASCII replies: none, cr, lf or crlf')
             [CompletionResult]::new('--echo-end', '--echo-end', [CompletionResultType]::ParameterName, 'What follows an echoed line: none, cr, lf or crlf (stands for the typed CR in character echo mode)')
             [CompletionResult]::new('--backspace-echo', '--backspace-echo', [CompletionResultType]::ParameterName, 'Echo of a backspace in character echo mode: erase (BS SP BS) or plain (BS)')
@@ -330,6 +330,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--real-value-grid', '--real-value-grid', [CompletionResultType]::ParameterName, 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value')
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)')
             [CompletionResult]::new('--pty', '--pty', [CompletionResultType]::ParameterName, 'Serve on a new pseudo-terminal (the default); its path is the first line printed')
+            [CompletionResult]::new('--boot-loader', '--boot-loader', [CompletionResultType]::ParameterName, 'The modules run their boot loader: 136 answers with B for V (`6110B131`), every other command with invalid command')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Log every frame and line received and sent, decoded, to stderr')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Log every frame and line received and sent, decoded, to stderr')
             [CompletionResult]::new('--manual-clock', '--manual-clock', [CompletionResultType]::ParameterName, 'Let simulation time pass only on the console command `advance` (deterministic tests)')

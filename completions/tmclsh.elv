@@ -277,14 +277,14 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;transcript;help;help'= {
         }
         &'tmclsh;sim'= {
-            cand --protocol 'The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4)'
+            cand --protocol 'The protocol of the simulated module: a bus of TMCL modules (tmcl) or an SMD4 drive (smd4)'
             cand --listen 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed'
-            cand --modules 'Module addresses on the simulated RS-485 bus'
+            cand --modules 'Modules on the simulated RS-485 bus: addresses, each optionally with its own profile (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`)'
             cand --baud 'Pace bytes like a serial line at N baud (10 bits per byte, both directions)'
             cand --state 'Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts'
-            cand --left-switch 'Position of the left limit switch (microsteps); not connected by default'
-            cand --right-switch 'Position of the right limit switch'
-            cand --home-switch 'Position of the reference (home) switch, active at and right of it'
+            cand --left-switch 'Position of the left limit switch (microsteps) of every motor, or MOTOR:POS for one motor (repeatable); not connected by default'
+            cand --right-switch 'Position of the right limit switch, of every motor or MOTOR:POS'
+            cand --home-switch 'Position of the reference (home) switch, active at and right of it; of every motor or MOTOR:POS'
             cand --reply-end 'Ending of ASCII replies: none, cr, lf or crlf'
             cand --echo-end 'What follows an echoed line: none, cr, lf or crlf (stands for the typed CR in character echo mode)'
             cand --backspace-echo 'Echo of a backspace in character echo mode: erase (BS SP BS) or plain (BS)'
@@ -302,6 +302,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --real-value-grid 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value'
             cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --pty 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
+            cand --boot-loader 'The modules run their boot loader: 136 answers with B for V (`6110B131`), every other command with invalid command'
             cand -v 'Log every frame and line received and sent, decoded, to stderr'
             cand --verbose 'Log every frame and line received and sent, decoded, to stderr'
             cand --manual-clock 'Let simulation time pass only on the console command `advance` (deterministic tests)'
