@@ -234,8 +234,9 @@ impl Bus {
         Ok(())
     }
 
-    /// The state of an output of a module.
-    pub fn output(&mut self, slot: u8, port: u8) -> Option<bool> {
+    /// The state of an output of a module at `now` (a running program may have set it).
+    pub fn output(&mut self, now: Duration, slot: u8, port: u8) -> Option<bool> {
+        self.advance(now);
         self.module(slot).ok()?.machine.io.output(port)
     }
 

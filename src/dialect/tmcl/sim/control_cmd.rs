@@ -88,7 +88,7 @@ pub(crate) fn run(bus: &mut Bus, now: Duration, command: &str) -> Option<Result<
             })
         }
         ["output", port] => number(port).and_then(|port| {
-            bus.output(slot, port)
+            bus.output(now, slot, port)
                 .map(|on| format!("output {port} = {}", u8::from(on)))
                 .ok_or_else(|| format!("no output {port}"))
         }),

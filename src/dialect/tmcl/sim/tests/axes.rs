@@ -215,7 +215,7 @@ fn io_follows_the_profiles_port_map() {
     let mut sim = Sim::of("tmcm-6110");
     sim.ok(SIO, 7, 2, 1);
     assert_eq!(sim.ok(GIO, 7, 2, 0), 1, "OUT7");
-    assert_eq!(sim.bus.output(1, 7), Some(true));
+    assert_eq!(sim.bus.output(sim.now, 1, 7), Some(true));
     assert_eq!(sim.status(SIO, 8, 2, 1), Status::WrongType, "no OUT8");
     assert_eq!(sim.ok(GIO, 7, 0, 0), 0, "IN7");
     sim.bus.set_input(sim.now, 1, 7, true).unwrap();
@@ -344,5 +344,112 @@ fn a_boot_loader_answers_136_with_b_and_nothing_else() {
             0,
             "nothing moved"
         );
+    }
+}
+
+fn six_with_store(store: &crate::sim::store::MemoryStore) -> Sim {
+    let options = BusOptions {
+        eeprom: Some(crate::dialect::tmcl::sim::Eeprom::open(Box::new(store.clone())).unwrap()),
+        ..BusOptions::default()
+    };
+    Sim {
+        bus: Bus::new(catalogue::by_name("tmcm-6110").unwrap(), options),
+        now: std::time::Duration::ZERO,
+    }
+}
+
+#[test]
+fn each_motors_stored_values_survive_a_restart() {
+    let store = crate::sim::store::MemoryStore::new();
+    let mut sim = six_with_store(&store);
+    sim.ok(SAP, 4, 4, 1234);
+    sim.ok(STAP, 4, 4, 0);
+    sim.ok(SAP, 4, 1, 999); // not stored
+    drop(sim);
+    let mut sim = six_with_store(&store);
+    assert_eq!(sim.ok(GAP, 4, 4, 0), 1234);
+    assert_eq!(sim.ok(GAP, 4, 1, 0), 1000);
+    assert_eq!(sim.ok(GAP, 4, 0, 0), 1000);
+    // RSAP restores one motor's value only.
+    sim.ok(SAP, 4, 4, 5);
+    sim.ok(SAP, 4, 3, 6);
+    sim.ok(8, 4, 4, 0);
+    assert_eq!(sim.ok(GAP, 4, 4, 0), 1234);
+    assert_eq!(sim.ok(GAP, 4, 3, 0), 6);
+}
+
+#[test]
+fn a_hostile_state_file_cannot_reach_a_motor_or_bank_the_module_lacks() {
+    use crate::sim::store::Store;
+    let mut store = crate::sim::store::MemoryStore::new();
+    store
+        .save(
+            "[[module]]\nslot = 1\naxis = [[4, 7], [255, 1]]\n\
+             motors = [[200, 4, 5], [5, 4, 55], [6, 4, 66]]\n\
+             global = [[9, 0, 1], [3, 27, 2], [0, 64, 228]]\n",
+        )
+        .unwrap();
+    let mut sim = six_with_store(&store);
+    assert_eq!(sim.ok(GAP, 4, 0, 0), 7);
+    assert_eq!(sim.ok(GAP, 4, 5, 0), 55);
+    assert_eq!(sim.status(GAP, 4, 6, 0), Status::InvalidValue);
+    // Bank 3 is there (in RAM: its rows are not EEPROM backed, so the file's value is not used).
+    assert_eq!(sim.ok(10, 27, 3, 0), 0);
+    sim.ok(9, 27, 3, 2);
+    assert_eq!(sim.ok(10, 27, 3, 0), 2);
+}
+
+#[test]
+fn a_program_moves_and_waits_for_one_motor() {
+    let mut sim = Sim::of("tmcm-6110");
+    // MVP ABS, 4, 3000; WAIT POS, 4, 0; SIO 7, 2, 1; STOP
+    sim.download(&[
+        (MVP, 0, 4, 3000),
+        (27, 1, 4, 0),
+        (SIO, 7, 2, 1),
+        (28, 0, 0, 0),
+    ]);
+    sim.ok(129, 1, 0, 0);
+    sim.wait(0.05);
+    assert_eq!(
+        sim.bus.output(sim.now, 1, 7),
+        Some(false),
+        "still waiting for motor 4"
+    );
+    sim.wait(3.0);
+    assert_eq!(sim.bus.output(sim.now, 1, 7), Some(true));
+    assert_eq!(sim.ok(GAP, 1, 4, 0), 3000);
+    assert_eq!(sim.ok(GAP, 1, 0, 0), 0);
+    // WAIT on a motor the module lacks is a program error, not a crash.
+    let mut sim = Sim::of("tmcm-1140");
+    sim.download(&[(27, 1, 3, 0), (28, 0, 0, 0)]);
+    sim.ok(129, 1, 0, 0);
+    sim.wait(0.1);
+    assert_eq!(sim.ok(135, 1, 0, 0), 1, "invalid instruction");
+}
+
+#[test]
+fn a_sweep_of_commands_motors_and_types_gets_one_answer_each() {
+    for name in ["tmcm-6110", "tmcm-1260", "tmcm-142"] {
+        let mut sim = Sim::of(name);
+        let axes = catalogue::by_name(name).unwrap().axes;
+        for command in (0u8..=255).filter(|c| !(128..=139).contains(c) && *c != 9) {
+            for motor in [0u8, 1, 5, 6, 255] {
+                for type_ in [0u8, 1, 255] {
+                    for value in [0, -1, i32::MAX] {
+                        let reply = sim.frame(1, command, type_, motor, value);
+                        let axis_command = matches!(command, 1..=8 | 13);
+                        if axis_command && motor >= axes {
+                            assert_eq!(
+                                reply.status,
+                                Status::InvalidValue,
+                                "{name}: command {command} motor {motor}"
+                            );
+                        }
+                    }
+                }
+            }
+            sim.wait(0.01);
+        }
     }
 }
