@@ -260,3 +260,70 @@ fn a_boot_loader_names_itself_and_refuses_the_rest() {
         "136 type 1 still answers"
     );
 }
+
+#[test]
+fn a_tmcm_6110_in_ascii_mode_moves_the_motor_each_line_names() {
+    let sim = Sim::start(&["--pty", "--profile", "tmcm-6110"]);
+    let mut port = sim.pty();
+    assert_eq!(
+        port.transact(1, 9, 67, 0, 0x20).status,
+        Status::Ok,
+        "no echo"
+    );
+    assert_eq!(port.transact(1, 139, 0, 0, 0).status, Status::Ok);
+    port.send(b"AMVP ABS, 5, 2500\r");
+    assert_eq!(port.read_line(), "BA 100 2500\r");
+    let deadline = Instant::now() + PATIENCE;
+    loop {
+        port.send(b"AGAP 8, 5\r");
+        if port.read_line() == "BA 100 1\r" {
+            break;
+        }
+        assert!(Instant::now() < deadline, "motor 5 never arrived");
+    }
+    port.send(b"AGAP 1, 5\r");
+    assert_eq!(port.read_line(), "BA 100 2500\r");
+    port.send(b"AGAP 1, 4\r");
+    assert_eq!(port.read_line(), "BA 100 0\r");
+    port.send(b"AGAP 1, 6\r");
+    assert_eq!(port.read_line(), "BA 4 0\r", "motor 6: invalid value");
+    // SAC is not in the TMCM-6110's ASCII list (it lacks the command altogether).
+    port.send(b"ASAC 0, 0, 0\r");
+    assert_eq!(port.read_line(), "BA 2 0\r");
+    // A port the map lacks is the type byte's fault, as in binary.
+    port.send(b"AGIO 9, 0\r");
+    assert_eq!(port.read_line(), "BA 3 0\r");
+}
+
+#[test]
+fn a_mixed_bus_keeps_each_modules_eeprom_in_the_state_file() {
+    let dir = crate::util::tempdir();
+    let state = dir.join("bus.toml");
+    let state = state.to_str().unwrap();
+    let args = [
+        "--listen",
+        "127.0.0.1:0",
+        "--modules",
+        "1:tmcm-142,2:tmcm-6110",
+        "--state",
+        state,
+    ];
+    let sim = Sim::start(&args);
+    let mut port = sim.tcp();
+    assert_eq!(port.transact(2, 5, 4, 3, 1717).status, Status::Ok);
+    assert_eq!(port.transact(2, 7, 4, 3, 0).status, Status::Ok);
+    assert_eq!(port.transact(1, 5, 4, 0, 123).status, Status::Ok);
+    assert_eq!(port.transact(1, 7, 4, 0, 0).status, Status::Ok);
+    drop(port);
+    drop(sim);
+    let text = std::fs::read_to_string(state).unwrap();
+    assert!(
+        text.contains("motors"),
+        "motor 3's value is in the file:\n{text}"
+    );
+    let sim = Sim::start(&args);
+    let mut port = sim.tcp();
+    assert_eq!(port.transact(2, GAP, 4, 3, 0).value, 1717);
+    assert_eq!(port.transact(2, GAP, 4, 2, 0).value, 1000);
+    assert_eq!(port.transact(1, GAP, 4, 0, 0).value, 123);
+}

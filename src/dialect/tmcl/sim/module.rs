@@ -301,14 +301,17 @@ fn boot_loader_version(firmware: &str) -> String {
     }
 }
 
-/// The status a module answers to an ASCII line it cannot use.
+/// The status a module answers to an ASCII line it cannot use: the one the same command would
+/// get as a binary frame.
 fn ascii_status(error: &InputError) -> Status {
     match error {
         InputError::Syntax(_)
         | InputError::UnknownCommand { .. }
         | InputError::UnknownCommandNumber { .. }
-        | InputError::NotInMode { .. } => Status::InvalidCommand,
-        InputError::Param(_) => Status::WrongType,
+        | InputError::NotInMode { .. }
+        | InputError::AbsentCommand { .. } => Status::InvalidCommand,
+        // As in binary: an unknown parameter or port is the type byte's fault.
+        InputError::Param(_) | InputError::BadPort { .. } => Status::WrongType,
         _ => Status::InvalidValue,
     }
 }
