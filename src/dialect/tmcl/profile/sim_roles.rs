@@ -60,11 +60,15 @@ pub struct AxisRoles {
     pub status_flags: Option<u8>,
     /// Speed reached flag (read only).
     pub speed_reached: Option<u8>,
+    /// Pulse divisor (TMC429): each step above its default halves the velocity unit.
+    pub pulse_divisor: Option<u8>,
+    /// Ramp divisor (TMC429): each step above its default halves the acceleration unit.
+    pub ramp_divisor: Option<u8>,
 }
 
 impl AxisRoles {
     /// Every role with its name and number, for checks and documentation.
-    pub fn all(&self) -> [(&'static str, Option<u8>); 25] {
+    pub fn all(&self) -> [(&'static str, Option<u8>); 27] {
         [
             ("target_position", self.target_position),
             ("actual_position", self.actual_position),
@@ -91,6 +95,8 @@ impl AxisRoles {
             ("integrator_sum", self.integrator_sum),
             ("status_flags", self.status_flags),
             ("speed_reached", self.speed_reached),
+            ("pulse_divisor", self.pulse_divisor),
+            ("ramp_divisor", self.ramp_divisor),
         ]
     }
 

@@ -202,9 +202,10 @@ impl Machine {
             Opcode::Rsap | Opcode::Rsgp => {
                 let slot = slot(i);
                 self.params.check_store(slot)?;
+                let before = self.velocity_factor(m);
                 self.params.restore(slot);
                 if let Slot::Axis(m, n) = slot {
-                    self.after_axis_write(t, m, n);
+                    self.after_axis_write(t, m, n, before);
                 }
             }
             Opcode::Sgp => self.write_global(t, i.motor, i.type_, value)?,
@@ -284,15 +285,17 @@ impl Machine {
             // Any write clears the integrator sum.
             self.params.set(Slot::Axis(m, number), 0);
         } else {
+            let before = self.velocity_factor(m);
             self.params.set(Slot::Axis(m, number), value);
-            self.after_axis_write(t, m, number);
+            self.after_axis_write(t, m, number, before);
         }
         Ok(())
     }
 
     /// Side effects of a new RAM value: the target position moves, the target speed turns, the
-    /// maximum speed, acceleration and unit mode retune a move.
-    fn after_axis_write(&mut self, t: f64, m: u8, number: u8) {
+    /// maximum speed, acceleration, unit mode and divisors retune a move, and a new velocity
+    /// unit (`before` was the old one, in pps per unit) changes the speed of a rotation.
+    fn after_axis_write(&mut self, t: f64, m: u8, number: u8, before: f64) {
         let value = self.params.get(Slot::Axis(m, number));
         let (vmax, accel) = self.move_limits(m);
         let r = &self.roles;
@@ -302,8 +305,16 @@ impl Machine {
         } else if is(r.target_speed) {
             let v = self.pps(m, value);
             self.axes[m as usize].rotate(t, v, accel);
-        } else if is(r.max_speed) || is(r.max_acceleration) || is(r.unit_mode) {
-            self.axes[m as usize].retune(t, vmax, accel);
+        } else if is(r.max_speed)
+            || is(r.max_acceleration)
+            || is(r.unit_mode)
+            || is(r.pulse_divisor)
+            || is(r.ramp_divisor)
+        {
+            let scale = self.velocity_factor(m) / before;
+            let axis = &mut self.axes[m as usize];
+            axis.retune(t, vmax, accel);
+            axis.rescale_rotation(t, scale);
         }
     }
 

@@ -297,34 +297,48 @@ impl Machine {
         self.role(motor, self.roles.unit_mode) == 1
     }
 
-    /// A velocity of `motor` in the user's unit (AP 255 on the TMCM-142) as microsteps per
-    /// second.
+    /// How far a divisor parameter of `motor` is above its profile default (0 without one):
+    /// the unit constants of the profile hold at the defaults.
+    fn divisor_shift(&self, motor: u8, role: Option<u8>) -> i32 {
+        let Some(number) = role else { return 0 };
+        let slot = Slot::Axis(motor, number);
+        let default = self.params.spec(slot).and_then(|p| p.default).unwrap_or(0);
+        (i64::from(self.params.get(slot)) - default).clamp(-31, 31) as i32
+    }
+
+    /// Microsteps per second per velocity unit of `motor`: 1 in unit mode, else the profile's
+    /// constant, halved for each step the pulse divisor is above its default (TMC429).
+    pub fn velocity_factor(&self, motor: u8) -> f64 {
+        if self.pps_mode(motor) {
+            return 1.0;
+        }
+        let shift = self.divisor_shift(motor, self.roles.pulse_divisor);
+        self.profile.sim.velocity_pps_per_unit * 2f64.powi(-shift)
+    }
+
+    /// Microsteps per second² per acceleration unit of `motor`: as the velocity, with the pulse
+    /// and ramp divisors both (TMC429).
+    fn acceleration_factor(&self, motor: u8) -> f64 {
+        if self.pps_mode(motor) {
+            return 1.0;
+        }
+        let shift = self.divisor_shift(motor, self.roles.pulse_divisor)
+            + self.divisor_shift(motor, self.roles.ramp_divisor);
+        self.profile.sim.acceleration_pps2_per_unit * 2f64.powi(-shift)
+    }
+
+    /// A velocity of `motor` in the user's unit as microsteps per second.
     pub fn pps(&self, motor: u8, value: i32) -> f64 {
-        let factor = if self.pps_mode(motor) {
-            1.0
-        } else {
-            self.profile.sim.velocity_pps_per_unit
-        };
-        f64::from(value) * factor
+        f64::from(value) * self.velocity_factor(motor)
     }
 
     /// An acceleration of `motor` in the user's unit as microsteps per second².
     pub fn pps2(&self, motor: u8, value: i32) -> f64 {
-        let factor = if self.pps_mode(motor) {
-            1.0
-        } else {
-            self.profile.sim.acceleration_pps2_per_unit
-        };
-        f64::from(value) * factor
+        f64::from(value) * self.acceleration_factor(motor)
     }
 
     fn velocity_units(&self, motor: u8, pps: f64) -> i32 {
-        let factor = if self.pps_mode(motor) {
-            1.0
-        } else {
-            self.profile.sim.velocity_pps_per_unit
-        };
-        let units = (pps / factor).round();
+        let units = (pps / self.velocity_factor(motor)).round();
         units.clamp(f64::from(i32::MIN), f64::from(i32::MAX)) as i32
     }
 

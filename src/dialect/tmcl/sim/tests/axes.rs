@@ -453,3 +453,54 @@ fn a_sweep_of_commands_motors_and_types_gets_one_answer_each() {
         }
     }
 }
+
+#[test]
+fn the_tmc429_divisors_scale_speed_and_acceleration_of_their_motor() {
+    let mut sim = Sim::of("tmcm-6110");
+    sim.ok(ROR, 0, 0, 1000);
+    sim.ok(ROR, 0, 1, 1000);
+    sim.wait(1.0);
+    let pps = |sim: &mut Sim, m| sim.bus.motor_of(sim.now, 1, m).unwrap().velocity;
+    let full = pps(&mut sim, 0);
+    assert!((full - 30_517.578125).abs() < 1e-6, "{full}");
+    // Pulse divisor one up: the same speed value is half the step rate, on motor 0 only.
+    sim.ok(SAP, 154, 0, 4);
+    sim.wait(1.0);
+    assert!((pps(&mut sim, 0) - full / 2.0).abs() < 1e-6);
+    assert_eq!(
+        sim.ok(GAP, 3, 0, 0),
+        1000,
+        "in its own units, the speed is unchanged"
+    );
+    assert!(
+        (pps(&mut sim, 1) - full).abs() < 1e-6,
+        "motor 1 keeps its rate"
+    );
+    sim.ok(MST, 0, 0, 0);
+    sim.ok(MST, 0, 1, 0);
+    sim.wait(1.0);
+    // A move with pulse and ramp divisors up takes longer than the same move without.
+    sim.ok(SAP, 153, 0, 9);
+    let start = sim.ok(GAP, 1, 0, 0);
+    let start_1 = sim.ok(GAP, 1, 1, 0);
+    sim.ok(MVP, 0, 0, start + 20_000);
+    sim.ok(MVP, 0, 1, start_1 + 20_000);
+    let arrived = |sim: &mut Sim, m| sim.ok(GAP, 8, m, 0) == 1;
+    let mut waited = 0;
+    while !arrived(&mut sim, 1) {
+        sim.wait(0.01);
+        waited += 1;
+    }
+    assert!(!arrived(&mut sim, 0), "motor 0 is slower");
+    while !arrived(&mut sim, 0) {
+        sim.wait(0.01);
+        waited += 1;
+        assert!(waited < 10_000, "motor 0 never arrived");
+    }
+    assert_eq!(sim.ok(GAP, 1, 0, 0), start + 20_000);
+    // RSAP brings back the stored default, and the rate with it.
+    sim.ok(ROR, 0, 0, 1000);
+    sim.ok(8, 154, 0, 0);
+    sim.wait(2.0);
+    assert!((pps(&mut sim, 0) - full).abs() < 1e-6);
+}
