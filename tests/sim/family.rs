@@ -327,3 +327,29 @@ fn a_mixed_bus_keeps_each_modules_eeprom_in_the_state_file() {
     assert_eq!(port.transact(2, GAP, 4, 2, 0).value, 1000);
     assert_eq!(port.transact(1, GAP, 4, 0, 0).value, 123);
 }
+
+#[test]
+fn each_shipped_profiles_simulated_module_identifies_as_itself() {
+    use tmclsh::dialect::tmcl::profile::catalogue::{self, Identified};
+    use tmclsh::dialect::tmcl::profile::family::AsciiInterface;
+    for builtin in catalogue::BUILTINS {
+        let sim = Sim::start(&["--pty", "--profile", builtin.name]);
+        let mut port = sim.pty();
+        let answer = version(&mut port, 1);
+        match catalogue::identify(&answer) {
+            Ok(Identified::Known { profile, .. }) => {
+                assert_eq!(profile.name, builtin.name, "{answer}")
+            }
+            other => panic!("{}: {answer} identified as {other:?}", builtin.name),
+        }
+        let ascii = port.transact(1, 139, 0, 0, 0).status;
+        let profile = catalogue::by_name(builtin.name).unwrap();
+        let binary_only = profile.identity.ascii == Some(AsciiInterface::No);
+        let expected = if binary_only {
+            Status::InvalidCommand
+        } else {
+            Status::Ok
+        };
+        assert_eq!(ascii, expected, "{}: 139", builtin.name);
+    }
+}
