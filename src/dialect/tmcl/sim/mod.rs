@@ -14,6 +14,7 @@ mod control_cmd;
 mod exec;
 pub mod flags;
 mod io;
+mod live;
 mod machine;
 mod module;
 mod motion;
