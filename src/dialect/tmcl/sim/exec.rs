@@ -162,7 +162,10 @@ impl Machine {
                 | Opcode::Stap
                 | Opcode::Rsap
                 | Opcode::Rfs
+                | Opcode::Sco
+                | Opcode::Gco
                 | Opcode::Cco
+                | Opcode::Aco
         );
         if axis_command && usize::from(m) >= self.axes.len() {
             return Err(Status::InvalidValue);
@@ -217,15 +220,15 @@ impl Machine {
             Opcode::Rfs => return Ok(self.reference_search(t, m, i.type_)),
             Opcode::Sio => self.io.write(i.type_, i.motor, value != 0)?,
             Opcode::Gio => return self.io.read(i.type_, i.motor),
-            Opcode::Sco => self.set_coordinate(i.type_, value)?,
-            Opcode::Aco => self.set_coordinate(i.type_, self.vm.acc)?,
+            Opcode::Sco => self.set_coordinate(m, i.type_, value)?,
+            Opcode::Aco => self.set_coordinate(m, i.type_, self.vm.acc)?,
             Opcode::Cco => {
                 let counter = self.axes[m as usize].counter(t);
-                self.set_coordinate(i.type_, counter)?;
+                self.set_coordinate(m, i.type_, counter)?;
             }
             // Only a division by zero fails here: the keyword was checked before.
             Opcode::Calc | Opcode::Calcx => self.calculate(i).map_err(|_| Status::InvalidValue)?,
-            Opcode::Gco => return Ok(self.coords[i.type_ as usize]),
+            Opcode::Gco => return Ok(self.coords[m as usize][i.type_ as usize]),
             _ => return Err(Status::InvalidCommand),
         }
         Ok(value)
@@ -240,7 +243,7 @@ impl Machine {
                 .wrapping_add(i.value),
             _ => *usize::try_from(i.value)
                 .ok()
-                .and_then(|n| self.coords.get(n))
+                .and_then(|n| self.coords[m as usize].get(n))
                 .ok_or(Status::InvalidValue)?,
         };
         self.set_role(m, self.roles.target_position, target);
@@ -348,13 +351,14 @@ impl Machine {
         Ok(())
     }
 
-    fn set_coordinate(&mut self, number: u8, value: i32) -> Result<(), Status> {
+    /// SCO, ACO, CCO: coordinate `number` of motor `m` (every axis has its own, as the
+    /// multi-axis manuals say: "up to 20 position values for every axis").
+    fn set_coordinate(&mut self, m: u8, number: u8, value: i32) -> Result<(), Status> {
         let stored = self.params.get(Slot::Global(0, 84)) == 1;
         if stored && self.locked() {
             return Err(Status::EepromLocked);
         }
-        let slot = self
-            .coords
+        let slot = self.coords[m as usize]
             .get_mut(number as usize)
             .ok_or(Status::WrongType)?;
         if stored && *slot != value {

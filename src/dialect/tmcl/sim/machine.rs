@@ -47,7 +47,8 @@ pub(crate) struct Machine {
     /// Which axis parameter is which part of the motion.
     pub roles: AxisRoles,
     pub io: Io,
-    pub coords: Vec<i32>,
+    /// Coordinates of each motor (SCO/GCO/CCO/ACO, MVP COORD).
+    pub coords: Vec<Vec<i32>>,
     pub program: Program,
     pub vm: Vm,
     /// Seconds since the bus started, up to which events are handled.
@@ -74,7 +75,7 @@ impl Machine {
             axes,
             roles: roles_of(&profile),
             io: Io::new(&profile.sim),
-            coords: vec![0; profile.coordinates.into()],
+            coords: vec![vec![0; profile.coordinates.into()]; usize::from(profile.axes.max(1))],
             program: Program::new(profile.program_memory),
             vm: Vm::new(),
             profile,
@@ -103,7 +104,9 @@ impl Machine {
             axis.power_up(t);
         }
         self.io.reset_outputs();
-        self.coords.fill(0);
+        for coords in &mut self.coords {
+            coords.fill(0);
+        }
         self.vm = Vm::new();
         self.program.quit_download();
         self.t = t;
@@ -133,8 +136,15 @@ impl Machine {
         self.eeprom_changed = false;
         self.boot(self.t);
         if self.params.get(Slot::Global(0, 84)) == 1 {
-            for (slot, &value) in self.coords.iter_mut().zip(&image.coordinates) {
-                *slot = value;
+            let first = std::iter::once((0, &image.coordinates));
+            let others = image.motor_coordinates.iter().map(|(m, c)| (*m, c));
+            for (motor, stored) in first.chain(others) {
+                let Some(coords) = self.coords.get_mut(usize::from(motor)) else {
+                    continue;
+                };
+                for (slot, &value) in coords.iter_mut().zip(stored) {
+                    *slot = value;
+                }
             }
         }
     }
@@ -151,8 +161,16 @@ impl Machine {
                 Slot::Global(bank, n) => global.push((bank, n, value)),
             }
         }
-        let coordinates = if self.params.get(Slot::Global(0, 84)) == 1 {
-            self.coords.clone()
+        let stored = self.params.get(Slot::Global(0, 84)) == 1;
+        let coordinates = if stored {
+            self.coords[0].clone()
+        } else {
+            Vec::new()
+        };
+        let motor_coordinates = if stored {
+            (1..self.coords.len())
+                .map(|m| (m as u8, self.coords[m].clone()))
+                .collect()
         } else {
             Vec::new()
         };
@@ -162,6 +180,7 @@ impl Machine {
             motors,
             global,
             coordinates,
+            motor_coordinates,
             program: self.program.image(),
         }
     }

@@ -504,3 +504,33 @@ fn the_tmc429_divisors_scale_speed_and_acceleration_of_their_motor() {
     sim.wait(2.0);
     assert!((pps(&mut sim, 0) - full).abs() < 1e-6);
 }
+
+#[test]
+fn each_motor_has_its_own_coordinates() {
+    const SCO: u8 = 30;
+    const GCO: u8 = 31;
+    const CCO: u8 = 32;
+    let store = crate::sim::store::MemoryStore::new();
+    let mut sim = six_with_store(&store);
+    sim.ok(9, 84, 0, 1); // coordinates kept in EEPROM
+    sim.ok(SCO, 1, 3, 500);
+    sim.ok(SCO, 1, 0, 700);
+    assert_eq!(sim.ok(GCO, 1, 3, 0), 500);
+    assert_eq!(sim.ok(GCO, 1, 0, 0), 700);
+    assert_eq!(sim.ok(GCO, 1, 2, 0), 0);
+    assert_eq!(sim.status(SCO, 1, 6, 1), Status::InvalidValue, "no motor 6");
+    // MVP COORD moves the motor to its own coordinate.
+    sim.ok(MVP, 2, 3, 1);
+    sim.wait(2.0);
+    assert_eq!(sim.ok(GAP, 1, 3, 0), 500);
+    assert_eq!(sim.ok(GAP, 1, 0, 0), 0);
+    // CCO captures the motor's own position.
+    sim.ok(CCO, 2, 3, 0);
+    assert_eq!(sim.ok(GCO, 2, 3, 0), 500);
+    assert_eq!(sim.ok(GCO, 2, 0, 0), 0);
+    drop(sim);
+    let mut sim = six_with_store(&store);
+    assert_eq!(sim.ok(GCO, 1, 3, 0), 500, "kept per motor across a restart");
+    assert_eq!(sim.ok(GCO, 1, 0, 0), 700);
+    assert_eq!(sim.ok(GCO, 2, 3, 0), 500);
+}
