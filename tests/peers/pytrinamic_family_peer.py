@@ -1,5 +1,6 @@
-"""PyTrinamic's own module classes against the simulator: TMCM1140 and TMCM6110, unchanged, on
-one bus (the TMCM-1140 at address 1, the TMCM-6110 at address 2).
+"""PyTrinamic's own module classes against the simulator: TMCM1140, TMCM6110 and TMCM6214,
+unchanged, on one bus (the TMCM-1140 at address 1, the TMCM-6110 at address 2, the binary-only
+TMCM-6214 at address 3).
 
 Usage: python3 pytrinamic_family_peer.py PTY_PATH
 
@@ -13,7 +14,7 @@ import sys
 import time
 
 from pytrinamic.connections import ConnectionManager
-from pytrinamic.modules import TMCM1140, TMCM6110
+from pytrinamic.modules import TMCM1140, TMCM6110, TMCM6214
 
 
 def check(step, got, expected):
@@ -79,11 +80,25 @@ def tmcm6110(interface):
     check("6110 analog input VIN", module.get_analog_input(module.IO.VIN), 0)
 
 
+def tmcm6214(interface):
+    module = TMCM6214(interface, module_id=3)
+    check("6214 version", interface.get_version_string(module_id=3), "6214V117")
+    for axis, motor in enumerate(module.motors):
+        motor.linear_ramp.max_velocity = 100000 + axis
+    check("6214 axis 5 max_velocity", module.motors[5].linear_ramp.max_velocity, 100005)
+    check("6214 axis 0 max_velocity", module.motors[0].linear_ramp.max_velocity, 100000)
+    module.move_to(5, -8000)
+    until("6214 move_to axis 5", lambda: module.motors[5].get_axis_parameter(8))
+    check("6214 axis 5 position", module.motors[5].actual_position, -8000)
+    check("6214 axis 0 unmoved", module.motors[0].actual_position, 0)
+
+
 def main(port):
     manager = ConnectionManager(["--interface", "serial_tmcl", "--port", port, "--data-rate", "9600"])
     with manager.connect() as interface:
         tmcm1140(interface)
         tmcm6110(interface)
+        tmcm6214(interface)
 
 
 if __name__ == "__main__":

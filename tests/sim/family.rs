@@ -353,3 +353,19 @@ fn each_shipped_profiles_simulated_module_identifies_as_itself() {
         assert_eq!(ascii, expected, "{}: 139", builtin.name);
     }
 }
+
+#[test]
+fn a_module_without_its_own_profile_is_of_the_bus_profile() {
+    let sim = Sim::start(&[
+        "--listen",
+        "127.0.0.1:0",
+        "--profile",
+        "tmcm-6110",
+        "--modules",
+        "1,2:pd-1141,7",
+    ]);
+    let mut port = sim.tcp();
+    assert_eq!(version(&mut port, 1), "6110V131");
+    assert_eq!(version(&mut port, 2), "1141V119", "by its alias");
+    assert_eq!(version(&mut port, 7), "6110V131");
+}

@@ -70,12 +70,12 @@ fn pytrinamic_reads_writes_and_moves_over_the_pty() {
 }
 
 #[test]
-fn pytrinamics_tmcm1140_and_tmcm6110_classes_drive_a_mixed_bus() {
+fn pytrinamics_tmcm1140_tmcm6110_and_tmcm6214_classes_drive_a_mixed_bus() {
     if let Err(reason) = pytrinamic_available() {
         eprintln!("skipped pytrinamics_tmcm1140_and_tmcm6110_classes_drive_a_mixed_bus: {reason}");
         return;
     }
-    let sim = Sim::start(&["--pty", "--modules", "1:tmcm-1140,2:tmcm-6110"]);
+    let sim = Sim::start(&["--pty", "--modules", "1:tmcm-1140,2:tmcm-6110,3:tmcm-6214"]);
     let stdout = run_peer("pytrinamic_family_peer.py", &sim.first);
     for step in [
         "1140 version '1140V127'",
@@ -86,6 +86,9 @@ fn pytrinamics_tmcm1140_and_tmcm6110_classes_drive_a_mixed_bus() {
         "6110 axis 4 unmoved 0",
         "6110 axis 5 still turning 400",
         "6110 digital output 7 1",
+        "6214 version '6214V117'",
+        "6214 axis 5 position -8000",
+        "6214 axis 0 unmoved 0",
     ] {
         assert!(
             stdout.contains(&format!("ok {step}")),
