@@ -336,6 +336,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--manual-clock', '--manual-clock', [CompletionResultType]::ParameterName, 'Let simulation time pass only on the console command `advance` (deterministic tests)')
             [CompletionResult]::new('--no-reply-to-139', '--no-reply-to-139', [CompletionResultType]::ParameterName, 'Switch to ASCII mode on command 139 without a binary reply')
             [CompletionResult]::new('--no-reply-to-bin', '--no-reply-to-bin', [CompletionResultType]::ParameterName, 'Switch back to binary mode on BIN without an ASCII reply')
+            [CompletionResult]::new('--no-ascii', '--no-ascii', [CompletionResultType]::ParameterName, 'Answer 139 with invalid command and stay binary, as a module without the ASCII interface does (for a module whose interface is unconfirmed, such as the TMCM-3110)')
             [CompletionResult]::new('--float-missing-e', '--float-missing-e', [CompletionResultType]::ParameterName, 'Leave the E out of floats (1.0000+01), as two examples do')
             [CompletionResult]::new('--no-current-rounding', '--no-current-rounding', [CompletionResultType]::ParameterName, 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)')
             [CompletionResult]::new('--no-reply-prefix', '--no-reply-prefix', [CompletionResultType]::ParameterName, 'Send replies to addressed packets without the @N, prefix')

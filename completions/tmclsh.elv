@@ -308,6 +308,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --manual-clock 'Let simulation time pass only on the console command `advance` (deterministic tests)'
             cand --no-reply-to-139 'Switch to ASCII mode on command 139 without a binary reply'
             cand --no-reply-to-bin 'Switch back to binary mode on BIN without an ASCII reply'
+            cand --no-ascii 'Answer 139 with invalid command and stay binary, as a module without the ASCII interface does (for a module whose interface is unconfirmed, such as the TMCM-3110)'
             cand --float-missing-e 'Leave the E out of floats (1.0000+01), as two examples do'
             cand --no-current-rounding 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)'
             cand --no-reply-prefix 'Send replies to addressed packets without the @N, prefix'

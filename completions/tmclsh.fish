@@ -263,6 +263,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s v -l verbose -d 'L
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l manual-clock -d 'Let simulation time pass only on the console command `advance` (deterministic tests)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-139 -d 'Switch to ASCII mode on command 139 without a binary reply'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-bin -d 'Switch back to binary mode on BIN without an ASCII reply'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-ascii -d 'Answer 139 with invalid command and stay binary, as a module without the ASCII interface does (for a module whose interface is unconfirmed, such as the TMCM-3110)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l float-missing-e -d 'Leave the E out of floats (1.0000+01), as two examples do'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-current-rounding -d 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-prefix -d 'Send replies to addressed packets without the @N, prefix'

@@ -369,3 +369,17 @@ fn a_module_without_its_own_profile_is_of_the_bus_profile() {
     assert_eq!(version(&mut port, 2), "1141V119", "by its alias");
     assert_eq!(version(&mut port, 7), "6110V131");
 }
+
+#[test]
+fn no_ascii_makes_a_module_refuse_139() {
+    let sim = Sim::start(&["--pty", "--profile", "tmcm-3110", "--no-ascii"]);
+    let mut port = sim.pty();
+    assert_eq!(version(&mut port, 1), "3110V111");
+    assert_eq!(
+        port.transact(1, 139, 0, 0, 0).status,
+        Status::InvalidCommand
+    );
+    assert_eq!(port.transact(1, GAP, 4, 2, 0).value, 1000, "still binary");
+    let out = run(&["sim", "--protocol", "smd4", "--no-ascii"]);
+    assert_eq!(code(&out), 2, "a TMCL-only flag: {}", stderr(&out));
+}

@@ -130,6 +130,11 @@ pub struct ModuleFlags {
     #[arg(long, help_heading = "Choices the manual leaves open")]
     pub no_reply_to_bin: bool,
 
+    /// Answer 139 with invalid command and stay binary, as a module without the ASCII interface
+    /// does (for a module whose interface is unconfirmed, such as the TMCM-3110).
+    #[arg(long, help_heading = "Choices the manual leaves open")]
+    pub no_ascii: bool,
+
     /// Ending of ASCII replies: none, cr, lf or crlf.
     #[arg(long, value_name = "END", default_value = "cr", value_parser = line_end, help_heading = "Choices the manual leaves open")]
     pub reply_end: LineEnd,
@@ -185,6 +190,7 @@ pub fn given(matches: &ArgMatches) -> Option<&'static str> {
         (!module.home_switch.is_empty(), "--home-switch"),
         (module.no_reply_to_139, "--no-reply-to-139"),
         (module.no_reply_to_bin, "--no-reply-to-bin"),
+        (module.no_ascii, "--no-ascii"),
     ]
     .into_iter()
     .find_map(|(given, flag)| given.then_some(flag))
@@ -237,6 +243,7 @@ pub fn served(
             reply_end: module.reply_end,
             echo_end: module.echo_end,
             backspace: module.backspace_echo,
+            ascii: !module.no_ascii,
         },
         switches,
         motor_switches,

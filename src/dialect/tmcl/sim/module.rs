@@ -125,6 +125,10 @@ impl Module {
         if self.boot_loader {
             return self.boot_loader_frame(&instruction, sink);
         }
+        if instruction.command == Opcode::EnterAscii && !sink.quirks.ascii {
+            let value = instruction.value;
+            return self.send_frame(Status::InvalidCommand, instruction.command, value, sink);
+        }
         let outcome = self.machine.execute(t, &instruction, Source::Direct);
         match outcome.reply {
             Reply::Normal(status, value) => {

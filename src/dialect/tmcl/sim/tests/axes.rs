@@ -534,3 +534,28 @@ fn each_motor_has_its_own_coordinates() {
     assert_eq!(sim.ok(GCO, 1, 0, 0), 700);
     assert_eq!(sim.ok(GCO, 2, 3, 0), 500);
 }
+
+#[test]
+fn an_unconfirmed_interface_can_be_simulated_either_way() {
+    let profile = catalogue::by_name("tmcm-3110").unwrap();
+    let with = |ascii| {
+        let options = BusOptions {
+            quirks: crate::dialect::tmcl::sim::Quirks {
+                ascii,
+                ..Default::default()
+            },
+            ..BusOptions::default()
+        };
+        Sim {
+            bus: Bus::new(profile.clone(), options),
+            now: std::time::Duration::ZERO,
+        }
+    };
+    let mut answers = with(true);
+    assert_eq!(answers.status(139, 0, 0, 0), Status::Ok);
+    assert_eq!(answers.bus.is_ascii(1), Some(true));
+    let mut silent = with(false);
+    assert_eq!(silent.status(139, 0, 0, 0), Status::InvalidCommand);
+    assert_eq!(silent.bus.is_ascii(1), Some(false));
+    assert_eq!(silent.ok(GAP, 4, 2, 0), 1000, "still binary");
+}
