@@ -244,15 +244,15 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_see
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from to-rhai" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from help" -f -a "to-rhai" -d 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l protocol -d 'The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l protocol -d 'The protocol of the simulated module: a bus of TMCL modules (tmcl) or an SMD4 drive (smd4)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l listen -d 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l modules -d 'Module addresses on the simulated RS-485 bus' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l modules -d 'Modules on the simulated RS-485 bus: addresses, each optionally with its own profile (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l baud -d 'Pace bytes like a serial line at N baud (10 bits per byte, both directions)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l state -d 'Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l left-switch -d 'Position of the left limit switch (microsteps); not connected by default' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l right-switch -d 'Position of the right limit switch' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l home-switch -d 'Position of the reference (home) switch, active at and right of it' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l left-switch -d 'Position of the left limit switch (microsteps) of every motor, or MOTOR:POS for one motor (repeatable); not connected by default' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l right-switch -d 'Position of the right limit switch, of every motor or MOTOR:POS' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l home-switch -d 'Position of the reference (home) switch, active at and right of it; of every motor or MOTOR:POS' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l reply-end -d 'Ending of ASCII replies: none, cr, lf or crlf' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l echo-end -d 'What follows an echoed line: none, cr, lf or crlf (stands for the typed CR in character echo mode)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l backspace-echo -d 'Echo of a backspace in character echo mode: erase (BS SP BS) or plain (BS)' -r
@@ -274,10 +274,12 @@ comma\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l real-value-grid -d 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l pty -d 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l boot-loader -d 'The modules run their boot loader: 136 answers with B for V (`6110B131`), every other command with invalid command'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s v -l verbose -d 'Log every frame and line received and sent, decoded, to stderr'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l manual-clock -d 'Let simulation time pass only on the console command `advance` (deterministic tests)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-139 -d 'Switch to ASCII mode on command 139 without a binary reply'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-bin -d 'Switch back to binary mode on BIN without an ASCII reply'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-ascii -d 'Answer 139 with invalid command and stay binary, as a module without the ASCII interface does (for a module whose interface is unconfirmed, such as the TMCM-3110)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l float-missing-e -d 'Leave the E out of floats (1.0000+01), as two examples do'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-current-rounding -d 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-prefix -d 'Send replies to addressed packets without the @N, prefix'

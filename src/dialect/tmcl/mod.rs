@@ -77,8 +77,9 @@ fn typed_here(line: &str) -> bool {
 /// The commands of its simulator's console (`tmclsh sim --help`).
 const CONSOLE_HELP: &str = " TMCL module bus (--protocol tmcl):
   input PORT 0|1                     set a digital input (GIO bank 0)
-  analog PORT VALUE                  set an analog input (GIO bank 1, 0..1023)
-  switch left|right|home POS|off     move a virtual switch (physical microsteps) or disconnect it
+  analog PORT VALUE                  set an analog input (GIO bank 1, 0..the ADC maximum)
+  switch [M] left|right|home POS|off move a virtual switch of motor M (default 0; physical
+                                     microsteps) or disconnect it
   output PORT                        show an output (SIO bank 2)
-  motor                              show position, target, velocity, target reached
+  motor [M]                          show position, target, velocity, target reached of motor M
   @N COMMAND                         any of the above for the module with factory address N";
