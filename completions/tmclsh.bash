@@ -161,7 +161,7 @@ _tmclsh() {
 
     case "${cmd}" in
         tmclsh)
-            opts="-c -m -h -V --profile --value --json --keep-going --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download snapshot scan transcript sim config help"
+            opts="-c -m -v -h -V --profile --value --json --keep-going --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --binary --verbose --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -271,7 +271,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__config)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --binary --verbose --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -351,7 +351,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__download)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --run --no-validate --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --binary --verbose --run --no-validate --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -733,7 +733,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__ports)
-            opts="-h --profile --help"
+            opts="-h --probe --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -769,7 +769,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__run)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --profile --help"
+            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --binary --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -851,7 +851,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__scan)
-            opts="-m -h --addresses --port --baud --tcp --protocol --timeout --log --prefix-comma --module --address --no-enter --stay-ascii --echo --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --addresses --first --port --baud --tcp --protocol --timeout --log --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -917,7 +917,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__sim)
-            opts="-v -h --protocol --pty --listen --modules --baud --state --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --profile --help"
+            opts="-v -h --protocol --pty --listen --modules --boot-loader --baud --state --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1045,7 +1045,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__diff)
-            opts="-m -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --address --prefix-comma --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --binary --verbose --address --prefix-comma --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1177,7 +1177,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__restore)
-            opts="-m -h --store --yes --dry-run --force --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -v -h --store --yes --dry-run --force --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --binary --verbose --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1239,7 +1239,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__save)
-            opts="-m -h --force --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --address --prefix-comma --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --force --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --binary --verbose --address --prefix-comma --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

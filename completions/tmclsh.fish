@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_tmclsh_global_optspecs
-    string join \n profile= c= value json keep-going port= baud= tcp= protocol= m/module= timeout= echo= log= no-validate no-enter stay-ascii address= prefix-comma quiet-gap= h/help V/version
+    string join \n profile= c= value json keep-going port= baud= tcp= protocol= m/module= timeout= echo= log= no-validate no-enter stay-ascii binary v/verbose address= prefix-comma quiet-gap= h/help V/version
 end
 
 function __fish_tmclsh_needs_command
@@ -45,12 +45,14 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -l keep-going -d 'With -c or
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s V -l version -d 'Print version'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "profiles" -d 'List the built-in TMCL module profiles with their sources, or show one in full'
-complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "ports" -d 'List the serial ports of this machine'
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "ports" -d 'List the serial ports of this machine (--probe: and what module answers on each)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "completions" -d 'Print a shell completion script'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "man" -d 'Print the manual page (roff; man/tmclsh.1 in the source)'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
@@ -70,6 +72,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'P
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l probe -d 'Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -s h -l help -d 'Print help'
@@ -97,6 +100,8 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l profile -d 'Module
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l overwrite -d 'Let the script\'s file functions replace existing files that are not tmclsh snapshots or recordings'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -122,6 +127,8 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l quiet-gap -d 
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l run -d 'Start the program after downloading it'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
@@ -149,6 +156,8 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l force -d 'Replace FILE if it exists'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -168,6 +177,8 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -192,13 +203,15 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "save" -d 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "diff" -d 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "restore" -d 'Write FILE\'s settings back (unit mode and limits first; SMD4: resolution, currents and frequencies first, the mode last, only while the motor stands still), verifying each by reading it back; read-only, live and link settings are skipped and listed'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l addresses -d 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each (an empty bus takes 247 times --timeout)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l addresses -d 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each. Each reply is awaited 100 ms unless --timeout is set' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
@@ -213,9 +226,12 @@ line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l first -d 'Stop at the first module found, trying the addresses in ascending order'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
@@ -228,15 +244,15 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_see
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from to-rhai" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from help" -f -a "to-rhai" -d 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l protocol -d 'The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l protocol -d 'The protocol of the simulated module: a bus of TMCL modules (tmcl) or an SMD4 drive (smd4)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l listen -d 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l modules -d 'Module addresses on the simulated RS-485 bus' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l modules -d 'Modules on the simulated RS-485 bus: addresses, each optionally with its own profile (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l baud -d 'Pace bytes like a serial line at N baud (10 bits per byte, both directions)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l state -d 'Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l left-switch -d 'Position of the left limit switch (microsteps); not connected by default' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l right-switch -d 'Position of the right limit switch' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l home-switch -d 'Position of the reference (home) switch, active at and right of it' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l left-switch -d 'Position of the left limit switch (microsteps) of every motor, or MOTOR:POS for one motor (repeatable); not connected by default' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l right-switch -d 'Position of the right limit switch, of every motor or MOTOR:POS' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l home-switch -d 'Position of the reference (home) switch, active at and right of it; of every motor or MOTOR:POS' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l reply-end -d 'Ending of ASCII replies: none, cr, lf or crlf' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l echo-end -d 'What follows an echoed line: none, cr, lf or crlf (stands for the typed CR in character echo mode)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l backspace-echo -d 'Echo of a backspace in character echo mode: erase (BS SP BS) or plain (BS)' -r
@@ -258,10 +274,12 @@ comma\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l real-value-grid -d 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l pty -d 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l boot-loader -d 'The modules run their boot loader: 136 answers with B for V (`6110B131`), every other command with invalid command'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s v -l verbose -d 'Log every frame and line received and sent, decoded, to stderr'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l manual-clock -d 'Let simulation time pass only on the console command `advance` (deterministic tests)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-139 -d 'Switch to ASCII mode on command 139 without a binary reply'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-bin -d 'Switch back to binary mode on BIN without an ASCII reply'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-ascii -d 'Answer 139 with invalid command and stay binary, as a module without the ASCII interface does (for a module whose interface is unconfirmed, such as the TMCM-3110)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l float-missing-e -d 'Leave the E out of floats (1.0000+01), as two examples do'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-current-rounding -d 'Echo currents unrounded, as the examples do (the text rounds to 1.044/31 A steps)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-prefix -d 'Send replies to addressed packets without the @N, prefix'
@@ -285,11 +303,13 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l profile -d 'Mod
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "profiles" -d 'List the built-in TMCL module profiles with their sources, or show one in full'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "ports" -d 'List the serial ports of this machine'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "ports" -d 'List the serial ports of this machine (--probe: and what module answers on each)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "completions" -d 'Print a shell completion script'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "man" -d 'Print the manual page (roff; man/tmclsh.1 in the source)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download snapshot scan transcript sim config help" -f -a "run" -d 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'

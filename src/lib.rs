@@ -6,8 +6,13 @@
 //! simulator and faces), and every face — the REPL, one-shot `-c` lines, piped stdin and Rhai
 //! scripts — goes through the same session to a link: a serial port, a TCP socket or the built-in
 //! simulated module.
+//!
+//! The `cli` feature (on by default) adds the command line ([`cli`]) and the interactive shell
+//! (`repl`) with their dependencies; without it the library is the dialects, sessions, scripts,
+//! simulators and commissioning tools alone, for embedding.
 #![deny(missing_docs)]
 
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod clock;
 pub mod commission;
@@ -19,6 +24,7 @@ pub mod escape;
 pub mod exit;
 pub mod link;
 pub mod progress;
+#[cfg(feature = "cli")]
 pub mod repl;
 pub mod script;
 pub mod session;

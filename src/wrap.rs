@@ -5,15 +5,21 @@
 
 use std::io::IsTerminal;
 
-/// The terminal's width, when stdout is a terminal that tells it.
+/// The terminal's width, when stdout is a terminal that tells it (never without the `cli`
+/// feature, which brings the terminal).
 pub fn terminal_width() -> Option<usize> {
     if !std::io::stdout().is_terminal() {
         return None;
     }
-    crossterm::terminal::size()
-        .ok()
-        .map(|(w, _)| usize::from(w))
-        .filter(|w| *w > 0)
+    #[cfg(feature = "cli")]
+    {
+        crossterm::terminal::size()
+            .ok()
+            .map(|(w, _)| usize::from(w))
+            .filter(|w| *w > 0)
+    }
+    #[cfg(not(feature = "cli"))]
+    None
 }
 
 /// `row` fitted to `width` columns (none: as it is): what follows column `indent` is wrapped at

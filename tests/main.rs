@@ -4,12 +4,14 @@
 mod util;
 
 mod asm;
+mod binary_session;
 mod catalogue;
 mod cli;
 mod commission;
 #[cfg(feature = "hardware")]
 mod hardware;
 mod hostile;
+mod identify;
 mod inputs;
 mod layers;
 mod options;

@@ -309,6 +309,65 @@ fn stay_ascii() {
 }
 
 #[test]
+fn binary() {
+    table(
+        &["--binary"],
+        &[
+            ShellC,
+            ShellStdin,
+            Run,
+            Download,
+            SnapshotSave,
+            SnapshotDiff,
+            SnapshotRestore,
+        ],
+        &|_| Setup::tmcl().with(&["--log", &fresh("binary.log")]),
+        &|face, out, cell| {
+            finished(face, out)?;
+            let log = read(value_of(cell, "--log"));
+            expect(
+                log.contains("binary direct mode: --binary given") && !log.contains("(139)"),
+                || format!("not a binary session:\n{log}"),
+            )
+        },
+        &no_special,
+    );
+}
+
+#[test]
+fn verbose() {
+    table(
+        &["-v"],
+        &[
+            ShellC,
+            ShellStdin,
+            Run,
+            Download,
+            SnapshotSave,
+            SnapshotDiff,
+            SnapshotRestore,
+        ],
+        &|_| Setup::tmcl(),
+        &|face, out, _| {
+            finished(face, out)?;
+            says(
+                out,
+                "tmclsh: TMCM-142, firmware 142V1.06, profile tmcm-142 (built in)\n",
+            )
+        },
+        // `tmclsh sim -v` is the simulator's own option: it logs its traffic.
+        &|face, position| {
+            (face == Serve && position == Position::After).then(|| {
+                let logging = Sim::start(&["-v"]);
+                expect(logging.first.starts_with("/dev/"), || {
+                    format!("sim -v printed {}", logging.first)
+                })
+            })
+        },
+    );
+}
+
+#[test]
 fn address() {
     table(
         &["--address", "1"],

@@ -369,3 +369,53 @@ fn example_bus_scan_finds_the_modules_and_the_gap() {
     );
     assert!(text.contains("3 module(s) found: [1, 2, 4]"), "{text}");
 }
+
+#[test]
+fn example_multi_axis_homes_and_moves_three_axes_of_a_tmcm_6110() {
+    let sim = Sim::start(&[
+        "--pty",
+        "--profile",
+        "tmcm-6110",
+        "--left-switch",
+        "-2000",
+        "--left-switch",
+        "1:-5000",
+    ]);
+    let out = run(&[
+        "run",
+        &example("multi_axis.rhai"),
+        "--profile",
+        "tmcm-6110",
+        "--port",
+        &sim.first,
+        "--",
+        "3",
+        "1000",
+    ]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    for line in [
+        "axis 2: homed",
+        "axis 1: at 2000, the other axes unmoved",
+        "3 axes homed and positioned: [1000, 2000, 3000]",
+    ] {
+        assert!(text.contains(line), "{line} missing:\n{text}");
+    }
+    // Without switches the search finds nothing, and says where to look.
+    let out = run(&[
+        "run",
+        &example("multi_axis.rhai"),
+        "--profile",
+        "tmcm-6110",
+        "--",
+        "2",
+        "1000",
+        "300",
+    ]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(
+        stderr(&out).contains("axis 0: no left switch found"),
+        "{}",
+        stderr(&out)
+    );
+}

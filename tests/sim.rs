@@ -5,6 +5,7 @@
 mod ascii;
 mod binary;
 mod bus;
+mod family;
 mod faults;
 mod motion;
 mod programs;

@@ -85,6 +85,21 @@ pub fn start_up(runs: usize, python: bool) -> Row {
     }
 }
 
+/// The row under row 4: the size of the binary whose start-up it measured.
+pub fn size() -> Row {
+    let bytes = std::fs::metadata(tmclsh())
+        .expect("the tmclsh binary is there")
+        .len();
+    Row {
+        name: "↳ size of that binary on disk (the release profile)".into(),
+        measured: format!("{:.1} MB", bytes as f64 / 1e6),
+        reference: "—".into(),
+        ratio: "—".into(),
+        target: "—".into(),
+        met: None,
+    }
+}
+
 fn timed(command: &mut Command) -> Duration {
     let (success, wall) = run_silent(command);
     assert!(success, "{command:?} failed");

@@ -111,6 +111,7 @@ fn main() {
     step("in-process, start-up, memory");
     let in_process = local::in_process(plan.in_process_n, plan.in_process_reps);
     let start_up = local::start_up(plan.start_up_runs, python);
+    let size = local::size();
     let memory = local::memory(plan.memory_n, &scratch);
     step("host overhead and transcript cost over an unpaced pty");
     let mut host = host::measure(&host::Plan {
@@ -123,7 +124,7 @@ fn main() {
     let mut rows = wire::measure(&plan.wire);
     let transcript = host.pop().expect("the transcript row");
     rows.append(&mut host);
-    rows.extend([in_process, start_up, memory, transcript]);
+    rows.extend([in_process, start_up, size, memory, transcript]);
     let load_after = machine::load();
 
     println!("{}", report::text(&rows));

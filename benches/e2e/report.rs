@@ -156,7 +156,8 @@ within the repetitions, so that a busy (or idle) spell of the machine hits both 
 3. **In-process**: the same script on the built-in simulator (no OS I/O): parse, Rhai, session
    and simulator.
 4. **Start-up**: `tmclsh -c \"GAP 1, 0\"` on the built-in simulator, spawn to exit, against
-   `python3 -c \"import serial\"`, the least a Python tool must do; runs alternate.
+   `python3 -c \"import serial\"`, the least a Python tool must do; runs alternate. The row
+   below it is the size of that binary on disk, as the release profile in `Cargo.toml` builds it.
 5. **Memory**: peak resident set size (wait4 `ru_maxrss`) of the loop with `--log` at N and at
    N/10; flat means under 5 % growth.
 6. **Transcript cost**: row 2 with `--log FILE`, run right before or after (in turns) each of

@@ -96,6 +96,9 @@ impl Args for DialectFlags {
     }
 }
 
+/// `--timeout` when neither the command line, the environment nor a configuration file sets it.
+pub const DEFAULT_TIMEOUT_MS: u64 = 1000;
+
 /// How requests are sent and checked.
 #[derive(Debug, Clone, clap::Args)]
 pub struct SessionArgs {
@@ -103,7 +106,7 @@ pub struct SessionArgs {
     #[arg(long, short = 'm', value_name = "N", env = "TMCLSH_MODULE", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
     pub module: u8,
     /// Milliseconds to wait for a reply before giving up (exit code 3).
-    #[arg(long, value_name = "MS", env = "TMCLSH_TIMEOUT", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "MS", env = "TMCLSH_TIMEOUT", default_value_t = DEFAULT_TIMEOUT_MS, value_parser = clap::value_parser!(u64).range(1..))]
     pub timeout: u64,
     /// Set the target module's echo on opening: char, line (every reply attributed to its
     /// request) or none (global parameter 67 in RAM; it stays after tmclsh ends).
@@ -122,6 +125,15 @@ pub struct SessionArgs {
     /// Leave the modules in ASCII mode on exit instead of restoring the mode they were found in.
     #[arg(long)]
     pub stay_ascii: bool,
+    /// Talk to the modules in binary direct mode (typed lines go out as binary frames), whether
+    /// or not they have the ASCII interface.
+    #[arg(long)]
+    pub binary: bool,
+    /// Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131,
+    /// profile tmcm-6110 (built in)).
+    // Its own id: `tmclsh sim --verbose` logs traffic, and `-v` before `sim` is not that.
+    #[arg(long, short = 'v', id = "say_module")]
+    pub verbose: bool,
 }
 
 /// The echo modes of a TMCL module, as `--echo` and `:echo` name them; the TMCL session reads
@@ -226,6 +238,14 @@ pub enum Audience {
 }
 
 impl ModuleArgs {
+    /// Whether `--timeout` was set by anyone (the command line, `TMCLSH_TIMEOUT`, a configuration
+    /// file), not left at its built-in default.
+    pub fn timeout_given(&self) -> bool {
+        let source = self.command_line.0.value_source("timeout");
+        source != Some(clap::parser::ValueSource::DefaultValue)
+            || self.session.timeout != DEFAULT_TIMEOUT_MS
+    }
+
     /// The protocol the module speaks.
     pub fn protocol(&self) -> &'static Dialect {
         self.dialect.protocol
@@ -284,7 +304,7 @@ impl ModuleArgs {
         let config = configs.of(self.protocol());
         let options = self.session.options();
         let (transcript, link) = self.connect(config, options.timeout, audience)?;
-        config
+        let session = config
             .open(Opening {
                 link,
                 options,
@@ -292,6 +312,10 @@ impl ModuleArgs {
                 flags: Some(&self.command_line.0),
                 purpose,
             })
-            .map_err(Failure::from)
+            .map_err(Failure::from)?;
+        if self.session.verbose && purpose == Purpose::Talk {
+            super::diagnose(&session.banner());
+        }
+        Ok(session)
     }
 }

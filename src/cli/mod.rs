@@ -55,8 +55,8 @@ enum Command {
     Params(params::ParamsArgs),
     /// List the built-in TMCL module profiles with their sources, or show one in full.
     Profiles(profiles::ProfilesArgs),
-    /// List the serial ports of this machine.
-    Ports,
+    /// List the serial ports of this machine (--probe: and what module answers on each).
+    Ports(ports::PortsArgs),
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
     /// Print the manual page (roff; man/tmclsh.1 in the source).
@@ -150,7 +150,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         .map_err(|message| Failure::new(Exit::Refused, message))?;
     let result = match cli.command {
         Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
-        Some(Command::Ports) => ports::run(out),
+        Some(Command::Ports(args)) => ports::run(&args, &configs, out),
         Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),
         Some(Command::Completions(args)) => completions::run(&args, out),
         Some(Command::Man) => man::run(out),

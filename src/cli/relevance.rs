@@ -33,8 +33,13 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
     ),
     (
         "scan",
-        &["no_enter", "stay_ascii"],
+        &["no_enter", "stay_ascii", "binary"],
         "a scan finds modules in either mode and leaves each in the mode it was found in",
+    ),
+    (
+        "scan",
+        &["say_module"],
+        "a scan names every module it finds",
     ),
     (
         "scan",

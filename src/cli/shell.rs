@@ -169,15 +169,24 @@ fn open_when_ready(
     }
 }
 
+/// The first line of the REPL: what the session talks to (TMCL: the module as identified, and
+/// the profile), and for the built-in simulator, that it is one.
 fn banner(module: &ModuleArgs, shell: &Shell, configs: &Configured) -> String {
     let version = env!("CARGO_PKG_VERSION");
+    let talking_to = shell.session_ref().banner();
     if module.connection.is_builtin() {
-        let module = configs.of(module.protocol()).simulated_module();
-        format!("tmclsh {version} — simulated {module} (built-in) — use --port to talk to hardware")
-    } else {
-        let module = shell.session_ref().banner();
+        let simulated = configs.of(module.protocol()).simulated_module();
+        let what = if talking_to == simulated {
+            String::new()
+        } else {
+            format!(": {talking_to}")
+        };
         format!(
-            "tmclsh {version} — {module} on {}",
+            "tmclsh {version} — simulated {simulated} (built-in){what} — use --port to talk to hardware"
+        )
+    } else {
+        format!(
+            "tmclsh {version} — {talking_to} on {}",
             shell.session_ref().describe()
         )
     }

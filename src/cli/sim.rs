@@ -21,7 +21,7 @@ use crate::sim::pacing::Paced;
 #[derive(Debug, clap::Args)]
 #[command(after_long_help = console_help())]
 pub struct SimArgs {
-    /// The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4).
+    /// The protocol of the simulated module: a bus of TMCL modules (tmcl) or an SMD4 drive (smd4).
     #[arg(long, value_parser = protocol_parser(), default_value = default_dialect().name)]
     pub protocol: &'static Dialect,
 

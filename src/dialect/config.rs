@@ -4,8 +4,6 @@
 use std::io::{self, Write};
 use std::path::Path;
 
-use clap::ArgMatches;
-
 use crate::commission::ParamRef;
 use crate::link::Link;
 use crate::session::transcript::{Header, Transcript};
@@ -14,7 +12,7 @@ use crate::sim::Device;
 
 use super::replay::parse::Entry;
 use super::session::{AsAny, DialectSession};
-use super::{DIALECTS, Dialect};
+use super::{CommandLine, DIALECTS, Dialect};
 
 /// What a session is opened for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -35,7 +33,7 @@ pub struct Opening<'a> {
     pub transcript: Option<Transcript>,
     /// The command line the dialect reads its own session flags from; without one, their
     /// defaults apply.
-    pub flags: Option<&'a ArgMatches>,
+    pub flags: Option<&'a CommandLine>,
     /// What the session is for.
     pub purpose: Purpose,
 }
@@ -56,9 +54,10 @@ pub trait DialectConfig: AsAny {
 
     /// The simulator `tmclsh sim` serves, set up by its flags; `state` keeps what it stores
     /// across restarts, `verbose` logs its traffic to stderr. The error is a refusal (exit 2).
+    #[cfg(feature = "cli")]
     fn served_simulator(
         &self,
-        flags: &ArgMatches,
+        flags: &CommandLine,
         state: Option<&Path>,
         verbose: bool,
     ) -> Result<Box<dyn Device>, String>;

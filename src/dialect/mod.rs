@@ -20,7 +20,7 @@ pub mod tmcl;
 use std::fmt;
 use std::path::Path;
 
-use clap::ArgMatches;
+#[cfg(feature = "cli")]
 use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 
 pub use config::{Configured, DialectConfig, Opening, Purpose};
@@ -64,12 +64,15 @@ pub struct Dialect {
     /// Why one of its options is refused under another dialect; `{protocol}` names that one.
     pub refusal: &'static str,
     /// Adds its session flags (`tmclsh --protocol NAME --FLAG`) to a command.
+    #[cfg(feature = "cli")]
     pub session_flags: fn(clap::Command) -> clap::Command,
     /// Adds its simulator flags of one group to `tmclsh sim`.
+    #[cfg(feature = "cli")]
     pub sim_flags: fn(SimFlags, clap::Command) -> clap::Command,
     /// The first of its simulator flags given on a command line, which the other dialects'
     /// simulators refuse.
-    pub sim_flag_given: fn(&ArgMatches) -> Option<&'static str>,
+    #[cfg(feature = "cli")]
+    pub sim_flag_given: fn(&CommandLine) -> Option<&'static str>,
     /// The module its simulator stands for in messages (`TMCM-142`).
     pub simulated: &'static str,
     /// The commands of its simulator's console, for `tmclsh sim --help`: a heading line, then
@@ -86,6 +89,17 @@ pub struct Dialect {
     /// The example in the usage of `:scan`.
     pub scan_example: &'static str,
 }
+
+/// A parsed command line, which a dialect reads its own session and simulator flags from:
+/// clap's matches.
+#[cfg(feature = "cli")]
+pub type CommandLine = clap::ArgMatches;
+
+/// Without the `cli` feature there is no command line (no value of this type exists): sessions
+/// open with their dialect's defaults, or are built from the dialect's own options type.
+#[cfg(not(feature = "cli"))]
+#[derive(Debug)]
+pub enum CommandLine {}
 
 /// How a dialect reads its tables: from the `--profile` file, if one is given; the error is a
 /// refusal (exit 2).
@@ -129,6 +143,7 @@ pub fn default_dialect() -> &'static Dialect {
 }
 
 /// The value parser of `--protocol`: the names in the list, each with its summary.
+#[cfg(feature = "cli")]
 pub fn protocol_parser() -> impl TypedValueParser<Value = &'static Dialect> {
     let values = DIALECTS
         .iter()
@@ -137,6 +152,7 @@ pub fn protocol_parser() -> impl TypedValueParser<Value = &'static Dialect> {
 }
 
 /// No flags.
+#[cfg(feature = "cli")]
 pub(crate) fn no_flags(cmd: clap::Command) -> clap::Command {
     cmd
 }

@@ -19,6 +19,8 @@ pub struct Limits {
     /// Deepest function call nesting.
     pub max_call_depth: usize,
     /// Bytes the script may hold beyond what tmclsh held when it started (`None`: no limit).
+    /// Enforced where the program counts its allocations: the binary does; a program embedding
+    /// the library registers a counter with [`count_allocations_with`](super::count_allocations_with).
     pub max_memory: Option<usize>,
     /// Wall-clock time the script may run (`None`: no limit).
     pub max_time: Option<Duration>,

@@ -8,44 +8,63 @@
 //! callback compares that with the script's budget at every operation, and the few functions
 //! that can allocate a size given as an argument in one call (`pad`, `blob`) check the size
 //! first.
+//!
+//! Counting is the program's business, not the library's: only a program chooses its global
+//! allocator. The `tmclsh` binary installs a counting one (`src/main.rs`) and registers its
+//! reading with [`count_allocations_with`] at start-up. A program that registers no counter runs
+//! scripts without a memory bound — [`Limits::max_memory`](super::Limits::max_memory) is then not
+//! enforced, while operations, call depth and time still are; one that runs scripts it does not
+//! trust registers a counter first.
 
-use std::alloc::System;
+use std::sync::OnceLock;
 
-use cap::Cap;
 use rhai::{Array, Blob, Dynamic, Engine, EvalAltResult, INT, ImmutableString};
 
-/// The process's allocator, counting what is allocated (no limit is set on it: a failed
-/// allocation would abort; the budget is enforced by the script engine instead).
-#[global_allocator]
-static ALLOCATOR: Cap<System> = Cap::new(System, usize::MAX);
+/// Reads how many bytes the process has allocated now (a counting global allocator's total).
+pub type AllocationCounter = fn() -> usize;
 
-/// Bytes allocated by the process now.
-pub fn allocated() -> usize {
-    ALLOCATOR.allocated()
+/// The counter registered at start-up, if any.
+static COUNTER: OnceLock<AllocationCounter> = OnceLock::new();
+
+/// Bounds the memory of every script run from now on with `counter`, which reads the bytes the
+/// process has allocated. Call it once at start-up, before any script runs; a second call
+/// changes nothing and returns false.
+pub fn count_allocations_with(counter: AllocationCounter) -> bool {
+    COUNTER.set(counter).is_ok()
 }
 
 /// How much a script may allocate beyond what the process held when it started.
 #[derive(Debug, Clone, Copy)]
 pub struct Budget {
     ceiling: usize,
+    allocated: AllocationCounter,
 }
 
 impl Budget {
-    /// A budget of `bytes` from now.
-    pub fn from_now(bytes: usize) -> Budget {
+    /// A budget of `bytes` from now; none when the program counts no allocations (see
+    /// [`count_allocations_with`]).
+    pub fn from_now(bytes: usize) -> Option<Budget> {
+        COUNTER
+            .get()
+            .map(|&allocated| Budget::counted_by(allocated, bytes))
+    }
+
+    /// A budget of `bytes` from what `allocated` reads now.
+    fn counted_by(allocated: AllocationCounter, bytes: usize) -> Budget {
         Budget {
             ceiling: allocated().saturating_add(bytes),
+            allocated,
         }
     }
 
     /// Whether the script holds more than its budget.
     pub fn exceeded(self) -> bool {
-        allocated() > self.ceiling
+        (self.allocated)() > self.ceiling
     }
 
     /// Whether `more` bytes fit in what is left.
     fn fits(self, more: usize) -> bool {
-        allocated().saturating_add(more) <= self.ceiling
+        (self.allocated)().saturating_add(more) <= self.ceiling
     }
 }
 
@@ -150,4 +169,66 @@ fn weight(value: &Dynamic) -> usize {
             .sum::<usize>();
     }
     0
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    use super::*;
+
+    /// What the fake counter of the first test reads.
+    static HELD: AtomicUsize = AtomicUsize::new(0);
+
+    fn held() -> usize {
+        HELD.load(Ordering::SeqCst)
+    }
+
+    #[test]
+    fn a_budget_counts_from_what_the_process_held_when_it_started() {
+        HELD.store(10_000, Ordering::SeqCst);
+        let budget = Budget::counted_by(held, 500);
+        assert!(!budget.exceeded());
+        assert!(budget.fits(500) && !budget.fits(501));
+        HELD.store(10_500, Ordering::SeqCst);
+        assert!(!budget.exceeded() && budget.fits(0) && !budget.fits(1));
+        HELD.store(10_501, Ordering::SeqCst);
+        assert!(budget.exceeded());
+    }
+
+    #[test]
+    fn pad_and_blob_are_refused_before_they_allocate_past_the_budget() {
+        // A counter that never moves: only the sizes asked for count.
+        let mut engine = Engine::new();
+        register_builders(&mut engine, Budget::counted_by(|| 1 << 20, 1 << 16));
+        for fits in [
+            "blob(60000).len()",
+            "blob(60000, 7).len()",
+            "let s = \"\"; s.pad(10000, 'x'); s.len()",
+            "let a = []; a.pad(100, 0); a.len()",
+        ] {
+            assert!(engine.eval::<INT>(fits).is_ok(), "{fits} fits");
+        }
+        for too_big in [
+            "blob(70000)",
+            "blob(1000000, 7)",
+            "let s = \"\"; s.pad(1000000, 'x'); s",
+            "let s = \"\"; s.pad(1000000, \"ab\"); s",
+            "let a = []; a.pad(1000000, 0); a",
+            "let b = blob(); b.pad(70000, 1); b",
+        ] {
+            let error = engine.eval::<Dynamic>(too_big).expect_err(too_big);
+            let EvalAltResult::ErrorRuntime(value, _) = *error else {
+                panic!("{too_big}: {error}");
+            };
+            let failure = value.cast::<crate::exit::Failure>();
+            assert_eq!(failure.message, MESSAGE, "{too_big}");
+        }
+    }
+
+    #[test]
+    fn without_a_counter_no_budget_is_set() {
+        // The library's unit tests register no counter (only the binary does).
+        assert!(Budget::from_now(1).is_none());
+    }
 }

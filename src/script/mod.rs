@@ -40,6 +40,7 @@ use crate::session::interrupt;
 
 pub use limits::Limits;
 use memory::Budget;
+pub use memory::count_allocations_with;
 use sandbox::Sandbox;
 
 /// Where a script's `print` lines go, their control characters already escaped (see
@@ -128,7 +129,7 @@ impl Script {
         let shared = Rc::new(RefCell::new(session));
         let watchdog = limits::Watchdog::start(self.limits.max_time);
         let result = {
-            let budget = self.limits.max_memory.map(Budget::from_now);
+            let budget = self.limits.max_memory.and_then(Budget::from_now);
             let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &self.print);
             let log_session = shared.clone();
             common::register(

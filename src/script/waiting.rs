@@ -1,4 +1,5 @@
-//! Waiting inside scripts: sliced so Ctrl-C interrupts promptly, with a spinner on a terminal.
+//! Waiting inside scripts: sliced so Ctrl-C interrupts promptly, with a spinner on a terminal
+//! (with the `cli` feature, which brings the terminal faces).
 
 use std::time::{Duration, Instant};
 

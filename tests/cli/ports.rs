@@ -246,3 +246,42 @@ fn ctrl_c_gives_up_waiting_and_a_run_never_waits() {
     assert_eq!(code(&out), 3, "{}", stderr(&out));
     assert!(!stdout(&out).contains("waiting"));
 }
+
+#[test]
+fn probe_names_the_module_on_each_port_and_says_which_are_silent() {
+    let six = Sim::start(&["--pty", "--profile", "tmcm-6110"]);
+    let elsewhere = Sim::start(&["--pty", "--modules", "5"]);
+    let machine = Machine::new();
+    machine.usb_serial(
+        "ttyUSB0",
+        ("0403", "6001"),
+        Some("A1"),
+        Path::new(&six.first),
+    );
+    machine.usb_serial(
+        "ttyUSB1",
+        ("0403", "6001"),
+        Some("B2"),
+        Path::new(&elsewhere.first),
+    );
+    // A device file that is no serial port: it cannot be opened as one.
+    let nowhere = machine.root.join("nowhere");
+    std::fs::write(&nowhere, "").unwrap();
+    machine.usb_serial("ttyUSB2", ("0403", "6001"), Some("C3"), &nowhere);
+    let out = machine.run(&["ports", "--probe"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    let answer = |name: &str| -> String {
+        let prefix = format!("{}: ", machine.dev(name));
+        text.lines()
+            .find_map(|l| l.strip_prefix(&prefix))
+            .unwrap_or_else(|| panic!("{name} not probed:\n{text}"))
+            .to_string()
+    };
+    assert_eq!(answer("ttyUSB0"), "TMCM-6110 (6110V131), in binary mode");
+    assert_eq!(answer("ttyUSB1"), "no module answered");
+    assert!(answer("ttyUSB2").starts_with("not probed: "), "{text}");
+    // Without --probe nothing is probed.
+    let out = machine.run(&["ports"]);
+    assert!(!stdout(&out).contains("probing"), "{}", stdout(&out));
+}

@@ -22,6 +22,8 @@ fn at_the_prompt_the_words_do_their_helpers() {
     p.exp_string("A> ").unwrap();
     p.send_line("GAP 4, 0").unwrap();
     p.exp_string("max_positioning_speed").unwrap();
+    // Typed before the prompt, a line is flushed when the line editor takes the terminal.
+    p.exp_string("A> ").unwrap();
     p.send_line("exit").unwrap();
     p.exp_eof().unwrap();
     let (mut p, _) = repl(&[]);

@@ -48,9 +48,9 @@ fn a_bus_with_three_modules_and_a_gap() {
     assert_eq!(
         table(&text),
         [
-            ["1", "A", "binary", "142V1.06", "char"],
-            ["2", "B", "binary", "142V1.06", "none"],
-            ["4", "D", "binary", "142V1.06", "line"],
+            ["1", "A", "binary", "142V1.06", "char", "TMCM-142"],
+            ["2", "B", "binary", "142V1.06", "none", "TMCM-142"],
+            ["4", "D", "binary", "142V1.06", "line", "TMCM-142"],
         ],
         "{text}"
     );
@@ -91,8 +91,8 @@ fn addresses_without_a_character_are_probed_in_binary() {
     assert_eq!(
         table(&stdout(&out)),
         [
-            ["1", "A", "binary", "142V1.06", "char"],
-            ["40", "-", "binary", "142V1.06", "char"],
+            ["1", "A", "binary", "142V1.06", "char", "TMCM-142"],
+            ["40", "-", "binary", "142V1.06", "char", "TMCM-142"],
         ]
     );
     let mut port = sim.tcp();
@@ -125,8 +125,8 @@ fn a_module_found_in_ascii_mode_is_left_in_it_and_the_repl_scans_too() {
     assert_eq!(
         table(&text.lines().take(4).collect::<Vec<_>>().join("\n")),
         [
-            ["1", "A", "binary", "142V1.06", "char"],
-            ["3", "C", "ASCII", "142V1.06", "none"],
+            ["1", "A", "binary", "142V1.06", "char", "TMCM-142"],
+            ["3", "C", "ASCII", "142V1.06", "none", "TMCM-142"],
         ],
         "{text}"
     );
@@ -167,4 +167,66 @@ fn an_empty_range_exits_3_with_a_summary() {
     );
     let bad = expect(&["scan", "--addresses", "0-3"], 2);
     assert!(stderr(&bad).contains("'0' is not a bus address"));
+}
+
+/// Each module is named from its version string; the table's last column.
+fn modules_named(text: &str) -> Vec<String> {
+    table(text).iter().map(|row| row[5..].join(" ")).collect()
+}
+
+#[test]
+fn every_module_found_is_named_by_the_built_in_profiles() {
+    let sim = Sim::start(&["--pty", "--profile", "tmcm-6110", "--modules", "1,2"]);
+    let out = expect(&["scan", "--port", &sim.first, "--addresses", "1-3"], 0);
+    let text = stdout(&out);
+    assert_eq!(modules_named(&text), ["TMCM-6110", "TMCM-6110"], "{text}");
+    // No --timeout: the scan's own short wait, not the session's second.
+    assert!(
+        text.ends_with("2 modules answered at 1-3 (at most 100 ms per reply)\n"),
+        "{text}"
+    );
+    // A timeout from the environment is the user's.
+    let out = std::process::Command::new(crate::util::bin())
+        .args(["scan", "--port", &sim.first, "--addresses", "1-3"])
+        .env("TMCLSH_TIMEOUT", "150")
+        .output()
+        .unwrap();
+    assert!(
+        stdout(&out).contains("(at most 150 ms per reply)"),
+        "{}",
+        stdout(&out)
+    );
+}
+
+#[test]
+fn first_stops_at_the_first_module_and_asks_no_further_address() {
+    let sim = Sim::start_capturing_stderr(&["--pty", "--verbose", "--modules", "3,5"]);
+    let out = expect(&["scan", "--port", &sim.first, "--first"], 0);
+    let text = stdout(&out);
+    assert_eq!(
+        table(&text),
+        [["3", "C", "binary", "142V1.06", "char", "TMCM-142"]],
+        "{text}"
+    );
+    let traffic = sim.quit();
+    assert!(traffic.contains("module 3 <- "), "{traffic}");
+    assert!(!traffic.contains("module 5 <- "), "{traffic}");
+    // Nobody there: exit 3 with the addresses tried.
+    let empty = Sim::start(&["--pty", "--modules", "9"]);
+    let out = expect(
+        &[
+            "scan",
+            "--port",
+            &empty.first,
+            "--first",
+            "--addresses",
+            "1-2",
+        ],
+        3,
+    );
+    assert!(
+        stderr(&out).contains("no module answered at 1-2 (at most 100 ms per reply)"),
+        "{}",
+        stderr(&out)
+    );
 }

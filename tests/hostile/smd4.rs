@@ -6,8 +6,8 @@ use super::{Act, BOTH, Corruption, Fake, on, replace_last, run_script, tmclsh, w
 
 /// Long enough that a late reply, due half a timeout after it, lands well inside the wait for a
 /// quiet line on a loaded machine (the late-reply tests depend on that window, ±300 ms).
-const TIMEOUT: Duration = Duration::from_millis(600);
-const TIMEOUT_ARG: &str = "600";
+const TIMEOUT: Duration = Duration::from_millis(1000);
+const TIMEOUT_ARG: &str = "1000";
 
 /// First MOTOR:AMAX (5000) meets the misbehaviour; MOTOR:VMAX (1000) must get its own answer.
 const FIRST_FAILS_SECOND_ANSWERS: &str = r#"

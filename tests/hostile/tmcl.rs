@@ -7,8 +7,8 @@ use super::{Act, BOTH, Corruption, Fake, on, replace_last, run_script, tmclsh, w
 /// The reply timeout of every run here.
 /// Long enough that a late reply, due half a timeout after it, lands well inside the wait for a
 /// quiet line on a loaded machine (the late-reply tests depend on that window, ±300 ms).
-const TIMEOUT: Duration = Duration::from_millis(600);
-const TIMEOUT_ARG: &str = "600";
+const TIMEOUT: Duration = Duration::from_millis(1000);
+const TIMEOUT_ARG: &str = "1000";
 
 /// A script whose first request meets the misbehaviour and whose second must get its own
 /// answer: GAP 4 is 1000000 on a fresh module, GAP 1 is 0.
@@ -65,7 +65,7 @@ fn a_late_reply_is_never_taken_for_the_next_request_in_any_echo_mode() {
                 set_echo(&fake, echo);
                 fake
             };
-            fails_then_recovers(device, "no reply from module A within 600 ms", echo);
+            fails_then_recovers(device, "no reply from module A within 1000 ms", echo);
         }
     }
 }

@@ -216,7 +216,7 @@ fn with_small_disk(args: &[&str]) -> Command {
     let mut command = Command::new("sh");
     command
         .arg("-c")
-        .arg("trap '' XFSZ; ulimit -f 2; exec \"$0\" \"$@\"")
+        .arg("trap '' XFSZ; ulimit -f 4; exec \"$0\" \"$@\"")
         .arg(bin())
         .args(args)
         .env("NO_COLOR", "1");

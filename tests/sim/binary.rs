@@ -101,7 +101,7 @@ fn bad_flags_are_refused_and_the_console_is_documented() {
     let out = run(&["sim", "--help"]);
     let help = crate::util::stdout(&out);
     assert!(
-        help.contains("switch left|right|home"),
+        help.contains("switch [M] left|right|home"),
         "console documented"
     );
     assert!(help.contains("--hangup-after"));

@@ -1,17 +1,42 @@
 //! `tmclsh ports`: the serial ports of this machine, with what USB adapters say about themselves
 //! (vendor and product id, serial number, product), and the `usb:VID:PID[:SERIAL]` names that
-//! `--port` resolves to them.
+//! `--port` resolves to them; with `--probe`, what module answers on each (`probe.rs`).
 
 mod list;
+mod probe;
 pub mod usb;
 
 use std::io::{self, Write};
 use std::path::Path;
 
+use crate::dialect::Configured;
+
 use list::{Kind, ports};
 
-/// Prints one row per port: device file, kind, VID:PID, serial number, product (manufacturer).
-pub fn run(out: &mut dyn Write) -> io::Result<()> {
+/// Arguments of `ports`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct PortsArgs {
+    /// Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each
+    /// reply awaited 100 ms (a port in use by another program is reported, not waited for).
+    #[arg(long)]
+    pub probe: bool,
+}
+
+/// Prints one row per port: device file, kind, VID:PID, serial number, product (manufacturer);
+/// with `--probe`, then what answers on each.
+pub fn run(args: &PortsArgs, configs: &Configured, out: &mut dyn Write) -> io::Result<()> {
+    list_ports(out)?;
+    if args.probe {
+        let paths: Vec<String> = ports()?
+            .iter()
+            .map(|p| p.path.display().to_string())
+            .collect();
+        probe::probe_all(&paths, configs, out)?;
+    }
+    Ok(())
+}
+
+fn list_ports(out: &mut dyn Write) -> io::Result<()> {
     let ports = ports()?;
     if ports.is_empty() {
         eprintln!("no serial ports found (USB adapters appear as /dev/ttyUSB* or /dev/ttyACM*)");

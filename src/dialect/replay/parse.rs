@@ -48,8 +48,16 @@ pub fn parse(text: &str) -> Result<Vec<Entry>, String> {
     Ok(entries)
 }
 
-/// Whether a malformed last line is a transcript line cut short: its time stamp and tag are there.
+/// Whether a malformed last line is a transcript line cut short: its time stamp and tag are there,
+/// or it is the start of a time stamp.
 fn cut_short(raw: &str) -> bool {
+    if !raw.contains(' ')
+        && raw
+            .chars()
+            .all(|c| c.is_ascii_digit() || "-T:.Z".contains(c))
+    {
+        return true;
+    }
     let tag = raw.split(' ').nth(1).unwrap_or("");
     ["tx", "rx", "--", transcript::HEADER_TAG].contains(&tag)
 }
@@ -150,6 +158,10 @@ mod tests {
     #[test]
     fn malformed_lines_are_refused_with_their_number() {
         assert_eq!(parse("x\n").unwrap_err(), "line 1: no time stamp: \"x\"");
+        // A last line cut inside its time stamp by a full disk is left out.
+        let cut = "2026-01-01T00:00:00.000Z -- session opened\n2026-01-01T00:00:0";
+        assert_eq!(parse(cut).unwrap().len(), 1);
+        assert!(parse("2026-01-01T00:00:00.000Z -- a\nx").is_err());
         assert_eq!(parse("t -- a\nt tx \"AG").unwrap().len(), 1, "cut short");
         assert!(parse("t tx \"AG\nt -- a\n").is_err());
         assert!(parse("t tx \"AG\n").is_err(), "a whole line");

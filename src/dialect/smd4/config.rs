@@ -4,8 +4,6 @@
 use std::io::{self, Write};
 use std::path::Path;
 
-use clap::ArgMatches;
-
 use crate::commission::ParamRef;
 use crate::dialect::replay::parse::Entry;
 use crate::dialect::{Dialect, DialectConfig, DialectSession, Opening};
@@ -52,9 +50,10 @@ impl DialectConfig for Smd4Config {
         Box::new(Smd4Sim::new(Smd4SimOptions::default()))
     }
 
+    #[cfg(feature = "cli")]
     fn served_simulator(
         &self,
-        flags: &ArgMatches,
+        flags: &crate::dialect::CommandLine,
         state: Option<&Path>,
         verbose: bool,
     ) -> Result<Box<dyn Device>, String> {

@@ -1,14 +1,20 @@
 //! The session flags of the SMD4 dialect (`tmclsh --protocol smd4 --address 3 …`): the address
 //! prefix, its spelling and the quiet gap that ends a multi-line reply.
 
+#[cfg(feature = "cli")]
 use std::time::Duration;
 
-use clap::{ArgMatches, FromArgMatches};
+#[cfg(feature = "cli")]
+use clap::FromArgMatches;
 
+use crate::dialect::CommandLine;
+
+#[cfg(feature = "cli")]
 use super::protocol::PrefixStyle;
 use super::session::Smd4SessionOptions;
 
 /// Settings of the SMD4 dialect.
+#[cfg(feature = "cli")]
 #[derive(Debug, Clone, clap::Args)]
 #[command(next_help_heading = "SMD4")]
 pub struct SessionFlags {
@@ -24,6 +30,7 @@ pub struct SessionFlags {
     pub quiet_gap: Option<u64>,
 }
 
+#[cfg(feature = "cli")]
 impl SessionFlags {
     /// The SMD4 session options these flags select.
     pub fn options(&self) -> Smd4SessionOptions {
@@ -44,8 +51,15 @@ impl SessionFlags {
 }
 
 /// The SMD4 session options a command line selects; the defaults without one.
-pub fn options(matches: Option<&ArgMatches>) -> Smd4SessionOptions {
+#[cfg(feature = "cli")]
+pub fn options(matches: Option<&CommandLine>) -> Smd4SessionOptions {
     matches
         .and_then(|m| SessionFlags::from_arg_matches(m).ok())
         .map_or_else(Smd4SessionOptions::default, |flags| flags.options())
+}
+
+/// Without the `cli` feature there is no command line: the defaults.
+#[cfg(not(feature = "cli"))]
+pub fn options(matches: Option<&CommandLine>) -> Smd4SessionOptions {
+    matches.map_or_else(Smd4SessionOptions::default, |never| match *never {})
 }

@@ -34,8 +34,11 @@ pub static DIALECT: Dialect = Dialect {
     configure: config::configure,
     own_options: &[],
     refusal: "is for SMD4 drives (--protocol smd4)",
+    #[cfg(feature = "cli")]
     session_flags: <flags::SessionFlags as clap::Args>::augment_args,
+    #[cfg(feature = "cli")]
     sim_flags: sim::flags::add,
+    #[cfg(feature = "cli")]
     sim_flag_given: sim::flags::given,
     simulated: "SMD4",
     console_help: CONSOLE_HELP,

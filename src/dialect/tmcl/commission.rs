@@ -102,7 +102,8 @@ impl ParamDevice for TmclSession {
             // --no-validate: the module judges (values still have to be 32-bit integers).
             return word(param, value).map(|_| ()).map_err(|e| e.to_string());
         }
-        check_write(self.profile(), param, value)
+        let mode = self.validation_mode(self.target());
+        check_write_in(self.profile(), param, value, mode)
     }
 
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
@@ -186,14 +187,25 @@ pub(crate) fn param_ref(profile: &Profile, p: &Param, scope: Scope) -> ParamRef 
 
 /// Whether the validator of `profile` lets a write of `value` to `param` through (the same check
 /// a typed SAP/SGP gets: a 32-bit integer, in range, writable, on a motor the module has).
+#[cfg(test)]
 pub(crate) fn check_write(
     profile: &Profile,
     param: &ParamRef,
     value: &ParamValue,
 ) -> Result<(), String> {
+    check_write_in(profile, param, value, Mode::Ascii)
+}
+
+/// [`check_write`] for a module talked to in `mode` (binary direct mode has no ASCII list).
+fn check_write_in(
+    profile: &Profile,
+    param: &ParamRef,
+    value: &ParamValue,
+    mode: Mode,
+) -> Result<(), String> {
     let value = word(param, value).map_err(|e| e.to_string())?;
     let instruction = instruction(param, [Opcode::Sap, Opcode::Sgp], value);
-    validate_instruction(&instruction, profile, Mode::Ascii)
+    validate_instruction(&instruction, profile, mode)
         .map(|_| ())
         .map_err(|e| e.to_string())
 }

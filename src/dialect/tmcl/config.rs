@@ -6,33 +6,35 @@ use std::io::{self, Write};
 use std::path::Path;
 use std::sync::Arc;
 
-use clap::ArgMatches;
-
 use crate::commission::ParamRef;
 use crate::dialect::replay::parse::Entry;
-use crate::dialect::{Dialect, DialectConfig, DialectSession, Opening, Purpose};
+use crate::dialect::{CommandLine, Dialect, DialectConfig, DialectSession, Opening, Purpose};
 use crate::session::SessionError;
 use crate::session::transcript::Header;
 use crate::sim::Device;
 
 use super::profile::{Profile, catalogue};
-use super::session::{Echo, TmclSession};
+use super::session::{Connect, Echo, TmclSession};
 use super::sim::{Bus, BusOptions};
 
 /// TMCL with the profile of its modules.
 pub struct TmclConfig {
     /// The module profile: tables for validation, completion, decoding and the simulator.
     pub profile: Arc<Profile>,
+    /// Whether the profile was chosen (`--profile`, its variable or a configuration file): it
+    /// then stays whatever the module says it is.
+    pub given: bool,
 }
 
 /// Loads the profile `--profile` names (a built-in name, alias or module number, or a file), or
 /// the default one.
 pub fn configure(profile: Option<&Path>) -> Result<Box<dyn DialectConfig>, String> {
+    let given = profile.is_some();
     let profile = match profile {
         None => Profile::builtin(),
         Some(arg) => catalogue::resolve(arg).map_err(|e| e.to_string())?,
     };
-    Ok(Box::new(TmclConfig { profile }))
+    Ok(Box::new(TmclConfig { profile, given }))
 }
 
 /// The profile of a configured TMCL, for the subcommands that only TMCL has (`asm`, `download`).
@@ -65,10 +67,31 @@ impl TmclConfig {
     }
 }
 
+/// Whether `--binary` (or a configuration file) asks for binary direct mode.
+#[cfg(feature = "cli")]
+fn binary_flag(flags: Option<&CommandLine>) -> bool {
+    flags
+        .and_then(|m| m.try_get_one::<bool>("binary").ok().flatten().copied())
+        .unwrap_or(false)
+}
+
+/// Without a command line, the session enters ASCII mode where the module has it.
+#[cfg(not(feature = "cli"))]
+fn binary_flag(flags: Option<&CommandLine>) -> bool {
+    flags.is_some_and(|never| match *never {})
+}
+
 /// The echo `--echo` (or a configuration file) asks the target module to use, by its word.
-fn echo_flag(flags: Option<&ArgMatches>) -> Option<Echo> {
+#[cfg(feature = "cli")]
+fn echo_flag(flags: Option<&CommandLine>) -> Option<Echo> {
     let mut words = flags?.try_get_raw("echo").ok().flatten()?;
     words.next().and_then(|w| Echo::parse(&w.to_string_lossy()))
+}
+
+/// Without a command line, the module's own echo setting is kept.
+#[cfg(not(feature = "cli"))]
+fn echo_flag(flags: Option<&CommandLine>) -> Option<Echo> {
+    flags.map(|never| match *never {})
 }
 
 impl DialectConfig for TmclConfig {
@@ -88,16 +111,18 @@ impl DialectConfig for TmclConfig {
         Box::new(Bus::new(self.simulated_profile(), BusOptions::default()))
     }
 
+    #[cfg(feature = "cli")]
     fn served_simulator(
         &self,
-        flags: &ArgMatches,
+        flags: &CommandLine,
         state: Option<&Path>,
         verbose: bool,
     ) -> Result<Box<dyn Device>, String> {
         super::sim::flags::served(&self.simulated_profile(), flags, state, verbose)
     }
 
-    /// For a conversation, the target module is contacted and its echo set as `--echo` asks.
+    /// For a conversation, the target module is identified (command 136: its profile, unless
+    /// one was given), contacted, and its echo set as `--echo` asks.
     fn open(&self, opening: Opening<'_>) -> Result<Box<dyn DialectSession>, SessionError> {
         let Opening {
             link,
@@ -109,7 +134,12 @@ impl DialectConfig for TmclConfig {
         let profile = self.profile.clone();
         let session = match purpose {
             Purpose::Talk => {
-                let mut session = TmclSession::open(link, profile, options, transcript)?;
+                let connect = Connect {
+                    profile_given: self.given,
+                    binary: binary_flag(flags),
+                };
+                let mut session =
+                    TmclSession::connect(link, profile, connect, options, transcript)?;
                 if let Some(echo) = echo_flag(flags) {
                     let target = session.target();
                     session.set_echo(target, echo)?;

@@ -24,7 +24,7 @@ pub mod sim;
 
 pub use grammar::TmclGrammar;
 
-use crate::dialect::{Dialect, DialectSession, no_flags};
+use crate::dialect::{Dialect, DialectSession};
 
 use session::TmclSession;
 
@@ -38,10 +38,20 @@ pub static DIALECT: Dialect = Dialect {
     script_functions: script::FUNCTIONS,
     helpers: helpers::HELPERS,
     configure: config::configure,
-    own_options: &["module", "no_enter", "stay_ascii", "profile", "echo"],
+    own_options: &[
+        "module",
+        "no_enter",
+        "stay_ascii",
+        "profile",
+        "echo",
+        "binary",
+    ],
     refusal: "is for TMCL modules, and the protocol is {protocol}",
-    session_flags: no_flags,
+    #[cfg(feature = "cli")]
+    session_flags: crate::dialect::no_flags,
+    #[cfg(feature = "cli")]
     sim_flags: sim::flags::add,
+    #[cfg(feature = "cli")]
     sim_flag_given: sim::flags::given,
     simulated: "TMCM-142",
     console_help: CONSOLE_HELP,
@@ -70,8 +80,9 @@ fn typed_here(line: &str) -> bool {
 /// The commands of its simulator's console (`tmclsh sim --help`).
 const CONSOLE_HELP: &str = " TMCL module bus (--protocol tmcl):
   input PORT 0|1                     set a digital input (GIO bank 0)
-  analog PORT VALUE                  set an analog input (GIO bank 1, 0..1023)
-  switch left|right|home POS|off     move a virtual switch (physical microsteps) or disconnect it
+  analog PORT VALUE                  set an analog input (GIO bank 1, 0..the ADC maximum)
+  switch [M] left|right|home POS|off move a virtual switch of motor M (default 0; physical
+                                     microsteps) or disconnect it
   output PORT                        show an output (SIO bank 2)
-  motor                              show position, target, velocity, target reached
+  motor [M]                          show position, target, velocity, target reached of motor M
   @N COMMAND                         any of the above for the module with factory address N";

@@ -2,7 +2,8 @@
 //! commands and checks the values that came back, so a manual commissioning session becomes a
 //! regression test (`tmclsh transcript to-rhai LOG`).
 //!
-//! What the session did on its own is left out: entering ASCII mode (139 and the CR after it), the
+//! What the session did on its own is left out: identifying the module on connect (136 and the
+//! note after it), entering ASCII mode (139 and the CR after it), the
 //! echo probe (`GGP 67, 0` followed by the session's "in ASCII mode, echo …" note), BIN, and
 //! resynchronising CRs. Commands sent as binary frames are replayed as ASCII lines (the script's
 //! session is in ASCII mode); the firmware version (136) becomes `firmware_version()`.
@@ -14,7 +15,7 @@
 
 use std::fmt::Write as _;
 
-use crate::dialect::tmcl::profile::{Profile, SnapshotRole};
+use crate::dialect::tmcl::profile::{Profile, SnapshotRole, catalogue};
 use crate::dialect::tmcl::protocol::frame::{
     CommandFrame, FRAME_LEN, ReplyFrame, decode_version_string,
 };
@@ -36,12 +37,17 @@ pub fn script(
     wait_ms: u64,
 ) -> Result<String, String> {
     if let Some(header) = header {
-        if header.module != profile.module {
+        let (module, origin) = match identified_profile(entries) {
+            Some(used) => (used.module.clone(), used.name.clone()),
+            None => (
+                header.module.clone(),
+                header.profile.clone().unwrap_or_else(|| "unknown".into()),
+            ),
+        };
+        if module != profile.module {
             return Err(format!(
-                "a transcript of a {} (profile {}), but the profile in use is the {}'s; \
-                 give --profile",
-                header.module,
-                header.profile.as_deref().unwrap_or("unknown"),
+                "a transcript of a {module} (profile {origin}), but the profile in use is the \
+                 {}'s; give --profile",
                 profile.module
             ));
         }
@@ -91,6 +97,25 @@ pub enum Step {
 /// The session's note after its echo probe (see `session::tmcl::mode`).
 const PROBE_NOTE: &str = "in ASCII mode, echo";
 
+/// The session's note after asking for the firmware version on connect (see
+/// `session::tmcl::identify`): "identified: …" or "not identified: …".
+const IDENTIFIED_NOTE: &str = "identified: ";
+
+/// The built-in profile the session took from the module's answer on connect, where its note
+/// names one (`identified: TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`): the
+/// header, written before the module was asked, names the profile it started with.
+fn identified_profile(entries: &[Entry]) -> Option<std::sync::Arc<Profile>> {
+    entries.iter().find_map(|e| {
+        let Record::Note(note) = &e.record else {
+            return None;
+        };
+        let (_, profile) = note
+            .strip_prefix(IDENTIFIED_NOTE)?
+            .rsplit_once(", profile ")?;
+        catalogue::by_name(profile.strip_suffix(" (built in)")?)
+    })
+}
+
 /// Pairs what was sent with what came back, leaving out what the session did on its own.
 pub fn steps(entries: &[Entry], profile: &Profile) -> Vec<Step> {
     let mut steps = Vec::new();
@@ -106,7 +131,9 @@ pub fn steps(entries: &[Entry], profile: &Profile) -> Vec<Step> {
                 }
             }
         } else if let Ok(frame) = <[u8; FRAME_LEN]>::try_from(bytes.as_slice()) {
-            steps.extend(binary_step(&frame, reply, profile));
+            if !is_identification(&entries[i + 1..]) {
+                steps.extend(binary_step(&frame, reply, profile));
+            }
         }
     }
     steps
@@ -193,6 +220,13 @@ fn binary_step(frame: &[u8; FRAME_LEN], reply: Option<&[u8]>, profile: &Profile)
         status: reply.status,
         value: reply.value,
     })
+}
+
+/// Whether the frame just sent was the session's identification on connect: its note follows.
+fn is_identification(rest: &[Entry]) -> bool {
+    rest.iter()
+        .take_while(|e| !matches!(e.record, Record::Sent(_)))
+        .any(|e| matches!(&e.record, Record::Note(n) if n.contains(IDENTIFIED_NOTE)))
 }
 
 /// Whether `step` is the session's echo probe: `GGP 67, 0` followed by its note.

@@ -4,9 +4,10 @@
 //! 1. Binary frames only: command 136 type 1 (checksummed, answered by the addressed module
 //!    alone) to every address finds the modules in binary mode, then 136 type 0 reads their
 //!    version string. Modules in ASCII mode take these bytes as lines for other modules.
-//! 2. ASCII: every address 1..26 (A..Z) that did not answer is reached the way the session reaches
-//!    any module — command 139, then the echo setting from global parameter 67 — which finds the
-//!    modules already in ASCII mode; their version comes from 136 in binary mode, there and back.
+//! 2. ASCII: every address 1..26 (A..Z) that did not answer is asked for its echo setting (global
+//!    parameter 67) in an ASCII line, which finds the modules already in ASCII mode (no 139: a
+//!    module in binary mode answered round 1); their version comes from 136 in binary mode, there
+//!    and back.
 //! 3. The echo setting of the binary-mode modules (global parameter 67 over a binary frame), after
 //!    the line has been quiet long enough for their receivers to drop what the ASCII lines left
 //!    in them (the firmware's frame timeout). Skipped when a module in ASCII mode answers to C:
@@ -14,11 +15,14 @@
 //!
 //! Each reply is awaited at most the given time; the session puts every module it switched back
 //! in its mode when it closes, and modules only probed with binary frames are never switched.
+//! Each module found is named from its version string by the built-in profiles
+//! (`TMCM-6110`); a boot loader is named as one and asked nothing more.
 
 use std::collections::BTreeMap;
 use std::io::{self, Write};
 use std::time::Duration;
 
+use crate::dialect::tmcl::profile::catalogue::{self, Identified};
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 use crate::dialect::tmcl::session::{Echo, TmclReply, TmclSession, WireMode};
@@ -39,6 +43,34 @@ pub struct FoundModule {
     pub firmware: Option<String>,
     /// Its echo setting (global parameter 67), where it could be read.
     pub echo: Option<Echo>,
+}
+
+impl FoundModule {
+    /// What its version string names: `TMCM-6110`, `TMCM-9999 (no profile)`, `TMCM-142 (boot
+    /// loader)`, or `?` without a version string.
+    pub fn module(&self) -> String {
+        let Some(firmware) = &self.firmware else {
+            return "?".into();
+        };
+        match catalogue::identify(firmware) {
+            Ok(Identified::Known { profile, .. }) => profile.module.clone(),
+            Ok(Identified::Unknown { version, .. }) => {
+                format!("TMCM-{} (no profile)", version.module)
+            }
+            Ok(Identified::BootLoader { version, profile }) => format!(
+                "{} (boot loader)",
+                profile.map_or_else(|| format!("TMCM-{}", version.module), |p| p.module.clone())
+            ),
+            Err(_) => "?".into(),
+        }
+    }
+
+    /// Whether its boot loader answered: it is asked nothing more.
+    pub fn in_boot_loader(&self) -> bool {
+        self.firmware
+            .as_deref()
+            .is_some_and(|f| matches!(catalogue::identify(f), Ok(Identified::BootLoader { .. })))
+    }
 }
 
 /// What a scan found.
@@ -65,6 +97,7 @@ pub fn scan(
     let mut addresses = addresses.to_vec();
     addresses.sort_unstable();
     addresses.dedup();
+    session.align_frames()?;
     let progress = Progress::steps(addresses.len(), 2, "scanning (binary)");
     let mut found: BTreeMap<u8, FoundModule> = BTreeMap::new();
     for &address in &addresses {
@@ -98,7 +131,7 @@ pub fn scan(
     let ascii_modules = found.values().any(in_ascii);
     let binary: Vec<u8> = found
         .values()
-        .filter(|m| !in_ascii(m))
+        .filter(|m| !in_ascii(m) && !m.in_boot_loader())
         .map(|m| m.address)
         .collect();
     if !binary.is_empty() && !c_in_ascii {
@@ -189,7 +222,7 @@ fn probe_ascii(
     address: u8,
 ) -> Result<Option<FoundModule>, SessionError> {
     let known = session.found_in(address);
-    match session.set_target(address) {
+    match session.reach_in_ascii(address) {
         Ok(()) => {}
         Err(e) if absent(&e) => return Ok(None),
         Err(e) => return Err(e),
@@ -234,7 +267,7 @@ fn version_text(answer: &TmclReply) -> Option<String> {
 /// Prints the table of modules found and a summary line.
 pub fn write_report(report: &TmclScan, out: &mut dyn Write) -> io::Result<()> {
     if !report.found.is_empty() {
-        writeln!(out, "address  char  found in  firmware  echo")?;
+        writeln!(out, "address  char  found in  firmware  echo  module")?;
     }
     for m in &report.found {
         let c = address_char(m.address).map_or("-".to_string(), String::from);
@@ -246,8 +279,9 @@ pub fn write_report(report: &TmclScan, out: &mut dyn Write) -> io::Result<()> {
         let echo = m.echo.map_or("?", Echo::name);
         writeln!(
             out,
-            "{:>7}  {c:<4}  {mode:<8}  {firmware:<8}  {echo}",
-            m.address
+            "{:>7}  {c:<4}  {mode:<8}  {firmware:<8}  {echo:<4}  {}",
+            m.address,
+            m.module()
         )?;
     }
     writeln!(out, "{}", summary(report))
@@ -292,7 +326,7 @@ mod tests {
                 FoundModule {
                     address: 30,
                     mode: WireMode::Binary,
-                    firmware: Some("142V1.00".into()),
+                    firmware: Some("6110V131".into()),
                     echo: None,
                 },
             ],
@@ -307,11 +341,27 @@ mod tests {
             .collect();
         assert_eq!(
             rows[0],
-            ["address", "char", "found", "in", "firmware", "echo"]
+            [
+                "address", "char", "found", "in", "firmware", "echo", "module"
+            ]
         );
-        assert_eq!(rows[1], ["1", "A", "binary", "142V1.00", "char"]);
-        assert_eq!(rows[2], ["3", "C", "ASCII", "?", "none"]);
-        assert_eq!(rows[3], ["30", "-", "binary", "142V1.00", "?"]);
+        assert_eq!(
+            rows[1],
+            ["1", "A", "binary", "142V1.00", "char", "TMCM-142"]
+        );
+        assert_eq!(rows[2], ["3", "C", "ASCII", "?", "none", "?"]);
+        assert_eq!(rows[3], ["30", "-", "binary", "6110V131", "?", "TMCM-6110"]);
+        let named = |firmware: &str| FoundModule {
+            address: 1,
+            mode: WireMode::Binary,
+            firmware: Some(firmware.into()),
+            echo: None,
+        };
+        assert_eq!(named("9999V100").module(), "TMCM-9999 (no profile)");
+        assert_eq!(named("142B1.06").module(), "TMCM-142 (boot loader)");
+        assert!(named("142B1.06").in_boot_loader());
+        assert!(!named("142V1.06").in_boot_loader());
+        assert_eq!(named("garbage").module(), "?");
         assert_eq!(
             text.lines().last().unwrap(),
             "3 modules answered at 1-30 (at most 150 ms per reply)"

@@ -16,6 +16,7 @@
 pub mod config;
 mod control;
 mod exec;
+#[cfg(feature = "cli")]
 pub mod flags;
 pub mod motion;
 pub mod options;

@@ -72,20 +72,40 @@ const GENERIC_TOML: &str = include_str!("../../../../data/generic.toml");
 /// Every built-in profile, parsed (in [`BUILTINS`] order).
 pub fn all() -> &'static [Arc<Profile>] {
     static ALL: OnceLock<Vec<Arc<Profile>>> = OnceLock::new();
-    ALL.get_or_init(|| {
-        BUILTINS
+    ALL.get_or_init(|| BUILTINS.iter().map(Builtin::profile).collect())
+}
+
+impl Builtin {
+    /// The profile, parsed the first time it is asked for (alone: identifying a module on
+    /// connect parses the one profile its number names, not all of them).
+    pub fn profile(&self) -> Arc<Profile> {
+        static PARSED: [OnceLock<Arc<Profile>>; BUILTINS.len()] =
+            [const { OnceLock::new() }; BUILTINS.len()];
+        let index = BUILTINS
             .iter()
-            .map(|b| {
-                if b.name == DEFAULT {
+            .position(|b| b.name == self.name)
+            .expect("a listed built-in profile");
+        PARSED[index]
+            .get_or_init(|| {
+                if self.name == DEFAULT {
                     return Profile::builtin();
                 }
-                let mut profile = Profile::from_text(b.text, b.file)
-                    .unwrap_or_else(|e| panic!("the built-in profile {} is valid: {e}", b.file));
-                profile.name = b.name.to_string();
+                let mut profile = Profile::from_text(self.text, self.file)
+                    .unwrap_or_else(|e| panic!("the built-in profile {} is valid: {e}", self.file));
+                profile.name = self.name.to_string();
                 Arc::new(profile)
             })
-            .collect()
-    })
+            .clone()
+    }
+
+    /// The module number its file declares (`[meta] module_number`, the first such line),
+    /// read without parsing the file; a test holds it to the parsed profile's.
+    pub fn declared_number(&self) -> Option<u32> {
+        self.text.lines().find_map(|line| {
+            let value = line.trim_start().strip_prefix("module_number")?;
+            value.trim_start().strip_prefix('=')?.trim().parse().ok()
+        })
+    }
 }
 
 /// The generic TMCL profile: the standard commands, motors 0..5, parameters by number only.
@@ -121,10 +141,10 @@ pub fn by_name(name: &str) -> Option<Arc<Profile>> {
 
 /// The built-in profile of the module with this number (what command 136 names).
 pub fn by_module_number(number: u32) -> Option<Arc<Profile>> {
-    all()
+    BUILTINS
         .iter()
-        .find(|p| p.identity.module_number == Some(number))
-        .cloned()
+        .find(|b| b.declared_number() == Some(number))
+        .map(Builtin::profile)
 }
 
 /// Every name `--profile` takes for a built-in profile: names, then aliases, then `generic`.

@@ -387,6 +387,20 @@ fn check_simulation(file: &ProfileFile, problems: &mut Vec<Problem>) {
             problems.push(Problem::at(at(key), format!("{key} must be at least 1")));
         }
     }
+    let roles = sim.axis_roles.as_ref().map(|r| r.all()).unwrap_or_default();
+    for (role, number) in roles.iter().filter_map(|(r, n)| Some((r, (*n)?))) {
+        let n = i64::from(number);
+        let defined = file
+            .axis_parameter
+            .iter()
+            .any(|row| (row.number..=row.number_last.unwrap_or(row.number)).contains(&n));
+        if !defined {
+            problems.push(Problem::at(
+                at("axis_roles"),
+                format!("axis_roles.{role} = {number} names no [[axis_parameter]] row"),
+            ));
+        }
+    }
 }
 
 /// The problems as `line N: …` lines, sorted by line. Lines come from a spanned parse of `text`.

@@ -218,6 +218,8 @@ pub(crate) struct SimulationRow {
     pub ascii_line_max: Option<usize>,
     pub encoder_usteps_per_count: Option<f64>,
     pub instruction_us: Option<u32>,
+    /// Which axis parameter plays which part in the simulated motion.
+    pub axis_roles: Option<super::sim_roles::AxisRoles>,
 }
 
 impl ProfileFile {

@@ -12,6 +12,7 @@ pub mod commands;
 pub mod decode;
 pub mod family;
 pub(crate) mod load;
+pub mod sim_roles;
 pub mod version;
 
 use std::path::{Path, PathBuf};
@@ -121,6 +122,8 @@ pub struct SimConstants {
     pub encoder_usteps_per_count: f64,
     /// Execution time of one stand-alone program instruction, in microseconds.
     pub instruction_us: u32,
+    /// Which axis parameter plays which part in the simulated motion (empty: not given).
+    pub axis_roles: sim_roles::AxisRoles,
 }
 
 /// A module's tables.
@@ -356,6 +359,7 @@ impl Profile {
                     .and_then(|s| s.encoder_usteps_per_count)
                     .unwrap_or(1.0),
                 instruction_us: sim.and_then(|s| s.instruction_us).unwrap_or(100),
+                axis_roles: sim.and_then(|s| s.axis_roles.clone()).unwrap_or_default(),
             },
             snapshot: file.snapshot.clone(),
             source: None,

@@ -1,5 +1,6 @@
-//! Downloading a program file or TMCL source to the module, with a progress bar on a terminal:
-//! what `tmclsh download` and the shell's `:download` share.
+//! Downloading a program file or TMCL source to the module, with a progress bar on a terminal
+//! (with the `cli` feature, which brings the terminal faces): what `tmclsh download` and the
+//! shell's `:download` share.
 
 use std::path::Path;
 

@@ -23,7 +23,7 @@ impl TmclSession {
         self.exchange(module, false, |s| s.binary_exchange(module, instruction))
     }
 
-    fn binary_exchange(
+    pub(super) fn binary_exchange(
         &mut self,
         module: u8,
         instruction: Instruction,

@@ -8,7 +8,6 @@ use std::time::Duration;
 use crate::commission::ParamDevice;
 use crate::dialect::session::{BusScan, DialectSession, Reply};
 use crate::dialect::tmcl::protocol::line::address_char;
-use crate::dialect::tmcl::protocol::validate::Mode;
 use crate::dialect::tmcl::{TmclGrammar, config, help, helpers, render, scan};
 use crate::dialect::{Dialect, Grammar, Helper};
 use crate::exit::Failure;
@@ -68,8 +67,13 @@ impl DialectSession for TmclSession {
         }
     }
 
+    /// What the module said it is and the profile used (`TMCM-6110, firmware 6110V131, profile
+    /// tmcm-6110 (built in)`), with the target's address when it is not the first.
     fn banner(&self) -> String {
-        format!("{}, module {}", self.profile.module, self.target)
+        match self.target {
+            1 => self.identity_line(),
+            n => format!("{}, module {n}", self.identity_line()),
+        }
     }
 
     fn header(&self) -> Header {
@@ -78,10 +82,7 @@ impl DialectSession for TmclSession {
 
     /// The profile, and the mode of the target module.
     fn grammar(&self) -> Arc<dyn Grammar> {
-        let mode = match self.module_state(self.target) {
-            Some((WireMode::Binary, _)) => Mode::Binary,
-            _ => Mode::Ascii,
-        };
+        let mode = self.validation_mode(self.target);
         Arc::new(TmclGrammar::new(self.profile.clone(), mode))
     }
 

@@ -10,6 +10,7 @@ mod binary;
 mod exchange;
 mod faces;
 mod guard;
+mod identify;
 mod mode;
 mod probe;
 mod stop;
@@ -34,6 +35,7 @@ use crate::session::wire::Peer;
 use crate::session::{SessionError, SessionOptions};
 
 pub use exchange::{TmclExchange, TmclReply};
+pub use identify::{Identity, profile_label};
 pub use mode::{Echo, WireMode};
 
 use unanswered::{Unanswered, harmless};
@@ -46,6 +48,22 @@ pub struct TmclSession {
     modules: BTreeMap<u8, mode::ModuleState>,
     /// ASCII lines that failed: their echo and reply may still come.
     unanswered: Unanswered,
+    /// What the target module said it is (command 136).
+    identity: Identity,
+    /// Every module in binary direct mode, whatever its profile says (`--binary`).
+    binary_only: bool,
+    /// The last exchange on the line was a complete binary one: every binary receiver is at a
+    /// frame boundary, and the next frame needs no quiet line before it.
+    frames_aligned: bool,
+}
+
+/// How the command line opens a session: what decides its profile and its mode.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Connect {
+    /// The profile was given (`--profile`): it stays whatever the module says.
+    pub profile_given: bool,
+    /// Binary direct mode for every module (`--binary`).
+    pub binary: bool,
 }
 
 impl TmclSession {
@@ -58,6 +76,23 @@ impl TmclSession {
         transcript: Option<Transcript>,
     ) -> Result<Self, SessionError> {
         let mut session = Self::open_idle(link, profile, options, transcript)?;
+        session.contact(session.target)?;
+        Ok(session)
+    }
+
+    /// Opens a session the way the command line does: the target module is identified (command
+    /// 136, see [`TmclSession::identify`]), which may settle the profile, then contacted — in
+    /// ASCII mode, or in binary direct mode when `connect` or the profile says so.
+    pub fn connect(
+        link: Box<dyn Link>,
+        profile: Arc<Profile>,
+        connect: Connect,
+        options: SessionOptions,
+        transcript: Option<Transcript>,
+    ) -> Result<Self, SessionError> {
+        let mut session = Self::open_idle(link, profile, options, transcript)?;
+        session.binary_only = connect.binary;
+        session.identify(connect.profile_given)?;
         session.contact(session.target)?;
         Ok(session)
     }
@@ -81,6 +116,9 @@ impl TmclSession {
             profile,
             modules: BTreeMap::new(),
             unanswered: Unanswered::default(),
+            identity: Identity::NotAsked,
+            binary_only: false,
+            frames_aligned: false,
         };
         let opened = format!("session opened on {}", session.core.wire.link.describe());
         session.core.wire.note(&opened);
@@ -111,6 +149,16 @@ impl TmclSession {
         self.contact(module)?;
         self.target = module;
         Ok(())
+    }
+
+    /// The mode lines to `module` are checked for: its wire mode, or for a module not reached
+    /// yet the mode it would be reached in.
+    pub fn validation_mode(&self, module: u8) -> Mode {
+        let binary = match self.module_state(module) {
+            Some((mode, _)) => mode == WireMode::Binary,
+            None => self.binary_only || !self.has_ascii(),
+        };
+        if binary { Mode::Binary } else { Mode::Ascii }
     }
 
     /// The wire mode and echo of a module the session has talked to.

@@ -12,7 +12,7 @@ use std::time::{Duration, Instant};
 use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::protocol::frame::{CommandFrame, FRAME_LEN, ReplyFrame, hex};
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
-use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Opcode};
+use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Opcode, Status};
 
 use super::{TmclExchange, TmclReply, TmclSession};
 use crate::session::SessionError;
@@ -111,26 +111,30 @@ impl TmclSession {
         if let Some(state) = self.modules.get(&module) {
             return Ok(state.mode);
         }
+        if self.binary_only {
+            self.start_binary(module, "--binary given")?;
+            return Ok(WireMode::Binary);
+        }
         if !self.has_ascii() {
-            self.modules.insert(
-                module,
-                ModuleState {
-                    mode: WireMode::Binary,
-                    found_in: WireMode::Binary,
-                    echo: Echo::None,
-                    echo_known: false,
-                },
-            );
-            let note = format!(
-                "module {} in binary direct mode: the {} has no ASCII interface",
-                address_char(module).unwrap_or('?'),
-                self.profile.module
-            );
-            self.core.wire.note(&note);
+            let why = format!("the {} has no ASCII interface", self.profile.module);
+            self.start_binary(module, &why)?;
             return Ok(WireMode::Binary);
         }
         if self.core.options.enter {
-            self.enter_ascii(module)?;
+            match self.enter_ascii(module) {
+                Ok(()) => {}
+                // It answered 136 in binary: it is there, without (working) ASCII mode.
+                Err(e @ (SessionError::Timeout { .. } | SessionError::Device { .. }))
+                    if self.answered_binary(module) =>
+                {
+                    self.start_binary(
+                        module,
+                        &format!("it answered in binary, not in ASCII mode ({e})"),
+                    )?;
+                    return Ok(WireMode::Binary);
+                }
+                Err(e) => return Err(e),
+            }
         } else {
             self.modules.insert(
                 module,
@@ -146,8 +150,47 @@ impl TmclSession {
         Ok(WireMode::Ascii)
     }
 
+    /// Whether `module` has answered a binary frame in this session (the identification).
+    fn answered_binary(&self, module: u8) -> bool {
+        module == self.target && matches!(self.identity, super::Identity::Answered { .. })
+    }
+
+    /// Talks to `module` in binary direct mode from now on (`why` goes to the transcript). The
+    /// line is first left quiet for the module's frame time-out, so whatever an attempt at ASCII
+    /// mode left in its receiver is dropped.
+    fn start_binary(&mut self, module: u8, why: &str) -> Result<(), SessionError> {
+        if !std::mem::take(&mut self.frames_aligned) {
+            self.core.wire.idle_for(self.resync_gap())?;
+        }
+        let unanswered = &mut self.unanswered;
+        self.core
+            .wire
+            .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))?;
+        self.modules.insert(
+            module,
+            ModuleState {
+                mode: WireMode::Binary,
+                found_in: WireMode::Binary,
+                echo: Echo::None,
+                echo_known: false,
+            },
+        );
+        let note = format!(
+            "module {} in binary direct mode: {why}",
+            address_char(module).unwrap_or('?'),
+        );
+        self.core.wire.note(&note);
+        Ok(())
+    }
+
+    /// How long the line stays quiet before a binary-mode receiver takes a new frame: its frame
+    /// time-out, and a tenth more.
+    pub(super) fn resync_gap(&self) -> Duration {
+        Duration::from_millis(u64::from(self.profile.sim.frame_timeout_ms) * 11 / 10)
+    }
+
     /// Whether the profile's module has the ASCII interface (or may have it).
-    fn has_ascii(&self) -> bool {
+    pub(super) fn has_ascii(&self) -> bool {
         self.profile.identity.ascii_interface() != AsciiInterface::No
     }
 
@@ -161,8 +204,9 @@ impl TmclSession {
         }
         // A module still in binary mode has seen our ASCII traffic to others as frame bytes; it
         // finds the start of our frame only after the line was idle for its receive time-out.
-        let resync = Duration::from_millis(u64::from(self.profile.sim.frame_timeout_ms) * 11 / 10);
-        self.core.wire.idle_for(resync)?;
+        if !std::mem::take(&mut self.frames_aligned) {
+            self.core.wire.idle_for(self.resync_gap())?;
+        }
         let unanswered = &mut self.unanswered;
         self.core
             .wire
@@ -176,7 +220,15 @@ impl TmclSession {
             &bytes,
             format_args!("enter ASCII mode (139) to module {module}"),
         )?;
-        let found_binary = self.optional_binary_reply(module)?;
+        let answer = self.optional_binary_reply(module)?;
+        if let Some(status) = answer.filter(|s| !s.is_success()) {
+            // Still in binary mode: no CR, which its receiver would take as a frame's start.
+            return Err(SessionError::Device {
+                module: address_char(module).unwrap_or('?').to_string(),
+                sent: "139 (enter ASCII mode)".into(),
+                reason: format!("status {status}"),
+            });
+        }
         self.core.wire.send(
             b"\r",
             "end of line, clears any partial line in ASCII-mode modules",
@@ -191,7 +243,7 @@ impl TmclSession {
                 echo_known: false,
             },
         );
-        let found = previous.or(found_binary.then_some(WireMode::Binary));
+        let found = previous.or(answer.map(|_| WireMode::Binary));
         self.learn_echo(module, found)
     }
 
@@ -208,8 +260,8 @@ impl TmclSession {
         OPTIONAL_REPLY_WAIT.min(self.core.options.timeout) + wire
     }
 
-    /// Waits briefly for the binary reply some firmware sends to 139; true if it came.
-    fn optional_binary_reply(&mut self, module: u8) -> Result<bool, SessionError> {
+    /// Waits briefly for the binary reply some firmware sends to 139; its status if it came.
+    fn optional_binary_reply(&mut self, module: u8) -> Result<Option<Status>, SessionError> {
         let deadline = Instant::now() + self.optional_wait(2 * FRAME_LEN as u32);
         while self.core.wire.rx.len() < FRAME_LEN && Instant::now() < deadline {
             if !self.core.wire.fill(deadline)? {
@@ -223,7 +275,7 @@ impl TmclSession {
                     .wire
                     .log(Entry::Received, &stray, "partial data after 139, discarded");
             }
-            return Ok(false);
+            return Ok(None);
         }
         let bytes = self.core.wire.rx.take(FRAME_LEN);
         let mut frame = [0u8; FRAME_LEN];
@@ -235,7 +287,7 @@ impl TmclSession {
                     &bytes,
                     format_args!("binary reply to 139: status {}", reply.status),
                 );
-                Ok(true)
+                Ok(Some(reply.status))
             }
             _ => {
                 self.core
@@ -245,14 +297,18 @@ impl TmclSession {
                     "unexpected bytes after entering ASCII mode: {}",
                     hex(&bytes)
                 ));
-                Ok(false)
+                Ok(None)
             }
         }
     }
 
     /// Reads global parameter 67 in ASCII mode to learn the echo; decides the mode the module
     /// was found in when `found` is not already known.
-    fn learn_echo(&mut self, module: u8, found: Option<WireMode>) -> Result<(), SessionError> {
+    pub(super) fn learn_echo(
+        &mut self,
+        module: u8,
+        found: Option<WireMode>,
+    ) -> Result<(), SessionError> {
         let c = address_char(module).unwrap_or('?');
         let probe = Instruction::new(Opcode::Ggp, 67, 0, 0);
         let text = format!("{c}{}", self.describe_instruction(&probe));

@@ -5,6 +5,7 @@ use std::time::{Duration, Instant};
 
 use crate::dialect::tmcl::protocol::Instruction;
 
+use super::mode::{Echo, ModuleState};
 use super::{TmclExchange, TmclSession, WireMode};
 use crate::session::SessionError;
 
@@ -51,6 +52,37 @@ impl TmclSession {
             .wire
             .discard_quietly(n, "while the line was kept quiet");
         Ok(())
+    }
+
+    /// Reaches `module` as one already in ASCII mode — its echo setting read with an ASCII line,
+    /// no 139 sent — and makes it the target. A module in binary mode does not answer (a scan
+    /// has found those with binary frames already); the line then holds ASCII bytes that binary
+    /// receivers drop after their frame time-out.
+    pub fn reach_in_ascii(&mut self, module: u8) -> Result<(), SessionError> {
+        if self.modules.contains_key(&module) {
+            return self.set_target(module);
+        }
+        self.modules.insert(
+            module,
+            ModuleState {
+                mode: WireMode::Ascii,
+                found_in: WireMode::Ascii,
+                echo: Echo::None,
+                echo_known: false,
+            },
+        );
+        self.learn_echo(module, Some(WireMode::Ascii))?;
+        self.target = module;
+        Ok(())
+    }
+
+    /// Keeps the line quiet until binary receivers are at a frame boundary again, if anything
+    /// else was sent since the last complete binary exchange.
+    pub fn align_frames(&mut self) -> Result<(), SessionError> {
+        if std::mem::take(&mut self.frames_aligned) {
+            return Ok(());
+        }
+        self.core.wire.idle_for(self.resync_gap())
     }
 
     /// Sends a lone CR, which ends whatever partial line ASCII-mode modules hold.

@@ -1,6 +1,6 @@
-//! Several simulated TMCM-142 modules on one RS-485 line: every byte reaches every module, each
-//! answers only its own address, in binary and in ASCII mode. The bus is the [`Device`] that
-//! adapters serve.
+//! Several simulated modules on one RS-485 line, each of its own profile (a TMCM-142 beside a
+//! TMCM-6110): every byte reaches every module, each answers only its own address, in binary and
+//! in ASCII mode. The bus is the [`Device`] that adapters serve.
 
 use std::sync::Arc;
 use std::time::Duration;
@@ -13,18 +13,24 @@ use super::machine::Machine;
 use super::module::{Module, Sink};
 use super::motion::{Switch, Switches};
 use super::options::Quirks;
-use super::state::{BusImage, Eeprom};
+use super::state::{BusImage, Eeprom, ModuleImage};
 
 /// How to build a bus.
 pub struct BusOptions {
     /// Factory addresses of the modules, in bus order. Default: one module at address 1.
     pub addresses: Vec<u8>,
+    /// The modules that are not of the bus's profile, by factory address.
+    pub profiles: Vec<(u8, Arc<Profile>)>,
     /// Behaviour the manual leaves open.
     pub quirks: Quirks,
-    /// Where each module's virtual switches are (the same for every module).
+    /// Where every motor's virtual switches are (the same for every motor of every module)…
     pub switches: Switches,
+    /// …but for these: a motor number, one of its switches and where that one is.
+    pub motor_switches: Vec<(u8, Switch, i64)>,
     /// The EEPROM kept between runs; `None` starts from factory settings every time.
     pub eeprom: Option<Eeprom>,
+    /// Every module runs its boot loader instead of its firmware.
+    pub boot_loader: bool,
     /// Where to log decoded traffic; `None` logs nothing (and costs nothing).
     pub log: Option<LogSink>,
 }
@@ -33,9 +39,12 @@ impl Default for BusOptions {
     fn default() -> Self {
         BusOptions {
             addresses: vec![1],
+            profiles: Vec::new(),
             quirks: Quirks::default(),
             switches: Switches::default(),
+            motor_switches: Vec::new(),
             eeprom: None,
+            boot_loader: false,
             log: None,
         }
     }
@@ -69,19 +78,45 @@ fn secs(now: Duration) -> f64 {
     now.as_secs_f64()
 }
 
+impl BusOptions {
+    /// The switches of each motor of a module with `axes` motors.
+    fn switches_of(&self, axes: u8) -> Vec<Switches> {
+        (0..axes.max(1))
+            .map(|motor| {
+                let mut switches = self.switches;
+                for &(m, which, position) in &self.motor_switches {
+                    if m == motor {
+                        switches.set(which, Some(position));
+                    }
+                }
+                switches
+            })
+            .collect()
+    }
+}
+
 impl Bus {
-    /// Modules as `options` say, with their EEPROM from the store, powered up at time 0.
+    /// Modules as `options` say (of `profile` unless `options.profiles` names another), with
+    /// their EEPROM from the store, powered up at time 0.
     pub fn new(profile: Arc<Profile>, options: BusOptions) -> Bus {
         let image = options.eeprom.as_ref().and_then(Eeprom::loaded);
         let modules = options
             .addresses
             .iter()
             .map(|&slot| {
-                let mut machine = Machine::new(profile.clone(), slot, options.switches);
+                let profile = options
+                    .profiles
+                    .iter()
+                    .find(|(a, _)| *a == slot)
+                    .map_or_else(|| profile.clone(), |(_, p)| p.clone());
+                let switches = options.switches_of(profile.axes);
+                let mut machine = Machine::new(profile, slot, &switches);
                 if let Some(stored) = image.and_then(|i| i.module(slot)) {
                     machine.load(stored);
                 }
-                Module::new(machine)
+                let mut module = Module::new(machine);
+                module.boot_loader = options.boot_loader;
+                module
             })
             .collect();
         let mut bus = Bus {
@@ -175,38 +210,67 @@ impl Bus {
         self.module(slot)?.machine.io.set_analog(port, value)
     }
 
-    /// Moves (or with `None` disconnects) a virtual switch of a module, in physical microsteps.
+    /// Moves (or with `None` disconnects) a virtual switch of a motor of a module, in physical
+    /// microsteps.
     pub fn set_switch(
         &mut self,
         now: Duration,
         slot: u8,
+        motor: u8,
         which: Switch,
         position: Option<i64>,
     ) -> Result<(), String> {
         self.advance(now);
         let machine = &mut self.module(slot)?.machine;
-        machine.axis.switches.set(which, position);
-        machine.axis.settle(secs(now));
+        let (module, count) = (machine.profile.module.clone(), machine.axes.len());
+        let axis = machine.axes.get_mut(usize::from(motor)).ok_or_else(|| {
+            format!(
+                "the {module} has no motor {motor} (motors 0..{})",
+                count - 1
+            )
+        })?;
+        axis.switches.set(which, position);
+        axis.settle(secs(now));
         Ok(())
     }
 
-    /// The state of an output of a module.
-    pub fn output(&mut self, slot: u8, port: u8) -> Option<bool> {
+    /// The state of an output of a module at `now` (a running program may have set it).
+    pub fn output(&mut self, now: Duration, slot: u8, port: u8) -> Option<bool> {
+        self.advance(now);
         self.module(slot).ok()?.machine.io.output(port)
     }
 
-    /// What the motor of a module is doing at `now`.
+    /// What motor 0 of a module is doing at `now`.
     pub fn motor(&mut self, now: Duration, slot: u8) -> Option<MotorState> {
+        self.motor_of(now, slot, 0)
+    }
+
+    /// What a motor of a module is doing at `now` (`None`: no such module or motor).
+    pub fn motor_of(&mut self, now: Duration, slot: u8, motor: u8) -> Option<MotorState> {
         self.advance(now);
         let t = secs(now);
         let machine = &self.module(slot).ok()?.machine;
+        let axis = machine.axes.get(usize::from(motor))?;
         Some(MotorState {
-            position: machine.axis.counter(t),
-            target: machine.axis_value(0, t),
-            velocity: machine.axis.state(t).v,
-            target_reached: machine.axis_value(8, t) == 1,
-            searching: machine.axis.search_status() != 0,
+            position: axis.counter(t),
+            target: machine.role(motor, machine.roles.target_position),
+            velocity: axis.state(t).v,
+            target_reached: machine.target_reached(motor, t),
+            searching: axis.search_status() != 0,
         })
+    }
+
+    /// The EEPROM image of each module, in bus order.
+    pub fn images(&self) -> Vec<ModuleImage> {
+        self.modules.iter().map(|m| m.machine.image()).collect()
+    }
+
+    /// The module name of each module, in bus order (`TMCM-6110`).
+    pub fn modules(&self) -> Vec<(u8, String)> {
+        self.modules
+            .iter()
+            .map(|m| (m.machine.slot, m.machine.profile.module.clone()))
+            .collect()
     }
 
     /// Whether a module is in ASCII mode.

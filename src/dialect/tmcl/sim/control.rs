@@ -1,6 +1,7 @@
 //! The control functions 128–139 (manual §6.5): program control, download mode, memory read-back,
 //! firmware version, factory reset, the position-reached event and the switch to ASCII mode.
 
+use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
 use super::exec::{Effect, Outcome, Reply};
@@ -68,13 +69,17 @@ impl Machine {
                 return reply(Reply::Silent, Effect::Rebooted);
             }
             Opcode::PositionEvent => match i.type_ {
-                0 | 1 if i.value & 1 != 0 => {
+                0 | 1 if i.value & self.motor_mask() != 0 => {
                     self.request_event(i.value, i.type_ == 1);
                     Ok(i.value)
                 }
                 0 | 1 => Err(Status::InvalidValue),
                 _ => Err(Status::WrongType),
             },
+            // A binary-only firmware does not know 139.
+            Opcode::EnterAscii if self.profile.identity.ascii_interface() == AsciiInterface::No => {
+                Err(Status::InvalidCommand)
+            }
             Opcode::EnterAscii => {
                 return reply(Reply::Normal(Status::Ok, i.value), Effect::EnterAscii);
             }
@@ -88,6 +93,11 @@ impl Machine {
 }
 
 impl Machine {
+    /// The bits of a 138 motor mask that name motors this module has.
+    fn motor_mask(&self) -> i32 {
+        (1i32 << self.axes.len().min(30)) - 1
+    }
+
     /// The instruction with the type byte a command ignores (`type_ignored`: 134, 135, "don't
     /// care" in the manual) read as 0, except type 1, this simulator's documented extension
     /// (134: the stored command, type and motor; 135: the program error).

@@ -5,9 +5,10 @@
 //! ```text
 //! input PORT 0|1                digital input (GIO bank 0)
 //! analog PORT VALUE             analog input (GIO bank 1), 0..adc_max
-//! switch left|right|home POS|off   move a virtual switch (physical microsteps) or disconnect it
+//! switch [M] left|right|home POS|off   move a virtual switch of motor M (default 0; physical
+//!                               microsteps) or disconnect it
 //! output PORT                   print an output's state (SIO bank 2)
-//! motor                         print position, target, velocity, target reached
+//! motor [M]                     print position, target, velocity, target reached of motor M
 //! ```
 
 use std::time::Duration;
@@ -27,6 +28,17 @@ pub(crate) fn run(bus: &mut Bus, now: Duration, command: &str) -> Option<Result<
             Err(_) => return Some(Err(format!("'@{n}' is not a module address"))),
         },
         None => *bus.slots().first()?,
+    };
+    // `switch M WHICH POS` and `motor M` name a motor; without it, motor 0.
+    let motor = match words.as_slice() {
+        ["switch", m, _, _] | ["motor", m] => match m.parse::<u8>() {
+            Ok(m) => {
+                words.remove(1);
+                m
+            }
+            Err(_) => return Some(Err(format!("'{m}' is not a motor number"))),
+        },
+        _ => 0,
     };
     let result = match words.as_slice() {
         ["input", port, level] => number(port).and_then(|port| {
@@ -64,19 +76,24 @@ pub(crate) fn run(bus: &mut Bus, now: Duration, command: &str) -> Option<Result<
                     .map_err(|_| format!("'{p}' is not a position (or 'off')")),
             };
             position.and_then(|position| {
-                bus.set_switch(now, slot, which, position).map(|()| {
-                    let at = position.map_or("off".to_string(), |p| p.to_string());
-                    format!("switch {which:?} at {at}").to_lowercase()
-                })
+                bus.set_switch(now, slot, motor, which, position)
+                    .map(|()| {
+                        let at = position.map_or("off".to_string(), |p| p.to_string());
+                        format!("switch {which:?} at {at}").to_lowercase()
+                    })
+                    .map(|text| match motor {
+                        0 => text,
+                        m => format!("motor {m} {text}"),
+                    })
             })
         }
         ["output", port] => number(port).and_then(|port| {
-            bus.output(slot, port)
+            bus.output(now, slot, port)
                 .map(|on| format!("output {port} = {}", u8::from(on)))
                 .ok_or_else(|| format!("no output {port}"))
         }),
         ["motor"] => bus
-            .motor(now, slot)
+            .motor_of(now, slot, motor)
             .map(|m| {
                 format!(
                     "position {} target {} velocity {:.3} pps reached {}",
@@ -86,7 +103,7 @@ pub(crate) fn run(bus: &mut Bus, now: Duration, command: &str) -> Option<Result<
                     u8::from(m.target_reached)
                 )
             })
-            .ok_or_else(|| format!("no module {slot}")),
+            .ok_or_else(|| format!("no module {slot} with a motor {motor}")),
         _ => return None,
     };
     Some(result)

@@ -3,8 +3,8 @@
 //!
 //! Status codes follow Trinamic's firmware where the manual is silent: the reply value is the
 //! request's value unless the command returns one; an unknown parameter, port, coordinate or
-//! keyword number (the type byte) answers 3 (wrong type); a value out of range or a motor other
-//! than 0 answers 4 (invalid value).
+//! keyword number (the type byte) answers 3 (wrong type); a value out of range or a motor the
+//! module does not have answers 4 (invalid value).
 
 use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
@@ -148,6 +148,28 @@ impl Machine {
 
     fn command(&mut self, t: f64, i: &Instruction) -> Result<i32, Status> {
         let value = i.value;
+        // Axis commands name their motor in the motor byte (checked against the profile).
+        let m = i.motor;
+        let axis_command = matches!(
+            i.command,
+            Opcode::Ror
+                | Opcode::Rol
+                | Opcode::Mst
+                | Opcode::Mvp
+                | Opcode::Sap
+                | Opcode::Aap
+                | Opcode::Gap
+                | Opcode::Stap
+                | Opcode::Rsap
+                | Opcode::Rfs
+                | Opcode::Sco
+                | Opcode::Gco
+                | Opcode::Cco
+                | Opcode::Aco
+        );
+        if axis_command && usize::from(m) >= self.axes.len() {
+            return Err(Status::InvalidValue);
+        }
         match i.command {
             Opcode::Ror | Opcode::Rol => {
                 let signed = if i.command == Opcode::Ror {
@@ -155,21 +177,22 @@ impl Machine {
                 } else {
                     -value
                 };
-                self.params.set(Slot::Axis(2), signed);
-                let accel = self.move_limits().1;
-                self.axis.rotate(t, self.pps(signed), accel);
+                self.set_role(m, self.roles.target_speed, signed);
+                let accel = self.move_limits(m).1;
+                let v = self.pps(m, signed);
+                self.axes[m as usize].rotate(t, v, accel);
             }
             Opcode::Mst => {
-                self.params.set(Slot::Axis(2), 0);
-                let accel = self.move_limits().1;
-                self.axis.rotate(t, 0.0, accel);
+                self.set_role(m, self.roles.target_speed, 0);
+                let accel = self.move_limits(m).1;
+                self.axes[m as usize].rotate(t, 0.0, accel);
             }
             Opcode::Mvp => return self.move_to(t, i),
-            Opcode::Sap => self.write_axis(t, i.type_, value)?,
-            Opcode::Aap => self.write_axis(t, i.type_, self.vm.acc)?,
+            Opcode::Sap => self.write_axis(t, m, i.type_, value)?,
+            Opcode::Aap => self.write_axis(t, m, i.type_, self.vm.acc)?,
             Opcode::Gap => {
-                self.params.check_read(Slot::Axis(i.type_))?;
-                return Ok(self.axis_value(i.type_, t));
+                self.params.check_read(Slot::Axis(m, i.type_))?;
+                return Ok(self.axis_value(m, i.type_, t));
             }
             Opcode::Stap | Opcode::Stgp => {
                 let slot = slot(i);
@@ -182,9 +205,10 @@ impl Machine {
             Opcode::Rsap | Opcode::Rsgp => {
                 let slot = slot(i);
                 self.params.check_store(slot)?;
+                let before = self.velocity_factor(m);
                 self.params.restore(slot);
-                if let Slot::Axis(n) = slot {
-                    self.after_axis_write(t, n);
+                if let Slot::Axis(m, n) = slot {
+                    self.after_axis_write(t, m, n, before);
                 }
             }
             Opcode::Sgp => self.write_global(t, i.motor, i.type_, value)?,
@@ -193,50 +217,57 @@ impl Machine {
                 self.params.check_read(Slot::Global(i.motor, i.type_))?;
                 return Ok(self.global_value(i.motor, i.type_, t));
             }
-            Opcode::Rfs => return Ok(self.reference_search(t, i.type_)),
+            Opcode::Rfs => return Ok(self.reference_search(t, m, i.type_)),
             Opcode::Sio => self.io.write(i.type_, i.motor, value != 0)?,
             Opcode::Gio => return self.io.read(i.type_, i.motor),
-            Opcode::Sco => self.set_coordinate(i.type_, value)?,
-            Opcode::Aco => self.set_coordinate(i.type_, self.vm.acc)?,
-            Opcode::Cco => self.set_coordinate(i.type_, self.axis.counter(t))?,
+            Opcode::Sco => self.set_coordinate(m, i.type_, value)?,
+            Opcode::Aco => self.set_coordinate(m, i.type_, self.vm.acc)?,
+            Opcode::Cco => {
+                let counter = self.axes[m as usize].counter(t);
+                self.set_coordinate(m, i.type_, counter)?;
+            }
             // Only a division by zero fails here: the keyword was checked before.
             Opcode::Calc | Opcode::Calcx => self.calculate(i).map_err(|_| Status::InvalidValue)?,
-            Opcode::Gco => return Ok(self.coords[i.type_ as usize]),
+            Opcode::Gco => return Ok(self.coords[m as usize][i.type_ as usize]),
             _ => return Err(Status::InvalidCommand),
         }
         Ok(value)
     }
 
     fn move_to(&mut self, t: f64, i: &Instruction) -> Result<i32, Status> {
+        let m = i.motor;
         let target = match i.type_ {
             0 => i.value,
-            1 => self.params.get(Slot::Axis(0)).wrapping_add(i.value),
+            1 => self
+                .role(m, self.roles.target_position)
+                .wrapping_add(i.value),
             _ => *usize::try_from(i.value)
                 .ok()
-                .and_then(|n| self.coords.get(n))
+                .and_then(|n| self.coords[m as usize].get(n))
                 .ok_or(Status::InvalidValue)?,
         };
-        self.params.set(Slot::Axis(0), target);
-        let (vmax, accel) = self.move_limits();
-        self.axis.move_to(t, target, vmax, accel);
+        self.set_role(m, self.roles.target_position, target);
+        let (vmax, accel) = self.move_limits(m);
+        self.axes[m as usize].move_to(t, target, vmax, accel);
         Ok(if i.type_ == 1 { target } else { i.value })
     }
 
-    fn reference_search(&mut self, t: f64, type_: u8) -> i32 {
+    fn reference_search(&mut self, t: f64, m: u8, type_: u8) -> i32 {
+        let axis = m as usize;
         match type_ {
             0 => {
-                let mode = self.params.get(Slot::Axis(193)).clamp(1, 3) as u8;
-                let fast = self.pps(self.params.get(Slot::Axis(194)));
-                let slow = self.pps(self.params.get(Slot::Axis(195)));
-                let accel = self.move_limits().1;
-                self.axis.start_search(t, mode, fast, slow, accel);
+                let mode = self.role(m, self.roles.search_mode).clamp(1, 3) as u8;
+                let fast = self.pps(m, self.role(m, self.roles.search_speed));
+                let slow = self.pps(m, self.role(m, self.roles.switch_speed));
+                let accel = self.move_limits(m).1;
+                self.axes[axis].start_search(t, mode, fast, slow, accel);
                 0
             }
             1 => {
-                self.axis.stop_search(t);
+                self.axes[axis].stop_search(t);
                 0
             }
-            _ => self.axis.search_status(),
+            _ => self.axes[axis].search_status(),
         }
     }
 
@@ -244,30 +275,49 @@ impl Machine {
         self.params.get(Slot::Global(0, 73)) == 1
     }
 
-    fn write_axis(&mut self, t: f64, number: u8, value: i32) -> Result<(), Status> {
-        self.params.check_write(Slot::Axis(number), value)?;
-        match number {
-            1 => self.axis.set_counter(t, value),
-            3 => self.axis.set_velocity(t, self.pps(value)),
+    fn write_axis(&mut self, t: f64, m: u8, number: u8, value: i32) -> Result<(), Status> {
+        self.params.check_write(Slot::Axis(m, number), value)?;
+        let r = &self.roles;
+        let is = |role: Option<u8>| role == Some(number);
+        if is(r.actual_position) {
+            self.axes[m as usize].set_counter(t, value);
+        } else if is(r.actual_speed) {
+            let v = self.pps(m, value);
+            self.axes[m as usize].set_velocity(t, v);
+        } else if is(r.integrator_sum) {
             // Any write clears the integrator sum.
-            34 => self.params.set(Slot::Axis(34), 0),
-            _ => {
-                self.params.set(Slot::Axis(number), value);
-                self.after_axis_write(t, number);
-            }
+            self.params.set(Slot::Axis(m, number), 0);
+        } else {
+            let before = self.velocity_factor(m);
+            self.params.set(Slot::Axis(m, number), value);
+            self.after_axis_write(t, m, number, before);
         }
         Ok(())
     }
 
-    /// Side effects of a new RAM value: SAP 0 moves, SAP 2 turns, SAP 4/5 retune a move.
-    fn after_axis_write(&mut self, t: f64, number: u8) {
-        let value = self.params.get(Slot::Axis(number));
-        let (vmax, accel) = self.move_limits();
-        match number {
-            0 => self.axis.move_to(t, value, vmax, accel),
-            2 => self.axis.rotate(t, self.pps(value), accel),
-            4 | 5 | 255 => self.axis.retune(t, vmax, accel),
-            _ => {}
+    /// Side effects of a new RAM value: the target position moves, the target speed turns, the
+    /// maximum speed, acceleration, unit mode and divisors retune a move, and a new velocity
+    /// unit (`before` was the old one, in pps per unit) changes the speed of a rotation.
+    fn after_axis_write(&mut self, t: f64, m: u8, number: u8, before: f64) {
+        let value = self.params.get(Slot::Axis(m, number));
+        let (vmax, accel) = self.move_limits(m);
+        let r = &self.roles;
+        let is = |role: Option<u8>| role == Some(number);
+        if is(r.target_position) {
+            self.axes[m as usize].move_to(t, value, vmax, accel);
+        } else if is(r.target_speed) {
+            let v = self.pps(m, value);
+            self.axes[m as usize].rotate(t, v, accel);
+        } else if is(r.max_speed)
+            || is(r.max_acceleration)
+            || is(r.unit_mode)
+            || is(r.pulse_divisor)
+            || is(r.ramp_divisor)
+        {
+            let scale = self.velocity_factor(m) / before;
+            let axis = &mut self.axes[m as usize];
+            axis.retune(t, vmax, accel);
+            axis.rescale_rotation(t, scale);
         }
     }
 
@@ -301,13 +351,14 @@ impl Machine {
         Ok(())
     }
 
-    fn set_coordinate(&mut self, number: u8, value: i32) -> Result<(), Status> {
+    /// SCO, ACO, CCO: coordinate `number` of motor `m` (every axis has its own, as the
+    /// multi-axis manuals say: "up to 20 position values for every axis").
+    fn set_coordinate(&mut self, m: u8, number: u8, value: i32) -> Result<(), Status> {
         let stored = self.params.get(Slot::Global(0, 84)) == 1;
         if stored && self.locked() {
             return Err(Status::EepromLocked);
         }
-        let slot = self
-            .coords
+        let slot = self.coords[m as usize]
             .get_mut(number as usize)
             .ok_or(Status::WrongType)?;
         if stored && *slot != value {
@@ -321,7 +372,7 @@ impl Machine {
 /// The parameter a STAP/RSAP/STGP/RSGP instruction names.
 fn slot(i: &Instruction) -> Slot {
     match i.command {
-        Opcode::Stap | Opcode::Rsap => Slot::Axis(i.type_),
+        Opcode::Stap | Opcode::Rsap => Slot::Axis(i.motor, i.type_),
         _ => Slot::Global(i.motor, i.type_),
     }
 }

@@ -1,5 +1,6 @@
-//! The flags of `tmclsh sim` for the simulated TMCL bus: which module addresses it has, where its
-//! switches are, and the choices the manual leaves open.
+//! The flags of `tmclsh sim` for the simulated TMCL bus: which modules it has (addresses, and
+//! each one's profile where it differs from `--profile`), where the switches of each motor are,
+//! and the choices the manual leaves open.
 
 use std::path::Path;
 use std::sync::Arc;
@@ -11,45 +12,115 @@ use crate::dialect::tmcl::profile::Profile;
 use crate::sim::store::FileStore;
 use crate::sim::{Device, LogSink};
 
-use super::{Backspace, Bus, BusOptions, Eeprom, LineEnd, Quirks, Switches};
+use super::{Backspace, Bus, BusOptions, Eeprom, LineEnd, Quirks, Switch, Switches};
+use crate::dialect::tmcl::profile::catalogue;
+
+/// One module of `--modules`: its address, and its profile where it is not the bus's.
+#[derive(Debug, Clone)]
+pub struct ModuleSpec {
+    /// The factory address (1..255).
+    pub address: u8,
+    /// `N:PROFILE`: a built-in profile name, alias or module number, or a profile file.
+    pub profile: Option<Arc<Profile>>,
+}
+
+/// `N` or `N:PROFILE`.
+fn module_spec(text: &str) -> Result<ModuleSpec, String> {
+    let (address, profile) = match text.split_once(':') {
+        Some((a, p)) => (a.trim(), Some(p.trim())),
+        None => (text.trim(), None),
+    };
+    let address = match address.parse::<i64>() {
+        Ok(n @ 1..=255) => n as u8,
+        Ok(n) => return Err(format!("module address {n} is out of range 1..255")),
+        Err(_) => return Err(format!("'{address}' is not a module address (1..255)")),
+    };
+    let profile = match profile {
+        Some("") => return Err(format!("'{text}' names no profile after the ':'")),
+        Some(name) => Some(catalogue::resolve(Path::new(name)).map_err(|e| e.to_string())?),
+        None => None,
+    };
+    Ok(ModuleSpec { address, profile })
+}
+
+/// A switch position for every motor (`POS`) or for one (`MOTOR:POS`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SwitchSpec {
+    /// The motor, or `None` for every motor.
+    pub motor: Option<u8>,
+    /// Where the switch is, in physical microsteps.
+    pub position: i64,
+}
+
+fn switch_spec(text: &str) -> Result<SwitchSpec, String> {
+    let (motor, position) = match text.split_once(':') {
+        Some((m, p)) => {
+            let motor = m
+                .trim()
+                .parse::<u8>()
+                .map_err(|_| format!("'{m}' is not a motor number (0..255) in '{text}'"))?;
+            (Some(motor), p)
+        }
+        None => (None, text),
+    };
+    let position = position
+        .trim()
+        .parse::<i64>()
+        .map_err(|_| format!("'{position}' is not a position in microsteps"))?;
+    Ok(SwitchSpec { motor, position })
+}
 
 /// The bus layout.
 #[derive(Debug, Clone, clap::Args)]
 pub struct BusFlags {
-    /// Module addresses on the simulated RS-485 bus.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = "1", value_parser = clap::value_parser!(u8).range(1..))]
-    pub modules: Vec<u8>,
+    /// Modules on the simulated RS-485 bus: addresses, each optionally with its own profile
+    /// (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`).
+    #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = "1", value_parser = module_spec)]
+    pub modules: Vec<ModuleSpec>,
+
+    /// The modules run their boot loader: 136 answers with B for V (`6110B131`), every other
+    /// command with invalid command.
+    #[arg(long)]
+    pub boot_loader: bool,
 }
 
-/// The simulated module's switches and the choices the manual leaves open.
+/// The simulated motors' switches and the choices the manual leaves open.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ModuleFlags {
-    /// Position of the left limit switch (microsteps); not connected by default.
+    /// Position of the left limit switch (microsteps) of every motor, or MOTOR:POS for one motor
+    /// (repeatable); not connected by default.
     #[arg(
         long,
-        value_name = "POS",
+        value_name = "[MOTOR:]POS",
         allow_hyphen_values = true,
+        action = clap::ArgAction::Append,
+        value_parser = switch_spec,
         help_heading = "Switches"
     )]
-    pub left_switch: Option<i64>,
+    pub left_switch: Vec<SwitchSpec>,
 
-    /// Position of the right limit switch.
+    /// Position of the right limit switch, of every motor or MOTOR:POS.
     #[arg(
         long,
-        value_name = "POS",
+        value_name = "[MOTOR:]POS",
         allow_hyphen_values = true,
+        action = clap::ArgAction::Append,
+        value_parser = switch_spec,
         help_heading = "Switches"
     )]
-    pub right_switch: Option<i64>,
+    pub right_switch: Vec<SwitchSpec>,
 
-    /// Position of the reference (home) switch, active at and right of it.
+    /// Position of the reference (home) switch, active at and right of it; of every motor or
+    /// MOTOR:POS.
     #[arg(
         long,
-        value_name = "POS",
+        value_name = "[MOTOR:]POS",
         allow_hyphen_values = true,
+        action = clap::ArgAction::Append,
+        value_parser = switch_spec,
         help_heading = "Switches"
     )]
-    pub home_switch: Option<i64>,
+    pub home_switch: Vec<SwitchSpec>,
 
     /// Switch to ASCII mode on command 139 without a binary reply.
     #[arg(long, help_heading = "Choices the manual leaves open")]
@@ -58,6 +129,11 @@ pub struct ModuleFlags {
     /// Switch back to binary mode on BIN without an ASCII reply.
     #[arg(long, help_heading = "Choices the manual leaves open")]
     pub no_reply_to_bin: bool,
+
+    /// Answer 139 with invalid command and stay binary, as a module without the ASCII interface
+    /// does (for a module whose interface is unconfirmed, such as the TMCM-3110).
+    #[arg(long, help_heading = "Choices the manual leaves open")]
+    pub no_ascii: bool,
 
     /// Ending of ASCII replies: none, cr, lf or crlf.
     #[arg(long, value_name = "END", default_value = "cr", value_parser = line_end, help_heading = "Choices the manual leaves open")]
@@ -99,13 +175,22 @@ pub fn given(matches: &ArgMatches) -> Option<&'static str> {
     ) else {
         return None;
     };
+    let default_bus = matches!(
+        bus.modules.as_slice(),
+        [ModuleSpec {
+            address: 1,
+            profile: None
+        }]
+    );
     [
-        (bus.modules != [1], "--modules"),
-        (module.left_switch.is_some(), "--left-switch"),
-        (module.right_switch.is_some(), "--right-switch"),
-        (module.home_switch.is_some(), "--home-switch"),
+        (!default_bus, "--modules"),
+        (bus.boot_loader, "--boot-loader"),
+        (!module.left_switch.is_empty(), "--left-switch"),
+        (!module.right_switch.is_empty(), "--right-switch"),
+        (!module.home_switch.is_empty(), "--home-switch"),
         (module.no_reply_to_139, "--no-reply-to-139"),
         (module.no_reply_to_bin, "--no-reply-to-bin"),
+        (module.no_ascii, "--no-ascii"),
     ]
     .into_iter()
     .find_map(|(given, flag)| given.then_some(flag))
@@ -122,14 +207,26 @@ pub fn served(
     let bus = BusFlags::from_arg_matches(matches).map_err(|e| e.to_string())?;
     let module = ModuleFlags::from_arg_matches(matches).map_err(|e| e.to_string())?;
     let mut seen = Vec::new();
-    for &address in &bus.modules {
-        if seen.contains(&address) {
+    for spec in &bus.modules {
+        if seen.contains(&spec.address) {
             return Err(format!(
-                "module address {address} is given twice in --modules"
+                "module address {} is given twice in --modules",
+                spec.address
             ));
         }
-        seen.push(address);
+        seen.push(spec.address);
     }
+    let module_profiles: Vec<(u8, Arc<Profile>)> = bus
+        .modules
+        .iter()
+        .map(|s| {
+            (
+                s.address,
+                s.profile.clone().unwrap_or_else(|| profile.clone()),
+            )
+        })
+        .collect();
+    let (switches, motor_switches) = switch_layout(&module, &module_profiles)?;
     let eeprom = match state {
         Some(path) => {
             Some(Eeprom::open(Box::new(FileStore::new(path))).map_err(|e| e.to_string())?)
@@ -138,21 +235,61 @@ pub fn served(
     };
     let log: Option<LogSink> = verbose.then(|| Box::new(|line: &str| eprintln!("sim {line}")) as _);
     let options = BusOptions {
-        addresses: bus.modules,
+        addresses: seen,
+        profiles: module_profiles,
         quirks: Quirks {
             reply_to_139: !module.no_reply_to_139,
             reply_to_bin: !module.no_reply_to_bin,
             reply_end: module.reply_end,
             echo_end: module.echo_end,
             backspace: module.backspace_echo,
+            ascii: !module.no_ascii,
         },
-        switches: Switches {
-            left: module.left_switch,
-            right: module.right_switch,
-            home: module.home_switch,
-        },
+        switches,
+        motor_switches,
         eeprom,
+        boot_loader: bus.boot_loader,
         log,
     };
     Ok(Box::new(Bus::new(profile.clone(), options)))
+}
+
+/// One motor's own switch: the motor, which switch, where.
+type MotorSwitch = (u8, Switch, i64);
+
+/// The switches of every motor and those of single motors, from the switch flags: a motor's own
+/// position wins over the every-motor one, and of the same form the last given; a motor no module
+/// on the bus has is refused.
+fn switch_layout(
+    flags: &ModuleFlags,
+    modules: &[(u8, Arc<Profile>)],
+) -> Result<(Switches, Vec<MotorSwitch>), String> {
+    let most = modules
+        .iter()
+        .map(|(_, p)| p.axes.max(1))
+        .max()
+        .unwrap_or(1);
+    let mut every = Switches::default();
+    let mut single = Vec::new();
+    let given = [
+        (Switch::Left, "--left-switch", &flags.left_switch),
+        (Switch::Right, "--right-switch", &flags.right_switch),
+        (Switch::Home, "--home-switch", &flags.home_switch),
+    ];
+    for (which, flag, specs) in given {
+        for spec in specs {
+            match spec.motor {
+                None => every.set(which, Some(spec.position)),
+                Some(m) if m >= most => {
+                    return Err(format!(
+                        "{flag} {m}:{}: no module on the bus has a motor {m} (motors 0..{})",
+                        spec.position,
+                        most - 1
+                    ));
+                }
+                Some(m) => single.push((m, which, spec.position)),
+            }
+        }
+    }
+    Ok((every, single))
 }

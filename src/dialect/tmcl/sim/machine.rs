@@ -1,13 +1,15 @@
-//! One simulated module behind its serial interface: parameters, motor, I/O, coordinates, program
-//! memory and the program runner, driven by time. [`super::module`] feeds it decoded commands;
-//! [`super::exec`] and [`super::control`] implement the commands.
+//! One simulated module behind its serial interface: parameters, one motor per axis, I/O,
+//! coordinates, program memory and the program runner, driven by time. [`super::module`] feeds it
+//! decoded commands; [`super::exec`] and [`super::control`] implement the commands, [`super::live`]
+//! what the motors read and their units.
 
 use std::sync::Arc;
 
 use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::profile::sim_roles::AxisRoles;
 
 use super::io::Io;
-use super::motion::{Axis, Happened, Limits, Switch, Switches, encoder_position};
+use super::motion::{Axis, Happened, Limits, Switches};
 use super::params::{Params, Slot};
 use super::program::Program;
 use super::state::ModuleImage;
@@ -16,11 +18,22 @@ use super::vm::Vm;
 /// Magic value of GP 64: any other value at power-up restores factory settings.
 pub(crate) const EEPROM_MAGIC: i32 = 228;
 
-/// A pending "target position reached" event request (command 138).
+/// A pending "target position reached" event request (command 138): the second reply comes
+/// when every motor of the mask has arrived.
 #[derive(Debug, Clone, Copy)]
 struct EventRequest {
     mask: i32,
     every_move: bool,
+}
+
+/// The roles of a profile's axis parameters; a profile file without the table gets the
+/// TMCM-142's, whose numbering the simulator always had.
+fn roles_of(profile: &Profile) -> AxisRoles {
+    if profile.sim.axis_roles.is_empty() {
+        Profile::builtin().sim.axis_roles.clone()
+    } else {
+        profile.sim.axis_roles.clone()
+    }
 }
 
 /// A module's state.
@@ -29,9 +42,13 @@ pub(crate) struct Machine {
     /// The module's factory address (its place on the bus).
     pub slot: u8,
     pub params: Params,
-    pub axis: Axis,
+    /// One motor per axis of the profile, each with its own switches.
+    pub axes: Vec<Axis>,
+    /// Which axis parameter is which part of the motion.
+    pub roles: AxisRoles,
     pub io: Io,
-    pub coords: Vec<i32>,
+    /// Coordinates of each motor (SCO/GCO/CCO/ACO, MVP COORD).
+    pub coords: Vec<Vec<i32>>,
     pub program: Program,
     pub vm: Vm,
     /// Seconds since the bus started, up to which events are handled.
@@ -47,13 +64,18 @@ pub(crate) struct Machine {
 }
 
 impl Machine {
-    /// A factory-fresh module at `slot`, powered up at time 0.
-    pub fn new(profile: Arc<Profile>, slot: u8, switches: Switches) -> Machine {
+    /// A factory-fresh module at `slot`, powered up at time 0; `switches` gives each motor's
+    /// switches (a motor past its end has none).
+    pub fn new(profile: Arc<Profile>, slot: u8, switches: &[Switches]) -> Machine {
+        let axes = (0..profile.axes.max(1))
+            .map(|m| Axis::new(switches.get(usize::from(m)).copied().unwrap_or_default()))
+            .collect();
         let mut machine = Machine {
             params: Params::new(profile.clone(), slot),
-            axis: Axis::new(switches),
+            axes,
+            roles: roles_of(&profile),
             io: Io::new(&profile.sim),
-            coords: vec![0; profile.coordinates.into()],
+            coords: vec![vec![0; profile.coordinates.into()]; usize::from(profile.axes.max(1))],
             program: Program::new(profile.program_memory),
             vm: Vm::new(),
             profile,
@@ -78,9 +100,13 @@ impl Machine {
             self.eeprom_changed = true;
         }
         self.params.power_up();
-        self.axis.power_up(t);
+        for axis in &mut self.axes {
+            axis.power_up(t);
+        }
         self.io.reset_outputs();
-        self.coords.fill(0);
+        for coords in &mut self.coords {
+            coords.fill(0);
+        }
         self.vm = Vm::new();
         self.program.quit_download();
         self.t = t;
@@ -96,7 +122,10 @@ impl Machine {
     /// Loads the EEPROM from a state-file image and powers up.
     pub fn load(&mut self, image: &ModuleImage) {
         for &(number, value) in &image.axis {
-            self.params.set_stored(Slot::Axis(number), value);
+            self.params.set_stored(Slot::Axis(0, number), value);
+        }
+        for &(motor, number, value) in &image.motors {
+            self.params.set_stored(Slot::Axis(motor, number), value);
         }
         for &(bank, number, value) in &image.global {
             if (bank as usize) < super::params::BANKS {
@@ -107,8 +136,15 @@ impl Machine {
         self.eeprom_changed = false;
         self.boot(self.t);
         if self.params.get(Slot::Global(0, 84)) == 1 {
-            for (slot, &value) in self.coords.iter_mut().zip(&image.coordinates) {
-                *slot = value;
+            let first = std::iter::once((0, &image.coordinates));
+            let others = image.motor_coordinates.iter().map(|(m, c)| (*m, c));
+            for (motor, stored) in first.chain(others) {
+                let Some(coords) = self.coords.get_mut(usize::from(motor)) else {
+                    continue;
+                };
+                for (slot, &value) in coords.iter_mut().zip(stored) {
+                    *slot = value;
+                }
             }
         }
     }
@@ -116,23 +152,35 @@ impl Machine {
     /// The EEPROM as a state-file image.
     pub fn image(&self) -> ModuleImage {
         let mut axis = Vec::new();
+        let mut motors = Vec::new();
         let mut global = Vec::new();
         for (slot, value) in self.params.stored_values() {
             match slot {
-                Slot::Axis(n) => axis.push((n, value)),
+                Slot::Axis(0, n) => axis.push((n, value)),
+                Slot::Axis(m, n) => motors.push((m, n, value)),
                 Slot::Global(bank, n) => global.push((bank, n, value)),
             }
         }
-        let coordinates = if self.params.get(Slot::Global(0, 84)) == 1 {
-            self.coords.clone()
+        let stored = self.params.get(Slot::Global(0, 84)) == 1;
+        let coordinates = if stored {
+            self.coords[0].clone()
+        } else {
+            Vec::new()
+        };
+        let motor_coordinates = if stored {
+            (1..self.coords.len())
+                .map(|m| (m as u8, self.coords[m].clone()))
+                .collect()
         } else {
             Vec::new()
         };
         ModuleImage {
             slot: self.slot,
             axis,
+            motors,
             global,
             coordinates,
+            motor_coordinates,
             program: self.program.image(),
         }
     }
@@ -152,20 +200,26 @@ impl Machine {
         self.params.get(Slot::Global(0, 67))
     }
 
-    fn limits(&self) -> Limits {
+    fn limits(&self, motor: u8) -> Limits {
         Limits {
-            right: self.params.get(Slot::Axis(12)) == 0,
-            left: self.params.get(Slot::Axis(13)) == 0,
+            right: self.role(motor, self.roles.right_limit_disable) == 0,
+            left: self.role(motor, self.roles.left_limit_disable) == 0,
         }
+    }
+
+    /// The motor whose next event comes first, and when.
+    fn next_axis_event(&self) -> Option<(u8, f64)> {
+        (0..self.axes.len() as u8)
+            .filter_map(|m| Some((m, self.axes[m as usize].next_event(self.limits(m))?)))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
     }
 
     /// Runs motor events and the program up to `t`, in time order.
     pub fn advance(&mut self, t: f64) {
         loop {
-            let limits = self.limits();
-            let axis_next = self.axis.next_event(limits);
+            let axis_next = self.next_axis_event();
             let vm_next = self.program_due();
-            let next = match (axis_next, vm_next) {
+            let next = match (axis_next.map(|(_, a)| a), vm_next) {
                 (Some(a), Some(v)) => a.min(v),
                 (a, v) => match a.or(v) {
                     Some(n) => n,
@@ -176,35 +230,54 @@ impl Machine {
                 break;
             }
             let at = next.max(self.t);
-            if axis_next.is_some_and(|a| a <= next) {
-                if let Some(happened) = self.axis.handle_event(at, limits) {
-                    self.on_axis(at, happened);
+            match axis_next {
+                Some((motor, a)) if a <= next => {
+                    let limits = self.limits(motor);
+                    if let Some(happened) = self.axes[motor as usize].handle_event(at, limits) {
+                        self.on_axis(motor, at, happened);
+                    }
                 }
-            } else {
-                self.t = at;
-                self.run_program(at);
+                _ => {
+                    self.t = at;
+                    self.run_program(at);
+                }
             }
             self.t = self.t.max(at);
         }
         self.t = self.t.max(t);
         // Everything up to now is handled: a switch or limit setting changed from now on must
         // not act in the past.
-        self.axis.settle(self.t);
+        for axis in &mut self.axes {
+            axis.settle(self.t);
+        }
     }
 
-    fn on_axis(&mut self, at: f64, happened: Happened) {
+    fn on_axis(&mut self, motor: u8, at: f64, happened: Happened) {
         match happened {
             Happened::Arrived => {
-                if let Some(request) = self.event {
+                let Some(request) = self.event else { return };
+                let waiting = self.event_motors(request.mask);
+                let others_moving = waiting
+                    .into_iter()
+                    .filter(|&m| m != motor)
+                    .any(|m| self.axes[m as usize].is_positioning());
+                if request.mask & (1 << motor) != 0 && !others_moving {
                     self.due_events.push((at, request.mask));
                     if !request.every_move {
                         self.event = None;
                     }
                 }
             }
-            Happened::SearchDone => self.params.set(Slot::Axis(0), 0),
+            Happened::SearchDone => self.set_role(motor, self.roles.target_position, 0),
             Happened::LimitStop | Happened::SearchLeg => {}
         }
+    }
+
+    /// The motors of a 138 mask that this module has.
+    fn event_motors(&self, mask: i32) -> Vec<u8> {
+        (0..self.axes.len() as u8)
+            .filter(|m| mask & (1 << m) != 0)
+            .collect()
     }
 
     /// Requests the second reply of 138 for the next move's arrival (or every move's).
@@ -214,96 +287,16 @@ impl Machine {
 
     /// When output (a 138 second reply) may next be due, as seconds.
     pub fn next_output(&self) -> Option<f64> {
-        self.event?;
-        let arrival = self.axis.arrival();
+        let request = self.event?;
+        let arrival = self
+            .event_motors(request.mask)
+            .into_iter()
+            .filter_map(|m| self.axes[m as usize].arrival())
+            .min_by(f64::total_cmp);
         match (arrival, self.program_due()) {
             (Some(a), Some(v)) => Some(a.min(v)),
             (a, v) => a.or(v),
         }
-    }
-
-    // ---- units -----------------------------------------------------------------------------
-
-    fn pps_mode(&self) -> bool {
-        self.params.get(Slot::Axis(255)) == 1
-    }
-
-    /// A velocity in the user's unit (AP 255) as microsteps per second.
-    pub fn pps(&self, value: i32) -> f64 {
-        let factor = if self.pps_mode() {
-            1.0
-        } else {
-            self.profile.sim.velocity_pps_per_unit
-        };
-        f64::from(value) * factor
-    }
-
-    /// An acceleration in the user's unit as microsteps per second².
-    pub fn pps2(&self, value: i32) -> f64 {
-        let factor = if self.pps_mode() {
-            1.0
-        } else {
-            self.profile.sim.acceleration_pps2_per_unit
-        };
-        f64::from(value) * factor
-    }
-
-    fn velocity_units(&self, pps: f64) -> i32 {
-        let factor = if self.pps_mode() {
-            1.0
-        } else {
-            self.profile.sim.velocity_pps_per_unit
-        };
-        let units = (pps / factor).round();
-        units.clamp(f64::from(i32::MIN), f64::from(i32::MAX)) as i32
-    }
-
-    /// Maximum positioning speed (AP 4) and acceleration (AP 5) in pps, pps².
-    pub fn move_limits(&self) -> (f64, f64) {
-        (
-            self.pps(self.params.get(Slot::Axis(4))),
-            self.pps2(self.params.get(Slot::Axis(5))),
-        )
-    }
-
-    // ---- live values -----------------------------------------------------------------------
-
-    /// The value GAP reads at `t` (parameters with live values computed, others from RAM).
-    pub fn axis_value(&self, number: u8, t: f64) -> i32 {
-        let state = self.axis.state(t);
-        let counter = self.axis.counter(t);
-        let ram = |n| self.params.get(Slot::Axis(n));
-        match number {
-            1 => counter,
-            3 | 39 => self.velocity_units(state.v),
-            8 => i32::from(self.target_reached(t)),
-            9 => i32::from(self.axis.switch_active(t, Switch::Home)),
-            10 => i32::from(self.axis.switch_active(t, Switch::Right)),
-            11 => i32::from(self.axis.switch_active(t, Switch::Left)),
-            38 => (self.encoder(t) as i64 - counter as i64).clamp(-(1 << 23), 1 << 23) as i32,
-            41 => self.encoder(t),
-            129 => {
-                i32::from(self.target_reached(t))
-                    | i32::from(state.a == 0.0) << 1
-                    | i32::from(state.v == 0.0) << 2
-            }
-            130 => i32::from(state.a == 0.0),
-            196 => self.axis.end_distance(),
-            n => ram(n),
-        }
-    }
-
-    fn target_reached(&self, t: f64) -> bool {
-        self.axis.state(t).v == 0.0 && self.axis.counter(t) == self.params.get(Slot::Axis(0))
-    }
-
-    fn encoder(&self, t: f64) -> i32 {
-        encoder_position(
-            self.axis.counter(t),
-            self.params.get(Slot::Axis(42)),
-            self.params.get(Slot::Axis(43)),
-            self.profile.sim.encoder_usteps_per_count,
-        )
     }
 
     /// The value GGP reads at `t`.

@@ -1,5 +1,6 @@
-//! The simulated TMCM-142: binary and ASCII TMCL on a bus of modules, motion that takes time,
-//! parameters and EEPROM from the profile, I/O, program memory.
+//! The simulated TMCL modules: binary and ASCII TMCL on a bus of modules, each of its own profile
+//! (a TMCM-142, a six-axis TMCM-6110, a binary-only TMCM-1260), motion that takes time on every
+//! motor, parameters and EEPROM from the profile, I/O, program memory.
 //!
 //! Everything here is a pure state machine: bytes and time in, bytes out. [`Bus`] is the
 //! [`crate::sim::Device`] the adapters serve; the modules on it ([`module`]) decode frames and
@@ -11,8 +12,10 @@ mod bus;
 mod control;
 mod control_cmd;
 mod exec;
+#[cfg(feature = "cli")]
 pub mod flags;
 mod io;
+mod live;
 mod machine;
 mod module;
 mod motion;

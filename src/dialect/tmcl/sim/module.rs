@@ -35,6 +35,9 @@ impl Sink<'_> {
 /// A module on the bus.
 pub(crate) struct Module {
     pub machine: Machine,
+    /// The boot loader runs instead of the firmware: 136 answers with `B` for `V`, every other
+    /// command with invalid command, and nothing starts ASCII mode.
+    pub boot_loader: bool,
     ascii: bool,
     decoder: FrameDecoder,
     last_byte: f64,
@@ -45,6 +48,7 @@ impl Module {
     pub fn new(machine: Machine) -> Module {
         let mut module = Module {
             machine,
+            boot_loader: false,
             ascii: false,
             decoder: FrameDecoder::new(),
             last_byte: 0.0,
@@ -118,6 +122,13 @@ impl Module {
                 format_instruction(&instruction, &self.machine.profile)
             )
         });
+        if self.boot_loader {
+            return self.boot_loader_frame(&instruction, sink);
+        }
+        if instruction.command == Opcode::EnterAscii && !sink.quirks.ascii {
+            let value = instruction.value;
+            return self.send_frame(Status::InvalidCommand, instruction.command, value, sink);
+        }
         let outcome = self.machine.execute(t, &instruction, Source::Direct);
         match outcome.reply {
             Reply::Normal(status, value) => {
@@ -137,6 +148,24 @@ impl Module {
             Reply::Silent => {}
         }
         self.apply(outcome.effect);
+    }
+
+    /// What the boot loader answers: its version string (`6110B131`), the binary version, and
+    /// invalid command to everything else.
+    fn boot_loader_frame(&mut self, i: &Instruction, sink: &mut Sink) {
+        match (i.command, i.type_) {
+            (Opcode::FirmwareVersion, 0) => {
+                let text = boot_loader_version(&self.machine.profile.sim.version_string);
+                let reply = encode_version_string(self.machine.host(), &text);
+                sink.log(|| format!("module {} -> {}", self.machine.slot, hex(&reply)));
+                sink.out.extend_from_slice(&reply);
+            }
+            (Opcode::FirmwareVersion, 1) => {
+                let value = self.machine.profile.sim.version_binary as i32;
+                self.send_frame(Status::Ok, i.command, value, sink);
+            }
+            _ => self.send_frame(Status::InvalidCommand, i.command, i.value, sink),
+        }
     }
 
     fn apply(&mut self, effect: Effect) {
@@ -267,14 +296,26 @@ impl Module {
     }
 }
 
-/// The status a module answers to an ASCII line it cannot use.
+/// The boot loader's version string: the firmware's with `B` in place of its `V` (`142B1.06`,
+/// `6110B131`), as PyTrinamic's firmware updater recognises it.
+fn boot_loader_version(firmware: &str) -> String {
+    match firmware.find('V') {
+        Some(at) => format!("{}B{}", &firmware[..at], &firmware[at + 1..]),
+        None => firmware.to_string(),
+    }
+}
+
+/// The status a module answers to an ASCII line it cannot use: the one the same command would
+/// get as a binary frame.
 fn ascii_status(error: &InputError) -> Status {
     match error {
         InputError::Syntax(_)
         | InputError::UnknownCommand { .. }
         | InputError::UnknownCommandNumber { .. }
-        | InputError::NotInMode { .. } => Status::InvalidCommand,
-        InputError::Param(_) => Status::WrongType,
+        | InputError::NotInMode { .. }
+        | InputError::AbsentCommand { .. } => Status::InvalidCommand,
+        // As in binary: an unknown parameter or port is the type byte's fault.
+        InputError::Param(_) | InputError::BadPort { .. } => Status::WrongType,
         _ => Status::InvalidValue,
     }
 }

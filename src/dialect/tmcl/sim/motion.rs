@@ -276,6 +276,16 @@ impl Axis {
         }
     }
 
+    /// Scales the speed a rotation turns at by `factor` (the unit of the speed it was given in
+    /// changed); a move, a search and a motor stopping are left alone.
+    pub fn rescale_rotation(&mut self, t: f64, factor: f64) {
+        if let Mode::Velocity { target, accel } = self.mode {
+            if target != 0.0 && factor != 1.0 {
+                self.rotate(t, target * factor, accel);
+            }
+        }
+    }
+
     /// Starts a reference search (RFS START) in `mode` (AP193) with the search and switch
     /// speeds.
     pub fn start_search(&mut self, t: f64, mode: u8, fast: f64, slow: f64, accel: f64) {

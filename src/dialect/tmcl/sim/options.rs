@@ -18,6 +18,9 @@ pub struct Quirks {
     pub echo_end: LineEnd,
     /// How a backspace is echoed in character echo mode. Default: erase (BS, space, BS).
     pub backspace: Backspace,
+    /// 139 enters ASCII mode where the profile has the command. Off: every module answers 139
+    /// with invalid command, as one without the interface does (the TMCM-3110's is unconfirmed).
+    pub ascii: bool,
 }
 
 impl Default for Quirks {
@@ -28,6 +31,7 @@ impl Default for Quirks {
             reply_end: LineEnd::Cr,
             echo_end: LineEnd::Cr,
             backspace: Backspace::Erase,
+            ascii: true,
         }
     }
 }

@@ -7,14 +7,15 @@ use std::sync::Arc;
 use crate::dialect::tmcl::profile::{Param, Profile};
 use crate::dialect::tmcl::protocol::Status;
 
-/// Global parameter banks the module has (0 module settings, 1 reserved, 2 user variables).
-pub(crate) const BANKS: usize = 3;
+/// Global parameter banks the module has (0 module settings, 1 reserved, 2 user variables,
+/// 3 interrupt configuration).
+pub(crate) const BANKS: usize = 4;
 
-/// Which parameter: an axis parameter number, or a bank and number.
+/// Which parameter: a motor and axis parameter number, or a bank and number.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Slot {
-    /// SAP/GAP parameter.
-    Axis(u8),
+    /// SAP/GAP parameter of a motor.
+    Axis(u8, u8),
     /// SGP/GGP parameter in a bank.
     Global(u8, u8),
 }
@@ -25,30 +26,36 @@ pub(crate) fn eeprom_only(slot: Slot) -> bool {
     matches!(slot, Slot::Global(0, 64..=127))
 }
 
+/// Values of every motor's axis parameters and of every bank. A motor the module does not have
+/// reads 0 and keeps nothing (the commands refuse it before they get here).
 #[derive(Clone)]
 struct Values {
-    axis: [i32; 256],
+    axis: Vec<[i32; 256]>,
     global: [[i32; 256]; BANKS],
 }
 
 impl Values {
-    fn zero() -> Box<Values> {
+    fn zero(axes: u8) -> Box<Values> {
         Box::new(Values {
-            axis: [0; 256],
+            axis: vec![[0; 256]; usize::from(axes.max(1))],
             global: [[0; 256]; BANKS],
         })
     }
 
     fn get(&self, slot: Slot) -> i32 {
         match slot {
-            Slot::Axis(n) => self.axis[n as usize],
+            Slot::Axis(m, n) => self.axis.get(m as usize).map_or(0, |a| a[n as usize]),
             Slot::Global(bank, n) => self.global[bank as usize][n as usize],
         }
     }
 
     fn set(&mut self, slot: Slot, value: i32) {
         match slot {
-            Slot::Axis(n) => self.axis[n as usize] = value,
+            Slot::Axis(m, n) => {
+                if let Some(axis) = self.axis.get_mut(m as usize) {
+                    axis[n as usize] = value;
+                }
+            }
             Slot::Global(bank, n) => self.global[bank as usize][n as usize] = value,
         }
     }
@@ -99,12 +106,14 @@ impl Params {
                 bank[p.number as usize] = Some(i as u16);
             }
         }
+        let ram = Values::zero(profile.axes);
+        let rom = Values::zero(profile.axes);
         let mut params = Params {
             profile,
             axis_index,
             global_index,
-            ram: Values::zero(),
-            rom: Values::zero(),
+            ram,
+            rom,
             factory_address: address,
         };
         params.factory();
@@ -115,11 +124,11 @@ impl Params {
     /// The profile row of a parameter, if the module has it.
     pub fn spec(&self, slot: Slot) -> Option<&Param> {
         let index = match slot {
-            Slot::Axis(n) => self.axis_index[n as usize],
+            Slot::Axis(_, n) => self.axis_index[n as usize],
             Slot::Global(bank, n) => self.global_index.get(bank as usize)?[n as usize],
         }?;
         Some(match slot {
-            Slot::Axis(_) => &self.profile.axis[index as usize],
+            Slot::Axis(..) => &self.profile.axis[index as usize],
             Slot::Global(..) => &self.profile.global[index as usize],
         })
     }
@@ -218,12 +227,16 @@ impl Params {
             .unwrap_or(0)
     }
 
-    /// Every parameter the profile defines (in the banks the module has).
+    /// Every parameter the profile defines, of every motor (in the banks the module has).
     pub fn slots(&self) -> Vec<Slot> {
-        self.profile
-            .axis
-            .iter()
-            .map(|p| Slot::Axis(p.number))
+        let motors = 0..self.profile.axes.max(1);
+        motors
+            .flat_map(|m| {
+                self.profile
+                    .axis
+                    .iter()
+                    .map(move |p| Slot::Axis(m, p.number))
+            })
             .chain(
                 self.profile
                     .global

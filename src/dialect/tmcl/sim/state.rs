@@ -20,15 +20,22 @@ pub struct BusImage {
 pub struct ModuleImage {
     /// The module's factory address (its entry in `--modules`); GP 66 may since have changed.
     pub slot: u8,
-    /// EEPROM-backed axis parameters as `[number, value]`.
+    /// EEPROM-backed axis parameters of motor 0 as `[number, value]`.
     #[serde(default)]
     pub axis: Vec<(u8, i32)>,
+    /// EEPROM-backed axis parameters of the other motors as `[motor, number, value]`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub motors: Vec<(u8, u8, i32)>,
     /// EEPROM-backed global parameters as `[bank, number, value]`.
     #[serde(default)]
     pub global: Vec<(u8, u8, i32)>,
-    /// Coordinates stored while GP 84 (coordinate storage) was 1, from coordinate 0 on.
+    /// Coordinates of motor 0 stored while GP 84 (coordinate storage) was 1, from coordinate 0
+    /// on.
     #[serde(default)]
     pub coordinates: Vec<i32>,
+    /// The same for the other motors, as `[motor, [coordinates]]`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub motor_coordinates: Vec<(u8, Vec<i32>)>,
     /// Program memory from address 0 to the last used one, as `[command, type, motor, value]`.
     #[serde(default)]
     pub program: Vec<(u8, u8, u8, i32)>,

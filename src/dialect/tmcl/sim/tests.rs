@@ -2,6 +2,7 @@
 //! stepped explicitly.
 
 mod ascii_mode;
+mod axes;
 mod binary;
 mod eeprom;
 mod moves;
@@ -25,6 +26,15 @@ pub(super) struct Sim {
 impl Sim {
     pub fn new() -> Sim {
         Sim::with(BusOptions::default())
+    }
+
+    /// One module of the built-in profile `name` at address 1.
+    pub fn of(name: &str) -> Sim {
+        let profile = crate::dialect::tmcl::profile::catalogue::by_name(name).expect("built in");
+        Sim {
+            bus: Bus::new(profile, BusOptions::default()),
+            now: Duration::ZERO,
+        }
     }
 
     pub fn with(options: BusOptions) -> Sim {

@@ -63,6 +63,8 @@ enum Until {
 #[derive(Debug, Clone, Copy)]
 struct Wait {
     until: Until,
+    /// The motor waited for.
+    motor: u8,
     /// End of the wait (TICKS) or its time-out.
     deadline: Option<f64>,
 }
@@ -222,7 +224,8 @@ impl Machine {
         let Some(wait) = self.vm.wait else {
             return Some(self.vm.next_at);
         };
-        let look = match (wait.until, self.axis.arrival()) {
+        let arrival = self.axes[usize::from(wait.motor)].arrival();
+        let look = match (wait.until, arrival) {
             (Until::Position, Some(arrival)) => arrival,
             _ => self.vm.next_at,
         };
@@ -247,19 +250,15 @@ impl Machine {
     }
 
     fn look_at_wait(&mut self, t: f64, wait: Wait) {
+        let axis = &self.axes[usize::from(wait.motor)];
         let satisfied = match wait.until {
             Until::Ticks => false,
-            Until::Position => {
-                !self.axis.is_positioning()
-                    && self.axis.state(t).v == 0.0
-                    && self.axis.counter(t) == self.params.get(super::params::Slot::Axis(0))
-            }
-            Until::ReferenceSwitch => self.axis.switch_active(t, Switch::Home),
+            Until::Position => !axis.is_positioning() && self.target_reached(wait.motor, t),
+            Until::ReferenceSwitch => axis.switch_active(t, Switch::Home),
             Until::LimitSwitch => {
-                self.axis.switch_active(t, Switch::Left)
-                    || self.axis.switch_active(t, Switch::Right)
+                axis.switch_active(t, Switch::Left) || axis.switch_active(t, Switch::Right)
             }
-            Until::ReferenceSearch => self.axis.search_status() == 0,
+            Until::ReferenceSearch => axis.search_status() == 0,
         };
         let expired = wait.deadline.is_some_and(|d| t >= d - 1e-9);
         if satisfied || expired {
@@ -366,12 +365,16 @@ impl Machine {
             4 => Until::ReferenceSearch,
             _ => return Err(ProgramError::InvalidInstruction),
         };
-        if i.motor >= self.profile.axes {
+        if usize::from(i.motor) >= self.axes.len() {
             return Err(ProgramError::InvalidInstruction);
         }
         let ticks = f64::from(i.value.max(0)) * self.tick();
         let deadline = (until == Until::Ticks || i.value > 0).then_some(t + ticks);
-        let wait = Wait { until, deadline };
+        let wait = Wait {
+            until,
+            motor: i.motor,
+            deadline,
+        };
         self.vm.wait = Some(wait);
         // Look at once: a condition that already holds ends the wait now.
         self.look_at_wait(t, wait);

@@ -44,6 +44,15 @@ fn names_aliases_and_module_numbers_are_unique() {
         let number = p.identity.module_number.expect("a module number");
         assert!(numbers.insert(number), "{number}");
     }
+    // Identification finds a module's file by the number it declares, without parsing it.
+    for (builtin, profile) in BUILTINS.iter().zip(all()) {
+        assert_eq!(
+            builtin.declared_number(),
+            profile.identity.module_number,
+            "{}",
+            builtin.file
+        );
+    }
     assert!(!names.contains(GENERIC));
 }
 

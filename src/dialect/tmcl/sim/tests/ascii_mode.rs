@@ -112,6 +112,7 @@ fn quirks_switch_replies_and_endings() {
         reply_end: LineEnd::CrLf,
         echo_end: LineEnd::Lf,
         backspace: Backspace::Plain,
+        ..Quirks::default()
     };
     let mut sim = Sim::with(BusOptions {
         quirks,

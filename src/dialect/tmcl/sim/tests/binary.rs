@@ -289,7 +289,7 @@ fn inputs_read_what_was_set_and_outputs_read_back() {
     assert_eq!(sim.ok(15, 1, 1, 0), 512);
     sim.ok(14, 2, 2, 1);
     assert_eq!(sim.ok(15, 2, 2, 0), 1);
-    assert_eq!(sim.bus.output(1, 2), Some(true));
+    assert_eq!(sim.bus.output(sim.now, 1, 2), Some(true));
     assert_eq!(sim.status(14, 9, 2, 1), Status::WrongType, "no output 9");
     assert_eq!(
         sim.status(14, 0, 0, 1),

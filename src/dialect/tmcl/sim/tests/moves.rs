@@ -121,7 +121,7 @@ fn a_switch_moved_at_run_time_acts_from_then_on() {
     sim.at(5.0);
     let now = sim.now;
     sim.bus
-        .set_switch(now, 1, Switch::Left, Some(-4000))
+        .set_switch(now, 1, 0, Switch::Left, Some(-4000))
         .unwrap();
     // The motor is at about -4990 already, inside the moved switch: it stops at once.
     sim.wait(1.0);
@@ -152,7 +152,9 @@ fn reference_search_modes_zero_the_position_at_their_switch() {
 #[test]
 fn rfs_stop_brakes_the_search() {
     let mut sim = module(100_000, 10_000);
-    sim.bus.set_switch(sim.now, 1, Switch::Left, None).unwrap();
+    sim.bus
+        .set_switch(sim.now, 1, 0, Switch::Left, None)
+        .unwrap();
     sim.sap(194, 5000);
     sim.ok(13, 0, 0, 0);
     sim.at(2.0);
