@@ -16,6 +16,7 @@
 pub mod cli;
 pub mod clock;
 pub mod commission;
+pub mod count;
 pub mod crash;
 pub mod dialect;
 pub mod duration;
@@ -30,3 +31,4 @@ pub mod session;
 pub mod shell;
 pub mod sim;
 pub mod suggest;
+pub mod wrap;

@@ -46,6 +46,44 @@ pub fn nearest_of<'a>(
         .map(str::to_string)
 }
 
+/// The candidate closest to `word` among hierarchical names (`MOTOR:VMAX`, segments split at
+/// `separator`): only names with as many segments count, and every segment must be a plausible
+/// typo of the typed one, so a shared group is no evidence (`MOTOR:FOO` is not `MOTOR:F`: `FOO`
+/// is two edits from `F`). The fewest edits per letter of the whole name win.
+pub fn nearest_segmented<'a>(
+    word: &str,
+    separator: char,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<String> {
+    let typed: Vec<String> = word
+        .split(separator)
+        .map(|s| s.to_ascii_lowercase())
+        .collect();
+    let mut best: Option<(f64, &str)> = None;
+    for candidate in candidates {
+        let lower = candidate.to_ascii_lowercase();
+        let segments: Vec<&str> = lower.split(separator).collect();
+        if segments.len() != typed.len() {
+            continue;
+        }
+        let mut edits = 0;
+        let plausible = typed.iter().zip(&segments).all(|(t, c)| {
+            let e = strsim::damerau_levenshtein(t, c);
+            edits += e;
+            e <= allowed_edits(t)
+        });
+        if !plausible {
+            continue;
+        }
+        let longer = word.chars().count().max(lower.chars().count());
+        let share = edits as f64 / longer as f64;
+        if best.is_none_or(|(s, _)| share < s) {
+            best = Some((share, candidate));
+        }
+    }
+    best.map(|(_, c)| c.to_string())
+}
+
 /// Jaro–Winkler similarity from which a name counts as a likely misspelling.
 const LIKENESS: f64 = 0.8;
 
@@ -123,6 +161,34 @@ mod tests {
             nearest_of(&["GPA", "PA"], ["GAP", "JA", "SAP"]).as_deref(),
             Some("GAP")
         );
+    }
+
+    #[test]
+    fn hierarchical_names_are_compared_segment_by_segment() {
+        let names = [
+            "MOTOR:F",
+            "MOTOR:VMAX",
+            "MOTOR:AMAX",
+            "SYS:FW",
+            "COMS:NET:IP",
+        ];
+        assert_eq!(nearest_segmented("MOTOR:FOO", ':', names), None);
+        assert_eq!(
+            nearest_segmented("MOTOR:VMXA", ':', names).as_deref(),
+            Some("MOTOR:VMAX")
+        );
+        assert_eq!(
+            nearest_segmented("motr:vmax", ':', names).as_deref(),
+            Some("MOTOR:VMAX")
+        );
+        assert_eq!(
+            nearest_segmented("COMS:NET:PI", ':', names).as_deref(),
+            Some("COMS:NET:IP")
+        );
+        assert_eq!(nearest_segmented("MOTOR", ':', names), None);
+        assert_eq!(nearest_segmented("SYS:FOO:BAR", ':', names), None);
+        // The plain rule would take the shared group for a likeness.
+        assert_eq!(nearest("MOTOR:FOO", names).as_deref(), Some("MOTOR:F"));
     }
 
     #[test]

@@ -165,11 +165,13 @@ fn a_transposition_is_suggested_wherever_names_are() {
 
 mod config;
 mod examples;
+mod forgiving;
 mod history;
 mod log;
 mod output;
 mod ports;
 mod snapshot_save;
+mod values;
 mod words;
 
 #[test]

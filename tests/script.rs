@@ -315,7 +315,9 @@ fn example_homing_in_each_mode() {
     let out = run(&["run", &example("homing.rhai"), "--", "1", "300"]);
     assert_eq!(code(&out), 1, "no switch connected: the search times out");
     assert!(
-        stderr(&out).contains("timed out after 300 ms waiting for the condition"),
+        stderr(&out).contains(
+            "timed out after 300 ms waiting for `rfs_status(0) == 0` (last value: false)"
+        ),
         "{}",
         stderr(&out)
     );

@@ -84,10 +84,10 @@ fn report(
         write!(out, "{}", program.listing(source))?;
     }
     let summary = format!(
-        "{} instructions of {} ({} bytes)",
-        program.instructions.len(),
+        "{} of {} ({})",
+        crate::count::counted(program.instructions.len(), "instruction"),
         profile.program_memory,
-        program.byte_len()
+        crate::count::counted(program.byte_len(), "byte")
     );
     match &args.output {
         Some(path) => writeln!(out, "{}: {summary}", path.display()),

@@ -72,15 +72,15 @@ pub fn save_with(
         .unwrap_or_default();
     writeln!(
         out,
-        "saved {} parameters of the {}{address}{firmware} to {label}",
-        snapshot.entries.len(),
+        "saved {} of the {}{address}{firmware} to {label}",
+        crate::count::counted(snapshot.entries.len(), "parameter"),
         snapshot.module,
     )?;
     let unreadable: Vec<&str> = snapshot.unreadable().map(|e| e.name.as_str()).collect();
     if !unreadable.is_empty() {
         return Err(failed(format!(
-            "the module would not read {} parameters (saved with their error): {}",
-            unreadable.len(),
+            "the module would not read {} (saved with their error): {}",
+            crate::count::counted(unreadable.len(), "parameter"),
             unreadable.join(", ")
         )));
     }
@@ -213,8 +213,8 @@ pub fn restore_snapshot(
     restore::write_outcome(&outcome, memory, out)?;
     if !outcome.failed.is_empty() {
         return Err(failed(format!(
-            "{} parameters were not restored: {}",
-            outcome.failed.len(),
+            "{} not restored: {}",
+            crate::count::counted(outcome.failed.len(), "parameter"),
             outcome
                 .failed
                 .iter()

@@ -160,6 +160,13 @@ pub trait ParamDevice {
     /// Runs one step of [`ParamDevice::store_steps`].
     fn store(&mut self, step: &StoreStep) -> Result<(), SessionError>;
 
+    /// What `value` of `param` means, where the module's tables say (`9600 baud`); shown by
+    /// `:params --values`.
+    fn explain(&self, param: &ParamRef, value: &ParamValue) -> Option<String> {
+        let _ = (param, value);
+        None
+    }
+
     /// Whether the module can take a restore now; the error says why not (an SMD4 drive must
     /// stand still).
     fn ready_to_restore(&mut self) -> Result<(), SessionError> {

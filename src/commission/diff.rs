@@ -203,8 +203,18 @@ fn difference(param: &ParamRef, left: Side, right: Side) -> Difference {
 /// "no differences in 57 settings" or "2 of 57 settings differ".
 pub fn summary(comparison: &Comparison) -> String {
     match comparison.differences.len() {
-        0 => format!("no differences in {} settings", comparison.compared),
-        n => format!("{n} of {} settings differ", comparison.compared),
+        0 => format!(
+            "no differences in {}",
+            crate::count::counted(comparison.compared, "setting")
+        ),
+        1 => format!(
+            "1 of {} differs",
+            crate::count::counted(comparison.compared, "setting")
+        ),
+        n => format!(
+            "{n} of {} differ",
+            crate::count::counted(comparison.compared, "setting")
+        ),
     }
 }
 

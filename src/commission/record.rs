@@ -156,8 +156,8 @@ impl Recording {
             let cells: Vec<&str> = line.split(',').map(str::trim).collect();
             if cells.len() != columns.len() + 1 {
                 return Err(format!(
-                    "line {row} has {} values, the header {}",
-                    cells.len(),
+                    "line {row} has {}, the header {}",
+                    crate::count::counted(cells.len(), "value"),
                     columns.len() + 1
                 ));
             }

@@ -594,8 +594,8 @@ pub fn write_outcome(outcome: &Outcome, memory: &str, out: &mut dyn Write) -> io
     } else {
         writeln!(
             out,
-            "restored {} parameters, each read back and verified{}; {} already had the snapshot's value",
-            verified.len(),
+            "restored {}, each read back and verified{}; {} already had the snapshot's value",
+            crate::count::counted(verified.len(), "parameter"),
             list(verified),
             outcome.unchanged
         )?;
@@ -621,7 +621,11 @@ pub fn write_outcome(outcome: &Outcome, memory: &str, out: &mut dyn Write) -> io
         }
     }
     if outcome.stored > 0 {
-        writeln!(out, "stored {} parameters to {memory}", outcome.stored)?;
+        writeln!(
+            out,
+            "stored {} to {memory}",
+            crate::count::counted(outcome.stored, "parameter")
+        )?;
     }
     Ok(())
 }

@@ -31,6 +31,30 @@ pub enum Completion {
     },
 }
 
+/// What a typed line is so far, for the highlighting and the hint.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Check {
+    /// The session would send it.
+    Valid,
+    /// Not yet a line the session would send, but typing on can make it one (a word that
+    /// completes, an argument still missing).
+    Incomplete,
+    /// Nothing typed after it makes it valid; the reason.
+    Invalid(String),
+}
+
+/// Whether completing the last word of `line` offers a longer word: the line is on its way.
+pub fn completes_further(grammar: &dyn Grammar, line: &str) -> bool {
+    let Completion::Words { start, candidates } = grammar.complete(line, line.len()) else {
+        return false;
+    };
+    let typed = line.get(start..).unwrap_or_default().to_ascii_lowercase();
+    candidates.iter().any(|c| {
+        let candidate = c.replacement.trim_end().to_ascii_lowercase();
+        candidate.len() > typed.len() && candidate.starts_with(&typed)
+    })
+}
+
 /// A dialect's typed lines, for the line editor. Helper lines (`:…`) are the REPL's business;
 /// these methods see only the dialect's own lines, except [`Grammar::hint`], which sees every
 /// line and answers `None` where it has nothing to say.
@@ -44,8 +68,9 @@ pub trait Grammar {
     /// The hint shown after `line` with the cursor at its end (`  ← …`).
     fn hint(&self, line: &str) -> Option<String>;
 
-    /// Whether the session would refuse `line` before sending it.
-    fn is_invalid(&self, line: &str) -> bool;
+    /// Whether the session would send `line`, or it is on its way to a line it would send, or
+    /// nothing typed after it can make it one (and why).
+    fn check(&self, line: &str) -> Check;
 
     /// The names `:params`, `:watch` and `:record` complete (parameter identifiers, mnemonics).
     fn names(&self) -> Vec<String>;

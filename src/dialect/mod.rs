@@ -8,6 +8,7 @@
 //! folder, never outside it.
 
 mod config;
+pub mod elsewhere;
 pub mod grammar;
 pub mod guard;
 pub mod helper;
@@ -27,6 +28,11 @@ pub use grammar::Grammar;
 pub use helper::{ArgKind, Helper, Section};
 pub use session::{DialectSession, Reply};
 
+/// The mark of a value the module's documentation does not confirm (a parameter row taken from a
+/// sibling module, a command the document leaves open), the same in every dialect's tables and
+/// help; `:help params` explains it.
+pub const UNCERTAIN: &str = "*";
+
 /// Every dialect, the default first: `--protocol` offers them in this order.
 pub static DIALECTS: &[&Dialect] = &[&tmcl::DIALECT, &smd4::DIALECT];
 
@@ -39,6 +45,15 @@ pub struct Dialect {
     pub summary: &'static str,
     /// What its modules are called in messages (`TMCL modules`, `SMD4 drives`).
     pub devices: &'static str,
+    /// Its name for messages with the indefinite article (`a TMCL`, `an SMD4`).
+    pub indefinite: &'static str,
+    /// Whether a typed line reads as one of its commands by its own grammar and built-in
+    /// tables, right arguments or not: how a line typed in the wrong session is told
+    /// ([`elsewhere`]).
+    pub recognises: fn(&str) -> bool,
+    /// The device functions its scripts have, besides those every script has: how a script
+    /// run in the wrong session is told.
+    pub script_functions: &'static [&'static str],
     /// Its helper commands besides those every dialect has (`:bin`, `:flags` …).
     pub helpers: &'static [Helper],
     /// Reads the dialect's tables (TMCL: the `--profile` file) into a [`DialectConfig`].

@@ -12,6 +12,7 @@ use rustyline::validate::Validator;
 use rustyline::{Context, Helper};
 
 use crate::dialect::Grammar;
+use crate::dialect::grammar::Check;
 use crate::shell::helpers;
 
 use super::complete::{Completion, complete};
@@ -35,17 +36,29 @@ impl ReplHelper {
         }
     }
 
-    /// Whether a typed line would be refused (helper lines: whether the helper exists).
-    pub fn is_invalid(&self, text: &str) -> bool {
+    /// What a typed line is so far (helper lines: whether the helper exists).
+    pub fn check(&self, text: &str) -> Check {
         let text = text.trim();
-        if text.is_empty() || crate::shell::words::everyday(text).is_some() {
-            return false;
+        if crate::shell::words::only_remark(text) || crate::shell::words::everyday(text).is_some() {
+            return Check::Valid;
         }
         if let Some(rest) = text.strip_prefix(':') {
             let name = rest.split_whitespace().next().unwrap_or("");
-            return helpers::find(name, self.grammar.dialect()).is_err();
+            let dialect = self.grammar.dialect();
+            let on_its_way = !rest.contains(char::is_whitespace)
+                && helpers::available(dialect).any(|h| h.name.starts_with(name));
+            return match helpers::find(name, dialect) {
+                Ok(_) => Check::Valid,
+                Err(_) if on_its_way => Check::Incomplete,
+                Err(e) => Check::Invalid(e),
+            };
         }
-        self.grammar.is_invalid(text)
+        self.grammar.check(text)
+    }
+
+    /// Whether a typed line would be refused.
+    pub fn is_invalid(&self, text: &str) -> bool {
+        matches!(self.check(text), Check::Invalid(_))
     }
 }
 
@@ -81,7 +94,11 @@ impl Hinter for ReplHelper {
         if pos != text.len() {
             return None;
         }
-        self.grammar.hint(text)
+        // An invalid line's hint is why; a line on its way gets the command's or parameter's.
+        match self.check(text) {
+            Check::Invalid(reason) => Some(format!("  ← {reason}")),
+            _ => self.grammar.hint(text),
+        }
     }
 }
 

@@ -18,7 +18,7 @@ use rustyline::{CompletionType, Config, Editor};
 use crate::escape::escape_control;
 use crate::exit::Exit;
 use crate::session::{SessionError, interrupt};
-use crate::shell::words::{Everyday, everyday};
+use crate::shell::words::{Everyday, everyday, only_remark};
 use crate::shell::{Flow, Shell};
 
 use editor::ReplHelper;
@@ -33,6 +33,8 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
     let color = color_enabled();
     let config = Config::builder()
         .completion_type(CompletionType::List)
+        // One Tab lists what an ambiguous word may become (`MOTOR:` and its commands).
+        .completion_show_all_if_ambiguous(true)
         .auto_add_history(true)
         .history_ignore_space(true)
         .max_history_size(5000)
@@ -97,7 +99,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
 
 /// Runs one typed line and shows its outcome.
 fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Flow {
-    if text.is_empty() {
+    if only_remark(text) {
         return Flow::Continue;
     }
     crate::crash::point("repl", text);

@@ -56,7 +56,13 @@ pub struct Script {
     limits: Limits,
     sandbox: Rc<Sandbox>,
     print: PrintSink,
+    elsewhere: Elsewhere,
 }
+
+/// What a call of a function the engine lacks means, if the caller knows (a function of another
+/// dialect's scripts: "this looks like a TMCL script — add `--protocol tmcl`"): such a script is
+/// refused (exit 2).
+pub type Elsewhere = Rc<dyn Fn(&str) -> Option<String>>;
 
 /// The functions a dialect adds to the engine: over the session, with the sandbox for files.
 pub type Registrar<S> = fn(&mut Engine, &Rc<RefCell<S>>, &Rc<Sandbox>);
@@ -75,6 +81,7 @@ impl Script {
                 limits,
                 sandbox: Rc::new(sandbox),
                 print: Rc::new(print_to_stdout),
+                elsewhere: Rc::new(|_| None),
             }),
             Err(e) => Err(Failure::refused(format!("cannot read script {name}: {e}"))),
         }
@@ -93,12 +100,19 @@ impl Script {
             limits,
             sandbox: Rc::new(sandbox),
             print: Rc::new(print_to_stdout),
+            elsewhere: Rc::new(|_| None),
         }
     }
 
     /// The script with its `print` lines sent to `sink` instead of stdout.
     pub fn print_to(mut self, sink: PrintSink) -> Script {
         self.print = sink;
+        self
+    }
+
+    /// The script with calls of unknown functions explained by `elsewhere`.
+    pub fn explain_unknown(mut self, elsewhere: Elsewhere) -> Script {
+        self.elsewhere = elsewhere;
         self
     }
 
@@ -118,13 +132,17 @@ impl Script {
             let budget = self.limits.max_memory.and_then(Budget::from_now);
             let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &self.print);
             let log_session = shared.clone();
-            common::register(&mut engine, move |message| {
-                if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
-                    eprintln!("log: {}", escape_control(message));
-                }
-            });
+            common::register(
+                &mut engine,
+                Rc::from(self.source.as_str()),
+                move |message| {
+                    if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
+                        eprintln!("log: {}", escape_control(message));
+                    }
+                },
+            );
             register(&mut engine, &shared, &self.sandbox);
-            execute(&engine, &self.name, &self.source, &self.args)
+            execute(&engine, self)
         };
         let result = if watchdog.stop(result.is_ok()) && result.is_err() {
             Err(Failure {
@@ -225,22 +243,105 @@ fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Failu
     })
 }
 
-fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result<(), Failure> {
-    let ast = compile(engine, name, source)?;
+fn execute(engine: &Engine, script: &Script) -> Result<(), Failure> {
+    let name = script.name.as_str();
+    let ast = compile(engine, name, &script.source)?;
     let mut scope = Scope::new();
-    let args: rhai::Array = args.iter().map(|a| Dynamic::from(a.clone())).collect();
+    let args: rhai::Array = script
+        .args
+        .iter()
+        .map(|a| Dynamic::from(a.clone()))
+        .collect();
     scope.push_constant("args", args);
-    engine
-        .run_ast_with_scope(&mut scope, &ast)
-        .map_err(|e| report(name, *e))
+    engine.run_ast_with_scope(&mut scope, &ast).map_err(|e| {
+        let context = Context {
+            name,
+            engine,
+            ast: &ast,
+            elsewhere: &script.elsewhere,
+        };
+        report(&context, *e)
+    })
+}
+
+/// What a failure is reported with: the script's name, and what explains a call of an unknown
+/// function (the functions the engine and the script define, and the caller's [`Elsewhere`]).
+struct Context<'a> {
+    name: &'a str,
+    engine: &'a Engine,
+    ast: &'a rhai::AST,
+    elsewhere: &'a Elsewhere,
+}
+
+impl Context<'_> {
+    /// Every function name a script can call here: the engine's, its packages' and the
+    /// script's own.
+    fn function_names(&self) -> Vec<String> {
+        let mut names = function_names(self.engine);
+        names.extend(self.ast.iter_functions().map(|f| f.name.to_string()));
+        names
+    }
+
+    /// The failure for a call of `signature` (`gapp (i64, i64)`), which the engine has no
+    /// function for: another dialect's function is refused with what to do (exit 2), a
+    /// misspelt one gets the nearest name.
+    fn function_not_found(&self, signature: &str, position: Position) -> Failure {
+        let function = signature
+            .split(|c: char| c == '(' || c.is_whitespace())
+            .next()
+            .unwrap_or_default();
+        if let Some(advice) = (self.elsewhere)(function) {
+            return Failure::refused(at(
+                self.name,
+                position,
+                &format!("{function}() is not a function here: {advice}"),
+            ));
+        }
+        let names = self.function_names();
+        let suggestion = if names.iter().any(|n| n == function) {
+            format!("; {function} takes other arguments")
+        } else {
+            crate::suggest::did_you_mean(&crate::suggest::nearest(
+                function,
+                names.iter().map(String::as_str),
+            ))
+        };
+        Failure {
+            exit: Exit::DeviceError,
+            message: at(
+                self.name,
+                position,
+                &format!("function not found: {signature}{suggestion}"),
+            ),
+        }
+    }
+}
+
+/// The names of the functions registered in `engine`, its standard packages included.
+fn function_names(engine: &Engine) -> Vec<String> {
+    let mut names: Vec<String> = engine
+        .gen_fn_signatures(true)
+        .iter()
+        .filter_map(|signature| signature.split('(').next())
+        .map(str::trim)
+        .filter(|name| name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_'))
+        .map(str::to_string)
+        .collect();
+    names.sort();
+    names.dedup();
+    names
 }
 
 /// Maps a Rhai error to the exit code and message the user sees.
-fn report(name: &str, error: EvalAltResult) -> Failure {
+fn report(context: &Context<'_>, error: EvalAltResult) -> Failure {
+    let name = context.name;
     let position = error.position();
     match error {
+        EvalAltResult::ErrorFunctionNotFound(signature, _) => {
+            context.function_not_found(&signature, position)
+        }
         EvalAltResult::ErrorInFunctionCall(function, _, inner, _) => {
-            let mut inner = report(name, *inner);
+            let mut inner = report(context, *inner);
             if !function.is_empty() && !inner.message.contains(" in function ") {
                 inner
                     .message

@@ -145,3 +145,56 @@ fn print_goes_to_the_sink_given_escaped_like_all_output() {
         "captured, nothing on stdout, device-like text escaped and a line feed kept"
     );
 }
+
+/// The names of the functions `register` adds to an engine, beyond those every script has.
+fn registered(register: impl FnOnce(&mut Engine)) -> Vec<String> {
+    let print = Rc::new(print_to_stdout) as PrintSink;
+    let base = function_names(&base_engine(
+        &Limits::default(),
+        None,
+        Arc::default(),
+        &print,
+    ));
+    let mut engine = base_engine(&Limits::default(), None, Arc::default(), &print);
+    register(&mut engine);
+    let mut added: Vec<String> = function_names(&engine)
+        .into_iter()
+        .filter(|name| !base.contains(name))
+        .collect();
+    added.sort();
+    added
+}
+
+fn sorted(names: &[&str]) -> Vec<String> {
+    let mut names: Vec<String> = names.iter().map(|n| n.to_string()).collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn each_dialect_lists_the_functions_it_registers() {
+    use crate::dialect::{Opening, Purpose, smd4, tmcl};
+    let (session, _) = session();
+    let shared = Rc::new(RefCell::new(session));
+    let sandbox = Rc::new(Sandbox::new([std::path::Path::new(".")], false));
+    let tmcl_names = registered(|engine| tmcl::script::register(engine, &shared, &sandbox));
+    assert_eq!(tmcl_names, sorted(tmcl::script::FUNCTIONS));
+    let config = (smd4::DIALECT.configure)(None).unwrap();
+    let link = SimLink::new(config.simulator(), Arc::new(ManualClock::new()));
+    let opened = config
+        .open(Opening {
+            link: Box::new(link),
+            options: SessionOptions::default(),
+            transcript: None,
+            flags: None,
+            purpose: Purpose::Scan,
+        })
+        .unwrap();
+    let session = *opened
+        .into_any()
+        .downcast::<smd4::session::Smd4Session>()
+        .unwrap();
+    let shared = Rc::new(RefCell::new(session));
+    let smd4_names = registered(|engine| smd4::script::register(engine, &shared));
+    assert_eq!(smd4_names, sorted(smd4::script::FUNCTIONS));
+}

@@ -34,6 +34,17 @@ pub fn until(
     timeout: Duration,
     mut check: impl FnMut() -> Fallible<bool>,
 ) -> Fallible<()> {
+    until_showing(what, timeout, || check().map(|done| (done, String::new())))
+}
+
+/// [`until`] for a condition that also gives the value it saw, which a timeout reports (the
+/// last one).
+pub fn until_showing(
+    what: &str,
+    timeout: Duration,
+    mut check: impl FnMut() -> Fallible<(bool, String)>,
+) -> Fallible<()> {
+    let mut last: String;
     let start = Instant::now();
     // A spinner for waits long enough to wonder about.
     let spinner = if timeout >= Duration::from_millis(500) {
@@ -43,15 +54,20 @@ pub fn until(
     };
     let result = loop {
         match check() {
-            Ok(true) => break Ok(()),
-            Ok(false) => {}
+            Ok((true, _)) => break Ok(()),
+            Ok((false, value)) => last = value,
             Err(e) => break Err(e),
         }
         if start.elapsed() >= timeout {
+            let seen = if last.is_empty() {
+                String::new()
+            } else {
+                format!(" (last value: {last})")
+            };
             break Err(thrown(Failure::new(
                 Exit::DeviceError,
                 format!(
-                    "timed out after {} ms waiting for {what}",
+                    "timed out after {} ms waiting for {what}{seen}",
                     timeout.as_millis()
                 ),
             )));

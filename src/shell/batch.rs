@@ -11,6 +11,8 @@
 //!
 //! Piped lines end with CR, LF or CRLF ([`lines`]); a line that is too long or not UTF-8 is
 //! refused like a line the validator refuses.
+//! Empty lines and lines that are only a comment (`#`, `//`) are skipped; a trailing `//` comment
+//! is the dialect's to drop (as the REPL's).
 
 pub mod format;
 pub mod lines;
@@ -22,7 +24,7 @@ use crate::escape::escape_control;
 use crate::exit::{Exit, ExitStatus};
 use crate::session::{SessionError, interrupt};
 
-use super::words::{Everyday, everyday};
+use super::words::{Everyday, everyday, only_remark};
 use super::{Flow, Shell};
 pub use format::Output;
 use lines::{LineError, LineReader, MAX_LINE};
@@ -123,7 +125,7 @@ pub fn run(
             }
         };
         let text = line.trim();
-        if text.is_empty() || text.starts_with('#') {
+        if only_remark(text) {
             continue;
         }
         let outcome = step(shell, number, text, options.output, out, err)

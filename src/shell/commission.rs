@@ -239,8 +239,8 @@ fn record(
     };
     writeln!(
         out,
-        "recorded {} samples of {} to {file}; :plot draws them",
-        recording.samples.len(),
+        "recorded {} of {} to {file}; :plot draws them",
+        crate::count::counted(recording.samples.len(), "sample"),
         recording.columns.join(", ")
     )?;
     Ok((path, recording))
@@ -260,8 +260,8 @@ fn record_on_terminal(
     let mut screen = TerminalScreen::new(out)?;
     let mut stop = || {
         let status = format!(
-            "recording to {file}: {} samples — any key stops",
-            count.get()
+            "recording to {file}: {} — any key stops",
+            crate::count::counted(count.get(), "sample")
         );
         let key = screen
             .draw(&[status])

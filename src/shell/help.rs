@@ -22,28 +22,50 @@ pub fn write_help(
     if topic.is_empty() {
         session.help_intro(out)?;
         writeln!(out, "Helper commands:")?;
+        let width = crate::wrap::terminal_width();
         for h in helpers::available(dialect) {
-            writeln!(out, "  {:<30} {}", h.usage, h.summary)?;
+            let row = format!("  {:<30} {}", h.usage, h.summary);
+            writeln!(out, "{}", crate::wrap::fit(&row, 33, width))?;
         }
-        return writeln!(out, "\nMore: {}", session.help_more());
+        let more = format!("More: {}", session.help_more());
+        return writeln!(out, "\n{}", crate::wrap::fit(&more, 6, width));
     }
     let word = topic.to_ascii_lowercase();
     if word == "exit" {
         writeln!(
             out,
-            "Leave with :quit (or quit, exit) or Ctrl-D; the modules go back to the mode they were found in."
+            "{}",
+            crate::wrap::fit(
+                "Leave with :quit (or quit, exit) or Ctrl-D; the modules go back to the mode they were found in.",
+                0,
+                crate::wrap::terminal_width()
+            )
         )?;
         writeln!(
             out,
-            "Ctrl-C stops a command and the motor; at the prompt it stops the motors this session set moving."
+            "{}",
+            crate::wrap::fit(
+                "Ctrl-C stops a command and the motor; at the prompt it stops the motors this session set moving.",
+                0,
+                crate::wrap::terminal_width()
+            )
         )?;
         return writeln!(
             out,
-            "Exit codes: 0 success, 1 device error or failed assertion, 2 refused before sending, 3 connection/timeout/lost link, 130 Ctrl-C."
+            "{}",
+            crate::wrap::fit(
+                "Exit codes: 0 success, 1 device error or failed assertion, 2 refused before sending, 3 connection/timeout/lost link, 130 Ctrl-C.",
+                0,
+                crate::wrap::terminal_width()
+            )
         );
     }
     if word == "time" || word == "times" {
-        return writeln!(out, "{TIMES}");
+        return writeln!(
+            out,
+            "{}",
+            crate::wrap::fit(TIMES, 0, crate::wrap::terminal_width())
+        );
     }
     if session.help_topic(&word, out)? {
         return Ok(());

@@ -10,14 +10,14 @@ pub const SHARED: &[Helper] = &[
     helper(
         "help",
         ":help [topic]",
-        "this help; topics: a command, a helper, params, exit, ascii or addressing",
+        "this help; topics: a command, a parameter, a helper, params, exit, ascii or addressing",
         ArgKind::Topic,
         Section::Session,
     ),
     helper(
         "params",
-        ":params [filter]",
-        "list the module's parameters or settings (matching filter)",
+        ":params [--values] [filter]",
+        "list the module's parameters or settings (matching filter); --values reads them",
         ArgKind::Param,
         Section::Session,
     ),
@@ -125,7 +125,7 @@ pub fn find(name: &str, dialect: &'static Dialect) -> Result<&'static Helper, St
         [] => {
             let nearest = crate::suggest::nearest(&name, available(dialect).map(|h| h.name));
             Err(format!(
-                "unknown helper ':{name}'{}; :help lists them",
+                "unknown helper ':{name}' (:help lists them){}",
                 crate::suggest::did_you_mean(&nearest.map(|n| format!(":{n}")))
             ))
         }
@@ -163,7 +163,7 @@ mod tests {
         assert_eq!(find("ra", &SMD4).unwrap().name, "raw");
         assert_eq!(
             find("prams", &TMCL).unwrap_err(),
-            "unknown helper ':prams'; did you mean :params?; :help lists them"
+            "unknown helper ':prams' (:help lists them); did you mean :params?"
         );
     }
 

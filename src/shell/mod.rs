@@ -7,6 +7,7 @@ mod help;
 pub mod helpers;
 mod script;
 pub mod terminal;
+pub mod values;
 pub mod words;
 
 use std::io::Write;
@@ -112,6 +113,10 @@ impl Shell {
                 commission::helper(session, &mut self.commission, helper.name, arg, out)?
             }
             "quit" => return Ok(Flow::Quit),
+            "params" if values::values_filter(arg).is_some() => {
+                let filter = values::values_filter(arg).unwrap_or_default();
+                values::write_values(self.session().param_device(), &filter, out)?
+            }
             _ => self.session().run_helper(helper, arg, out)?,
         }
         Ok(Flow::Continue)

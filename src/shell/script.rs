@@ -3,7 +3,9 @@
 
 use std::path::Path;
 
-use crate::dialect::DialectSession;
+use std::rc::Rc;
+
+use crate::dialect::{DialectSession, elsewhere};
 use crate::exit::Failure;
 use crate::script::{Limits, Script};
 
@@ -17,7 +19,7 @@ pub fn run_file(
     limits: Limits,
 ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
     match Script::from_file(path, args, limits) {
-        Ok(script) => session.run_script(&script),
+        Ok(script) => run(script, session),
         Err(failure) => (session, Err(failure)),
     }
 }
@@ -31,5 +33,17 @@ pub fn run_source(
     session: Box<dyn DialectSession>,
     limits: Limits,
 ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
-    session.run_script(&Script::from_source(name, source, args, limits))
+    run(Script::from_source(name, source, args, limits), session)
+}
+
+/// Runs `script` over `session`; a call of another dialect's function says which.
+fn run(
+    script: Script,
+    session: Box<dyn DialectSession>,
+) -> (Box<dyn DialectSession>, Result<(), Failure>) {
+    let this = session.dialect();
+    let script = script.explain_unknown(Rc::new(move |function| {
+        elsewhere::script_dialect(this, function).map(elsewhere::script_message)
+    }));
+    session.run_script(&script)
 }

@@ -27,6 +27,13 @@ pub fn everyday(text: &str) -> Option<Everyday> {
     }
 }
 
+/// Whether a typed line is only a remark: empty, or a comment (`# …` as in shell scripts,
+/// `// …` as in `.tmc` files), which no dialect's line starts with.
+pub fn only_remark(text: &str) -> bool {
+    let text = text.trim();
+    text.is_empty() || text.starts_with('#') || text.starts_with("//")
+}
+
 /// The words, for the test that they are no module's commands.
 #[cfg(test)]
 const WORDS: &[&str] = &["help", "exit", "quit", "clear", "cls"];
@@ -50,6 +57,16 @@ mod tests {
         assert_eq!(everyday("clear"), Some(Everyday::Clear));
         for line in ["exit 0", "quitter", "GAP 1, 0", "MOTOR:VMAX", "clear 1", ""] {
             assert_eq!(everyday(line), None, "{line}");
+        }
+    }
+
+    #[test]
+    fn remarks_are_empty_lines_and_comments() {
+        for remark in ["", "  ", "# note", "// note", "  //"] {
+            assert!(only_remark(remark), "{remark:?}");
+        }
+        for line in ["GAP 4, 0 // speed", "MOTOR:VMAX", "/ 2"] {
+            assert!(!only_remark(line), "{line}");
         }
     }
 

@@ -238,7 +238,7 @@ fn a_bad_file_is_refused_with_its_file_and_line() {
         (
             "port = \"/dev/ttyUSB0\"\nprotcol = \"smd4\"\n",
             2,
-            "unknown key `protcol`; did you mean `protocol`?",
+            "); did you mean `protocol`?",
         ),
         ("\n\nbaud = \"fast\"\n", 3, "baud must be a number"),
         (

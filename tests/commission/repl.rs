@@ -26,7 +26,18 @@ pub(super) struct Terminal {
 
 impl Terminal {
     pub(super) fn spawn(args: &[&str]) -> Terminal {
-        let pty = nix::pty::openpty(None, None).expect("a pseudo-terminal");
+        Terminal::spawn_sized(args, None)
+    }
+
+    /// As [`Terminal::spawn`], on a terminal `columns` wide.
+    pub(super) fn spawn_sized(args: &[&str], columns: Option<u16>) -> Terminal {
+        let size = columns.map(|ws_col| nix::pty::Winsize {
+            ws_row: 24,
+            ws_col,
+            ws_xpixel: 0,
+            ws_ypixel: 0,
+        });
+        let pty = nix::pty::openpty(size.as_ref(), None).expect("a pseudo-terminal");
         let slave: OwnedFd = pty.slave;
         let home = tempdir();
         let child = Command::new(bin())
@@ -145,6 +156,87 @@ fn watch_redraws_until_a_key_and_restores_the_terminal() {
     term.send(":quit\r");
     assert_eq!(term.exit_code(), 0);
     assert!(term.cooked(), "the terminal is back in line mode with echo");
+}
+
+#[test]
+fn on_a_narrow_terminal_each_frame_moves_up_over_exactly_the_rows_it_drew() {
+    let sim = Sim::start(&["--listen", "127.0.0.1:0"]);
+    let mut term = Terminal::spawn_sized(&["--tcp", &sim.first], Some(60));
+    term.until("A> ");
+    term.send(":watch actual_position,max_positioning_speed 50ms\r");
+    // Every frame starts with a clear-down (CSI J); four of them bound three whole frames.
+    let mut shown = String::new();
+    for _ in 0..4 {
+        shown += &term.until("\x1b[J");
+    }
+    term.send("q");
+    term.until("A> ");
+    let frames: Vec<&str> = shown.split("\x1b[J").skip(1).collect();
+    for frame in &frames[..frames.len() - 1] {
+        // A frame's rows, then the next frame's move up over them (CSI n F).
+        let (rows, next) = frame.split_once("\x1b[").expect("the next frame moves up");
+        let up: usize = next
+            .split_once('F')
+            .and_then(|(n, _)| n.parse().ok())
+            .unwrap_or_else(|| panic!("a move up in {next:?}"));
+        let rows: Vec<&str> = rows.split("\r\n").collect();
+        assert_eq!(
+            up,
+            rows.len() - 1,
+            "moved up over the rows drawn: {frame:?}"
+        );
+        for row in rows {
+            assert!(
+                row.chars().count() <= 60,
+                "wider than the terminal: {row:?}"
+            );
+        }
+    }
+    term.send(":quit\r");
+    assert_eq!(term.exit_code(), 0);
+}
+
+/// Text as a terminal shows it: control sequences (CSI … letter) taken out.
+fn visible(text: &str) -> String {
+    let mut out = String::new();
+    let mut chars = text.chars();
+    while let Some(c) = chars.next() {
+        if c == '\x1b' {
+            if chars.next() == Some('[') {
+                for c in chars.by_ref() {
+                    if c.is_ascii_alphabetic() || c == '~' {
+                        break;
+                    }
+                }
+            }
+            continue;
+        }
+        out.push(c);
+    }
+    out
+}
+
+#[test]
+fn tables_and_help_fit_a_narrow_terminal() {
+    let mut term = Terminal::spawn_sized(&[], Some(60));
+    term.until("A> ");
+    for (command, last) in [
+        (":params max\r", "max_encoder_deviation"),
+        (":help\r", "More:"),
+        (":help MVP\r", "usable in"),
+        (":help ascii_mode\r", "echo:"),
+    ] {
+        term.send(command);
+        let shown = term.until(last) + term.until("A> ").as_str();
+        let shown = visible(&shown);
+        for line in shown.split(['\r', '\n']) {
+            assert!(line.chars().count() <= 60, "{command:?}: {line:?}");
+        }
+        // Nothing was cut: a continuation line starts under its column.
+        assert!(shown.contains(last), "{shown}");
+    }
+    term.send(":quit\r");
+    assert_eq!(term.exit_code(), 0);
 }
 
 #[test]

@@ -298,7 +298,7 @@ fn store_survives_sys_load_and_a_power_cycle_and_a_dry_run_changes_nothing() {
     let worn = snapshot(&drive, &["restore", arg(&file), "--store", "--yes"], &[]);
     assert_exit(&worn, 1);
     let report = stdout(&worn);
-    assert!(report.contains("restored 1 parameters"), "{report}");
+    assert!(report.contains("restored 1 parameter"), "{report}");
     assert!(
         report.contains("FAILED STORE: module SMD4 refused 'STORE': error -5"),
         "{report}"
@@ -385,7 +385,7 @@ fn a_moving_drive_is_not_restored_until_it_stands_still() {
     let out = snapshot(&drive, &["restore", arg(&file)], &[]);
     assert_exit(&out, 0);
     assert!(
-        stdout(&out).contains("restored 1 parameters"),
+        stdout(&out).contains("restored 1 parameter"),
         "{}",
         stdout(&out)
     );
@@ -450,7 +450,7 @@ fn the_shell_helper_saves_diffs_and_restores_an_smd4() {
     );
     let out = drive.run(&["-c", &restore, "-c", &diff]);
     assert_exit(&out, 0);
-    assert!(stdout(&out).contains("restored 1 parameters"));
+    assert!(stdout(&out).contains("restored 1 parameter"));
 }
 
 #[test]

@@ -229,7 +229,7 @@ fn store_writes_the_eeprom_after_confirmation_and_a_dry_run_changes_nothing() {
         0,
     );
     assert!(
-        stdout(&stored).contains("parameters to EEPROM"),
+        stdout(&stored).contains("stored 1 parameter to EEPROM"),
         "{}",
         stdout(&stored)
     );
@@ -442,7 +442,7 @@ fn each_refusal_class_is_listed_and_force_restores_by_name() {
         "{report}"
     );
     assert!(
-        report.contains("restored 1 parameters, each read back and verified (pid_i)"),
+        report.contains("restored 1 parameter, each read back and verified (pid_i)"),
         "{report}"
     );
     let check = expect(&with(&["-c", "GAP pid_i, 0"], &pty(&sim)), 0);
@@ -569,7 +569,7 @@ fn a_write_the_module_refuses_midway_is_reported_with_what_was_written() {
         "{report}"
     );
     assert!(
-        stderr(&out).contains("1 parameters were not restored: max_current"),
+        stderr(&out).contains("1 parameter not restored: max_current"),
         "{}",
         stderr(&out)
     );
@@ -630,7 +630,7 @@ fn a_link_that_fails_midway_leaves_a_report_of_what_was_written_and_what_was_not
     let out = expect(&args, 3);
     let report = stdout(&out);
     assert!(
-        report.contains("restored 1 parameters, each read back and verified (max_current)"),
+        report.contains("restored 1 parameter, each read back and verified (max_current)"),
         "{report}"
     );
     assert!(

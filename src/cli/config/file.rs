@@ -79,11 +79,11 @@ pub fn read(path: &Path, scope: Scope, cmd: &Command) -> Result<Vec<Entry>, Stri
             let known: Vec<&str> = KEYS.iter().map(|k| k.name).collect();
             let nearest = crate::suggest::nearest(name.get_ref(), known.iter().copied());
             return Err(format!(
-                "{}: unknown key `{}`{}; the keys are {}",
+                "{}: unknown key `{}` (the keys are {}){}",
                 at(name.span().start),
                 name.get_ref(),
-                crate::suggest::did_you_mean(&nearest.map(|n| format!("`{n}`"))),
-                known.join(", ")
+                known.join(", "),
+                crate::suggest::did_you_mean(&nearest.map(|n| format!("`{n}`")))
             ));
         };
         let value = checked(key, value, dir, cmd)

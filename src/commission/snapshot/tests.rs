@@ -604,7 +604,7 @@ fn a_link_failure_midway_reports_what_was_written_in_flight_and_not_sent() {
     let error = result.unwrap_err();
     assert_eq!(error.exit(), crate::exit::Exit::Link, "{error}");
     assert!(
-        report.contains("restored 1 parameters, each read back and verified (max_current)"),
+        report.contains("restored 1 parameter, each read back and verified (max_current)"),
         "{report}"
     );
     assert!(

@@ -245,7 +245,7 @@ fn find_command<'a>(spec: &'a Smd4Spec, name: &str) -> Result<&'a Smd4Command, S
                 .map(|m| format!("; did you mean {m}?"))
                 .unwrap_or_default();
             Err(format!(
-                "unknown setting '{wanted}'{hint} :params lists them"
+                "unknown setting '{wanted}' (:params lists them){hint}"
             ))
         }
         several => {

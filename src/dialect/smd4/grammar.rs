@@ -1,9 +1,10 @@
 //! SMD4 requests as the line editor sees them: the hierarchical mnemonics and argument values
 //! completed from the command table, hints with usage, unit and range, and the validator.
 
-use crate::dialect::Dialect;
-use crate::dialect::grammar::{Completion, Grammar};
+use crate::dialect::grammar::{Check, Completion, Grammar, completes_further};
+use crate::dialect::{Dialect, elsewhere};
 
+use super::protocol::request::without_comment;
 use super::protocol::{self, Request, Smd4Spec};
 
 /// The SMD4 command table.
@@ -35,10 +36,26 @@ impl Grammar for Smd4Grammar {
         protocol::hint_for_line(&self.spec.commands, line).map(|h| format!("  ← {h}"))
     }
 
-    fn is_invalid(&self, text: &str) -> bool {
-        match Request::parse(text) {
-            Ok(request) => protocol::validate(&request, &self.spec.commands).is_err(),
-            Err(_) => true,
+    /// Still on its way: a mnemonic or value that completes further, or a comma with its
+    /// argument to come.
+    fn check(&self, text: &str) -> Check {
+        let text = without_comment(&self.spec.commands, text);
+        if text.trim().is_empty() {
+            return Check::Incomplete;
+        }
+        let refusal = match Request::parse(text) {
+            Ok(request) => match protocol::validate(&request, &self.spec.commands) {
+                Ok(_) => return Check::Valid,
+                Err(e) => e.to_string(),
+            },
+            Err(e) => e.to_string(),
+        };
+        if text.trim_end().ends_with(',') || completes_further(self, text) {
+            return Check::Incomplete;
+        }
+        match elsewhere::line_dialect(&super::DIALECT, text) {
+            Some(other) => Check::Invalid(elsewhere::line_message(other)),
+            None => Check::Invalid(refusal),
         }
     }
 
@@ -52,6 +69,6 @@ impl Grammar for Smd4Grammar {
     }
 
     fn topics(&self) -> &'static [&'static str] {
-        &["exit", "addressing"]
+        &["params", "exit", "addressing"]
     }
 }

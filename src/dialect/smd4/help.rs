@@ -3,28 +3,50 @@
 use std::io::{self, Write};
 
 use super::protocol::{ADDRESSING_HELP, Smd4Spec, hints};
+use crate::dialect::UNCERTAIN;
+use crate::wrap::{fit, terminal_width};
 
 /// How SMD4 requests are typed: the first lines of `:help`.
 pub fn intro(out: &mut dyn Write) -> io::Result<()> {
     writeln!(
         out,
-        "Type SMD4 requests, e.g. MOTOR:VMAX (read) or MOTOR:VMAX,2000 (write); @N addresses a drive."
+        "{}",
+        fit(
+            "Type SMD4 requests, e.g. MOTOR:VMAX (read) or MOTOR:VMAX,2000 (write); @N addresses a drive.",
+            0,
+            terminal_width()
+        )
     )?;
     writeln!(
         out,
-        "Tab completes the hierarchical mnemonics (MOTOR:, SYS:, LIMIT:, BAKE:, BOOST:, COMS:NET:, COMS:SERIAL:).\n"
+        "{}\n",
+        fit(
+            "Tab completes the hierarchical mnemonics (MOTOR:, SYS:, LIMIT:, BAKE:, BOOST:, COMS:NET:, COMS:SERIAL:).",
+            0,
+            terminal_width()
+        )
     )
 }
 
 /// The topics named at the end of `:help`.
-pub const MORE: &str = ":help MNEMONIC, :help addressing, :help exit, :help time";
+pub const MORE: &str = ":help MNEMONIC, :help params, :help addressing, :help exit, :help time";
 
-/// `:help addressing`; false for other topics.
+/// `:help addressing` and `:help params`; false for other topics.
 pub fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
-    if topic != "addressing" {
-        return Ok(false);
+    match topic {
+        "addressing" => writeln!(out, "{ADDRESSING_HELP}")?,
+        "params" => {
+            writeln!(
+                out,
+                "The commands are listed by :params [filter]; :help MNEMONIC describes one."
+            )?;
+            writeln!(
+                out,
+                "{UNCERTAIN} after a mnemonic: the SMD4 document leaves part of it open or contradicts itself."
+            )?;
+        }
+        _ => return Ok(false),
     }
-    writeln!(out, "{ADDRESSING_HELP}")?;
     Ok(true)
 }
 
@@ -36,14 +58,19 @@ pub fn command(spec: &Smd4Spec, word: &str, out: &mut dyn Write) -> io::Result<b
     };
     let usage = hints::usage(spec);
     let hint = hints::hint(spec);
-    writeln!(out, "{usage}")?;
-    writeln!(
-        out,
+    let mark = if spec.uncertain {
+        format!(" {UNCERTAIN}")
+    } else {
+        String::new()
+    };
+    writeln!(out, "{usage}{mark}")?;
+    let text = format!(
         "  {}",
         hint.strip_prefix(&usage).unwrap_or(&hint).trim_start()
-    )?;
-    if spec.uncertain && !spec.uncertain_reason.is_empty() {
-        writeln!(out, "  uncertain: {}", spec.uncertain_reason)?;
+    );
+    writeln!(out, "{}", fit(&text, 2, terminal_width()))?;
+    if spec.uncertain {
+        writeln!(out, "  ({UNCERTAIN}: see :help params)")?;
     }
     Ok(true)
 }

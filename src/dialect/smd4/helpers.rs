@@ -26,7 +26,7 @@ pub fn run(
     match helper.name {
         "params" => {
             for spec in hints::matching(&session.spec().commands, arg) {
-                writeln!(out, "{}", hints::table_row(spec))?;
+                writeln!(out, "{}", hints::fitted_row(spec))?;
             }
         }
         "target" => {

@@ -18,6 +18,16 @@ use crate::script::failure::{Fallible, device, refused, runtime};
 use crate::script::volatile;
 use crate::script::waiting;
 
+/// The functions [`register`] adds (a test checks the list against the engine).
+pub const FUNCTIONS: &[&str] = &[
+    "send",
+    "reply",
+    "flags",
+    "wait_standby",
+    "parse_number",
+    "target",
+];
+
 /// The session a script talks through.
 pub type Shared = Rc<RefCell<Smd4Session>>;
 

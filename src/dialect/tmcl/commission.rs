@@ -13,6 +13,20 @@ use crate::commission::device::{ParamDevice, ParamRef, Scope, StoreStep};
 use crate::commission::value::{ParamValue, Reading, Tolerance};
 
 impl ParamDevice for TmclSession {
+    /// From the profile's decoding tables (`values`, `bits`, `fields`).
+    fn explain(&self, param: &ParamRef, value: &ParamValue) -> Option<String> {
+        let ParamValue::Int(value) = value else {
+            return None;
+        };
+        let number = u8::try_from(param.number?).ok()?;
+        let row = match param.scope {
+            Scope::Axis { .. } => self.profile().axis_param(number),
+            Scope::Global { bank } => self.profile().global_param(bank, number),
+            Scope::Drive => None,
+        }?;
+        row.decoding.explain(*value)
+    }
+
     fn module_name(&self) -> String {
         self.profile().module.clone()
     }
@@ -59,7 +73,7 @@ impl ParamDevice for TmclSession {
                         axis.to_string()
                     }
                     _ => format!(
-                        "unknown parameter '{name}'{}; :params lists them",
+                        "unknown parameter '{name}' (:params lists them){}",
                         crate::suggest::did_you_mean(&nearest)
                     ),
                 })

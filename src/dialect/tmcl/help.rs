@@ -2,21 +2,39 @@
 
 use std::io::{self, Write};
 
-use super::profile::Profile;
+use super::params::uncertain_mark;
+use super::profile::{Param, ParamKind, Profile};
+use crate::dialect::UNCERTAIN;
+use crate::wrap::{fit, terminal_width};
 
 /// How TMCL lines are typed: the first lines of `:help`.
 pub fn intro(out: &mut dyn Write) -> io::Result<()> {
     writeln!(
         out,
-        "Type TMCL commands as in the TMCL-IDE, e.g. GAP actual_position, 0 or MVP ABS, 0, 1000."
+        "{}",
+        fit(
+            "Type TMCL commands as in the TMCL-IDE, e.g. GAP actual_position, 0 or MVP ABS, 0, 1000.",
+            0,
+            terminal_width()
+        )
     )?;
     writeln!(
         out,
-        "Parameter names work in place of numbers; Tab completes, hints show units and ranges."
+        "{}",
+        fit(
+            "Parameter names work in place of numbers; Tab completes, hints show units and ranges.",
+            0,
+            terminal_width()
+        )
     )?;
     writeln!(
         out,
-        "A leading address character reaches another module: CGAP 4, 0.\n"
+        "{}\n",
+        fit(
+            "A leading address character reaches another module: CGAP 4, 0.",
+            0,
+            terminal_width()
+        )
     )
 }
 
@@ -27,10 +45,23 @@ pub const MORE: &str = ":help COMMAND, :help params, :help exit, :help time, :he
 /// topics.
 pub fn topic(profile: &Profile, topic: &str, out: &mut dyn Write) -> io::Result<bool> {
     match topic {
-        "params" => writeln!(
-            out,
-            "Parameters are listed by :params [filter]; use their names in SAP/GAP/SGP/GGP lines."
-        )?,
+        "params" => {
+            writeln!(
+                out,
+                "Parameters are listed by :params [filter] (:params --values reads them too); use their names in"
+            )?;
+            writeln!(out, "SAP/GAP/SGP/GGP lines; :help NAME describes one.")?;
+            writeln!(
+                out,
+                "{UNCERTAIN} after the access letters (or the number in :help NAME): the {} manual does not confirm",
+                profile.module
+            )?;
+            writeln!(
+                out,
+                "  the row (taken from sibling modules or inferred); `tmclsh profiles {}` names the sources.",
+                profile.name
+            )?
+        }
         "ascii" => {
             writeln!(
                 out,
@@ -71,17 +102,16 @@ pub fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io::Result
             .and_then(|n| profile.commands.by_number(n))
     });
     let Some(spec) = spec else {
-        return Ok(false);
+        return match param(profile, word) {
+            Some(p) => describe_param(p, out).map(|()| true),
+            None => Ok(false),
+        };
     };
-    writeln!(
-        out,
-        "{} — {} (command {})",
-        spec.usage(),
-        spec.name,
-        spec.number
-    )?;
+    let first = format!("{} — {} (command {})", spec.usage(), spec.name, spec.number);
+    writeln!(out, "{}", fit(&first, 0, terminal_width()))?;
     for k in &spec.keywords {
-        writeln!(out, "  {:<8} {}", k.name, k.meaning)?;
+        let row = format!("  {:<8} {}", k.name, k.meaning);
+        writeln!(out, "{}", fit(&row, 11, terminal_width()))?;
     }
     let place = match (spec.ascii_allowed, spec.direct_mode) {
         (true, _) => "ASCII and binary direct mode",
@@ -90,4 +120,172 @@ pub fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io::Result
     };
     writeln!(out, "  usable in: {place}")?;
     Ok(true)
+}
+
+/// The parameter named `word` (an identifier, axis parameters first).
+fn param<'a>(profile: &'a Profile, word: &str) -> Option<&'a Param> {
+    let word = word.to_ascii_lowercase();
+    profile
+        .axis
+        .iter()
+        .chain(&profile.global)
+        .find(|p| p.ident == word)
+}
+
+/// `:help max_current`: what the parameter is, its number, access, range, unit and default, its
+/// description and what its values mean.
+fn describe_param(p: &Param, out: &mut dyn Write) -> io::Result<()> {
+    let kind = match p.kind {
+        ParamKind::Axis => "axis parameter".to_string(),
+        ParamKind::Global { bank } => format!("global parameter, bank {bank},"),
+    };
+    let mark = uncertain_mark(p);
+    let first = format!(
+        "{} — {kind} {}{} ({})",
+        p.ident,
+        p.number,
+        mark.trim_end(),
+        p.name
+    );
+    writeln!(out, "{}", fit(&first, 0, terminal_width()))?;
+    let mut facts = vec![format!("access {}", p.access.letters())];
+    if let Some((lo, hi)) = p.range {
+        facts.push(format!("range {lo}..{hi}"));
+    }
+    if !p.unit.is_empty() {
+        facts.push(format!("unit {}", p.unit));
+    }
+    if let Some(default) = p.default {
+        facts.push(format!("default {default}"));
+    }
+    writeln!(
+        out,
+        "{}",
+        fit(&format!("  {}", facts.join(", ")), 2, terminal_width())
+    )?;
+    for when in &p.range_when {
+        writeln!(out, "  {}", when.describe())?;
+    }
+    if !p.description.is_empty() {
+        let row = format!("  {}", p.description);
+        writeln!(out, "{}", fit(&row, 2, terminal_width()))?;
+    }
+    let decoding = &p.decoding;
+    for (value, meaning) in &decoding.values {
+        writeln!(out, "  {value:>6}  {meaning}")?;
+    }
+    for bit in &decoding.bits {
+        writeln!(
+            out,
+            "  bit {:>2}  {}",
+            bit.bit,
+            bit_text(&bit.name, &bit.meaning)
+        )?;
+    }
+    for field in &decoding.fields {
+        let bits = if field.low == field.high {
+            format!("bit {}", field.low)
+        } else {
+            format!("bits {}..{}", field.high, field.low)
+        };
+        let values: Vec<String> = field
+            .values
+            .iter()
+            .map(|(v, meaning)| format!("{v} {meaning}"))
+            .collect();
+        writeln!(out, "  {bits}  {}: {}", field.name, values.join(", "))?;
+    }
+    if p.uncertain {
+        writeln!(out, "  ({UNCERTAIN}: see :help params)")?;
+    }
+    Ok(())
+}
+
+/// A bit's short name and meaning, once when they are the same.
+fn bit_text(name: &str, meaning: &str) -> String {
+    if name == meaning || meaning.is_empty() {
+        name.to_string()
+    } else {
+        format!("{name}: {meaning}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn help(word: &str) -> String {
+        let mut out = Vec::new();
+        assert!(
+            command(&Profile::builtin(), word, &mut out).unwrap(),
+            "{word}"
+        );
+        String::from_utf8(out).unwrap()
+    }
+
+    #[test]
+    fn a_parameter_is_described_with_what_its_values_mean() {
+        let text = help("serial_baud_rate");
+        assert!(
+            text.starts_with("serial_baud_rate — global parameter, bank 0, 65"),
+            "{text}"
+        );
+        assert!(
+            text.contains("range 0..7") && text.contains("default 0"),
+            "{text}"
+        );
+        assert!(text.contains("     7  115200 baud"), "{text}");
+        let text = help("STATUS_FLAGS");
+        assert!(
+            text.contains("bit  2  standing: motor standing (v = 0)"),
+            "{text}"
+        );
+        let text = help("ascii_mode");
+        assert!(
+            text.contains("bits 5..4  echo: 0 each character, 1 line after CR, 2 none"),
+            "{text}"
+        );
+        assert!(
+            text.contains("bit 0  start-up: 0 binary, 1 ASCII"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn no_research_note_reaches_the_help_of_any_builtin_profile() {
+        let notes = [
+            "sibling",
+            "seed",
+            "retriev",
+            "uncertain",
+            "pytrinamic",
+            "generic note",
+            "header",
+        ];
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/data/profiles");
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_none_or(|e| e != "toml") {
+                continue;
+            }
+            let profile = Profile::from_file(&path).unwrap();
+            let mut texts: Vec<String> = Vec::new();
+            for spec in profile.commands.iter() {
+                let mut out = Vec::new();
+                command(&profile, &spec.mnemonic, &mut out).unwrap();
+                texts.push(String::from_utf8(out).unwrap());
+            }
+            for p in profile.axis.iter().chain(&profile.global) {
+                let mut out = Vec::new();
+                describe_param(p, &mut out).unwrap();
+                texts.push(String::from_utf8(out).unwrap());
+            }
+            for text in texts {
+                let lower = text.to_ascii_lowercase();
+                for note in notes {
+                    assert!(!lower.contains(note), "{}: {text}", path.display());
+                }
+            }
+        }
+    }
 }

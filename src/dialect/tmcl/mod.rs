@@ -33,6 +33,9 @@ pub static DIALECT: Dialect = Dialect {
     name: "tmcl",
     summary: "Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`",
     devices: "TMCL modules",
+    indefinite: "a TMCL",
+    recognises: protocol::line::recognises,
+    script_functions: script::FUNCTIONS,
     helpers: helpers::HELPERS,
     configure: config::configure,
     own_options: &[

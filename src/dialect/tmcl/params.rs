@@ -3,6 +3,8 @@
 use std::io::{self, Write};
 
 use super::profile::{Param, ParamKind, Profile};
+use crate::dialect::UNCERTAIN;
+use crate::wrap::{fit, terminal_width};
 
 /// The parameters of `profile` matching `filter`, as a table; when none matches, says so on
 /// stderr and returns false.
@@ -29,6 +31,7 @@ pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
         ParamKind::Axis => "axis".to_string(),
         ParamKind::Global { bank } => format!("global/{bank}"),
     };
+    let width = terminal_width();
     let ident_width = rows.iter().map(|p| p.ident.len()).max().unwrap_or(0);
     let range_width = rows
         .iter()
@@ -36,11 +39,18 @@ pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
         .max()
         .unwrap_or(0)
         .max(5);
-    writeln!(
-        out,
-        "{:<8} {:>3}  {:<ident_width$}  {:<3}  {:<range_width$}  unit",
-        "kind", "no", "name", "acc", "range"
-    )?;
+    let header = format!(
+        "{:<8} {:>3}  {:<ident_width$}  {:<3} {:mark$}  {:<range_width$}  unit",
+        "kind",
+        "no",
+        "name",
+        "acc",
+        "",
+        "range",
+        mark = UNCERTAIN.len()
+    );
+    let unit_at = header.len() - "unit".len();
+    writeln!(out, "{}", fit(&header, unit_at, width))?;
     for p in rows {
         // A range that applies while another parameter has a value follows the unit.
         let when: String = p
@@ -48,16 +58,26 @@ pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
             .iter()
             .map(|r| format!(" ({})", r.describe()))
             .collect();
-        writeln!(
-            out,
-            "{:<8} {:>3}  {:<ident_width$}  {:<3}  {:<range_width$}  {}{when}",
+        let head = format!(
+            "{:<8} {:>3}  {:<ident_width$}  {:<3} {}  {:<range_width$}  ",
             kind(p),
             p.number,
             p.ident,
             p.access.letters(),
+            uncertain_mark(p),
             p.range_text(),
-            p.unit
-        )?;
+        );
+        let row = format!("{head}{}{when}", p.unit);
+        writeln!(out, "{}", fit(row.trim_end(), head.chars().count(), width))?;
     }
     Ok(())
+}
+
+/// The uncertain mark of a row, or as many spaces.
+pub fn uncertain_mark(p: &Param) -> String {
+    if p.uncertain {
+        UNCERTAIN.to_string()
+    } else {
+        " ".repeat(UNCERTAIN.len())
+    }
 }

@@ -43,7 +43,10 @@ pub fn decode(exchange: &TmclExchange, profile: &Profile) -> Decoded {
                 _ => None,
             };
             match (reads, param, i.command) {
-                (true, Some(p), _) => format!("{} = {value}{}", p.ident, unit(&p.unit)),
+                (true, Some(p), _) => match p.decoding.explain(value.into()) {
+                    Some(meaning) => format!("{} = {value} ({meaning})", p.ident),
+                    None => format!("{} = {value}{}", p.ident, unit(&p.unit)),
+                },
                 (true, None, _) => format!("parameter {} = {value}", i.type_),
                 (_, _, Opcode::Rfs) if i.type_ == 2 => {
                     if value == 0 {
@@ -120,6 +123,34 @@ mod tests {
         assert_eq!(d.text, "serial_host_address = 2");
         let d = decode(&exchange(Instruction::new(6, 200, 0, 0), Status::Ok, 7), &p);
         assert_eq!(d.text, "parameter 200 = 7");
+    }
+
+    #[test]
+    fn what_the_profile_knows_of_a_value_is_decoded() {
+        let p = Profile::builtin();
+        let read = |command: u8, param: u8, value: i32| {
+            decode(
+                &exchange(Instruction::new(command, param, 0, 0), Status::Ok, value),
+                &p,
+            )
+            .text
+        };
+        assert_eq!(read(10, 65, 0), "serial_baud_rate = 0 (9600 baud)");
+        assert_eq!(read(10, 65, 7), "serial_baud_rate = 7 (115200 baud)");
+        assert_eq!(read(10, 65, 9), "serial_baud_rate = 9");
+        assert_eq!(
+            read(6, 129, 5),
+            "status_flags = 5 (position reached, standing)"
+        );
+        assert_eq!(read(6, 129, 0), "status_flags = 0 (no bit set)");
+        assert_eq!(
+            read(10, 67, 0x11),
+            "ascii_mode = 17 (start-up: ASCII; echo: line after CR)"
+        );
+        assert_eq!(
+            read(10, 67, 0x20),
+            "ascii_mode = 32 (start-up: binary; echo: none)"
+        );
     }
 
     #[test]

@@ -19,6 +19,40 @@ use crate::script::sandbox::{READ_LIMIT, Sandbox};
 use crate::script::volatile;
 use crate::script::waiting;
 
+/// The functions [`register`] adds (a test checks the list against the engine).
+pub const FUNCTIONS: &[&str] = &[
+    "send",
+    "reply",
+    "gap",
+    "sap",
+    "stap",
+    "rsap",
+    "ggp",
+    "sgp",
+    "stgp",
+    "rsgp",
+    "mvp_abs",
+    "mvp_rel",
+    "mvp_coord",
+    "ror",
+    "rol",
+    "mst",
+    "rfs_start",
+    "rfs_stop",
+    "rfs_status",
+    "wait_pos",
+    "sio",
+    "gio",
+    "sco",
+    "gco",
+    "target",
+    "firmware_version",
+    "download",
+    "program_status",
+    "run_program",
+    "stop_program",
+];
+
 /// The session a script talks through.
 pub type Shared = Rc<RefCell<TmclSession>>;
 

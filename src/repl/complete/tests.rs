@@ -122,7 +122,9 @@ proptest::proptest! {
         }
         let _ = crate::dialect::tmcl::hint::hint(&line[..pos], &profile);
         for grammar in grammars {
-            let _ = crate::repl::editor::ReplHelper::new(grammar, true).is_invalid(&line);
+            let helper = crate::repl::editor::ReplHelper::new(grammar, true);
+            let _ = helper.check(&line);
+            let _ = rustyline::hint::Hinter::hint(&helper, &line[..pos], pos, &rustyline::Context::new(&rustyline::history::DefaultHistory::new()));
         }
     }
 }

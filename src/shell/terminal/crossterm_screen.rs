@@ -23,6 +23,15 @@ pub fn width() -> usize {
     }
 }
 
+/// `line` as the rows a terminal `width` columns wide shows it in (`width` 0: unknown, one row).
+fn rows_of(line: &str, width: usize) -> Vec<String> {
+    let chars: Vec<char> = line.chars().collect();
+    if width == 0 || chars.len() <= width {
+        return vec![line.to_string()];
+    }
+    chars.chunks(width).map(|c| c.iter().collect()).collect()
+}
+
 /// The terminal as a [`Screen`]: raw mode and a hidden cursor while it lives.
 pub struct TerminalScreen<'a> {
     out: &'a mut dyn Write,
@@ -49,11 +58,18 @@ impl Screen for TerminalScreen<'_> {
             cursor::MoveToColumn(0),
             terminal::Clear(terminal::ClearType::FromCursorDown)
         )?;
+        // Each row is cut at the terminal's width here, so the rows drawn are the rows counted and
+        // the next frame moves up exactly over this one, however narrow the terminal.
+        let width = terminal::size().map_or(0, |(w, _)| usize::from(w));
+        let mut rows = 0u16;
         for line in lines {
-            // Raw mode: a line feed does not return the carriage.
-            write!(self.out, "{line}\r\n")?;
+            for row in rows_of(line, width) {
+                // Raw mode: a line feed does not return the carriage.
+                write!(self.out, "{row}\r\n")?;
+                rows = rows.saturating_add(1);
+            }
         }
-        self.drawn = lines.len() as u16;
+        self.drawn = rows;
         self.out.flush()
     }
 
@@ -87,5 +103,19 @@ impl Drop for TerminalScreen<'_> {
         let _ = queue!(&mut self.out, cursor::Show);
         let _ = self.out.flush();
         let _ = terminal::disable_raw_mode();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_long_line_takes_as_many_rows_as_the_width_needs() {
+        assert_eq!(rows_of("abcdef", 0), ["abcdef"]);
+        assert_eq!(rows_of("abcdef", 6), ["abcdef"]);
+        assert_eq!(rows_of("abcdefg", 3), ["abc", "def", "g"]);
+        assert_eq!(rows_of("é—é", 2), ["é—", "é"]);
+        assert_eq!(rows_of("", 5), [""]);
     }
 }

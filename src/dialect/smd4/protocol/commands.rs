@@ -356,7 +356,8 @@ impl Smd4CommandTable {
     }
 
     /// The nearest mnemonic to a mistyped `word`: first a command whose last segment is `word`
-    /// (`AMAX` → `MOTOR:AMAX`, the document itself drops prefixes), then the closest spelling.
+    /// (`AMAX` → `MOTOR:AMAX`, the document itself drops prefixes), then the closest spelling,
+    /// segment by segment (a shared `MOTOR:` makes no name near).
     pub fn suggest(&self, word: &str) -> Option<String> {
         let leaf = |m: &str| m.rsplit(':').next().map(str::to_string);
         let by_leaf: Vec<&str> = self
@@ -366,6 +367,6 @@ impl Smd4CommandTable {
         if let [only] = by_leaf.as_slice() {
             return Some(only.to_string());
         }
-        crate::suggest::nearest(word, self.mnemonics())
+        crate::suggest::nearest_segmented(word, ':', self.mnemonics())
     }
 }

@@ -81,7 +81,22 @@ pub fn table_row(spec: &Smd4Command) -> String {
         (false, true) => "W",
         (false, false) => "",
     };
-    format!("{:<22} {:<4} {}", spec.mnemonic, access, arg_summary(spec))
+    let mark = if spec.uncertain {
+        crate::dialect::UNCERTAIN
+    } else {
+        " "
+    };
+    format!(
+        "{:<22}{mark} {:<4} {}",
+        spec.mnemonic,
+        access,
+        arg_summary(spec)
+    )
+}
+
+/// [`table_row`] fitted to the terminal: what the argument accepts continues under itself.
+pub fn fitted_row(spec: &Smd4Command) -> String {
+    crate::wrap::fit(&table_row(spec), 29, crate::wrap::terminal_width())
 }
 
 /// One line of help: usage, accepted values, access, the reply and the description.

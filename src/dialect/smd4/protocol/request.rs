@@ -58,6 +58,9 @@ pub enum RequestError {
         "'{0}' is not a mnemonic: mnemonics are letters, digits and ':+-_' (e.g. MOTOR:VMAX), and arguments follow after commas"
     )]
     BadMnemonic(String),
+    /// Arguments after a space or `=` instead of a comma (`MOTOR:VMAX 2000`).
+    #[error("arguments follow the mnemonic after a comma; did you mean {0}?")]
+    CommaMissing(String),
     /// A control or non-ASCII character.
     #[error("character {0:?} cannot be sent: requests are printable ASCII")]
     BadCharacter(char),
@@ -113,7 +116,11 @@ impl Request {
         let args = match rest {
             "" => Vec::new(),
             r if r.starts_with(',') => r[1..].split(',').map(|a| a.trim().to_string()).collect(),
-            _ => return Err(RequestError::BadMnemonic(first_item(text))),
+            r => {
+                let written = &text[..text.len() - r.len()];
+                return Err(comma_missing(written, r)
+                    .unwrap_or_else(|| RequestError::BadMnemonic(first_item(text))));
+            }
         };
         let (address, style) = match prefix {
             Some((digits, comma)) => {
@@ -159,6 +166,52 @@ impl Request {
         bytes.extend_from_slice(TERMINATOR.as_bytes());
         bytes
     }
+}
+
+/// A typed line without its trailing `//` comment (as `.tmc` files and people write them), where
+/// `//` cannot be part of the request: anywhere but in the free text argument of a command of
+/// `table` that takes one.
+pub fn without_comment<'a>(table: &super::Smd4CommandTable, line: &'a str) -> &'a str {
+    let Some(at) = line.find("//") else {
+        return line;
+    };
+    let text = line.trim_start();
+    let free_text = prefix(text)
+        .ok()
+        .and_then(|(rest, _)| mnemonic(rest).ok())
+        .and_then(|(_, word)| table.get(word))
+        .and_then(|command| command.arg.as_ref())
+        .is_some_and(|arg| arg.ty == super::ItemType::Str && arg.choices.is_empty());
+    if free_text {
+        line
+    } else {
+        line[..at].trim_end()
+    }
+}
+
+/// Whether `line` reads as a request for a command of the built-in table, whatever follows the
+/// mnemonic (for [`Dialect::recognises`](crate::dialect::Dialect::recognises)).
+pub fn recognises(line: &str) -> bool {
+    let text = line.trim();
+    let Ok((rest, _)) = prefix(text) else {
+        return false;
+    };
+    match mnemonic(rest) {
+        Ok((_, word)) => super::Smd4Spec::builtin().commands.get(word).is_some(),
+        Err(_) => false,
+    }
+}
+
+/// `MOTOR:VMAX 2000` or `MOTOR:VMAX=2000` as the request meant (`MOTOR:VMAX,2000`): `head` is
+/// the prefix and mnemonic, `rest` what follows them.
+fn comma_missing(head: &str, rest: &str) -> Option<RequestError> {
+    let args = rest.trim_start().strip_prefix('=').unwrap_or(rest).trim();
+    let separated = rest.starts_with([' ', '=']) && !args.is_empty() && !head.ends_with(':');
+    let items: Vec<&str> = args
+        .split(|c: char| c == ',' || c.is_whitespace())
+        .filter(|item| !item.is_empty())
+        .collect();
+    separated.then(|| RequestError::CommaMissing(format!("{head},{}", items.join(","))))
 }
 
 fn bad_prefix(text: &str) -> RequestError {
@@ -237,7 +290,25 @@ mod tests {
             Request::parse("@99999999999MOTOR:STOP"),
             Err(RequestError::BadAddress(_))
         ));
-        for bad in [",1", "1MOTOR", "MOTOR:RUNV +", "MOTOR: STOP", "@3,,X"] {
+        for (typed, meant) in [
+            ("MOTOR:VMAX 2000", "MOTOR:VMAX,2000"),
+            ("motor:vmax  2000 ", "motor:vmax,2000"),
+            ("MOTOR:VMAX=2000", "MOTOR:VMAX,2000"),
+            ("@3MOTOR:RUNV +", "@3MOTOR:RUNV,+"),
+            ("COMS:NET:IP 10.0.0.2, 24", "COMS:NET:IP,10.0.0.2,24"),
+        ] {
+            assert_eq!(
+                Request::parse(typed),
+                Err(RequestError::CommaMissing(meant.into())),
+                "{typed}"
+            );
+        }
+        let message = RequestError::CommaMissing("MOTOR:VMAX,2000".into()).to_string();
+        assert!(
+            message.ends_with("did you mean MOTOR:VMAX,2000?"),
+            "{message}"
+        );
+        for bad in [",1", "1MOTOR", "MOTOR: STOP", "@3,,X", "MOTOR:VMAX.5"] {
             assert!(
                 matches!(Request::parse(bad), Err(RequestError::BadMnemonic(_))),
                 "{bad}"

@@ -149,11 +149,18 @@ impl Smd4Session {
         self.smd4.address = address;
     }
 
-    /// Parses, validates and sends one request line; an error code is an `Ok` exchange whose
-    /// [`Smd4Exchange::ok`] is false.
+    /// Parses, validates and sends one request line (a trailing `//` comment aside); an error
+    /// code is an `Ok` exchange whose [`Smd4Exchange::ok`] is false; a refused line of another
+    /// dialect says so.
     pub fn exchange_line(&mut self, line: &str) -> Result<Smd4Exchange, SessionError> {
-        let request = Request::parse(line).map_err(|e| SessionError::Rejected(e.to_string()))?;
-        self.request(request)
+        let typed =
+            crate::dialect::smd4::protocol::request::without_comment(&self.spec.commands, line);
+        Request::parse(typed)
+            .map_err(|e| SessionError::Rejected(e.to_string()))
+            .and_then(|request| self.request(request))
+            .map_err(|e| {
+                crate::dialect::elsewhere::explain(&crate::dialect::smd4::DIALECT, line, e)
+            })
     }
 
     /// Validates and sends a request (the session's address applies when it has none).

@@ -153,6 +153,9 @@ pub(crate) struct ParamRow {
     pub uncertain: bool,
     #[serde(default)]
     pub range_when: Vec<RangeWhenRow>,
+    /// What its values mean (`values`, `bits`, `fields`).
+    #[serde(flatten)]
+    pub decoding: super::decode::DecodeRows,
 }
 
 #[derive(Debug, Deserialize)]

@@ -9,6 +9,7 @@
 pub mod catalogue;
 mod check;
 pub mod commands;
+pub mod decode;
 pub mod family;
 pub(crate) mod load;
 pub mod sim_roles;
@@ -65,6 +66,8 @@ pub struct Param {
     pub uncertain: bool,
     /// Ranges that apply instead of `range` while another parameter has a value.
     pub range_when: Vec<RangeWhen>,
+    /// What its values mean (enumerations, bits), where the profile says.
+    pub decoding: decode::Decoding,
 }
 
 impl Param {
@@ -488,6 +491,7 @@ fn expand(row: &ParamRow, kind: ParamKind) -> Vec<Param> {
             default: row.default,
             uncertain: row.uncertain,
             range_when: RangeWhen::from_rows(&row.range_when),
+            decoding: decode::Decoding::from_rows(&row.decoding),
         })
         .collect()
 }

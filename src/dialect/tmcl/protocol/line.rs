@@ -47,6 +47,25 @@ pub fn parse(text: &str, profile: &Profile) -> Result<Line, InputError> {
     resolve(&raw, profile)
 }
 
+/// Whether `text` reads as a TMCL command of the built-in table — a known mnemonic, ASCII word
+/// or command number, with or without address character — whatever its operands (for
+/// [`Dialect::recognises`](crate::dialect::Dialect::recognises)).
+pub fn recognises(text: &str) -> bool {
+    let profile = Profile::builtin();
+    let commands = &profile.commands;
+    match parse_line(text, |w| commands.is_word(w)) {
+        Ok(RawLine {
+            word: Word::Name(word),
+            ..
+        }) => commands.is_word(&word),
+        Ok(RawLine {
+            word: Word::Number(number),
+            ..
+        }) => commands.by_number(number).is_some(),
+        Err(_) => false,
+    }
+}
+
 /// Resolves names, keywords and operand order of a parsed line.
 pub fn resolve(raw: &RawLine, profile: &Profile) -> Result<Line, InputError> {
     let address = raw.address.and_then(address_of);

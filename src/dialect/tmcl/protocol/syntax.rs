@@ -60,6 +60,15 @@ pub struct SyntaxError {
     pub message: String,
 }
 
+/// A typed line without its trailing `//` comment, as `.tmc` files write them (`GAP 1, 0 //
+/// speed`): no TMCL line has `//` in it.
+pub fn without_comment(line: &str) -> &str {
+    match line.find("//") {
+        Some(at) => line[..at].trim_end(),
+        None => line,
+    }
+}
+
 /// Parses one line. `is_word` tells whether a word is a known mnemonic (or ASCII-only word), which
 /// settles whether a leading letter is an address character.
 pub fn parse_line(line: &str, is_word: impl Fn(&str) -> bool) -> Result<RawLine, SyntaxError> {

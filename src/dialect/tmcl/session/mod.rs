@@ -166,9 +166,17 @@ impl TmclSession {
         self.modules.get(&module).map(|m| (m.mode, m.echo))
     }
 
-    /// Parses, validates and sends one command line; returns the module's answer. An error
-    /// status is an `Ok` exchange whose [`TmclExchange::ok`] is false.
+    /// Parses, validates and sends one command line (a trailing `//` comment aside); returns
+    /// the module's answer. An error status is an `Ok` exchange whose [`TmclExchange::ok`] is
+    /// false; a refused line of another dialect says so.
     pub fn exchange_line(&mut self, text: &str) -> Result<TmclExchange, SessionError> {
+        self.exchange_typed(crate::dialect::tmcl::protocol::syntax::without_comment(
+            text,
+        ))
+        .map_err(|e| crate::dialect::elsewhere::explain(&crate::dialect::tmcl::DIALECT, text, e))
+    }
+
+    fn exchange_typed(&mut self, text: &str) -> Result<TmclExchange, SessionError> {
         match line::parse(text, &self.profile) {
             Ok(line) => {
                 let module = line.address.unwrap_or(self.target);

@@ -1,0 +1,106 @@
+//! Values people can read: what the profile knows of a value is decoded, `:help PARAM` describes
+//! a parameter, `:params --values` reads them, and an uncertain row carries one sign that
+//! `:help params` explains (no research notes in the help).
+
+use crate::repl::repl;
+use crate::util::{code, run, stderr, stdout};
+
+fn ok(args: &[&str]) -> String {
+    let out = run(args);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    stdout(&out)
+}
+
+#[test]
+fn params_values_reads_the_matching_parameters_with_their_meaning() {
+    let text = ok(&["-c", "SGP 65, 0, 7", "-c", ":params --values baud"]);
+    assert!(
+        text.contains("global 0/65  serial_baud_rate  7 (115200 baud)"),
+        "{text}"
+    );
+    let text = ok(&["-c", ":params status --values"]);
+    assert!(text.contains("status_flags"), "{text}");
+    assert!(text.contains("standing"), "{text}");
+    assert!(
+        !text.contains("target_position"),
+        "only the matches: {text}"
+    );
+    let text = ok(&["--protocol", "smd4", "-c", ":params --values MOTOR:VMAX"]);
+    assert_eq!(text.trim(), "MOTOR:VMAX  1000 Hz");
+}
+
+#[test]
+fn help_describes_a_parameter_and_explains_the_uncertain_sign_once() {
+    let text = ok(&["-c", ":help serial_baud_rate"]);
+    assert!(
+        text.starts_with("serial_baud_rate — global parameter, bank 0, 65*"),
+        "{text}"
+    );
+    assert!(text.contains("     0  9600 baud"), "{text}");
+    assert!(text.contains("(*: see :help params)"), "{text}");
+    let text = ok(&["-c", ":help params"]);
+    assert!(
+        text.contains(
+            "* after the access letters (or the number in :help NAME): the TMCM-142 manual"
+        ),
+        "{text}"
+    );
+    let text = ok(&["-c", ":help MVP"]);
+    assert!(!text.contains("sibling"), "{text}");
+    let text = ok(&[
+        "--protocol",
+        "smd4",
+        "-c",
+        ":help MOTOR:VMAX",
+        "-c",
+        ":help params",
+    ]);
+    assert!(!text.contains("uncertain:"), "{text}");
+    assert!(text.contains("MOTOR:VMAX[,<FLOAT Hz>] *"), "{text}");
+    assert!(text.contains("* after a mnemonic"), "{text}");
+}
+
+#[test]
+fn a_read_value_is_decoded_in_the_repl() {
+    let (mut p, _) = repl(&[]);
+    p.exp_string("A> ").unwrap();
+    p.send_line("GGP serial_baud_rate, 0").unwrap();
+    p.exp_string("serial_baud_rate = 0 (9600 baud)").unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_line("SGP ascii_mode, 0, 17").unwrap();
+    p.exp_string("ok, value 17").unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_line("GGP ascii_mode, 0").unwrap();
+    p.exp_string("ascii_mode = 17 (start-up: ASCII; echo: line after CR)")
+        .unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_line("GAP status_flags, 0").unwrap();
+    p.exp_string("status_flags = ").unwrap();
+    p.exp_string("standing)").unwrap();
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
+
+#[test]
+fn a_wait_until_timeout_names_its_condition_and_the_last_value() {
+    let dir = crate::util::tempdir();
+    let script = dir.join("wait.rhai");
+    std::fs::write(
+        &script,
+        "let motor = 0;\nwait_until(|| gap(\"actual_position\", motor) == 100, 50);\n",
+    )
+    .unwrap();
+    let out = run(&["run", script.to_str().unwrap()]);
+    let err = stderr(&out);
+    assert_eq!(code(&out), 1, "{err}");
+    assert!(
+        err.contains(
+            "timed out after 50 ms waiting for `gap(\"actual_position\", motor) == 100` (last value: false)"
+        ),
+        "{err}"
+    );
+    assert!(!err.contains("anon$"), "{err}");
+    std::fs::write(&script, "wait_until(|| gap(1, 0), 30);\n").unwrap();
+    let err = stderr(&run(&["run", script.to_str().unwrap()]));
+    assert!(err.contains("`gap(1, 0)` (last value: 0)"), "{err}");
+}
