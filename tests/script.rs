@@ -351,7 +351,7 @@ fn example_bus_scan_finds_the_modules_and_the_gap() {
         "--port",
         &sim.first,
         "--timeout",
-        "100",
+        "400",
         "--",
         "5",
     ]);
