@@ -14,3 +14,4 @@ mod script;
 mod shell;
 mod sim;
 mod smd4;
+mod soak;

@@ -27,7 +27,7 @@ use std::cell::RefCell;
 use std::path::Path;
 use std::rc::Rc;
 
-use rhai::{Dynamic, Engine, EvalAltResult, OptimizationLevel, Position, Scope};
+use rhai::{Dynamic, Engine, EvalAltResult, INT, OptimizationLevel, Position, Scope};
 
 use crate::exit::Exit;
 use crate::session::Session;
@@ -179,6 +179,8 @@ fn base_engine(limits: Limits) -> Engine {
     engine.on_progress(|_| interrupt::pending().then(|| Dynamic::from("interrupted")));
     engine.register_type_with_name::<ScriptFailure>("Failure");
     engine.register_fn("to_string", |f: &mut ScriptFailure| f.message.clone());
+    // `catch (e)` can tell a timeout or noise (3) from a device error (1) by the exit code.
+    engine.register_get("exit", |f: &mut ScriptFailure| INT::from(f.exit.code()));
     engine
 }
 

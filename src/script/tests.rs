@@ -120,3 +120,28 @@ fn errors_inside_script_functions_keep_their_exit_code() {
         report.message
     );
 }
+
+#[test]
+fn a_caught_failure_tells_its_exit_code() {
+    let (session, _) = session();
+    let shared = Rc::new(RefCell::new(session));
+    let mut engine = base_engine(Limits::default());
+    tmcl::register(&mut engine, &shared);
+    let source = r#"
+        let codes = [];
+        try { send("GAP 200, 0") } catch (e) { codes.push(e.exit); codes.push(`${e}`) }
+        try { gap(1, 300) } catch (e) { codes.push(e.exit) }
+        codes
+    "#;
+    let codes: rhai::Array = engine.eval(source).unwrap();
+    assert_eq!(codes[0].as_int(), Ok(1), "a device error status: {codes:?}");
+    assert!(
+        codes[1].clone().into_string().unwrap().contains("status 3"),
+        "{codes:?}"
+    );
+    assert_eq!(
+        codes[2].as_int(),
+        Ok(2),
+        "refused before sending: {codes:?}"
+    );
+}

@@ -1,0 +1,145 @@
+//! The fast fault soak (the full one, 20,000 reads per cell, is a row of BENCHMARKS.md): in each
+//! configuration, reads of known values at 1 % dropped, corrupted, delayed past the timeout, and
+//! all three, through `tmclsh run` over a pty to `tmclsh sim`. A read returns the truth or fails
+//! with a reported error; a different value returned normally is a silent wrong value, and there
+//! must be none. The seed makes each cell replay: `tmclsh sim --seed N` or the console's `seed N`.
+
+mod harness;
+
+use harness::{Counts, Fault, Plan, Target, run_cell};
+
+use crate::sim::Sim;
+use crate::util::bin;
+
+/// Reads per cell: 20 cells, 8,000 reads in all.
+const READS: u64 = 400;
+
+fn plan() -> Plan {
+    Plan {
+        reads: READS,
+        rate: 0.01,
+        timeout_ms: 100,
+        delay_ms: 150,
+        seed: 12,
+    }
+}
+
+/// Runs the four fault cells of `target` and checks each.
+fn soak(target: Target) {
+    let plan = plan();
+    let mut total = Counts::default();
+    let mut report = Vec::new();
+    for fault in Fault::ALL {
+        let counts = run_cell(&bin(), target, fault, &plan);
+        report.push(format!(
+            "{} / {}: {} {:?}",
+            target.name(),
+            fault.name(),
+            counts.summary(),
+            counts.examples
+        ));
+        assert_eq!(counts.reads, plan.reads);
+        assert_eq!(
+            counts.ok + counts.failures() + counts.silent_wrong + counts.undetectable,
+            counts.reads,
+            "every read is counted once"
+        );
+        total.add(&counts);
+    }
+    let report = report.join("\n");
+    println!("{report}");
+    let injected = total.injected;
+    assert!(
+        injected.dropped > 0 && injected.corrupted > 0 && injected.delayed > 0,
+        "the soak injected every kind of fault:\n{report}"
+    );
+    assert_eq!(
+        total.silent_wrong, 0,
+        "values returned without an error that are not the truth:\n{report}"
+    );
+}
+
+#[test]
+fn soak_tmcl_char_echo() {
+    soak(Target::TmclChar);
+}
+
+#[test]
+fn soak_tmcl_line_echo() {
+    soak(Target::TmclLine);
+}
+
+// Ignored until the session resynchronises after a timeout: with echo off, a reply delayed past
+// the timeout is taken as the answer to the next request.
+#[test]
+#[ignore = "known defect: a late reply becomes the next answer with echo off"]
+fn soak_tmcl_no_echo() {
+    soak(Target::TmclNone);
+}
+
+// Ignored until the session resynchronises after a timeout and checks SMD4 reply data against
+// the command's type: late replies become the next answer, garbled digits and truncated UUIDs
+// are returned as values.
+#[test]
+#[ignore = "known defects: late SMD4 replies and unchecked reply data"]
+fn soak_smd4() {
+    soak(Target::Smd4);
+}
+
+// Ignored for the same defects as `soak_smd4`.
+#[test]
+#[ignore = "known defects: late SMD4 replies and unchecked reply data"]
+fn soak_smd4_addressed() {
+    soak(Target::Smd4Addressed);
+}
+
+#[test]
+fn the_same_seed_replays_the_same_run() {
+    // Drops and corruption; the "delay" of 0 ms holds nothing back. A real delay races the
+    // client's timeout on the real clock, so its outcome may vary with the machine's load.
+    let plan = Plan {
+        reads: 150,
+        rate: 0.04,
+        timeout_ms: 300,
+        delay_ms: 0,
+        seed: 77,
+    };
+    let run = |plan: &Plan| {
+        let mut counts = run_cell(&bin(), Target::TmclLine, Fault::All, plan);
+        counts.examples.clear();
+        counts
+    };
+    let first = run(&plan);
+    assert!(
+        first.injected.dropped > 0 && first.injected.corrupted > 0 && first.failures() > 0,
+        "{}",
+        first.summary()
+    );
+    let again = run(&plan);
+    assert_eq!(first, again, "same seed, same run");
+    let other = run(&Plan {
+        seed: 78,
+        ..plan.clone()
+    });
+    assert_ne!(first.digest, other.digest, "another seed, another run");
+}
+
+#[test]
+fn the_seed_is_a_flag_and_a_console_command() {
+    let mut sim = Sim::start(&["--pty", "--seed", "5", "--drop-rate", "0.5"]);
+    assert_eq!(
+        sim.console("faults"),
+        "ok seed 5 replies 0 dropped 0 corrupted 0 delayed 0"
+    );
+    assert_eq!(sim.console("seed 6"), "ok seed 6");
+    assert!(sim.console("faults").starts_with("ok seed 6 "));
+    assert!(
+        sim.console("seed six")
+            .starts_with("error: 'six' is not a seed")
+    );
+    let mut old = Sim::start(&["--pty", "--fault-seed", "9"]);
+    assert!(
+        old.console("faults").starts_with("ok seed 9 "),
+        "--fault-seed still works"
+    );
+}
