@@ -243,7 +243,7 @@ pub fn to_rhai(steps: &[Step], profile: &Profile, source: &str, wait_ms: u64) ->
     for (k, step) in steps.iter().enumerate() {
         match step {
             Step::Comment(text) => {
-                let _ = writeln!(out, "// {text}");
+                let _ = writeln!(out, "// {}", comment(text));
             }
             Step::Version { module, text } => {
                 if target != Some(*module) {
@@ -321,6 +321,21 @@ fn param_name(i: &Instruction, profile: &Profile) -> Option<String> {
         _ => None,
     }?;
     Some(p.ident.clone())
+}
+
+/// Text for a `//` comment, on one line whatever it holds: a transcript's bytes may carry CR,
+/// LF or other line breaks, and after one of them the rest would be script code. Control
+/// characters and Unicode line separators are written as escapes instead.
+fn comment(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() || matches!(c, '\u{2028}' | '\u{2029}') {
+            let _ = write!(out, "\\u{{{:x}}}", c as u32);
+        } else {
+            out.push(c);
+        }
+    }
+    out
 }
 
 /// A Rhai string literal.
