@@ -6,7 +6,7 @@
 
 mod harness;
 
-use harness::{Counts, Fault, Plan, Target, run_cell};
+use harness::{Counts, Fault, Plan, Target, one_digit_changed, run_cell};
 
 use crate::sim::Sim;
 use crate::util::bin;
@@ -142,4 +142,52 @@ fn the_seed_is_a_flag_and_a_console_command() {
         old.console("faults").starts_with("ok seed 9 "),
         "--fault-seed still works"
     );
+    let mut drive = Sim::start(&["--pty", "--protocol", "smd4", "--seed", "4"]);
+    assert!(
+        drive.console("faults").starts_with("ok seed 4 "),
+        "the SMD4 drive's faults take the seed too"
+    );
+}
+
+#[test]
+fn only_a_well_formed_one_character_change_counts_as_undetectable() {
+    let undetectable = [
+        ("-8695", "-8795"),
+        ("844502454", "-44502454"),
+        ("-4502454", "44502454"),
+        (
+            "[\"1.3058E+04\", \"1.3058E+04\"]",
+            "[\"1.3058E+04\", \"1.3068E+04\"]",
+        ),
+        ("[\"-3705418.00\"]", "[\"83705418.00\"]"),
+        ("[\"6.5000E-01\"]", "[\"6.5000E-11\"]"),
+        (
+            "[\"f4562fb1-d002-11ee-b3e5-44b7d0c71675\"]",
+            "[\"f4562fb1-d002-11ee-b3e5-44b7d0c7167a\"]",
+        ),
+    ];
+    for (truth, got) in undetectable {
+        assert!(one_digit_changed(got, truth), "{got} for {truth}");
+    }
+    let refusable = [
+        ("-8695", "-8"),
+        ("40163803", "-163803"),
+        ("173", "073"),
+        ("173", "17V"),
+        (
+            "[\"1.3058E+04\", \"1.3058E+04\"]",
+            "[\"1.3058E<04\", \"1.3058E+04\"]",
+        ),
+        ("[\"6.5000E-01\"]", "[\"6.5000E801\"]"),
+        ("173", "73"),
+        (
+            "[\"f4562fb1-d002-11ee-b3e5-44b7d0c71675\"]",
+            "[\"f4562fb14d002-11ee-b3e5-44b7d0c71675\"]",
+        ),
+        ("1234", "1234"),
+        ("1234", "1243"),
+    ];
+    for (truth, got) in refusable {
+        assert!(!one_digit_changed(got, truth), "{got} for {truth}");
+    }
 }

@@ -129,10 +129,11 @@ pub fn section(cells: &[Cell], plan: &Plan, date: &str) -> String {
          timeout. A read returns the truth (ok), fails with a reported error (timeout and line \
          noise exit 3, a device error 1; no read here can fail on the device, so each device \
          error is a damaged reply taken for a refusal) or returns another value normally: \
-         **silent wrong**. A digit corrupted into another digit leaves a well-formed reply that \
-         no client can tell from the truth, since neither ASCII protocol carries a checksum; \
-         where the cell corrupts bytes and the value is the truth with exactly one digit \
-         changed, it is counted as \"one digit changed\" instead. \"Restarts\" are runs whose \
+         **silent wrong**. A digit corrupted into another digit (or a sign into a digit) leaves \
+         a well-formed reply that no client can tell from the truth, since neither ASCII \
+         protocol carries a checksum; where the cell corrupts bytes and the value is the truth \
+         with exactly one digit or sign changed and still a well-formed number, it is counted \
+         as \"one digit changed\" instead. \"Restarts\" are runs whose \
          session could not open; a new run made the remaining reads. Replay a cell with its \
          seed: `tmclsh sim --seed N` or the console's `seed N`.\n\n",
         rate = plan.rate * 100.0,

@@ -146,11 +146,12 @@ pub struct Counts {
     pub other: u64,
     /// Values returned normally that differ from the truth: must be 0.
     pub silent_wrong: u64,
-    /// Values returned normally that are the truth with one digit changed into another, in a
-    /// cell that corrupts bytes: a corrupted digit that left a well-formed reply. Neither
-    /// protocol carries a checksum in its ASCII form, so no client can tell these from the
-    /// truth; they are counted apart from [`Counts::silent_wrong`]. The known values differ
-    /// pairwise in at least three characters, so a reply to another request never lands here.
+    /// Values returned normally that are the truth with one digit (or the sign) changed into
+    /// another, still a well-formed number, in a cell that corrupts bytes: see
+    /// [`one_digit_changed`]. Neither protocol carries a checksum in its ASCII form, so no client
+    /// can tell these from the truth; they are counted apart from [`Counts::silent_wrong`]. The
+    /// known values differ pairwise in at least three characters, so a reply to another request
+    /// never lands here.
     pub undetectable: u64,
     /// Runs of the script that ended before their reads were done (the session could not
     /// open); the remaining reads were made by a new run.
@@ -326,20 +327,57 @@ fn tally(counts: &mut Counts, line: &str, truth: &[String], corrupts: bool) {
     }
 }
 
-/// Whether `got` is `truth` with one character replaced by another of the value's alphabet
-/// (decimal digits; hexadecimal in a UUID): the reply stayed well-formed, so no parser can see
-/// the change.
-fn one_digit_changed(got: &str, truth: &str) -> bool {
+/// Whether `got` is `truth` with one character changed into a reply no parser can tell from a
+/// true one: a digit into another digit, or a leading sign into a digit or back, leaving a finite
+/// number without a leading zero (hexadecimal digits in a UUID). Anything else — a changed
+/// separator, exponent or dash, a truncation, a leading zero — a careful client can refuse.
+pub fn one_digit_changed(got: &str, truth: &str) -> bool {
     if got.len() != truth.len() {
         return false;
     }
-    let uuid = truth.matches('-').count() == 4;
-    let in_alphabet = |c: u8| c.is_ascii_digit() || (uuid && c.is_ascii_hexdigit());
-    let mut differing = got.bytes().zip(truth.bytes()).filter(|(g, t)| g != t);
-    matches!(
-        (differing.next(), differing.next()),
-        (Some((g, t)), None) if in_alphabet(g) && in_alphabet(t)
-    )
+    let mut differing = got
+        .bytes()
+        .zip(truth.bytes())
+        .enumerate()
+        .filter(|(_, (g, t))| g != t);
+    let (Some((at, (g, t))), None) = (differing.next(), differing.next()) else {
+        return false;
+    };
+    // The items as the script prints them: ["1.2340E+03", "1.2340E+03"] or a bare number.
+    let items: Vec<&str> = got
+        .trim_matches(|c| c == '[' || c == ']')
+        .split(", ")
+        .map(|item| item.trim_matches('"'))
+        .collect();
+    if items.len() == 1 && is_uuid(items[0]) {
+        return is_uuid(truth.trim_matches(|c| matches!(c, '[' | ']' | '"')))
+            && g.is_ascii_hexdigit()
+            && t.is_ascii_hexdigit();
+    }
+    let sign_or_digit = |c: u8| c.is_ascii_digit() || c == b'-';
+    let at_start = at == 0 || matches!(got.as_bytes()[at - 1], b'"' | b'[');
+    let well_formed = items.iter().all(|item| {
+        let unsigned = item.strip_prefix('-').unwrap_or(item);
+        let leading_zero = unsigned.len() > 1
+            && unsigned.starts_with('0')
+            && unsigned.as_bytes()[1].is_ascii_digit();
+        item.parse::<f64>().is_ok_and(f64::is_finite) && !leading_zero
+    });
+    well_formed
+        && if at_start {
+            sign_or_digit(g) && sign_or_digit(t)
+        } else {
+            g.is_ascii_digit() && t.is_ascii_digit()
+        }
+}
+
+/// `8-4-4-4-12` hexadecimal digits.
+fn is_uuid(text: &str) -> bool {
+    text.len() == 36
+        && text.bytes().enumerate().all(|(i, b)| match i {
+            8 | 13 | 18 | 23 => b == b'-',
+            _ => b.is_ascii_hexdigit(),
+        })
 }
 
 /// Characters that differ between `a` and `b`, right-aligned, the shorter padded with `0`.
