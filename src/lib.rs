@@ -11,6 +11,8 @@ pub mod asm;
 pub mod cli;
 pub mod commission;
 pub mod exit;
+#[doc(hidden)]
+pub mod fuzz_entry;
 pub mod link;
 pub mod profile;
 pub mod program;

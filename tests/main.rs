@@ -6,6 +6,7 @@ mod util;
 mod asm;
 mod cli;
 mod commission;
+mod fuzz_corpus;
 #[cfg(feature = "hardware")]
 mod hardware;
 mod program;
