@@ -18,7 +18,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
     }
     var completions = [
         &'tmclsh'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -c 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal'
             cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
             cand --baud 'Serial bit rate (8N1)'
@@ -27,9 +27,13 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --value 'With -c or piped lines: print only each reply''s value (TMCL: -5000 of BA 100 -5000; SMD4: the data items), an empty line for a line that failed'
+            cand --json 'With -c or piped lines: print one JSON object per line (status, value or items, raw reply, module, exit code)'
+            cand --keep-going 'With -c or piped lines: go on past a failing line; the exit code is then the worst failure''s (130 before 3 before 1 before 2)'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
@@ -39,8 +43,10 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
+            cand profiles 'List the built-in TMCL module profiles with their sources, or show one in full'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
+            cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
@@ -49,20 +55,32 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
+            cand config 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user''s config.toml, or built in'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;params'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;profiles'= {
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
         &'tmclsh;ports'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
         &'tmclsh;completions'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
+        &'tmclsh;man'= {
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
@@ -74,29 +92,34 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --max-operations 'Operations after which a runaway script is stopped (0: no limit)'
             cand --max-call-depth 'Deepest nesting of function calls'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --max-memory 'Memory the script may hold, in MiB (0: no limit)'
+            cand --max-time 'Wall-clock time after which the script is stopped, its motors too (exit code 1): 500ms, 30s, 2m, or milliseconds'
+            cand --allow-dir 'A directory the script''s file functions may also reach (repeatable); by default they reach only the script''s directory and the working directory'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand --overwrite 'Let the script''s file functions replace existing files that are not tmclsh snapshots or recordings'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;asm'= {
             cand -o 'Write the program file (format in the README); without it the source is only checked'
             cand --output 'Write the program file (format in the README); without it the source is only checked'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --list 'Print the listing: address, the 7 instruction bytes and the source line'
             cand -h 'Print help'
             cand --help 'Print help'
         }
         &'tmclsh;disasm'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
@@ -108,17 +131,21 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
-            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
             cand --run 'Start the program after downloading it'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;snapshot'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
             cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
@@ -134,14 +161,16 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
-            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
+            cand --force 'Replace FILE if it exists'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
@@ -153,14 +182,15 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
-            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
@@ -172,13 +202,15 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --store 'Afterwards make the written parameters permanent, after a confirmation: EEPROM (STAP/STGP) on TMCL modules; STORE on an SMD4, which saves its whole working configuration'
             cand --yes 'Confirm --store without asking (for scripts)'
             cand --dry-run 'Only print the lines that would be sent'
+            cand --force 'Restore a file with problems that allow it: of another module type, with numbers that disagree with the names (written by name), with names, motors or banks the module lacks (skipped). Values the module would refuse are never forced'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
@@ -206,22 +238,23 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
-            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
-            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
-            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
             cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
             cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
-            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;transcript'= {
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
             cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
@@ -231,7 +264,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -o 'Write the script to FILE instead of stdout'
             cand --output 'Write the script to FILE instead of stdout'
             cand --wait 'Milliseconds the script waits for a live value (position, switch) to reach the value the transcript saw'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
@@ -267,7 +300,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --error-spelling 'Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic) or bare (-103)'
             cand --prefix-only 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)'
             cand --real-value-grid 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value'
-            cand --profile 'Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --pty 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
             cand -v 'Log every frame and line received and sent, decoded, to stderr'
             cand --verbose 'Log every frame and line received and sent, decoded, to stderr'
@@ -282,10 +315,32 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
+        &'tmclsh;config'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
         &'tmclsh;help'= {
             cand params 'Print the module''s axis and global parameters (those matching FILTER)'
+            cand profiles 'List the built-in TMCL module profiles with their sources, or show one in full'
             cand ports 'List the serial ports of this machine'
             cand completions 'Print a shell completion script'
+            cand man 'Print the manual page (roff; man/tmclsh.1 in the source)'
             cand run 'Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link)'
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
@@ -294,13 +349,18 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
             cand sim 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
+            cand config 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user''s config.toml, or built in'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;help;params'= {
         }
+        &'tmclsh;help;profiles'= {
+        }
         &'tmclsh;help;ports'= {
         }
         &'tmclsh;help;completions'= {
+        }
+        &'tmclsh;help;man'= {
         }
         &'tmclsh;help;run'= {
         }
@@ -329,6 +389,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;transcript;to-rhai'= {
         }
         &'tmclsh;help;sim'= {
+        }
+        &'tmclsh;help;config'= {
         }
         &'tmclsh;help;help'= {
         }

@@ -39,3 +39,64 @@ pub trait ExitStatus {
     /// The exit code for this error.
     fn exit(&self) -> Exit;
 }
+
+/// A failure on its way out: what to print and the exit code it means. Every face ends in one —
+/// the command line, a script (thrown as the Rhai error value, so a script can `catch` it and a
+/// runner can tell an assertion from a lost link), a `:source` in the shell — and every layer's
+/// typed error that knows its exit code becomes one with `?`.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
+pub struct Failure {
+    /// The exit code.
+    pub exit: Exit,
+    /// What happened.
+    pub message: String,
+}
+
+impl Failure {
+    /// A failure with its exit code.
+    pub fn new(exit: Exit, message: impl Into<String>) -> Self {
+        Failure {
+            message: message.into(),
+            exit,
+        }
+    }
+
+    /// Input refused before anything was sent (exit 2).
+    pub fn refused(message: impl Into<String>) -> Self {
+        Failure::new(Exit::Refused, message)
+    }
+}
+
+impl<E: ExitStatus + std::fmt::Display> From<E> for Failure {
+    fn from(error: E) -> Self {
+        Failure::new(error.exit(), error.to_string())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    struct Lost;
+
+    impl ExitStatus for Lost {
+        fn exit(&self) -> Exit {
+            Exit::Link
+        }
+    }
+
+    impl std::fmt::Display for Lost {
+        fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            f.write_str("link lost")
+        }
+    }
+
+    #[test]
+    fn a_typed_error_becomes_a_failure_with_its_exit_code_and_text() {
+        let failure = Failure::from(Lost);
+        assert_eq!(failure, Failure::new(Exit::Link, "link lost"));
+        assert_eq!(failure.to_string(), "link lost");
+        assert_eq!(Failure::refused("no").exit.code(), 2);
+    }
+}

@@ -8,20 +8,31 @@
 
 use std::time::Duration;
 
-use crate::asm::{self, disassemble};
-use crate::commission::replay;
-use crate::commission::snapshot::Snapshot;
-use crate::profile::Profile;
-use crate::protocol::smd4::{self, Expectation, PrefixStyle, ReplyCollector, Request, Smd4Spec};
-use crate::protocol::tmcl::frame::{FRAME_LEN, decode_version_string, encode_version_string};
-use crate::protocol::tmcl::line::{address_of, format_line, format_raw, parse};
-use crate::protocol::tmcl::syntax::parse_line;
-use crate::protocol::tmcl::validate::{Mode, validate, validate_instruction};
-use crate::protocol::tmcl::{CommandFrame, FrameDecoder, Instruction, ReplyFrame, parse_reply};
+use crate::commission::Snapshot;
+use crate::dialect::replay::parse::parse as parse_transcript;
+use crate::dialect::replay::recognise;
+use crate::dialect::smd4::protocol::{
+    self as smd4, CollectorState, Expectation, PrefixStyle, ReplyCollector, Request, Smd4Spec,
+    check_reply,
+};
+use crate::dialect::smd4::replay as smd4_replay;
+use crate::dialect::smd4::sim::{Smd4Sim, Smd4SimOptions};
+use crate::dialect::tmcl::asm::{self, disassemble};
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::protocol::frame::{
+    FRAME_LEN, decode_version_string, encode_version_string,
+};
+use crate::dialect::tmcl::protocol::line::format_raw;
+use crate::dialect::tmcl::protocol::syntax::parse_line;
+use crate::dialect::tmcl::protocol::validate::validate_instruction;
+use crate::dialect::tmcl::protocol::{
+    CommandFrame, FrameDecoder, Instruction, Mode, ReplyFrame, address_of, format_line, parse,
+    parse_reply, validate,
+};
+use crate::dialect::tmcl::replay as tmcl_replay;
+use crate::dialect::tmcl::sim::Bus;
 use crate::sim::Device;
 use crate::sim::fault::{Faults, Faulty};
-use crate::sim::smd4::{Smd4Options, Smd4Sim};
-use crate::sim::tmcl::Bus;
 
 /// A fuzz target: its name (the directory under `fuzz/corpus/`) and its entry point.
 pub type Target = (&'static str, fn(&[u8]));
@@ -142,13 +153,16 @@ pub fn smd4_response(data: &[u8]) {
     let mut collector = ReplyCollector::new(expect.clone());
     let mut complete = false;
     for line in text.split_inclusive('\n') {
-        if let Ok(response) = smd4::parse_response(line, &expect) {
-            let _ = response.data_strings();
-            let _ = response.user_real();
-            let _ = response.into_result();
+        if let Ok(reply) = smd4::parse_reply(line, &expect) {
+            let _ = reply.data_strings();
+            let _ = reply.user_real();
+            for to in [None, Some(0), Some(5)] {
+                let _ = check_reply(&reply, &expect, to);
+            }
+            let _ = reply.into_result();
         }
         if !complete {
-            complete = matches!(collector.push_line(line), Ok(smd4::Progress::Complete(_)));
+            complete = matches!(collector.push_line(line), Ok(CollectorState::Complete(_)));
         }
     }
     if !complete {
@@ -242,39 +256,38 @@ pub fn snapshot_toml(data: &[u8]) {
 /// A `--log` transcript turned into a Rhai script (TMCL and SMD4): the script compiles, and the
 /// free text the transcript carries into comments never changes the script's code.
 pub fn transcript(data: &[u8]) {
-    let Ok(entries) = replay::parse::parse(&text(data)) else {
+    let Ok(entries) = parse_transcript(&text(data)) else {
         return;
     };
+    let _ = recognise(&entries);
     let profile = Profile::builtin();
-    let steps = replay::steps(&entries, &profile);
-    let script = replay::to_rhai(&steps, &profile, "fuzz.log", 1000);
-    let blanked: Vec<replay::Step> = steps
+    let steps = tmcl_replay::steps(&entries, &profile);
+    let script = tmcl_replay::to_rhai(&steps, &profile, "fuzz.log", 1000);
+    let blanked: Vec<tmcl_replay::Step> = steps
         .iter()
         .map(|s| match s {
-            replay::Step::Comment(_) => replay::Step::Comment(String::new()),
+            tmcl_replay::Step::Comment(_) => tmcl_replay::Step::Comment(String::new()),
             s => s.clone(),
         })
         .collect();
     same_code(
         &script,
-        &replay::to_rhai(&blanked, &profile, "fuzz.log", 1000),
+        &tmcl_replay::to_rhai(&blanked, &profile, "fuzz.log", 1000),
     );
-    if replay::smd4::is_smd4(&entries) {
-        let spec = Smd4Spec::builtin();
-        let steps = replay::smd4::steps(&entries, spec);
-        let script = replay::smd4::to_rhai(&steps, spec, "fuzz.log", 1000);
-        let blanked: Vec<replay::smd4::Step> = steps
-            .iter()
-            .map(|s| match s {
-                replay::smd4::Step::Comment(_) => replay::smd4::Step::Comment(String::new()),
-                s => s.clone(),
-            })
-            .collect();
-        same_code(
-            &script,
-            &replay::smd4::to_rhai(&blanked, spec, "fuzz.log", 1000),
-        );
-    }
+    let spec = Smd4Spec::builtin();
+    let steps = smd4_replay::steps(&entries, spec);
+    let script = smd4_replay::to_rhai(&steps, spec, "fuzz.log", 1000);
+    let blanked: Vec<smd4_replay::Step> = steps
+        .iter()
+        .map(|s| match s {
+            smd4_replay::Step::Comment(_) => smd4_replay::Step::Comment(String::new()),
+            s => s.clone(),
+        })
+        .collect();
+    same_code(
+        &script,
+        &smd4_replay::to_rhai(&blanked, spec, "fuzz.log", 1000),
+    );
 }
 
 /// `script` compiles and has the same code, comments aside, as `blanked`.
@@ -332,7 +345,7 @@ pub fn sim_tmcl(data: &[u8]) {
 /// The simulated SMD4 drive (factory settings in memory) fed the same, for as long as the
 /// console's `advance` can reach (its motion is analytic, so time costs nothing).
 pub fn sim_smd4(data: &[u8]) {
-    let sim = Smd4Sim::new(Smd4Options::default());
+    let sim = Smd4Sim::new(Smd4SimOptions::default());
     let limit = Duration::from_nanos(u64::MAX / 2);
     drive(Faulty::new(sim, Faults::default()), data, limit);
 }

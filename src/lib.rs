@@ -2,21 +2,24 @@
 //! modules: Trinamic modules speaking TMCL (TMCM-142 first) and AML SMD4 drives.
 //!
 //! The library holds everything; the `tmclsh` binary only parses arguments and maps errors to exit
-//! codes. Protocols are pure code ([`protocol`]), module tables are data ([`profile`]), and every
-//! face — the REPL, one-shot `-c` lines, piped stdin and Rhai scripts — goes through the same
-//! session to a link: a serial port, a TCP socket or the built-in simulated module.
+//! codes. Each protocol is one [`dialect`] folder (its pure protocol code, tables as data, session,
+//! simulator and faces), and every face — the REPL, one-shot `-c` lines, piped stdin and Rhai
+//! scripts — goes through the same session to a link: a serial port, a TCP socket or the built-in
+//! simulated module.
 #![deny(missing_docs)]
 
-pub mod asm;
 pub mod cli;
+pub mod clock;
 pub mod commission;
+pub mod crash;
+pub mod dialect;
+pub mod duration;
+pub mod escape;
 pub mod exit;
 #[doc(hidden)]
 pub mod fuzz_entry;
 pub mod link;
-pub mod profile;
-pub mod program;
-pub mod protocol;
+pub mod progress;
 pub mod repl;
 pub mod script;
 pub mod session;

@@ -3,5 +3,6 @@
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    tmclsh::cli::main().into()
+    // A panic stops the motors of every open session and exits 101 (see `crash`).
+    tmclsh::crash::guard(tmclsh::cli::main)
 }

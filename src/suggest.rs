@@ -1,4 +1,7 @@
-//! "Did you mean …?" for mistyped command and parameter names.
+//! "Did you mean …?" for mistyped command and parameter names. A name a few edits away wins, the
+//! fewest edits per letter first — edits counted by Damerau–Levenshtein, so two letters swapped
+//! (`GPA` for `GAP`) are one edit like a wrong, missing or extra letter. Failing that, a long name that keeps
+//! most of the typed letters in order (Jaro–Winkler) is suggested, as for `max_curent`.
 
 /// The candidate closest to `word`, if it is close enough to be a plausible typo.
 pub fn nearest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<String> {
@@ -15,18 +18,45 @@ pub fn nearest_of<'a>(
         .filter(|r| !r.is_empty())
         .map(|r| r.to_ascii_lowercase())
         .collect();
-    candidates
-        .into_iter()
-        .flat_map(|c| {
-            let lower = c.to_ascii_lowercase();
-            readings
-                .iter()
-                .map(move |r| (strsim::jaro_winkler(r, &lower), c))
-                .collect::<Vec<_>>()
-        })
-        .filter(|(score, _)| *score >= 0.8)
-        .max_by(|a, b| a.0.total_cmp(&b.0))
-        .map(|(_, c)| c.to_string())
+    let mut by_edits: Option<(f64, f64, &str)> = None;
+    let mut by_likeness: Option<(f64, &str)> = None;
+    for candidate in candidates {
+        let lower = candidate.to_ascii_lowercase();
+        for reading in &readings {
+            let edits = strsim::damerau_levenshtein(reading, &lower);
+            let likeness = strsim::jaro_winkler(reading, &lower);
+            if edits <= allowed_edits(reading) {
+                // Edits per letter: one wrong letter in two is a worse guess than one in three.
+                let longer = reading.chars().count().max(lower.chars().count());
+                let share = edits as f64 / longer as f64;
+                let better =
+                    by_edits.is_none_or(|(s, l, _)| share < s || (share == s && likeness > l));
+                if better {
+                    by_edits = Some((share, likeness, candidate));
+                }
+            }
+            if likeness >= LIKENESS && by_likeness.is_none_or(|(l, _)| likeness > l) {
+                by_likeness = Some((likeness, candidate));
+            }
+        }
+    }
+    by_edits
+        .map(|(_, _, c)| c)
+        .or(by_likeness.map(|(_, c)| c))
+        .map(str::to_string)
+}
+
+/// Jaro–Winkler similarity from which a name counts as a likely misspelling.
+const LIKENESS: f64 = 0.8;
+
+/// How many edits a typo of `word` plausibly has: one in a short name, more in longer ones.
+fn allowed_edits(word: &str) -> usize {
+    match word.chars().count() {
+        0 => 0,
+        1..=5 => 1,
+        6..=9 => 2,
+        _ => 3,
+    }
 }
 
 /// "; did you mean X?" or nothing, for error messages.
@@ -50,6 +80,49 @@ mod tests {
             Some("actual_position")
         );
         assert_eq!(nearest("zzzzzz", names), None);
+        assert_eq!(nearest("QQQ", names), None);
+    }
+
+    #[test]
+    fn two_swapped_letters_are_one_edit() {
+        let names = [
+            "GAP",
+            "SAP",
+            "GGP",
+            "MVP",
+            "actual_position",
+            "actual_speed",
+        ];
+        assert_eq!(nearest("GPA", names).as_deref(), Some("GAP"));
+        assert_eq!(nearest("SPA", names).as_deref(), Some("SAP"));
+        assert_eq!(nearest("VMP", names).as_deref(), Some("MVP"));
+        assert_eq!(
+            nearest("acutal_position", names).as_deref(),
+            Some("actual_position")
+        );
+        assert_eq!(
+            nearest("actual_spede", names).as_deref(),
+            Some("actual_speed")
+        );
+    }
+
+    #[test]
+    fn fewer_edits_win_over_a_longer_shared_prefix() {
+        // One edit from MST, two from MVP: the closer one is suggested.
+        assert_eq!(nearest("MTS", ["MVP", "MST"]).as_deref(), Some("MST"));
+    }
+
+    #[test]
+    fn any_reading_may_match_and_the_smaller_share_of_edits_wins() {
+        assert_eq!(
+            nearest_of(&["AGPA", "GPA"], ["GAP", "SAP"]).as_deref(),
+            Some("GAP")
+        );
+        // `GPA` may be `PA` after address G: one edit from JA, but one in two letters.
+        assert_eq!(
+            nearest_of(&["GPA", "PA"], ["GAP", "JA", "SAP"]).as_deref(),
+            Some("GAP")
+        );
     }
 
     #[test]

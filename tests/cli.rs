@@ -43,9 +43,9 @@ fn params_without_filter_lists_axis_and_global_parameters() {
 }
 
 #[test]
-fn params_with_a_filter_that_matches_nothing_says_so() {
+fn params_with_a_filter_that_matches_nothing_says_so_and_exits_1() {
     let out = run(&["params", "no_such_thing"]);
-    assert_eq!(code(&out), 0);
+    assert_eq!(code(&out), 1);
     assert!(stdout(&out).is_empty());
     assert!(stderr(&out).contains("no TMCM-142 parameter matches 'no_such_thing'"));
 }
@@ -73,7 +73,9 @@ fn a_broken_profile_is_refused_with_exit_2() {
     let out = run(&["--profile", path.to_str().unwrap(), "params"]);
     assert_eq!(code(&out), 2);
     assert!(
-        stderr(&out).contains("does not follow the profile schema"),
+        stderr(&out).contains(
+            "refused (schema in the README, \"Module profiles\"):\n  line 2: invalid type"
+        ),
         "{}",
         stderr(&out)
     );
@@ -135,4 +137,124 @@ fn the_readme_usage_block_is_the_real_help() {
         block == stdout(&out),
         "README usage block is stale; paste the output of `tmclsh -h`"
     );
+}
+
+#[test]
+fn a_transposition_is_suggested_wherever_names_are() {
+    for (args, suggestion) in [
+        (&["-c", "GPA 1, 0"][..], "did you mean GAP?"),
+        (
+            &["-c", "GAP acutal_position, 0"],
+            "did you mean actual_position?",
+        ),
+        (&["-c", ":prmas"], "did you mean :params?"),
+        (
+            &["--protocol", "smd4", "-c", "MOTRO:VMAX"],
+            "did you mean MOTOR:VMAX?",
+        ),
+    ] {
+        let out = run(args);
+        assert_eq!(code(&out), 2, "{args:?}: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains(suggestion),
+            "{args:?}: {}",
+            stderr(&out)
+        );
+    }
+}
+
+mod config;
+mod examples;
+mod history;
+mod log;
+mod output;
+mod ports;
+mod snapshot_save;
+mod words;
+
+#[test]
+fn committed_man_page_matches_what_the_binary_generates() {
+    let out = run(&["man"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let committed = std::fs::read(repo().join("man/tmclsh.1")).expect("man/tmclsh.1");
+    assert!(
+        committed == out.stdout,
+        "man/tmclsh.1 is stale; regenerate with: cargo run -q -- man > man/tmclsh.1"
+    );
+    let page = stdout(&out);
+    for section in [
+        ".SH NAME",
+        ".SH SYNOPSIS",
+        ".SH OPTIONS",
+        ".SH \"TMCLSH RUN\"",
+        ".SH \"TMCLSH SNAPSHOT SAVE\"",
+        ".SH \"EXIT STATUS\"",
+        ".SH FILES",
+    ] {
+        assert!(page.contains(section), "no {section}");
+    }
+}
+
+/// Runs the committed bash completion for the words typed so far (the last one being
+/// completed) in `dir`; returns the candidates.
+fn bash_completes(dir: &std::path::Path, words: &[&str]) -> Vec<String> {
+    let script = repo().join("completions/tmclsh.bash");
+    let quoted: Vec<String> = words.iter().map(|w| format!("'{w}'")).collect();
+    let program = format!(
+        "source '{}'\nCOMP_WORDS=({})\nCOMP_CWORD={}\n_tmclsh_with_files tmclsh '{}' '{}'\nprintf '%s\\n' \"${{COMPREPLY[@]}}\"\n",
+        script.display(),
+        quoted.join(" "),
+        words.len() - 1,
+        words[words.len() - 1],
+        words[words.len() - 2],
+    );
+    let out = std::process::Command::new("bash")
+        .arg("-c")
+        .arg(program)
+        .current_dir(dir)
+        .output()
+        .expect("bash runs");
+    let mut found: Vec<String> = stdout(&out)
+        .lines()
+        .filter(|l| !l.is_empty())
+        .map(String::from)
+        .collect();
+    found.sort();
+    found
+}
+
+#[cfg(unix)]
+#[test]
+fn bash_completes_only_the_files_a_subcommand_takes() {
+    if std::process::Command::new("bash")
+        .arg("-c")
+        .arg("true")
+        .status()
+        .is_err()
+    {
+        return; // no bash on this machine
+    }
+    let dir = tempdir();
+    for file in ["a.rhai", "b.tmc", "c.bin", "d.txt"] {
+        std::fs::write(dir.join(file), "").unwrap();
+    }
+    std::fs::create_dir(dir.join("sub")).unwrap();
+    assert_eq!(
+        bash_completes(&dir, &["tmclsh", "run", ""]),
+        ["a.rhai", "sub"]
+    );
+    assert_eq!(
+        bash_completes(&dir, &["tmclsh", "download", ""]),
+        ["b.tmc", "c.bin", "sub"]
+    );
+    assert_eq!(
+        bash_completes(&dir, &["tmclsh", "--timeout", "5", "asm", ""]),
+        ["b.tmc", "sub"]
+    );
+    // An option's value is not a script: --log takes any path.
+    assert!(bash_completes(&dir, &["tmclsh", "run", "--log", ""]).contains(&"d.txt".to_string()));
+    let ports = bash_completes(&dir, &["tmclsh", "--port", ""]);
+    assert!(ports.iter().all(|p| p.starts_with("/dev/")), "{ports:?}");
+    // The rest is clap's completion.
+    assert!(bash_completes(&dir, &["tmclsh", "ru"]).contains(&"run".to_string()));
 }

@@ -4,13 +4,22 @@
 mod util;
 
 mod asm;
+mod catalogue;
 mod cli;
 mod commission;
 mod fuzz_corpus;
 #[cfg(feature = "hardware")]
 mod hardware;
+mod hostile;
+mod inputs;
+mod layers;
+mod options;
+mod profiles;
 mod program;
 mod repl;
+#[cfg(unix)]
+mod reply_noise;
+mod safety;
 mod script;
 mod shell;
 mod sim;

@@ -8,22 +8,29 @@ use rexpect::session::{PtySession, spawn_command};
 use crate::util::{bin, tempdir};
 
 /// The REPL on the built-in simulator, with its own history directory.
-fn repl(extra: &[&str]) -> (PtySession, std::path::PathBuf) {
+pub(crate) fn repl(extra: &[&str]) -> (PtySession, std::path::PathBuf) {
     let data = tempdir();
+    (repl_at(extra, &data), data)
+}
+
+/// The REPL on the built-in simulator with `data` as its home, data and config directory.
+pub(crate) fn repl_at(extra: &[&str], data: &std::path::Path) -> PtySession {
     let mut command = Command::new(bin());
     command
         .args(extra)
         .env("NO_COLOR", "1")
         .env("TERM", "xterm")
-        .env("XDG_DATA_HOME", &data)
-        .env("HOME", &data);
-    let mut p = spawn_command(command, Some(10_000)).expect("tmclsh starts in a pty");
+        .env("XDG_DATA_HOME", data)
+        .env("XDG_CONFIG_HOME", data)
+        .env("HOME", data);
+    let mut p =
+        spawn_command(command, Some(crate::util::EXPECT_MS)).expect("tmclsh starts in a pty");
     p.exp_string("tmclsh").unwrap();
-    (p, data)
+    p
 }
 
 /// Types text without Enter (rexpect buffers until flushed).
-fn type_in(p: &mut PtySession, text: &str) {
+pub(crate) fn type_in(p: &mut PtySession, text: &str) {
     p.send(text).unwrap();
     p.flush().unwrap();
 }
@@ -124,7 +131,7 @@ fn helpers_work_and_history_is_kept_in_the_data_directory() {
     p.exp_string("firmware version 142V1.06").unwrap();
     p.send_line(":quit").unwrap();
     p.exp_eof().unwrap();
-    let history = std::fs::read_to_string(data.join("tmclsh").join("history")).unwrap();
+    let history = std::fs::read_to_string(data.join("tmclsh").join("history-tmcl")).unwrap();
     assert!(history.contains("136 0"), "{history}");
 }
 

@@ -2,6 +2,9 @@
 //! line, column and both values, Ctrl-C during a rotation, the operation cap, and the example
 //! scripts of `scripts/`, against the simulator.
 
+mod limits;
+mod sandbox;
+
 use std::io::{BufRead, BufReader};
 use std::process::{Command, Stdio};
 
@@ -79,6 +82,8 @@ fn every_api_function_against_a_simulated_module() {
     let out = run(&[
         "run",
         &path,
+        "--allow-dir",
+        program.parent().unwrap().to_str().unwrap(),
         "--port",
         &sim.first,
         "--log",

@@ -17,7 +17,7 @@ use std::process::{Child, ChildStderr, ChildStdin, Command, Stdio};
 use std::sync::mpsc::{Receiver, channel};
 use std::time::{Duration, Instant};
 
-use tmclsh::protocol::tmcl::{CommandFrame, Instruction, ReplyFrame};
+use tmclsh::dialect::tmcl::protocol::{CommandFrame, Instruction, ReplyFrame};
 
 use crate::util::bin;
 

@@ -3,6 +3,10 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
+/// How long an expect-style test waits for a piece of terminal output before failing, in ms: a
+/// hang guard, not a timing assertion, so generous enough for a loaded 2-core machine.
+pub const EXPECT_MS: u64 = 30_000;
+
 /// The `tmclsh` binary cargo built for these tests.
 pub fn bin() -> PathBuf {
     PathBuf::from(env!("CARGO_BIN_EXE_tmclsh"))

@@ -16,8 +16,8 @@ use std::time::{Duration, Instant};
 
 use nix::sys::time::TimeSpec;
 
-use tmclsh::profile::Profile;
-use tmclsh::protocol::tmcl::{AsciiReply, Status, format_line, parse};
+use tmclsh::dialect::tmcl::profile::Profile;
+use tmclsh::dialect::tmcl::protocol::{AsciiReply, Status, format_line, parse};
 
 use crate::proc::{Sim, median, repo_file, run, tmclsh};
 use crate::report::Row;

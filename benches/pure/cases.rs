@@ -7,11 +7,12 @@
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use tmclsh::profile::Profile;
-use tmclsh::protocol::smd4::{Expectation, Smd4Spec, parse_response};
-use tmclsh::protocol::tmcl::{
+use tmclsh::dialect::smd4::protocol::{self as smd4, Expectation, Smd4Spec, check_reply};
+use tmclsh::dialect::tmcl::profile::Profile;
+use tmclsh::dialect::tmcl::protocol::{
     CommandFrame, FrameDecoder, Instruction, ReplyFrame, Status, format_line, parse, parse_reply,
 };
+use tmclsh::escape::escape_control;
 
 /// One timed case.
 pub struct Case {
@@ -62,12 +63,13 @@ pub fn run() -> Vec<Case> {
         host: 2,
         module: 1,
         status: Status::Ok,
-        command: 6,
+        command: 6.into(),
         value: -5000,
     }
     .encode();
     let smd4 = Smd4Spec::builtin();
     let pact = Expectation::for_command(smd4.commands.get("MOTOR:PACT").expect("MOTOR:PACT"));
+    let vmax = Expectation::for_command(smd4.commands.get("MOTOR:VMAX").expect("MOTOR:VMAX"));
     // One decoder for the whole run, as a receiver keeps one.
     let mut decoder = FrameDecoder::new();
     let case = |name, ns| Case { name, ns };
@@ -104,7 +106,25 @@ pub fn run() -> Vec<Case> {
         case(
             "SMD4 response parse (`0x0000,0x0000,1000.00`)",
             time(|| {
-                black_box(parse_response(black_box("0x0000,0x0000,1000.00"), &pact).ok());
+                black_box(smd4::parse_reply(black_box("0x0000,0x0000,1000.00"), &pact).ok());
+            }),
+        ),
+        case(
+            "SMD4 reply check (`0x0888,0x0000,1.0000E+03,1.0000E+03`, parsed)",
+            {
+                let line = "0x0888,0x0000,1.0000E+03,1.0000E+03";
+                let reply = smd4::parse_reply(line, &vmax).expect("a reply");
+                time(|| {
+                    black_box(check_reply(black_box(&reply), &vmax, None).is_ok());
+                })
+            },
+        ),
+        case(
+            "escape for the terminal, nothing to escape (36 chars)",
+            time(|| {
+                black_box(escape_control(black_box(
+                    "0x0888,0x0000,1.0000E+03,1.0000E+03",
+                )));
             }),
         ),
     ]

@@ -3,11 +3,9 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use crate::asm::{self, Program};
-use crate::exit::Exit;
-use crate::profile::Profile;
-
-use super::Failure;
+use crate::dialect::tmcl::asm::{self, Program};
+use crate::dialect::tmcl::profile::Profile;
+use crate::exit::{Exit, Failure};
 
 /// Arguments of `asm`.
 #[derive(Debug, clap::Args)]

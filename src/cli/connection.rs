@@ -1,27 +1,31 @@
-//! Connection and session flags shared by the shell and every subcommand that talks to a module.
+//! Connection and session flags: one group ([`ModuleArgs`]) flattened the same way into the shell
+//! and every subcommand that talks to a module, so that `cli::position` can move the ones written
+//! before the subcommand behind it and `cli::relevance` can refuse those that would be ignored.
 
 use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::Duration;
 
-use crate::exit::Exit;
-use crate::exit::ExitStatus;
-use crate::link::{Link, SerialLink, TcpLink};
-use crate::profile::Profile;
-use crate::protocol::Dialect;
-use crate::protocol::smd4::PrefixStyle;
-use crate::session::smd4::{Smd4Options, Smd4Session};
-use crate::session::tmcl::TmclSession;
-use crate::session::{Session, SessionOptions, Transcript};
+use clap::{ArgMatches, Args, Command, FromArgMatches};
 
-use super::Failure;
+use crate::dialect::{
+    Configured, DIALECTS, Dialect, DialectConfig, DialectSession, Opening, Purpose,
+    default_dialect, protocol_parser,
+};
+use crate::exit::{Exit, Failure};
+use crate::link::Link;
+use crate::session::transcript::Header;
+use crate::session::{SessionOptions, Transcript};
+
+use super::target::{Target, is_log_dir, log_file};
 
 /// Where the module is: a serial port, a TCP address, or (neither) the built-in simulator.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ConnectionArgs {
     /// Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to
     /// its built-in simulated module.
-    #[arg(long, value_name = "PATH", env = "TMCLSH_PORT", conflicts_with = "tcp")]
+    // Not `conflicts_with = "tcp"`: clap would count TMCLSH_PORT as given and refuse every --tcp
+    // while it is set; `relevance` refuses the two on one command line instead.
+    #[arg(long, value_name = "PATH", env = "TMCLSH_PORT")]
     pub port: Option<String>,
     /// Serial bit rate (8N1).
     #[arg(long, value_name = "N", env = "TMCLSH_BAUD", default_value_t = 9600)]
@@ -29,43 +33,66 @@ pub struct ConnectionArgs {
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT")]
     pub tcp: Option<String>,
-    /// The protocol the module speaks (also selects the built-in simulated module).
-    #[arg(long, value_enum, default_value_t = Dialect::Tmcl, env = "TMCLSH_PROTOCOL")]
-    pub protocol: Dialect,
 }
 
-/// Settings of the SMD4 dialect.
+/// Which protocol the module speaks: shared by the faces that talk to a module and by `params`.
 #[derive(Debug, Clone, clap::Args)]
-#[command(next_help_heading = "SMD4")]
-pub struct Smd4Args {
-    /// SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=247))]
-    pub address: Option<u32>,
-    /// SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual's @3MOTOR:STOP.
-    #[arg(long)]
-    pub prefix_comma: bool,
-    /// SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have
-    /// no end marker).
-    #[arg(long, value_name = "MS", value_parser = clap::value_parser!(u64).range(1..))]
-    pub quiet_gap: Option<u64>,
+pub struct DialectArgs {
+    /// The protocol the module speaks (also selects the built-in simulated module).
+    #[arg(long, value_parser = protocol_parser(), default_value = default_dialect().name, env = "TMCLSH_PROTOCOL")]
+    pub protocol: &'static Dialect,
 }
 
-impl Smd4Args {
-    /// The SMD4 session options these flags select.
-    pub fn options(&self) -> Smd4Options {
-        let defaults = Smd4Options::default();
-        Smd4Options {
-            address: self.address,
-            prefix: if self.prefix_comma {
-                PrefixStyle::Comma
-            } else {
-                PrefixStyle::Attached
-            },
-            quiet_gap: self
-                .quiet_gap
-                .map(Duration::from_millis)
-                .unwrap_or(defaults.quiet_gap),
-        }
+/// The command line as given, kept whole for the chosen dialect to read its own options from
+/// (SMD4's `--address`, TMCL's `--echo`). It adds no options; flattened first into
+/// [`ModuleArgs`], it is taken before the groups after it take their values out.
+#[derive(Debug, Clone)]
+pub struct CommandLine(ArgMatches);
+
+impl FromArgMatches for CommandLine {
+    fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
+        Ok(CommandLine(matches.clone()))
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
+        self.0 = matches.clone();
+        Ok(())
+    }
+}
+
+impl Args for CommandLine {
+    fn augment_args(cmd: Command) -> Command {
+        cmd
+    }
+
+    fn augment_args_for_update(cmd: Command) -> Command {
+        cmd
+    }
+}
+
+/// The session flags of every dialect (`--address` …), each dialect's under the help heading it
+/// sets (which, as with any flattened group, stays for the options after it). Their values are
+/// read by the dialect from the [`CommandLine`].
+#[derive(Debug, Clone)]
+pub struct DialectFlags;
+
+impl FromArgMatches for DialectFlags {
+    fn from_arg_matches(_: &ArgMatches) -> Result<Self, clap::Error> {
+        Ok(DialectFlags)
+    }
+
+    fn update_from_arg_matches(&mut self, _: &ArgMatches) -> Result<(), clap::Error> {
+        Ok(())
+    }
+}
+
+impl Args for DialectFlags {
+    fn augment_args(cmd: Command) -> Command {
+        DIALECTS.iter().fold(cmd, |cmd, d| (d.session_flags)(cmd))
+    }
+
+    fn augment_args_for_update(cmd: Command) -> Command {
+        Self::augment_args(cmd)
     }
 }
 
@@ -73,13 +100,18 @@ impl Smd4Args {
 #[derive(Debug, Clone, clap::Args)]
 pub struct SessionArgs {
     /// Address of the target module (1 = address character A).
-    #[arg(long, short = 'm', value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
+    #[arg(long, short = 'm', value_name = "N", env = "TMCLSH_MODULE", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..=26))]
     pub module: u8,
     /// Milliseconds to wait for a reply before giving up (exit code 3).
-    #[arg(long, value_name = "MS", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "MS", env = "TMCLSH_TIMEOUT", default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..))]
     pub timeout: u64,
-    /// Append every byte sent and received, timestamped and decoded, to FILE.
-    #[arg(long, value_name = "FILE")]
+    /// Set the target module's echo on opening: char, line (every reply attributed to its
+    /// request) or none (global parameter 67 in RAM; it stays after tmclsh ends).
+    #[arg(long, value_enum, value_name = "MODE")]
+    pub echo: Option<EchoMode>,
+    /// Append every byte sent and received, timestamped and decoded, to FILE; given a
+    /// directory (or a path ending in /), write a new file there named by device and date.
+    #[arg(long, value_name = "FILE", value_hint = clap::ValueHint::AnyPath)]
     pub log: Option<PathBuf>,
     /// Send lines the validator would refuse (still canonicalised where they parse).
     #[arg(long)]
@@ -90,6 +122,18 @@ pub struct SessionArgs {
     /// Leave the modules in ASCII mode on exit instead of restoring the mode they were found in.
     #[arg(long)]
     pub stay_ascii: bool,
+}
+
+/// The echo modes of a TMCL module, as `--echo` and `:echo` name them; the TMCL session reads
+/// the word given (see `dialect::tmcl::config`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum EchoMode {
+    /// Every character echoed as it arrives.
+    Char,
+    /// The whole line echoed after its end.
+    Line,
+    /// No echo, only the reply.
+    None,
 }
 
 impl SessionArgs {
@@ -104,19 +148,27 @@ impl SessionArgs {
         }
     }
 
-    /// Opens the transcript, if asked for.
-    pub fn transcript(&self) -> Result<Option<Transcript>, Failure> {
-        self.log
-            .as_deref()
-            .map(|path| {
-                Transcript::open(path).map_err(|e| {
-                    Failure::new(
-                        Exit::Refused,
-                        format!("cannot open log file {}: {e}", path.display()),
-                    )
-                })
-            })
-            .transpose()
+    /// Opens the transcript, if asked for, starting it with `header`; a `--log` directory gets
+    /// a new file named by `device` and the date.
+    pub fn transcript(&self, header: &Header, device: &str) -> Result<Option<Transcript>, Failure> {
+        let Some(path) = self.log.as_deref() else {
+            return Ok(None);
+        };
+        if !is_log_dir(path) {
+            return Transcript::open(path, header)
+                .map(Some)
+                .map_err(Failure::from);
+        }
+        std::fs::create_dir_all(path).map_err(|e| {
+            Failure::new(
+                Exit::Refused,
+                format!("cannot create the log directory {}: {e}", path.display()),
+            )
+        })?;
+        let file = log_file(path, device, std::time::SystemTime::now());
+        Transcript::open(&file, header)
+            .map(Some)
+            .map_err(Failure::from)
     }
 }
 
@@ -126,77 +178,120 @@ impl ConnectionArgs {
         self.port.is_none() && self.tcp.is_none()
     }
 
-    /// Opens the link.
+    /// Where the link goes (a `usb:` name resolved to its device file).
+    pub fn target(&self) -> Result<Target, Failure> {
+        Target::of(self.port.as_deref(), self.tcp.as_deref())
+    }
+
+    /// Opens the link: the TCP connection (--tcp, which only the command line gives, wins over a
+    /// TMCLSH_PORT), the serial port, or the built-in simulator of `config`'s dialect.
     pub fn open(
         &self,
-        profile: &Arc<Profile>,
+        config: &dyn DialectConfig,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link: Box<dyn Link> = if let Some(path) = &self.port {
-            Box::new(
-                SerialLink::open(path, self.baud)
-                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
-            )
-        } else if let Some(address) = &self.tcp {
-            Box::new(
-                TcpLink::connect(address, timeout)
-                    .map_err(|e| Failure::new(Exit::Link, e.to_string()))?,
-            )
-        } else {
-            crate::sim::builtin_link(profile, self.protocol)
-        };
-        Ok(link)
+        self.target()?.open(self.baud, config, timeout)
     }
 }
 
-/// Everything that says which module to talk to and how: shared by the shell and every
-/// subcommand that opens a session in either dialect.
+/// Everything that says which module to talk to and how: flattened, the same way, into the shell
+/// and every subcommand that opens a session in either dialect.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ModuleArgs {
+    /// The command line as given, for the dialect's own options.
+    #[command(flatten)]
+    pub command_line: CommandLine,
     /// Where the module is.
     #[command(flatten)]
     pub connection: ConnectionArgs,
+    /// The protocol it speaks.
+    #[command(flatten)]
+    pub dialect: DialectArgs,
     /// How requests are sent and checked.
     #[command(flatten)]
     pub session: SessionArgs,
-    /// SMD4 settings.
+    /// The settings of each dialect.
     #[command(flatten)]
-    pub smd4: Smd4Args,
+    pub flags: DialectFlags,
+}
+
+/// Who learns that the built-in simulator answers: a command run without a terminal says so on
+/// stderr, the REPL in its banner.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Audience {
+    /// A command that runs to its end: the notice goes to stderr.
+    Batch,
+    /// The REPL, whose banner names the simulated module.
+    Interactive,
 }
 
 impl ModuleArgs {
-    /// Opens a session in the dialect the flags say.
-    pub fn open(&self, profile: &Arc<Profile>) -> Result<Session, Failure> {
-        let options = self.session.options();
-        let transcript = self.session.transcript()?;
-        let link = self.connection.open(profile, options.timeout)?;
-        match self.connection.protocol {
-            Dialect::Tmcl => {
-                TmclSession::open(link, profile.clone(), options, transcript).map(Session::Tmcl)
-            }
-            Dialect::Smd4 => {
-                Smd4Session::open(link, options, self.smd4.options(), transcript).map(Session::Smd4)
-            }
-        }
-        .map_err(|e| Failure::new(e.exit(), e.to_string()))
+    /// The protocol the module speaks.
+    pub fn protocol(&self) -> &'static Dialect {
+        self.dialect.protocol
     }
-}
 
-/// Opens a TMCL session (for subcommands that only exist for TMCL modules).
-pub fn open_tmcl(
-    connection: &ConnectionArgs,
-    session: &SessionArgs,
-    profile: &Arc<Profile>,
-) -> Result<TmclSession, Failure> {
-    if connection.protocol != Dialect::Tmcl {
-        return Err(Failure::new(
-            Exit::Refused,
-            "this subcommand works with TMCL modules only",
-        ));
+    /// Opens the link, saying on stderr when a batch command is served by the built-in
+    /// simulator (so nobody mistakes its answers for hardware's).
+    pub fn link(
+        &self,
+        config: &dyn DialectConfig,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<Box<dyn Link>, Failure> {
+        let target = self.connection.target()?;
+        self.link_to(&target, config, timeout, audience)
     }
-    let options = session.options();
-    let transcript = session.transcript()?;
-    let link = connection.open(profile, options.timeout)?;
-    TmclSession::open(link, profile.clone(), options, transcript)
-        .map_err(|e| Failure::new(e.exit(), e.to_string()))
+
+    /// Opens the transcript (named by the target in a `--log` directory), then the link.
+    pub fn connect(
+        &self,
+        config: &dyn DialectConfig,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<(Option<Transcript>, Box<dyn Link>), Failure> {
+        let target = self.connection.target()?;
+        let device = target.file_name(self.protocol());
+        let transcript = self.session.transcript(&config.header(), &device)?;
+        let link = self.link_to(&target, config, timeout, audience)?;
+        Ok((transcript, link))
+    }
+
+    fn link_to(
+        &self,
+        target: &Target,
+        config: &dyn DialectConfig,
+        timeout: Duration,
+        audience: Audience,
+    ) -> Result<Box<dyn Link>, Failure> {
+        let link = target.open(self.connection.baud, config, timeout)?;
+        if *target == Target::Builtin && audience == Audience::Batch {
+            eprintln!(
+                "tmclsh: using the built-in simulated {}; give --port or --tcp for hardware",
+                config.simulated_module()
+            );
+        }
+        Ok(link)
+    }
+
+    /// Opens a session in the dialect the flags say, for `purpose`.
+    pub fn open(
+        &self,
+        configs: &Configured,
+        audience: Audience,
+        purpose: Purpose,
+    ) -> Result<Box<dyn DialectSession>, Failure> {
+        let config = configs.of(self.protocol());
+        let options = self.session.options();
+        let (transcript, link) = self.connect(config, options.timeout, audience)?;
+        config
+            .open(Opening {
+                link,
+                options,
+                transcript,
+                flags: Some(&self.command_line.0),
+                purpose,
+            })
+            .map_err(Failure::from)
+    }
 }

@@ -3,11 +3,9 @@
 use std::io::Write;
 use std::path::PathBuf;
 
-use crate::asm;
-use crate::exit::Exit;
-use crate::profile::Profile;
-
-use super::Failure;
+use crate::dialect::tmcl::asm;
+use crate::dialect::tmcl::profile::Profile;
+use crate::exit::{Exit, Failure};
 
 /// Arguments of `disasm`.
 #[derive(Debug, clap::Args)]

@@ -1,35 +1,45 @@
 //! The command-line surface (clap derive): one file per subcommand, errors mapped to exit codes.
+//! Options may be written before or after the subcommand (`position`); options that would change
+//! nothing are refused (`relevance`).
 
 mod asm;
 mod completions;
+pub mod config;
 pub mod connection;
 mod disasm;
 pub mod download;
+pub mod man;
 pub(crate) mod params;
 mod ports;
+mod position;
+mod profiles;
+mod progress;
+mod relevance;
 pub mod run;
 mod scan;
 pub mod shell;
 mod sim;
-mod sim_smd4;
 mod snapshot;
+mod target;
 mod transcript;
 
+use std::ffi::OsString;
 use std::io::Write;
 use std::path::PathBuf;
-use std::sync::Arc;
 
-use clap::{Parser, Subcommand};
+use clap::{FromArgMatches, Parser, Subcommand};
 
-use crate::exit::Exit;
-use crate::profile::Profile;
+use crate::dialect::Configured;
+use crate::exit::{Exit, Failure};
 
 /// Terminal and scripting shell for TMCL and SMD4 stepper-motor modules.
 #[derive(Debug, Parser)]
 #[command(name = "tmclsh", version, about, long_about = None, max_term_width = 100)]
 pub struct Cli {
-    /// Module profile (TOML, schema in the README) instead of the built-in TMCM-142 tables.
-    #[arg(long, global = true, value_name = "FILE", env = "TMCLSH_PROFILE")]
+    /// Module profile instead of the TMCM-142's: a built-in name, alias or module number
+    /// (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema
+    /// in the README).
+    #[arg(long, global = true, value_name = "NAME|FILE", env = "TMCLSH_PROFILE")]
     pub profile: Option<PathBuf>,
 
     #[command(flatten)]
@@ -43,10 +53,14 @@ pub struct Cli {
 enum Command {
     /// Print the module's axis and global parameters (those matching FILTER).
     Params(params::ParamsArgs),
+    /// List the built-in TMCL module profiles with their sources, or show one in full.
+    Profiles(profiles::ProfilesArgs),
     /// List the serial ports of this machine.
     Ports,
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
+    /// Print the manual page (roff; man/tmclsh.1 in the source).
+    Man,
     /// Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link).
     Run(run::RunArgs),
     /// Assemble a stand-alone TMCL program (check it, list it, write FILE.bin).
@@ -63,11 +77,22 @@ enum Command {
     Transcript(transcript::TranscriptArgs),
     /// Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin.
     Sim(sim::SimArgs),
+    /// Show the settings in effect (port, baud, protocol, …) and where each comes from: the
+    /// command line, the environment, tmclsh.toml, the user's config.toml, or built in.
+    Config(config::ConfigArgs),
 }
 
 /// Parses the process arguments and runs; returns the exit code.
 pub fn main() -> Exit {
-    let cli = match Cli::try_parse() {
+    crate::progress::install(Box::new(progress::TerminalProgress));
+    let defaults = match config::Defaults::load() {
+        Ok(defaults) => defaults,
+        Err(message) => {
+            diagnose(&format!("configuration refused: {message}"));
+            return Exit::Refused;
+        }
+    };
+    let cli = match parse_with(std::env::args_os().collect(), &defaults) {
         Ok(cli) => cli,
         Err(e) => {
             let _ = e.print();
@@ -83,65 +108,82 @@ pub fn main() -> Exit {
     match run(cli, &mut stdout) {
         Ok(exit) => exit,
         Err(failure) => {
-            eprintln!("tmclsh: {}", failure.message);
+            diagnose(&failure.message);
             failure.exit
         }
     }
 }
 
-/// An error on its way to stderr, with the exit code it means.
-#[derive(Debug)]
-pub struct Failure {
-    /// What to print.
-    pub message: String,
-    /// The exit code.
-    pub exit: Exit,
+/// Parses a command line (program name first) without configuration files.
+pub fn parse(argv: Vec<OsString>) -> Result<Cli, clap::Error> {
+    parse_with(argv, &config::Defaults::none())
 }
 
-impl Failure {
-    /// A failure with its exit code.
-    pub fn new(exit: Exit, message: impl Into<String>) -> Self {
-        Failure {
-            message: message.into(),
-            exit,
-        }
+/// Parses a command line (program name first) over the defaults of the configuration files:
+/// options written before the subcommand are handed to it, and options given on the command line
+/// that it has no use for are refused.
+pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cli, clap::Error> {
+    let mut cmd = defaults.apply(command());
+    cmd.build();
+    let first = cmd.try_get_matches_from_mut(argv.clone())?;
+    let argv = position::behind_subcommand(&mut cmd, &first, argv)?;
+    let matches = cmd.try_get_matches_from_mut(argv)?;
+    relevance::check(&mut cmd, &matches)?;
+    let mut cli = Cli::from_arg_matches(&matches)?;
+    if let Some(Command::Config(args)) = &mut cli.command {
+        config::explain(args, &matches, defaults);
     }
+    Ok(cli)
+}
+
+/// One line of diagnostics on stderr, its device and input text escaped.
+pub(crate) fn diagnose(message: &str) {
+    eprintln!("tmclsh: {}", crate::escape::escape_control(message));
 }
 
 /// Runs a parsed command line, printing results to `out`.
 pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
-    let profile = load_profile(&cli)?;
+    if let Some(Command::Profiles(args)) = &cli.command {
+        return profiles::run(args, out); // the built-in catalogue: no profile to load
+    }
+    let configs = Configured::load(cli.profile.as_deref())
+        .map_err(|message| Failure::new(Exit::Refused, message))?;
     let result = match cli.command {
-        Some(Command::Params(args)) => params::run(&args, &profile, out),
+        Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports) => ports::run(out),
+        Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),
         Some(Command::Completions(args)) => completions::run(&args, out),
-        Some(Command::Run(args)) => return run::run(args, &profile),
-        Some(Command::Asm(args)) => return asm::run(&args, &profile, out),
-        Some(Command::Disasm(args)) => return disasm::run(&args, &profile, out),
-        Some(Command::Download(args)) => return download::run(args, &profile, out),
-        Some(Command::Snapshot(args)) => return snapshot::run(args, &profile, out),
-        Some(Command::Scan(args)) => return scan::run(args, &profile, out),
-        Some(Command::Transcript(args)) => return transcript::run(args, &profile, out),
-        Some(Command::Sim(args)) => return sim::run(&args, profile, out),
-        None => return shell::run(cli.shell, &profile),
+        Some(Command::Man) => man::run(out),
+        Some(Command::Run(args)) => return run::run(args, &configs),
+        Some(Command::Asm(args)) => return asm::run(&args, tmcl_profile(&configs), out),
+        Some(Command::Disasm(args)) => return disasm::run(&args, tmcl_profile(&configs), out),
+        Some(Command::Download(args)) => return download::run(args, &configs, out),
+        Some(Command::Snapshot(args)) => return snapshot::run(args, &configs, out),
+        Some(Command::Scan(args)) => return scan::run(args, &configs, out),
+        Some(Command::Transcript(args)) => return transcript::run(args, &configs, out),
+        Some(Command::Sim(args)) => return sim::run(&args, &configs, out),
+        Some(Command::Config(args)) => return finish_io(config::run(&args, out)),
+        None => return shell::run(cli.shell, &configs),
     };
+    finish_io(result.map(|()| Exit::Success))
+}
+
+/// The exit code of a command that only writes output: a closed pipe (`| head`) is no failure.
+fn finish_io(result: std::io::Result<Exit>) -> Result<Exit, Failure> {
     match result {
-        Ok(()) => Ok(Exit::Success),
+        Ok(exit) => Ok(exit),
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
         Err(e) => Err(Failure::new(Exit::Link, e.to_string())),
     }
 }
 
-fn load_profile(cli: &Cli) -> Result<Arc<Profile>, Failure> {
-    match &cli.profile {
-        None => Ok(Profile::builtin()),
-        Some(path) => Profile::from_file(path)
-            .map(Arc::new)
-            .map_err(|e| Failure::new(Exit::Refused, e.to_string())),
-    }
+/// The TMCL profile, for the subcommands only TMCL has (`asm`, `disasm`, `download`).
+fn tmcl_profile(configs: &Configured) -> &crate::dialect::tmcl::profile::Profile {
+    let tmcl = configs.of(&crate::dialect::tmcl::DIALECT);
+    crate::dialect::tmcl::config::profile(tmcl).expect("TMCL is configured with its profile")
 }
 
 /// The clap command, for completions and docs.
 pub fn command() -> clap::Command {
-    <Cli as clap::CommandFactory>::command()
+    relevance::hide_unused(<Cli as clap::CommandFactory>::command())
 }

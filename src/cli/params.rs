@@ -1,55 +1,34 @@
-//! `tmclsh params [FILTER]`: the profile's parameters as a table.
+//! `tmclsh params [FILTER]`: the parameters of the module the protocol and profile say — a TMCL
+//! profile's axis and global parameters, the SMD4's commands with their access and arguments.
 
 use std::io::{self, Write};
 
-use crate::profile::{Param, ParamKind, Profile};
+use crate::dialect::Configured;
+use crate::exit::Exit;
+
+use super::connection::DialectArgs;
 
 /// Arguments of `params`.
 #[derive(Debug, clap::Args)]
 pub struct ParamsArgs {
-    /// Show parameters whose identifier or name contains FILTER, or whose number is FILTER.
+    /// Show parameters whose identifier or name contains FILTER, or whose number is FILTER
+    /// (SMD4: commands whose mnemonic contains FILTER).
     pub filter: Option<String>,
+    /// Whose tables to print.
+    #[command(flatten)]
+    pub dialect: DialectArgs,
 }
 
-pub fn run(args: &ParamsArgs, profile: &Profile, out: &mut dyn Write) -> io::Result<()> {
+/// Prints the table; a filter that matches nothing says so on stderr and exits 1 (as `grep`
+/// does), so a script can test whether a parameter exists.
+pub fn run(args: &ParamsArgs, configs: &Configured, out: &mut dyn Write) -> io::Result<Exit> {
     let filter = args.filter.as_deref().unwrap_or("");
-    let rows: Vec<&Param> = profile.matching(filter).collect();
-    if rows.is_empty() {
-        eprintln!("no {} parameter matches '{filter}'", profile.module);
-        return Ok(());
-    }
-    write_table(&rows, out)
-}
-
-/// Prints parameters as an aligned table (shared with the REPL's `:params`).
-pub fn write_table(rows: &[&Param], out: &mut dyn Write) -> io::Result<()> {
-    let kind = |p: &Param| match p.kind {
-        ParamKind::Axis => "axis".to_string(),
-        ParamKind::Global { bank } => format!("global/{bank}"),
-    };
-    let ident_width = rows.iter().map(|p| p.ident.len()).max().unwrap_or(0);
-    let range_width = rows
-        .iter()
-        .map(|p| p.range_text().len())
-        .max()
-        .unwrap_or(0)
-        .max(5);
-    writeln!(
-        out,
-        "{:<8} {:>3}  {:<ident_width$}  {:<3}  {:<range_width$}  unit",
-        "kind", "no", "name", "acc", "range"
-    )?;
-    for p in rows {
-        writeln!(
-            out,
-            "{:<8} {:>3}  {:<ident_width$}  {:<3}  {:<range_width$}  {}",
-            kind(p),
-            p.number,
-            p.ident,
-            p.access.letters(),
-            p.range_text(),
-            p.unit
-        )?;
-    }
-    Ok(())
+    let matched = configs
+        .of(args.dialect.protocol)
+        .write_params(filter, out)?;
+    Ok(if matched {
+        Exit::Success
+    } else {
+        Exit::DeviceError
+    })
 }

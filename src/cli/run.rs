@@ -1,15 +1,15 @@
 //! `tmclsh run SCRIPT [CONNECTION] [-- ARGS...]`: run a Rhai script; the exit code is the verdict.
 
 use std::path::PathBuf;
-use std::sync::Arc;
+use std::time::Duration;
 
-use crate::exit::Exit;
-use crate::profile::Profile;
+use crate::dialect::{Configured, Purpose};
+use crate::exit::{Exit, Failure};
+use crate::script::limits::DEFAULT_MAX_MEMORY_MIB;
 use crate::script::{self, Limits};
 use crate::session::interrupt;
 
-use super::Failure;
-use super::connection::ModuleArgs;
+use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `run`.
 #[derive(Debug, Clone, clap::Args)]
@@ -26,6 +26,21 @@ pub struct RunArgs {
     /// Deepest nesting of function calls.
     #[arg(long, value_name = "N", default_value_t = Limits::default().max_call_depth)]
     pub max_call_depth: usize,
+    /// Memory the script may hold, in MiB (0: no limit).
+    #[arg(long, value_name = "MIB", default_value_t = DEFAULT_MAX_MEMORY_MIB)]
+    pub max_memory: usize,
+    /// Wall-clock time after which the script is stopped, its motors too (exit code 1):
+    /// 500ms, 30s, 2m, or milliseconds.
+    #[arg(long, value_name = "TIME", value_parser = parse_time)]
+    pub max_time: Option<Duration>,
+    /// A directory the script's file functions may also reach (repeatable); by default they
+    /// reach only the script's directory and the working directory.
+    #[arg(long, value_name = "DIR")]
+    pub allow_dir: Vec<PathBuf>,
+    /// Let the script's file functions replace existing files that are not tmclsh snapshots or
+    /// recordings.
+    #[arg(long)]
+    pub overwrite: bool,
     /// Arguments for the script, in its array `args` (strings).
     #[arg(last = true, value_name = "ARGS")]
     pub args: Vec<String>,
@@ -33,31 +48,58 @@ pub struct RunArgs {
 
 /// Runs the script; on any failure or Ctrl-C the modules it moved are stopped (MST) and every
 /// module is put back in the mode it was found in before exiting.
-pub fn run(args: RunArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
+pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
     interrupt::install();
-    script::check_file(&args.script).map_err(|r| Failure::new(r.exit, r.message))?;
-    let session = args.module.open(profile)?;
+    script::check_file(&args.script)?;
+    for dir in &args.allow_dir {
+        if !dir.is_dir() {
+            return Err(Failure::new(
+                Exit::Refused,
+                format!("--allow-dir {}: not a directory", dir.display()),
+            ));
+        }
+    }
+    let session = args.module.open(configs, Audience::Batch, Purpose::Talk)?;
     let limits = Limits {
         max_operations: args.max_operations,
         max_call_depth: args.max_call_depth,
+        max_memory: (args.max_memory > 0).then(|| args.max_memory.saturating_mul(1 << 20)),
+        max_time: args.max_time,
+        allow_dirs: args.allow_dir.clone(),
+        overwrite: args.overwrite,
     };
-    let (mut session, outcome) = script::run_file(&args.script, &args.args, session, limits);
+    let (mut session, outcome) = crate::shell::run_file(&args.script, &args.args, session, limits);
     for notice in session.take_notices() {
-        eprintln!("tmclsh: {notice}");
+        super::diagnose(&notice);
     }
     let exit = match outcome {
         Ok(()) => Exit::Success,
         Err(report) => {
-            eprintln!("tmclsh: {}", report.message);
+            super::diagnose(&report.message);
             interrupt::take();
             for message in session.stop_motion() {
-                eprintln!("tmclsh: {message}");
+                super::diagnose(&message);
             }
             report.exit
         }
     };
     for message in session.close() {
-        eprintln!("tmclsh: {message}");
+        super::diagnose(&message);
+    }
+    if let Some(failure) = session.transcript().and_then(|t| t.failure()) {
+        eprintln!("tmclsh: {failure}: the run asked for a transcript, so it failed");
+        if exit == Exit::Success {
+            return Ok(Exit::Link);
+        }
     }
     Ok(exit)
+}
+
+/// A time for `--max-time`: `500ms`, `30s`, `2m`, or a number of milliseconds; at least 1 ms.
+fn parse_time(text: &str) -> Result<Duration, String> {
+    let time = crate::duration::parse(text)?;
+    if time.is_zero() {
+        return Err("the time must be at least 1 ms".into());
+    }
+    Ok(time)
 }

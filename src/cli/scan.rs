@@ -3,18 +3,13 @@
 //! number; each reply is awaited at most `--timeout` milliseconds.
 
 use std::io::Write;
-use std::sync::Arc;
 
-use crate::commission::{scan, smd4_scan};
-use crate::exit::{Exit, ExitStatus};
-use crate::profile::Profile;
-use crate::protocol::Dialect;
+use crate::commission::scan::parse_addresses;
+use crate::dialect::{Configured, Purpose};
+use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
-use crate::session::smd4::Smd4Session;
-use crate::session::tmcl::TmclSession;
 
-use super::Failure;
-use super::connection::{ConnectionArgs, SessionArgs, Smd4Args};
+use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `scan`.
 #[derive(Debug, Clone, clap::Args)]
@@ -25,61 +20,34 @@ pub struct ScanArgs {
     /// --timeout).
     #[arg(long, value_name = "LIST")]
     pub addresses: Option<String>,
+    /// Which bus, and how to talk to it.
     #[command(flatten)]
-    connection: ConnectionArgs,
-    #[command(flatten)]
-    session: SessionArgs,
-    #[command(flatten)]
-    smd4: Smd4Args,
+    module: ModuleArgs,
 }
 
 /// Runs the scan; exit code 3 when nothing answered.
-pub fn run(args: ScanArgs, profile: &Arc<Profile>, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub fn run(args: ScanArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
     interrupt::install();
     let out = &mut super::snapshot::PipeSafe(out);
-    let smd4 = args.connection.protocol == Dialect::Smd4;
-    let default = if smd4 { "1-247" } else { "1-26" };
-    let list = args.addresses.as_deref().unwrap_or(default);
-    let addresses = scan::parse_addresses(list)
+    let dialect = args.module.protocol();
+    let list = args.addresses.as_deref().unwrap_or(dialect.scan_addresses);
+    let addresses = parse_addresses(list)
         .map_err(|e| Failure::new(Exit::Refused, format!("--addresses: {e}")))?;
-    let options = args.session.options();
-    let per_reply = options.timeout;
-    let transcript = args.session.transcript()?;
-    let link = args.connection.open(profile, per_reply)?;
-    let failed = |e: crate::session::SessionError| Failure::new(e.exit(), e.to_string());
-    if smd4 {
-        let mut session =
-            Smd4Session::open(link, options, args.smd4.options(), transcript).map_err(failed)?;
-        let addresses: Vec<u32> = addresses.into_iter().map(u32::from).collect();
-        let result = smd4_scan::scan(&mut session, &addresses, per_reply);
-        for notice in session.take_notices() {
-            eprintln!("tmclsh: {notice}");
-        }
-        interrupt::take();
-        session.close();
-        let report = result.map_err(failed)?;
-        if report.found.is_empty() {
-            return Err(Failure::new(Exit::Link, smd4_scan::summary(&report)));
-        }
-        smd4_scan::write_report(&report, out)
-            .map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
-        return Ok(Exit::Success);
-    }
-    let mut session =
-        TmclSession::open_idle(link, profile.clone(), options, transcript).map_err(failed)?;
-    let quiet = scan::quiet_time(profile);
-    let result = scan::scan(&mut session, &addresses, per_reply, quiet);
+    let per_reply = args.module.session.options().timeout;
+    let mut session = args.module.open(configs, Audience::Batch, Purpose::Scan)?;
+    let result = session.scan_bus(&addresses, per_reply);
     for notice in session.take_notices() {
-        eprintln!("tmclsh: {notice}");
+        super::diagnose(&notice);
     }
     interrupt::take();
     for message in session.close() {
-        eprintln!("tmclsh: {message}");
+        super::diagnose(&message);
     }
-    let report = result.map_err(failed)?;
-    if report.found.is_empty() {
-        return Err(Failure::new(Exit::Link, scan::summary(&report)));
+    let scan = result?;
+    if scan.found == 0 {
+        return Err(Failure::new(Exit::Link, scan.summary));
     }
-    scan::write_report(&report, out).map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
+    out.write_all(scan.report.as_bytes())
+        .map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
     Ok(Exit::Success)
 }

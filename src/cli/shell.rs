@@ -2,18 +2,16 @@
 //! lines or stdin lines.
 
 use std::io::IsTerminal;
-use std::sync::Arc;
+use std::time::{Duration, Instant};
 
-use crate::exit::Exit;
-use crate::profile::Profile;
-use crate::protocol::Dialect;
-use crate::session::Session;
+use crate::dialect::{Configured, DialectSession, Purpose};
+use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
 use crate::shell::Shell;
-use crate::shell::batch::{self, Lines};
+use crate::shell::batch::{self, Lines, Output};
 
-use super::Failure;
-use super::connection::{ConnectionArgs, ModuleArgs};
+use super::connection::{Audience, ModuleArgs};
+use super::ports;
 
 /// Flags of the shell itself.
 #[derive(Debug, Clone, clap::Args)]
@@ -22,19 +20,55 @@ pub struct ShellArgs {
     /// stdin when it is not a terminal.
     #[arg(short = 'c', value_name = "LINE")]
     pub commands: Vec<String>,
+    /// With -c or piped lines: print only each reply's value (TMCL: -5000 of BA 100 -5000;
+    /// SMD4: the data items), an empty line for a line that failed.
+    #[arg(long, conflicts_with = "json")]
+    pub value: bool,
+    /// With -c or piped lines: print one JSON object per line (status, value or items, raw
+    /// reply, module, exit code).
+    #[arg(long)]
+    pub json: bool,
+    /// With -c or piped lines: go on past a failing line; the exit code is then the worst
+    /// failure's (130 before 3 before 1 before 2).
+    #[arg(long)]
+    pub keep_going: bool,
     /// Which module, and how to talk to it.
     #[command(flatten)]
     pub module: ModuleArgs,
 }
 
 /// Runs the shell: the REPL on a terminal, otherwise the `-c` lines or stdin lines.
-pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
+pub fn run(args: ShellArgs, configs: &Configured) -> Result<Exit, Failure> {
     interrupt::install();
     let interactive = args.commands.is_empty() && std::io::stdin().is_terminal();
-    let session = args.module.open(profile)?;
+    let options = batch::Options {
+        output: match (args.value, args.json) {
+            (true, _) => Output::Value,
+            (_, true) => Output::Json,
+            _ => Output::Reply,
+        },
+        keep_going: args.keep_going,
+    };
+    if interactive {
+        refuse_batch_flags(&args)?;
+    }
+    let audience = if interactive {
+        Audience::Interactive
+    } else {
+        Audience::Batch
+    };
+    let session = if interactive {
+        match wait_for_port(&args.module)? {
+            Waited::GaveUp => return Ok(Exit::Interrupted),
+            Waited::No => args.module.open(configs, audience, Purpose::Talk)?,
+            Waited::Appeared => open_when_ready(&args.module, configs, audience)?,
+        }
+    } else {
+        args.module.open(configs, audience, Purpose::Talk)?
+    };
     let mut shell = Shell::new(session);
     if interactive {
-        let banner = banner(&args.module.connection, &shell, profile);
+        let banner = banner(&args.module, &shell, configs);
         return Ok(crate::repl::run(&mut shell, &banner));
     }
     let lines = if args.commands.is_empty() {
@@ -44,22 +78,104 @@ pub fn run(args: ShellArgs, profile: &Arc<Profile>) -> Result<Exit, Failure> {
     };
     let mut out = std::io::stdout().lock();
     let mut err = std::io::stderr().lock();
-    Ok(batch::run(&mut shell, lines, &mut out, &mut err))
+    Ok(batch::run(&mut shell, lines, options, &mut out, &mut err))
 }
 
-fn banner(connection: &ConnectionArgs, shell: &Shell, profile: &Profile) -> String {
+/// The output flags shape -c and piped lines; the interactive shell has neither.
+fn refuse_batch_flags(args: &ShellArgs) -> Result<(), Failure> {
+    let given: Vec<&str> = [
+        (args.value, "--value"),
+        (args.json, "--json"),
+        (args.keep_going, "--keep-going"),
+    ]
+    .into_iter()
+    .filter_map(|(set, flag)| set.then_some(flag))
+    .collect();
+    if given.is_empty() {
+        return Ok(());
+    }
+    Err(Failure::new(
+        Exit::Refused,
+        format!(
+            "{} shape the output of -c and piped lines; the interactive shell shows decoded replies",
+            given.join(", ")
+        ),
+    ))
+}
+
+/// How often a missing port is looked for.
+const PORT_POLL: Duration = Duration::from_millis(100);
+
+/// How long a port that just appeared may refuse to open: udev sets its owner and mode a moment
+/// after the device file appears.
+const SETTLING: Duration = Duration::from_secs(2);
+
+/// Whether the REPL had to wait for its port.
+enum Waited {
+    /// It was there (or the link is not a serial port).
+    No,
+    /// It appeared.
+    Appeared,
+    /// Ctrl-C.
+    GaveUp,
+}
+
+/// The REPL waits for a serial port that is not there (an adapter not plugged in yet, a `usb:`
+/// name no adapter answers to), as tio does; Ctrl-C gives up. Runs to an end never wait: they
+/// fail at once with exit 3.
+fn wait_for_port(module: &ModuleArgs) -> Result<Waited, Failure> {
+    let (Some(port), None) = (&module.connection.port, &module.connection.tcp) else {
+        return Ok(Waited::No);
+    };
+    let present = || ports::present(port).map_err(|why| Failure::new(Exit::Refused, why));
+    if present()? {
+        return Ok(Waited::No);
+    }
+    println!("waiting for {port}… (Ctrl-C to give up)");
+    let mut next_look = Instant::now() + PORT_POLL;
+    loop {
+        if interrupt::take() {
+            println!("gave up waiting for {port}");
+            return Ok(Waited::GaveUp);
+        }
+        std::thread::sleep(interrupt::SLICE);
+        if Instant::now() >= next_look {
+            if present()? {
+                println!("{port} is there");
+                return Ok(Waited::Appeared);
+            }
+            next_look = Instant::now() + PORT_POLL;
+        }
+    }
+}
+
+/// Opens a port that has just appeared, trying again while it settles.
+fn open_when_ready(
+    module: &ModuleArgs,
+    configs: &Configured,
+    audience: Audience,
+) -> Result<Box<dyn DialectSession>, Failure> {
+    let since = Instant::now();
+    loop {
+        match module.open(configs, audience, Purpose::Talk) {
+            Err(failure) if failure.exit == Exit::Link && since.elapsed() < SETTLING => {
+                if interrupt::take() {
+                    return Err(Failure::new(Exit::Interrupted, "interrupted"));
+                }
+                std::thread::sleep(PORT_POLL);
+            }
+            result => return result,
+        }
+    }
+}
+
+fn banner(module: &ModuleArgs, shell: &Shell, configs: &Configured) -> String {
     let version = env!("CARGO_PKG_VERSION");
-    if connection.is_builtin() {
-        let module = match connection.protocol {
-            Dialect::Tmcl => profile.module.as_str(),
-            Dialect::Smd4 => "SMD4",
-        };
+    if module.connection.is_builtin() {
+        let module = configs.of(module.protocol()).simulated_module();
         format!("tmclsh {version} — simulated {module} (built-in) — use --port to talk to hardware")
     } else {
-        let module = match shell.session_ref() {
-            Session::Tmcl(s) => format!("{}, module {}", profile.module, s.target()),
-            Session::Smd4(_) => "SMD4".to_string(),
-        };
+        let module = shell.session_ref().banner();
         format!(
             "tmclsh {version} — {module} on {}",
             shell.session_ref().describe()

@@ -6,27 +6,24 @@ use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use crate::exit::Exit;
-use crate::profile::Profile;
-use crate::protocol::Dialect;
+use clap::{ArgMatches, Args, Command, FromArgMatches};
+
+use crate::clock::{Clock, ManualClock, SystemClock};
+use crate::dialect::{Configured, DIALECTS, Dialect, SimFlags, default_dialect, protocol_parser};
+use crate::exit::{Exit, Failure};
 use crate::sim::Device;
-use crate::sim::clock::{Clock, ManualClock, SystemClock};
 use crate::sim::console::{self, Answer, Console};
 use crate::sim::fault::{Faults, Faulty};
 use crate::sim::inprocess::SharedDevice;
 use crate::sim::pacing::Paced;
-use crate::sim::tmcl::{Backspace, Bus, BusOptions, FileStore, LineEnd, Quirks, Switches};
-
-use super::Failure;
-use super::sim_smd4::Smd4SimArgs;
 
 /// Arguments of `sim`.
 #[derive(Debug, clap::Args)]
-#[command(after_long_help = console::HELP)]
+#[command(after_long_help = console_help())]
 pub struct SimArgs {
     /// The protocol of the simulated module: a TMCM-142 bus (tmcl) or an SMD4 drive (smd4).
-    #[arg(long, value_enum, default_value_t = Dialect::Tmcl)]
-    pub protocol: Dialect,
+    #[arg(long, value_parser = protocol_parser(), default_value = default_dialect().name)]
+    pub protocol: &'static Dialect,
 
     /// Serve on a new pseudo-terminal (the default); its path is the first line printed.
     #[arg(long, conflicts_with = "listen")]
@@ -37,12 +34,13 @@ pub struct SimArgs {
     #[arg(long, value_name = "ADDR")]
     pub listen: Option<String>,
 
-    /// Module addresses on the simulated RS-485 bus.
-    #[arg(long, value_name = "LIST", value_delimiter = ',', default_value = "1", value_parser = clap::value_parser!(u8).range(1..))]
-    pub modules: Vec<u8>,
+    /// The bus layout of the chosen dialect's simulator.
+    #[command(flatten)]
+    pub bus: SimFlagGroup<BUS>,
 
     /// Pace bytes like a serial line at N baud (10 bits per byte, both directions).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    // Its own id: the shell's --baud (a port's bit rate) written before `sim` is not this.
+    #[arg(long, id = "pace_baud", value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     pub baud: Option<u32>,
 
     /// Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts.
@@ -57,53 +55,9 @@ pub struct SimArgs {
     #[arg(long)]
     pub manual_clock: bool,
 
-    /// Position of the left limit switch (microsteps); not connected by default.
-    #[arg(
-        long,
-        value_name = "POS",
-        allow_hyphen_values = true,
-        help_heading = "Switches"
-    )]
-    pub left_switch: Option<i64>,
-
-    /// Position of the right limit switch.
-    #[arg(
-        long,
-        value_name = "POS",
-        allow_hyphen_values = true,
-        help_heading = "Switches"
-    )]
-    pub right_switch: Option<i64>,
-
-    /// Position of the reference (home) switch, active at and right of it.
-    #[arg(
-        long,
-        value_name = "POS",
-        allow_hyphen_values = true,
-        help_heading = "Switches"
-    )]
-    pub home_switch: Option<i64>,
-
-    /// Switch to ASCII mode on command 139 without a binary reply.
-    #[arg(long, help_heading = "Choices the manual leaves open")]
-    pub no_reply_to_139: bool,
-
-    /// Switch back to binary mode on BIN without an ASCII reply.
-    #[arg(long, help_heading = "Choices the manual leaves open")]
-    pub no_reply_to_bin: bool,
-
-    /// Ending of ASCII replies: none, cr, lf or crlf.
-    #[arg(long, value_name = "END", default_value = "cr", value_parser = line_end, help_heading = "Choices the manual leaves open")]
-    pub reply_end: LineEnd,
-
-    /// What follows an echoed line: none, cr, lf or crlf (stands for the typed CR in character
-    /// echo mode).
-    #[arg(long, value_name = "END", default_value = "cr", value_parser = line_end, help_heading = "Choices the manual leaves open")]
-    pub echo_end: LineEnd,
-
-    /// Echo of a backspace in character echo mode: erase (BS SP BS) or plain (BS).
-    #[arg(long, value_name = "HOW", default_value = "erase", value_parser = backspace, help_heading = "Choices the manual leaves open")]
-    pub backspace_echo: Backspace,
+    /// The setup of the chosen dialect's simulated module.
+    #[command(flatten)]
+    pub module: SimFlagGroup<MODULE>,
 
     /// Drop replies with this probability (0..1).
     #[arg(long, value_name = "RATE", default_value_t = 0.0, value_parser = rate, help_heading = "Faults")]
@@ -146,17 +100,51 @@ pub struct SimArgs {
     )]
     pub seed: u64,
 
-    /// SMD4 quirk switches.
+    /// The quirk switches of each dialect's simulator.
     #[command(flatten)]
-    pub smd4: Smd4SimArgs,
+    pub quirks: SimFlagGroup<QUIRKS>,
 }
 
-fn line_end(text: &str) -> Result<LineEnd, String> {
-    text.parse()
+/// The simulator flags of every dialect in one group of `sim --help` ([`SimFlags`]), kept as
+/// parsed for the chosen dialect to read its own.
+#[derive(Debug, Clone)]
+pub struct SimFlagGroup<const G: u8>(ArgMatches);
+
+const BUS: u8 = 0;
+const MODULE: u8 = 1;
+const QUIRKS: u8 = 2;
+
+impl<const G: u8> FromArgMatches for SimFlagGroup<G> {
+    fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
+        Ok(SimFlagGroup(matches.clone()))
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
+        self.0 = matches.clone();
+        Ok(())
+    }
 }
 
-fn backspace(text: &str) -> Result<Backspace, String> {
-    text.parse()
+impl<const G: u8> Args for SimFlagGroup<G> {
+    fn augment_args(cmd: Command) -> Command {
+        let group = match G {
+            BUS => SimFlags::Bus,
+            MODULE => SimFlags::Module,
+            _ => SimFlags::Quirks,
+        };
+        DIALECTS
+            .iter()
+            .fold(cmd, |cmd, d| (d.sim_flags)(group, cmd))
+    }
+
+    fn augment_args_for_update(cmd: Command) -> Command {
+        Self::augment_args(cmd)
+    }
+}
+
+/// The console commands of every dialect's simulator.
+fn console_help() -> String {
+    console::help(DIALECTS.iter().map(|d| d.console_help))
 }
 
 fn rate(text: &str) -> Result<f64, String> {
@@ -166,68 +154,26 @@ fn rate(text: &str) -> Result<f64, String> {
         .ok_or_else(|| format!("'{text}' is not a rate between 0 and 1"))
 }
 
-/// The simulated modules on the bus.
-fn device(args: &SimArgs, profile: Arc<Profile>) -> Result<Box<dyn Device>, Failure> {
-    if args.protocol == Dialect::Smd4 {
-        if let Some(flag) = tmcl_only_flag(args) {
+/// The simulated modules of the chosen dialect, after refusing the flags only another
+/// dialect's simulator understands.
+fn device(args: &SimArgs, configs: &Configured) -> Result<Box<dyn Device>, Failure> {
+    let chosen = args.protocol;
+    let flags = &args.bus.0;
+    for other in DIALECTS.iter().filter(|d| !std::ptr::eq(**d, chosen)) {
+        if let Some(flag) = (other.sim_flag_given)(flags) {
             return Err(Failure::new(
                 Exit::Refused,
-                format!("{flag} applies to the simulated TMCM-142 (--protocol tmcl) only"),
+                format!(
+                    "{flag} applies to the simulated {} (--protocol {}) only",
+                    other.simulated, other.name
+                ),
             ));
         }
-        return Ok(args.smd4.device(args.state.as_deref(), args.verbose));
     }
-    let mut seen = Vec::new();
-    for &address in &args.modules {
-        if seen.contains(&address) {
-            return Err(Failure::new(
-                Exit::Refused,
-                format!("module address {address} is given twice in --modules"),
-            ));
-        }
-        seen.push(address);
-    }
-    let store = match &args.state {
-        Some(path) => Some(Box::new(
-            FileStore::open(path).map_err(|e| Failure::new(Exit::Refused, e.to_string()))?,
-        ) as Box<dyn crate::sim::tmcl::StateStore>),
-        None => None,
-    };
-    let log: Option<crate::sim::tmcl::LogSink> = args
-        .verbose
-        .then(|| Box::new(|line: &str| eprintln!("sim {line}")) as _);
-    let options = BusOptions {
-        addresses: args.modules.clone(),
-        quirks: Quirks {
-            reply_to_139: !args.no_reply_to_139,
-            reply_to_bin: !args.no_reply_to_bin,
-            reply_end: args.reply_end,
-            echo_end: args.echo_end,
-            backspace: args.backspace_echo,
-        },
-        switches: Switches {
-            left: args.left_switch,
-            right: args.right_switch,
-            home: args.home_switch,
-        },
-        store,
-        log,
-    };
-    Ok(Box::new(Bus::new(profile, options)))
-}
-
-/// The first flag given that only the TMCL bus understands (the SMD4 would silently ignore it).
-fn tmcl_only_flag(args: &SimArgs) -> Option<&'static str> {
-    [
-        (args.modules != [1], "--modules"),
-        (args.left_switch.is_some(), "--left-switch"),
-        (args.right_switch.is_some(), "--right-switch"),
-        (args.home_switch.is_some(), "--home-switch"),
-        (args.no_reply_to_139, "--no-reply-to-139"),
-        (args.no_reply_to_bin, "--no-reply-to-bin"),
-    ]
-    .into_iter()
-    .find_map(|(given, flag)| given.then_some(flag))
+    configs
+        .of(chosen)
+        .served_simulator(flags, args.state.as_deref(), args.verbose)
+        .map_err(|message| Failure::new(Exit::Refused, message))
 }
 
 /// Faults and line pacing around any simulated device (faults inside, so replies are judged
@@ -251,10 +197,10 @@ fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
 
 /// Runs the simulator until interrupted (or `quit` on the console).
 #[cfg(unix)]
-pub fn run(args: &SimArgs, profile: Arc<Profile>, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub fn run(args: &SimArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
     use crate::sim::serve::{Server, wake_pair};
 
-    let device: SharedDevice = Arc::new(Mutex::new(decorate(device(args, profile)?, args)));
+    let device: SharedDevice = Arc::new(Mutex::new(decorate(device(args, configs)?, args)));
     let manual = args.manual_clock.then(|| Arc::new(ManualClock::new()));
     let clock: Arc<dyn Clock> = match &manual {
         Some(manual) => manual.clone(),
@@ -282,7 +228,7 @@ pub fn run(args: &SimArgs, profile: Arc<Profile>, out: &mut dyn Write) -> Result
         }
         None => None,
     };
-    let console = Console::new(device, clock, manual);
+    let console = Console::new(device, clock, manual, console_help());
     std::thread::spawn(move || {
         for line in std::io::stdin().lock().lines() {
             let Ok(line) = line else { break };
@@ -313,7 +259,7 @@ pub fn run(args: &SimArgs, profile: Arc<Profile>, out: &mut dyn Write) -> Result
 
 /// Serving needs pseudo-terminals and poll(2).
 #[cfg(not(unix))]
-pub fn run(_: &SimArgs, _: Arc<Profile>, _: &mut dyn Write) -> Result<Exit, Failure> {
+pub fn run(_: &SimArgs, _: &Configured, _: &mut dyn Write) -> Result<Exit, Failure> {
     Err(Failure::new(
         Exit::Refused,
         "tmclsh sim serves on Unix-like systems only; use the built-in simulator of the shell",

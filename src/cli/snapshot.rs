@@ -4,20 +4,14 @@
 
 use std::io::{BufRead, IsTerminal, Write};
 use std::path::PathBuf;
-use std::sync::Arc;
 
 use crate::commission::ParamDevice;
 use crate::commission::actions::{self, RestoreOptions};
-use crate::commission::shell::param_device;
-use crate::commission::tmcl::profile_params;
-use crate::exit::{Exit, ExitStatus};
-use crate::profile::Profile;
-use crate::protocol::Dialect;
-use crate::protocol::smd4::Smd4Spec;
+use crate::dialect::{Configured, Purpose};
+use crate::exit::{Exit, Failure};
 use crate::session::{SessionError, interrupt};
 
-use super::Failure;
-use super::connection::ModuleArgs;
+use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `snapshot`.
 #[derive(Debug, Clone, clap::Args)]
@@ -31,8 +25,11 @@ enum Action {
     /// Read every readable parameter into FILE (TOML, keyed by parameter name).
     Save {
         /// The snapshot file to write.
-        #[arg(value_name = "FILE")]
+        #[arg(value_name = "FILE", value_hint = clap::ValueHint::FilePath)]
         file: PathBuf,
+        /// Replace FILE if it exists.
+        #[arg(long)]
+        force: bool,
         #[command(flatten)]
         module: ModuleArgs,
     },
@@ -66,38 +63,44 @@ enum Action {
         /// Only print the lines that would be sent.
         #[arg(long)]
         dry_run: bool,
+        /// Restore a file with problems that allow it: of another module type, with numbers
+        /// that disagree with the names (written by name), with names, motors or banks the
+        /// module lacks (skipped). Values the module would refuse are never forced.
+        #[arg(long)]
+        force: bool,
         #[command(flatten)]
         module: ModuleArgs,
     },
 }
 
 /// Runs `snapshot`.
-pub fn run(
-    args: SnapshotArgs,
-    profile: &Arc<Profile>,
-    out: &mut dyn Write,
-) -> Result<Exit, Failure> {
+pub fn run(args: SnapshotArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
     interrupt::install();
     match args.action {
-        Action::Save { file, module } => with_device(&module, profile, |d| {
-            actions::save(d, &file, out).map(|_| ())
-        }),
+        Action::Save {
+            file,
+            force,
+            module,
+        } => {
+            // Refused before the link is opened: nothing is sent for a save that cannot be kept.
+            actions::check_new(&file, force)?;
+            with_device(&module, configs, |d| {
+                actions::save_new(d, &file, force, out).map(|_| ())
+            })
+        }
         Action::Diff {
             file,
             other: Some(other),
             module,
         } => {
-            let params = match module.connection.protocol {
-                Dialect::Tmcl => profile_params(profile),
-                Dialect::Smd4 => crate::commission::smd4::spec_params(Smd4Spec::builtin()),
-            };
+            let params = configs.of(module.protocol()).snapshot_params();
             finish(actions::diff_files(&file, &other, &params, out).map(|_| ()))
         }
         Action::Diff {
             file,
             other: None,
             module,
-        } => with_device(&module, profile, |d| {
+        } => with_device(&module, configs, |d| {
             actions::diff(d, &file, out).map(|_| ())
         }),
         Action::Restore {
@@ -105,6 +108,7 @@ pub fn run(
             store,
             yes,
             dry_run,
+            force,
             module,
         } => {
             let ask = store && !yes && !dry_run;
@@ -114,8 +118,13 @@ pub fn run(
                     "--store asks for a confirmation on a terminal; add --yes to store without asking",
                 ));
             }
-            let options = RestoreOptions { store, dry_run };
-            with_device(&module, profile, |d| {
+            let options = RestoreOptions {
+                store,
+                dry_run,
+                force,
+                redact: false,
+            };
+            with_device(&module, configs, |d| {
                 let mut confirm = |question: &str| {
                     if ask {
                         confirm_store(question)
@@ -133,26 +142,24 @@ pub fn run(
 /// (TMCL modules back in their modes) whatever happened.
 fn with_device(
     module: &ModuleArgs,
-    profile: &Arc<Profile>,
+    configs: &Configured,
     f: impl FnOnce(&mut dyn ParamDevice) -> Result<(), SessionError>,
 ) -> Result<Exit, Failure> {
-    let mut session = module.open(profile)?;
-    let result = f(param_device(&mut session));
+    let mut session = module.open(configs, Audience::Batch, Purpose::Talk)?;
+    let result = f(session.param_device());
     for notice in session.take_notices() {
-        eprintln!("tmclsh: {notice}");
+        super::diagnose(&notice);
     }
     interrupt::take();
     for message in session.close() {
-        eprintln!("tmclsh: {message}");
+        super::diagnose(&message);
     }
     finish(result)
 }
 
 fn finish(result: Result<(), SessionError>) -> Result<Exit, Failure> {
-    match result {
-        Ok(()) => Ok(Exit::Success),
-        Err(e) => Err(Failure::new(e.exit(), e.to_string())),
-    }
+    result?;
+    Ok(Exit::Success)
 }
 
 /// Output that ignores a closed pipe (`| head`): the work goes on, the rest of the report is

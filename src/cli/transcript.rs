@@ -1,15 +1,12 @@
 //! `tmclsh transcript to-rhai LOG`: a `--log` transcript turned into a Rhai script that sends the
-//! same commands and checks the values received — of a TMCL or an SMD4 session, as the transcript
-//! says.
+//! same commands and checks the values received — of a TMCL or an SMD4 session, as the
+//! transcript's header says. What it cannot read, or what replays nothing, is refused (exit 2).
 
-use std::io::Write;
-use std::path::PathBuf;
+use std::io::{Read, Write};
+use std::path::{Path, PathBuf};
 
-use crate::commission::replay;
-use crate::exit::Exit;
-use crate::profile::Profile;
-
-use super::Failure;
+use crate::dialect::{Configured, replay};
+use crate::exit::{Exit, Failure};
 
 /// Arguments of `transcript`.
 #[derive(Debug, Clone, clap::Args)]
@@ -36,26 +33,27 @@ enum Action {
 }
 
 /// Runs `transcript`.
-pub fn run(args: TranscriptArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub fn run(
+    args: TranscriptArgs,
+    configs: &Configured,
+    out: &mut dyn Write,
+) -> Result<Exit, Failure> {
     let Action::ToRhai { log, output, wait } = args.action;
-    let text = std::fs::read_to_string(&log).map_err(|e| {
-        Failure::new(
-            Exit::Refused,
-            format!("cannot read transcript {}: {e}", log.display()),
-        )
-    })?;
-    let entries = replay::parse::parse(&text)
-        .map_err(|e| Failure::new(Exit::Refused, format!("{}: {e}", log.display())))?;
+    let refused = |what: String| Failure::new(Exit::Refused, format!("{}: {what}", log.display()));
+    let text = read_transcript(&log).map_err(refused)?;
+    let entries = replay::parse::parse(&text).map_err(refused)?;
+    let kind = replay::recognise(&entries).map_err(refused)?;
+    if let Some(notice) = &kind.notice {
+        eprintln!("tmclsh: {}: {notice}", log.display());
+    }
     let name = log.file_name().map_or_else(
         || log.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
+        |n| n.to_string_lossy().escape_debug().to_string(),
     );
-    let script = if replay::smd4::is_smd4(&entries) {
-        let spec = crate::protocol::smd4::Smd4Spec::builtin();
-        replay::smd4::to_rhai(&replay::smd4::steps(&entries, spec), spec, &name, wait)
-    } else {
-        replay::to_rhai(&replay::steps(&entries, profile), profile, &name, wait)
-    };
+    let script = configs
+        .of(kind.dialect)
+        .replay(&entries, kind.header.as_ref(), &name, wait)
+        .map_err(refused)?;
     let written = match &output {
         Some(path) => std::fs::write(path, &script),
         None => out.write_all(script.as_bytes()),
@@ -68,4 +66,30 @@ pub fn run(args: TranscriptArgs, profile: &Profile, out: &mut dyn Write) -> Resu
             format!("cannot write the script: {e}"),
         )),
     }
+}
+
+/// The largest transcript read: hours of logging fit; `/dev/zero` does not.
+const MAX_TRANSCRIPT: u64 = 256 << 20;
+
+/// The transcript's text, refused when it is not text or larger than [`MAX_TRANSCRIPT`].
+fn read_transcript(path: &Path) -> Result<String, String> {
+    let file = std::fs::File::open(path).map_err(|e| format!("cannot read the transcript: {e}"))?;
+    let mut bytes = Vec::new();
+    file.take(MAX_TRANSCRIPT + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("cannot read the transcript: {e}"))?;
+    if bytes.len() as u64 > MAX_TRANSCRIPT {
+        return Err(format!(
+            "larger than {} MiB: not a transcript tmclsh reads",
+            MAX_TRANSCRIPT >> 20
+        ));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let line = e.as_bytes()[..e.utf8_error().valid_up_to()]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count()
+            + 1;
+        format!("line {line}: not text (transcripts escape every byte they record)")
+    })
 }

@@ -1,11 +1,44 @@
 //! The seam between the commissioning tools and a module dialect: list the parameters, read,
 //! write and store them. Snapshots, watches and recordings only use this trait, so a dialect that
-//! implements it (TMCL in [`super::tmcl`], SMD4 in [`super::smd4`]) gets them all.
+//! implements it (each dialect's `commission.rs`) gets them all.
 
-use crate::profile::{Access, SnapshotRole};
 use crate::session::SessionError;
 
+use super::rules::SnapshotRole;
 use super::value::{ParamValue, Reading, Tolerance};
+
+/// Whether a parameter can be read, written and stored (TMCL: GAP/GGP, SAP/SGP, STAP/STGP and
+/// RSAP/RSGP; SMD4: a read, a write, STORE).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Access {
+    /// Readable.
+    pub read: bool,
+    /// Writable.
+    pub write: bool,
+    /// Storable to and restorable from non-volatile memory.
+    pub store: bool,
+}
+
+impl Access {
+    /// From the letters of the manual's tables (`RWE`, any case).
+    pub fn from_letters(letters: &str) -> Self {
+        let has = |c| letters.to_ascii_uppercase().contains(c);
+        Access {
+            read: has('R'),
+            write: has('W'),
+            store: has('E'),
+        }
+    }
+
+    /// The letters as printed in the manual's tables (`RWE`).
+    pub fn letters(&self) -> String {
+        [(self.read, 'R'), (self.write, 'W'), (self.store, 'E')]
+            .iter()
+            .filter(|(on, _)| *on)
+            .map(|(_, c)| *c)
+            .collect()
+    }
+}
 
 /// Where a parameter lives: an axis parameter of a motor, a global parameter of a bank, or a
 /// setting of a drive that has one motor and no banks (SMD4).
@@ -79,6 +112,8 @@ pub struct StoreStep {
     pub line: String,
     /// The restored parameters it makes permanent.
     pub params: Vec<ParamRef>,
+    /// Whether it stores the module's whole working configuration, not only `params`.
+    pub whole: bool,
 }
 
 /// A module whose parameters can be listed, read, written and stored — implemented by each
@@ -110,6 +145,11 @@ pub trait ParamDevice {
 
     /// Writes one parameter (in RAM).
     fn write(&mut self, param: &ParamRef, value: &ParamValue) -> Result<(), SessionError>;
+
+    /// Whether the module's validator lets [`ParamDevice::write`] send `value` to `param` (its
+    /// type, range and access), without sending anything; the error says why not. Under
+    /// `--no-validate` only what cannot be sent at all is refused.
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String>;
 
     /// The line [`ParamDevice::write`] sends, for dry runs and hints.
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String;

@@ -3,13 +3,13 @@
 
 use std::io::{self, Write};
 
-use crate::profile::SnapshotRole;
+use crate::commission::SnapshotRole;
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, ParamRef, Scope};
-use super::progress::Progress;
 use super::snapshot::{Entry, Snapshot};
 use super::value::{ParamValue, Reading, Tolerance};
+use crate::progress::Progress;
 
 /// One parameter that differs.
 #[derive(Debug, Clone, PartialEq)]
@@ -108,7 +108,7 @@ pub fn with_device(
         .into_iter()
         .filter(|p| p.access.read && compared(p.role))
         .collect();
-    let progress = Progress::new(params.len(), "comparing");
+    let progress = Progress::steps(params.len(), 2, "comparing");
     let mut differences = Vec::new();
     for param in &params {
         progress.step(&param.name);

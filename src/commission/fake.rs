@@ -4,13 +4,13 @@
 
 use std::collections::BTreeMap;
 
-use crate::profile::Profile;
-use crate::protocol::tmcl::Status;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::protocol::Status;
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, ParamRef, Scope, StoreStep};
-use super::tmcl::param_ref;
 use super::value::{ParamValue, Reading};
+use crate::dialect::tmcl::commission::param_ref;
 
 pub struct FakeDevice {
     pub params: Vec<ParamRef>,
@@ -21,6 +21,8 @@ pub struct FakeDevice {
     pub refuse_write: Vec<String>,
     /// Parameters that keep their value whatever is written.
     pub stuck: Vec<String>,
+    /// A parameter whose write times out (the link fails there).
+    pub time_out_at: Option<String>,
     /// "write NAME VALUE" / "store NAME", in order.
     pub log: Vec<String>,
 }
@@ -47,6 +49,7 @@ impl FakeDevice {
             refuse_read: Vec::new(),
             refuse_write: Vec::new(),
             stuck: Vec::new(),
+            time_out_at: None,
             log: Vec::new(),
         }
     }
@@ -118,12 +121,23 @@ impl ParamDevice for FakeDevice {
         if self.refuse_write.contains(&param.name) {
             return Err(Self::refused(&param.name));
         }
+        if self.time_out_at.as_ref() == Some(&param.name) {
+            return Err(SessionError::Timeout {
+                module: "A".into(),
+                timeout: std::time::Duration::from_millis(1000),
+                hint: String::new(),
+            });
+        }
         let value = value.as_i64().expect("the fake holds integers");
         self.log.push(format!("write {} {value}", param.name));
         if !self.stuck.contains(&param.name) {
             self.values.insert((param.scope, param.name.clone()), value);
         }
         Ok(())
+    }
+
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
+        crate::dialect::tmcl::commission::check_write(&Profile::builtin(), param, value)
     }
 
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
@@ -136,6 +150,7 @@ impl ParamDevice for FakeDevice {
             .map(|p| StoreStep {
                 line: format!("STORE {}", p.name),
                 params: vec![(*p).clone()],
+                whole: false,
             })
             .collect()
     }

@@ -1,33 +1,33 @@
-//! The commissioning toolkit: parameter snapshots (save, diff, restore), bus scans, live watches,
-//! recordings with a terminal chart, and transcripts turned into regression scripts.
+//! The commissioning toolkit, the part no dialect owns: parameter snapshots (save, diff,
+//! restore), live watches, recordings with a terminal chart, and the address lists of bus scans.
+//! The scans themselves and the transcript replays belong to the dialects; the shell's helper
+//! commands over all of it live in `shell::commission`.
 //!
 //! Everything that reads or writes parameters goes through [`ParamDevice`], a small seam each
-//! dialect's session implements (TMCL in [`tmcl`], SMD4 in [`smd4`]), so the same tools serve
-//! every module type. Values are [`ParamValue`]s — integers, real numbers or text — compared
-//! with each parameter's [`Tolerance`].
-//! Pure parts — the snapshot file, the diff, the restore order, CSV, chart rendering, transcript
-//! parsing and script generation, the scan table — are functions tested without any I/O.
+//! dialect's session implements (in its folder's `commission.rs`), so the same tools serve every
+//! module type. Values are [`ParamValue`]s — integers, real numbers or text — compared with each
+//! parameter's [`Tolerance`]; how a snapshot treats each parameter is data ([`SnapshotRules`]).
+//! Pure parts — the snapshot file, the diff, the restore order, CSV, chart rendering, address
+//! lists — are functions tested without any I/O.
 
 pub mod actions;
 pub mod device;
 pub mod diff;
 pub mod plot;
-pub mod progress;
 pub mod record;
-pub mod replay;
+
 pub mod restore;
+pub mod rules;
 pub mod scan;
-pub mod shell;
-pub mod smd4;
-pub mod smd4_scan;
+
 pub mod snapshot;
-pub mod tmcl;
 pub mod value;
 pub mod watch;
 
 #[cfg(test)]
 mod fake;
 
-pub use device::{ParamDevice, ParamRef, Scope, StoreStep};
+pub use device::{Access, ParamDevice, ParamRef, Scope, StoreStep};
+pub use rules::{SnapshotRole, SnapshotRules};
 pub use snapshot::Snapshot;
 pub use value::{ParamValue, Reading, Tolerance};

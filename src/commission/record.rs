@@ -14,8 +14,8 @@
 use std::io::{self, Write};
 use std::time::Duration;
 
+use crate::clock::Clock;
 use crate::session::{SessionError, interrupt};
-use crate::sim::clock::Clock;
 
 use super::device::{ParamDevice, ParamRef};
 use super::value::ParamValue;
@@ -108,13 +108,16 @@ fn wait_until(clock: &dyn Clock, when: Duration) -> Result<(), SessionError> {
 
 /// The CSV header line (without line ending).
 pub fn csv_header(columns: &[String]) -> String {
-    let mut line = String::from("time_ms");
+    let mut line = String::from(CSV_TIME);
     for c in columns {
         line.push(',');
         line.push_str(c);
     }
     line
 }
+
+/// The first column of every recording: how a file tmclsh wrote is recognised.
+pub const CSV_TIME: &str = "time_ms";
 
 /// One CSV data line (without line ending).
 pub fn csv_row(sample: &Sample) -> String {
@@ -194,9 +197,14 @@ pub struct CsvFile {
 impl CsvFile {
     /// Creates (or replaces) the file and writes the header.
     pub fn create(path: &std::path::Path, columns: &[String]) -> Result<CsvFile, SessionError> {
-        let mut file = std::fs::File::create(path).map_err(|e| {
+        let file = std::fs::File::create(path).map_err(|e| {
             SessionError::Usage(format!("cannot write recording {}: {e}", path.display()))
         })?;
+        CsvFile::start(file, columns)
+    }
+
+    /// Writes the header to an opened, empty file (a script's, opened through its sandbox).
+    pub fn start(mut file: std::fs::File, columns: &[String]) -> Result<CsvFile, SessionError> {
         writeln!(file, "{}", csv_header(columns))?;
         Ok(CsvFile { file })
     }
@@ -207,24 +215,13 @@ impl CsvFile {
     }
 }
 
-/// Parses a time for `:record` and `:watch`: `250ms`, `2s`, `1m` (humantime), or a bare number of
-/// milliseconds.
-pub fn parse_duration(text: &str) -> Result<Duration, String> {
-    if let Ok(ms) = text.parse::<u64>() {
-        return Ok(Duration::from_millis(ms));
-    }
-    humantime::parse_duration(text).map_err(|_| {
-        format!("'{text}' is not a time (e.g. 100ms, 2s, or a number of milliseconds)")
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::super::device::StoreStep;
     use super::super::fake::FakeDevice;
     use super::super::value::Reading;
     use super::*;
-    use crate::sim::clock::ManualClock;
+    use crate::clock::ManualClock;
 
     fn plan(device: &FakeDevice, names: &[&str], interval_ms: u64, duration_ms: u64) -> Plan {
         Plan {
@@ -288,6 +285,9 @@ mod tests {
         }
         fn write(&mut self, p: &ParamRef, v: &ParamValue) -> Result<(), SessionError> {
             self.inner.write(p, v)
+        }
+        fn check_write(&self, _: &ParamRef, _: &ParamValue) -> Result<(), String> {
+            Ok(())
         }
         fn write_line(&self, p: &ParamRef, v: &ParamValue) -> String {
             self.inner.write_line(p, v)
@@ -409,17 +409,5 @@ mod tests {
         assert_eq!(back, rec);
         assert!(back.numeric(0) && !back.numeric(1));
         assert_eq!(back.series(1), []);
-    }
-
-    #[test]
-    fn times_are_milliseconds_or_humantime() {
-        assert_eq!(parse_duration("250").unwrap(), Duration::from_millis(250));
-        assert_eq!(parse_duration("2s").unwrap(), Duration::from_secs(2));
-        assert_eq!(parse_duration("100ms").unwrap(), Duration::from_millis(100));
-        assert!(
-            parse_duration("soon")
-                .unwrap_err()
-                .contains("'soon' is not a time")
-        );
     }
 }

@@ -38,8 +38,11 @@ use serde::Deserialize;
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, Scope};
-use super::progress::Progress;
 use super::value::{ParamValue, Reading};
+use crate::progress::Progress;
+
+/// The first line of every snapshot file: how a file tmclsh wrote is recognised.
+pub const HEADER: &str = "# tmclsh parameter snapshot";
 
 /// A module's parameters at one moment.
 #[derive(Debug, Clone, PartialEq)]
@@ -89,7 +92,7 @@ impl Snapshot {
             .filter(|p| p.access.read)
             .collect();
         let firmware = device.firmware();
-        let progress = Progress::new(params.len(), "reading");
+        let progress = Progress::steps(params.len(), 2, "reading");
         let mut entries = Vec::with_capacity(params.len());
         for param in &params {
             progress.step(&param.name);
@@ -134,8 +137,9 @@ impl Snapshot {
     /// The file text.
     pub fn to_toml(&self) -> String {
         let mut out = String::new();
+        out.push_str(HEADER);
         out.push_str(
-            "# tmclsh parameter snapshot: every readable parameter, keyed by name.\n\
+            ": every readable parameter, keyed by name.\n\
              # `tmclsh snapshot diff FILE` compares it with a module, `tmclsh snapshot restore FILE`\n\
              # writes the settings back. Values may be edited; number, unit, access, label and real\n\
              # are notes.\n\n",
@@ -177,26 +181,37 @@ impl Snapshot {
         out
     }
 
-    /// Parses a snapshot file's text.
+    /// Parses a snapshot file's text; the error may quote the text.
     pub fn from_toml(text: &str) -> Result<Snapshot, String> {
-        let file: File = toml::from_str(text).map_err(|e| e.to_string())?;
+        Snapshot::parse(text).map_err(|e| e.message)
+    }
+
+    /// Parses a snapshot file's text; the error can also be told without quoting it.
+    pub fn parse(text: &str) -> Result<Snapshot, FileError> {
+        let file: File = toml::from_str(text).map_err(|e| FileError {
+            message: e.to_string(),
+            at: e.span().map(|span| line_and_column(text, span.start)),
+        })?;
+        let plain = |message: String| FileError { message, at: None };
         let mut entries = Vec::new();
         for (kind, sections) in [("axis", &file.axis), ("global", &file.global)] {
             for (index, rows) in sections {
-                let n: u8 = index
-                    .parse()
-                    .map_err(|_| format!("[{kind}.{index}]: '{index}' is not a number 0..255"))?;
+                let n: u8 = index.parse().map_err(|_| {
+                    plain(format!(
+                        "[{kind}.{index}]: '{index}' is not a number 0..255"
+                    ))
+                })?;
                 let scope = match kind {
                     "axis" => Scope::Axis { motor: n },
                     _ => Scope::Global { bank: n },
                 };
                 for (name, row) in rows {
-                    entries.push(row.entry(scope, name, &format!("[{kind}.{index}]"))?);
+                    entries.push(row.entry(scope, name, text)?);
                 }
             }
         }
         for (name, row) in &file.drive {
-            entries.push(row.entry(Scope::Drive, name, "[drive]")?);
+            entries.push(row.entry(Scope::Drive, name, text)?);
         }
         entries.sort_by(|a, b| (a.scope, a.number, &a.name).cmp(&(b.scope, b.number, &b.name)));
         Ok(Snapshot {
@@ -259,7 +274,7 @@ struct ModuleRow {
 #[serde(deny_unknown_fields)]
 struct Row {
     number: Option<u32>,
-    value: Option<toml::Value>,
+    value: Option<toml::Spanned<toml::Value>>,
     error: Option<String>,
     real: Option<f64>,
     label: Option<String>,
@@ -270,13 +285,23 @@ struct Row {
 }
 
 impl Row {
-    fn entry(&self, scope: Scope, name: &str, section: &str) -> Result<Entry, String> {
+    fn entry(&self, scope: Scope, name: &str, text: &str) -> Result<Entry, FileError> {
+        let section = scope.section();
         let value = match (&self.value, &self.error) {
-            (Some(v), _) => Ok(ParamValue::from_toml(v).ok_or_else(|| {
-                format!("{section} {name}: the value {v} is not a number or a string")
+            (Some(v), _) => Ok(ParamValue::from_toml(v.get_ref()).ok_or_else(|| FileError {
+                message: format!(
+                    "[{section}] {name}: the value {} is not a number or a string",
+                    v.get_ref()
+                ),
+                at: Some(line_and_column(text, v.span().start)),
             })?),
             (None, Some(e)) => Err(e.clone()),
-            (None, None) => return Err(format!("{section} {name}: no value")),
+            (None, None) => {
+                return Err(FileError {
+                    message: format!("[{section}] {name}: no value"),
+                    at: None,
+                });
+            }
         };
         Ok(Entry {
             scope,
@@ -289,6 +314,38 @@ impl Row {
             access: self.access.clone(),
         })
     }
+}
+
+/// Why a text is not a snapshot.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FileError {
+    /// What is wrong; it may quote the text.
+    pub message: String,
+    /// Where (line and column, from 1), when known.
+    pub at: Option<(usize, usize)>,
+}
+
+impl FileError {
+    /// Where the problem is, quoting nothing of the text (for scripts, which may be pointed at
+    /// files that are not theirs).
+    pub fn redacted(&self) -> String {
+        match self.at {
+            Some((line, column)) => format!("the first problem is at line {line}, column {column}"),
+            None => "its sections or entries are not a snapshot's".to_string(),
+        }
+    }
+}
+
+/// Line and column (from 1) of byte `offset` in `text`.
+fn line_and_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text.as_bytes()[..offset.min(text.len())];
+    let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
+    let start = before
+        .iter()
+        .rposition(|&b| b == b'\n')
+        .map_or(0, |i| i + 1);
+    let column = String::from_utf8_lossy(&before[start..]).chars().count() + 1;
+    (line, column)
 }
 
 fn quoted(text: &str) -> String {

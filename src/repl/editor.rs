@@ -1,5 +1,5 @@
 //! The rustyline helper: completion, hints and highlighting, each a thin wrapper over the pure
-//! functions in `complete` and `hint`.
+//! function in `complete` and the session's [`Grammar`].
 
 use std::borrow::Cow;
 use std::sync::Arc;
@@ -11,41 +11,26 @@ use rustyline::hint::Hinter;
 use rustyline::validate::Validator;
 use rustyline::{Context, Helper};
 
-use crate::profile::Profile;
-use crate::protocol::Dialect;
-use crate::protocol::smd4::{self, Request, Smd4Spec};
-use crate::protocol::tmcl::line;
-use crate::protocol::tmcl::validate::{Mode, validate};
+use crate::dialect::Grammar;
 use crate::shell::helpers;
 
-use super::complete::{Completion, Grammar, complete};
-use super::hint::hint;
-
-/// What the REPL's lines are checked against.
-pub enum Tables {
-    /// A TMCL module's profile.
-    Tmcl(Arc<Profile>),
-    /// The SMD4 command table.
-    Smd4(&'static Smd4Spec),
-}
+use super::complete::{Completion, complete};
 
 /// Completion, hints and highlighting for the REPL.
 pub struct ReplHelper {
-    tables: Tables,
+    /// What typed lines mean: the session's grammar, asked for again before each prompt.
+    pub grammar: Arc<dyn Grammar>,
     files: FilenameCompleter,
-    /// The mode lines are validated for (ASCII, or binary after `:bin`).
-    pub mode: Mode,
     /// Whether to colour.
     pub color: bool,
 }
 
 impl ReplHelper {
-    /// A helper for these tables.
-    pub fn new(tables: Tables, color: bool) -> Self {
+    /// A helper for lines of `grammar`.
+    pub fn new(grammar: Arc<dyn Grammar>, color: bool) -> Self {
         ReplHelper {
-            tables,
+            grammar,
             files: FilenameCompleter::new(),
-            mode: Mode::Ascii,
             color,
         }
     }
@@ -53,37 +38,14 @@ impl ReplHelper {
     /// Whether a typed line would be refused (helper lines: whether the helper exists).
     pub fn is_invalid(&self, text: &str) -> bool {
         let text = text.trim();
-        if text.is_empty() {
+        if text.is_empty() || crate::shell::words::everyday(text).is_some() {
             return false;
         }
         if let Some(rest) = text.strip_prefix(':') {
             let name = rest.split_whitespace().next().unwrap_or("");
-            return helpers::find(name, self.dialect()).is_err();
+            return helpers::find(name, self.grammar.dialect()).is_err();
         }
-        match &self.tables {
-            Tables::Tmcl(profile) => match line::parse(text, profile) {
-                Ok(parsed) => validate(&parsed, profile, self.mode).is_err(),
-                Err(_) => true,
-            },
-            Tables::Smd4(spec) => match Request::parse(text) {
-                Ok(request) => smd4::validate(&request, &spec.commands).is_err(),
-                Err(_) => true,
-            },
-        }
-    }
-
-    fn dialect(&self) -> Dialect {
-        match self.tables {
-            Tables::Tmcl(_) => Dialect::Tmcl,
-            Tables::Smd4(_) => Dialect::Smd4,
-        }
-    }
-
-    fn grammar(&self) -> Grammar<'_> {
-        match &self.tables {
-            Tables::Tmcl(profile) => Grammar::Tmcl(profile),
-            Tables::Smd4(spec) => Grammar::Smd4(spec),
-        }
+        self.grammar.is_invalid(text)
     }
 }
 
@@ -96,7 +58,7 @@ impl Completer for ReplHelper {
         pos: usize,
         ctx: &Context<'_>,
     ) -> rustyline::Result<(usize, Vec<Pair>)> {
-        match complete(text, pos, self.grammar()) {
+        match complete(text, pos, &*self.grammar) {
             Completion::Words { start, candidates } => Ok((
                 start,
                 candidates
@@ -119,12 +81,7 @@ impl Hinter for ReplHelper {
         if pos != text.len() {
             return None;
         }
-        match &self.tables {
-            Tables::Tmcl(profile) => hint(text, profile),
-            Tables::Smd4(spec) => {
-                smd4::hint_for_line(&spec.commands, text).map(|h| format!("  ← {h}"))
-            }
-        }
+        self.grammar.hint(text)
     }
 }
 

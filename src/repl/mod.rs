@@ -1,13 +1,13 @@
 //! The interactive shell: rustyline with history, completion, hints and highlighting; decoded,
-//! coloured replies; Ctrl-C stops a command (and the motor) in flight; a lost link is waited for
-//! and reopened with history and settings intact.
+//! coloured replies; Ctrl-C stops a command (and the motor) in flight, and at the idle prompt stops
+//! the motors while something this session started may still move; a lost link is waited for and
+//! reopened with history and settings intact.
 
 pub mod complete;
 pub mod editor;
-pub mod hint;
+mod history;
 
 use std::io::{IsTerminal, Write};
-use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use crossterm::style::Stylize;
@@ -15,23 +15,17 @@ use rustyline::error::ReadlineError;
 use rustyline::history::DefaultHistory;
 use rustyline::{CompletionType, Config, Editor};
 
+use crate::escape::escape_control;
 use crate::exit::Exit;
-use crate::protocol::tmcl::validate::Mode;
-use crate::session::tmcl::WireMode;
-use crate::session::{Session, SessionError, interrupt};
-use crate::shell::render::decode_reply;
+use crate::session::{SessionError, interrupt};
+use crate::shell::words::{Everyday, everyday};
 use crate::shell::{Flow, Shell};
 
-use editor::{ReplHelper, Tables};
+use editor::ReplHelper;
 
 /// Whether output may be coloured: a terminal, and NO_COLOR unset.
 pub fn color_enabled() -> bool {
     std::env::var_os("NO_COLOR").is_none() && std::io::stdout().is_terminal()
-}
-
-/// Where the history lives: the user's data directory.
-fn history_path() -> Option<PathBuf> {
-    dirs::data_dir().map(|d| d.join("tmclsh").join("history"))
 }
 
 /// Runs the REPL until `:quit` or Ctrl-D; the session is closed (modules restored) at the end.
@@ -51,15 +45,9 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
             return Exit::Link;
         }
     };
-    let tables = match shell.session_ref() {
-        Session::Tmcl(s) => Tables::Tmcl(s.profile().clone()),
-        Session::Smd4(s) => Tables::Smd4(s.spec()),
-    };
-    editor.set_helper(Some(ReplHelper::new(tables, color)));
-    let history = history_path();
-    if let Some(path) = &history {
-        let _ = editor.load_history(path);
-    }
+    editor.set_helper(Some(ReplHelper::new(shell.session_ref().grammar(), color)));
+    let dialect = shell.session_ref().dialect();
+    history::load(&mut editor, dialect);
     let mut out = std::io::stdout();
     let _ = writeln!(out, "{banner}");
     let _ = writeln!(
@@ -67,23 +55,32 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         "Type :help for help, Tab to complete, Ctrl-D to leave."
     );
     loop {
-        let mode = match shell.session_ref() {
-            Session::Tmcl(s) => match s.module_state(s.target()) {
-                Some((WireMode::Binary, _)) => Mode::Binary,
-                _ => Mode::Ascii,
-            },
-            Session::Smd4(_) => Mode::Ascii,
-        };
+        // What the last command changed (TMCL :bin) shows in completion and validation.
         if let Some(helper) = editor.helper_mut() {
-            helper.mode = mode;
+            helper.grammar = shell.session_ref().grammar();
         }
         match editor.readline(&shell.prompt()) {
             Ok(text) => {
-                if handle(shell, text.trim(), color, &mut out) == Flow::Quit {
+                let flow = match everyday(&text) {
+                    Some(Everyday::Clear) => {
+                        let _ = editor.clear_screen();
+                        Flow::Continue
+                    }
+                    Some(Everyday::Helper(line)) => handle(shell, &line, color, &mut out),
+                    None => handle(shell, text.trim(), color, &mut out),
+                };
+                if flow == Flow::Quit {
                     break;
                 }
             }
-            Err(ReadlineError::Interrupted) => continue,
+            // Ctrl-C at the prompt: the panic key while something this session started may
+            // still move; otherwise it only clears the line.
+            Err(ReadlineError::Interrupted) => {
+                if shell.session_ref().may_be_moving() {
+                    interrupt::take();
+                    stop_target(shell, &mut out);
+                }
+            }
             Err(ReadlineError::Eof) => break,
             Err(e) => {
                 eprintln!("tmclsh: {e}");
@@ -91,14 +88,9 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
             }
         }
     }
-    if let Some(path) = &history {
-        if let Some(dir) = path.parent() {
-            let _ = std::fs::create_dir_all(dir);
-        }
-        let _ = editor.save_history(path);
-    }
+    history::save(&mut editor, dialect);
     for message in shell.session().close() {
-        let _ = writeln!(out, "{message}");
+        let _ = writeln!(out, "{}", escape_control(&message));
     }
     Exit::Success
 }
@@ -108,27 +100,31 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
     if text.is_empty() {
         return Flow::Continue;
     }
+    crate::crash::point("repl", text);
     interrupt::take();
     let result = if text.starts_with(':') {
         shell.helper(text, out)
     } else {
         shell.session().execute(text).map(|reply| {
-            let decoded = decode_reply(&reply, shell.session_ref());
+            let ok = reply.ok();
             let shown = if shell.raw {
-                reply.shown()
+                reply.shown
             } else {
-                decoded.text
+                reply.decoded
             };
-            let shown = match (color, decoded.ok) {
+            // Escaped before it is coloured: the colour is ours, any other sequence is the device's.
+            let shown = escape_control(&shown).into_owned();
+            let shown = match (color, ok) {
                 (false, _) => shown,
                 (true, true) => shown.green().to_string(),
                 (true, false) => shown.red().to_string(),
             };
-            let _ = writeln!(out, "{shown}");
+            let _ = writeln!(out, "{}{shown}", stamp(shell));
             Flow::Continue
         })
     };
     for notice in shell.session().take_notices() {
+        let notice = escape_control(&notice).into_owned();
         let line = if color {
             notice.yellow().to_string()
         } else {
@@ -144,22 +140,33 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
             Flow::Continue
         }
         Err(SessionError::Lost(message)) => {
-            let _ = writeln!(out, "link lost: {message}");
+            let _ = writeln!(out, "link lost: {}", escape_control(&message));
             wait_for_link(shell, out);
             Flow::Continue
         }
         Err(e) => {
-            let line = format!("error: {e}");
-            let _ = writeln!(out, "{}", if color { line.red().to_string() } else { line });
+            let line = format!("error: {}", escape_control(&e.to_string()));
+            let line = if color { line.red().to_string() } else { line };
+            let _ = writeln!(out, "{}{line}", stamp(shell));
             Flow::Continue
         }
     }
 }
 
-/// After Ctrl-C: MST to the target module, and to every module this session set moving.
+/// The time of day before a reply when `:log time on` asked for it.
+fn stamp(shell: &Shell) -> String {
+    if shell.timestamps {
+        format!("{} ", crate::shell::time_of_day())
+    } else {
+        String::new()
+    }
+}
+
+/// After Ctrl-C: MST to every motor of the target module (MOTOR:STOP on an SMD4), and to every
+/// module this session set moving.
 fn stop_target(shell: &mut Shell, out: &mut dyn Write) {
     for line in shell.session().stop_target() {
-        let _ = writeln!(out, "{line}");
+        let _ = writeln!(out, "{}", escape_control(&line));
     }
 }
 

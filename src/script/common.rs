@@ -4,9 +4,7 @@ use std::time::Duration;
 
 use rhai::{Dynamic, Engine, FnPtr, INT, NativeCallContext};
 
-use crate::exit::Exit;
-
-use super::failure::{Fallible, ScriptFailure, refused, runtime};
+use super::failure::{Fallible, refused, runtime};
 use super::waiting;
 
 /// Registers the shared functions. `log` lines go to `log_sink`.
@@ -75,7 +73,7 @@ fn check(cond: bool, message: impl FnOnce() -> String) -> Fallible<()> {
     if cond {
         Ok(())
     } else {
-        Err(ScriptFailure::new(Exit::DeviceError, message()).into_rhai())
+        Err(runtime(message()))
     }
 }
 

@@ -1,9 +1,10 @@
 //! Rhai scripting: commissioning and test sequences with loops and assertions, run from a shell
 //! or CI (`tmclsh run`) or from the REPL (`:source`), where the exit code is the verdict.
 //!
-//! Scripts reach the module only through the session, cannot touch files (except the snapshot and
-//! recording files they name), processes or the network (no module resolver, no I/O functions),
-//! and run with capped operations and call depth.
+//! Scripts reach the module only through the session, reach files only through their
+//! [`sandbox::Sandbox`] (snapshots, recordings and programs, in the script's and the working
+//! directory), cannot touch processes or the network (no module resolver, no I/O functions), and
+//! run with capped operations, call depth, memory and time ([`limits`]).
 //! Device functions are registered as volatile, so Rhai's optimiser never runs them while
 //! compiling.
 
@@ -15,135 +16,126 @@ macro_rules! volatile {
             .register_into_engine($engine, $f)
     };
 }
+pub(crate) use volatile;
 
-mod commission;
-mod common;
+pub mod commission;
+pub(crate) mod common;
 pub mod failure;
-mod smd4;
-mod tmcl;
-mod waiting;
+pub mod limits;
+pub mod memory;
+pub mod sandbox;
+pub(crate) mod waiting;
 
 use std::cell::RefCell;
 use std::path::Path;
 use std::rc::Rc;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use rhai::{Dynamic, Engine, EvalAltResult, INT, OptimizationLevel, Position, Scope};
 
-use crate::exit::Exit;
-use crate::session::Session;
+use crate::escape::escape_control;
+use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
-use crate::session::smd4::Smd4Session;
-use crate::session::tmcl::TmclSession;
 
-pub use failure::ScriptFailure;
+pub use limits::Limits;
+use memory::Budget;
+use sandbox::Sandbox;
 
-/// Limits a script runs under.
-#[derive(Debug, Clone, Copy)]
-pub struct Limits {
-    /// Operations before a runaway script is stopped (0 = no limit).
-    pub max_operations: u64,
-    /// Deepest function call nesting.
-    pub max_call_depth: usize,
-}
+/// Where a script's `print` lines go, their control characters already escaped (see
+/// [`print_to_stdout`]): stdout by default; tests and embedders capture them with their own.
+pub type PrintSink = Rc<dyn Fn(&str)>;
 
-impl Default for Limits {
-    fn default() -> Self {
-        Limits {
-            max_operations: 100_000_000,
-            max_call_depth: 64,
-        }
-    }
-}
-
-/// A script's failure as reported: `file:line:column: message` and the exit code.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Report {
-    /// The exit code.
-    pub exit: Exit,
-    /// The message, with file, line and column where known.
-    pub message: String,
-}
-
-/// Runs the script at `path` with `args` over `session`; returns the session and the outcome.
-pub fn run_file(
-    path: &Path,
-    args: &[String],
-    session: Session,
+/// A script ready to run: its text, its arguments, its limits, the files it may reach and where
+/// it prints.
+pub struct Script {
+    name: String,
+    source: String,
+    args: Vec<String>,
     limits: Limits,
-) -> (Session, Result<(), Report>) {
-    let name = path.display().to_string();
-    match std::fs::read_to_string(path) {
-        Ok(source) => run_source(&name, &source, args, session, limits),
-        Err(e) => (
-            session,
-            Err(Report {
-                exit: Exit::Refused,
-                message: format!("cannot read script {name}: {e}"),
+    sandbox: Rc<Sandbox>,
+    print: PrintSink,
+}
+
+/// The functions a dialect adds to the engine: over the session, with the sandbox for files.
+pub type Registrar<S> = fn(&mut Engine, &Rc<RefCell<S>>, &Rc<Sandbox>);
+
+impl Script {
+    /// The script at `path` with `args`; its file functions reach the script's directory, the
+    /// working directory and `limits.allow_dirs`.
+    pub fn from_file(path: &Path, args: &[String], limits: Limits) -> Result<Script, Failure> {
+        let name = path.display().to_string();
+        let sandbox = Sandbox::for_script(path, &limits.allow_dirs, limits.overwrite);
+        match std::fs::read_to_string(path) {
+            Ok(source) => Ok(Script {
+                name,
+                source,
+                args: args.to_vec(),
+                limits,
+                sandbox: Rc::new(sandbox),
+                print: Rc::new(print_to_stdout),
             }),
-        ),
-    }
-}
-
-/// Runs script text; `name` labels messages.
-pub fn run_source(
-    name: &str,
-    source: &str,
-    args: &[String],
-    session: Session,
-    limits: Limits,
-) -> (Session, Result<(), Report>) {
-    let script = Script {
-        name,
-        source,
-        args,
-        limits,
-    };
-    match session {
-        Session::Tmcl(s) => {
-            let (s, result) = script.run(s, TmclSession::annotate, |engine, s| {
-                tmcl::register(engine, s);
-                commission::register(engine, s);
-            });
-            (Session::Tmcl(s), result)
-        }
-        Session::Smd4(s) => {
-            let (s, result) = script.run(s, Smd4Session::annotate, |engine, s| {
-                smd4::register(engine, s);
-                commission::register(engine, s);
-            });
-            (Session::Smd4(s), result)
+            Err(e) => Err(Failure::refused(format!("cannot read script {name}: {e}"))),
         }
     }
-}
 
-/// A script about to run.
-struct Script<'a> {
-    name: &'a str,
-    source: &'a str,
-    args: &'a [String],
-    limits: Limits,
-}
+    /// Script text; `name` labels messages. Its file functions reach the working directory and
+    /// `limits.allow_dirs`.
+    pub fn from_source(name: &str, source: &str, args: &[String], limits: Limits) -> Script {
+        let dirs =
+            std::iter::once(Path::new(".")).chain(limits.allow_dirs.iter().map(|d| d.as_path()));
+        let sandbox = Sandbox::new(dirs, limits.overwrite);
+        Script {
+            name: name.to_string(),
+            source: source.to_string(),
+            args: args.to_vec(),
+            limits,
+            sandbox: Rc::new(sandbox),
+            print: Rc::new(print_to_stdout),
+        }
+    }
 
-impl Script<'_> {
-    /// Runs over a session of type `S`: the engine holds the session for the run and gives it
-    /// back when dropped.
-    fn run<S: 'static>(
+    /// The script with its `print` lines sent to `sink` instead of stdout.
+    pub fn print_to(mut self, sink: PrintSink) -> Script {
+        self.print = sink;
+        self
+    }
+
+    /// Runs over a session of type `S`, with the functions `register` adds (a dialect's device
+    /// functions) besides those every script has; `log` lines go to the transcript through
+    /// `annotate` (to stderr when none is written). The engine holds the session for the run
+    /// and gives it back when dropped.
+    pub fn run<S: 'static>(
         &self,
         session: S,
         annotate: fn(&mut S, &str) -> bool,
-        register: fn(&mut Engine, &Rc<RefCell<S>>),
-    ) -> (S, Result<(), Report>) {
+        register: Registrar<S>,
+    ) -> (S, Result<(), Failure>) {
         let shared = Rc::new(RefCell::new(session));
+        let watchdog = limits::Watchdog::start(self.limits.max_time);
         let result = {
-            let mut engine = base_engine(self.limits);
+            let budget = self.limits.max_memory.map(Budget::from_now);
+            let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &self.print);
             let log_session = shared.clone();
             common::register(&mut engine, move |message| {
                 if !annotate(&mut log_session.borrow_mut(), &format!("script: {message}")) {
-                    eprintln!("log: {message}");
+                    eprintln!("log: {}", escape_control(message));
                 }
             });
-            register(&mut engine, &shared);
-            execute(&engine, self.name, self.source, self.args)
+            register(&mut engine, &shared, &self.sandbox);
+            execute(&engine, &self.name, &self.source, &self.args)
+        };
+        let result = if watchdog.stop(result.is_ok()) && result.is_err() {
+            Err(Failure {
+                exit: Exit::DeviceError,
+                message: format!(
+                    "{}: {}",
+                    self.name,
+                    limits::out_of_time(self.limits.max_time)
+                ),
+            })
+        } else {
+            result
         };
         let session = Rc::try_unwrap(shared)
             .map(RefCell::into_inner)
@@ -153,39 +145,78 @@ impl Script<'_> {
 }
 
 /// Checks that a script compiles, before any connection is opened.
-pub fn check_file(path: &Path) -> Result<(), Report> {
+pub fn check_file(path: &Path) -> Result<(), Failure> {
     let name = path.display().to_string();
-    let source = std::fs::read_to_string(path).map_err(|e| Report {
+    let source = std::fs::read_to_string(path).map_err(|e| Failure {
         exit: Exit::Refused,
         message: format!("cannot read script {name}: {e}"),
     })?;
-    compile(&base_engine(Limits::default()), &name, &source).map(|_| ())
+    let engine = base_engine(
+        &Limits::default(),
+        None,
+        Arc::default(),
+        &(Rc::new(print_to_stdout) as PrintSink),
+    );
+    compile(&engine, &name, &source).map(|_| ())
 }
 
-/// The engine with limits and sandboxing, without device functions.
-fn base_engine(limits: Limits) -> Engine {
+/// Why the progress callback ended a script.
+const MEMORY: &str = "memory";
+const TIME: &str = "time";
+
+/// The engine with limits and sandboxing, printing to `print`, without device functions. Rhai's data-size limits are
+/// not set: they walk whole values after every call (see [`memory`]); `budget` bounds memory
+/// instead, checked at every operation like Ctrl-C and the deadline (`expired`).
+fn base_engine(
+    limits: &Limits,
+    budget: Option<Budget>,
+    expired: Arc<AtomicBool>,
+    print: &PrintSink,
+) -> Engine {
     let mut engine = Engine::new();
     engine.set_optimization_level(OptimizationLevel::Simple);
     engine.set_max_operations(limits.max_operations);
     engine.set_max_call_levels(limits.max_call_depth);
     engine.set_max_expr_depths(128, 64);
-    engine.set_max_string_size(1 << 20);
-    engine.set_max_array_size(1 << 20);
-    engine.set_max_map_size(1 << 16);
     engine.set_module_resolver(rhai::module_resolvers::DummyModuleResolver::new());
     engine.disable_symbol("eval");
-    engine.on_print(|text| println!("{text}"));
-    engine.on_debug(|text, _, pos| eprintln!("debug {pos}: {text}"));
-    engine.on_progress(|_| interrupt::pending().then(|| Dynamic::from("interrupted")));
-    engine.register_type_with_name::<ScriptFailure>("Failure");
-    engine.register_fn("to_string", |f: &mut ScriptFailure| f.message.clone());
+    let print = print.clone();
+    engine.on_print(move |text| print(&escape_control(text)));
+    engine.on_debug(|text, _, pos| eprintln!("debug {pos}: {}", escape_control(text)));
+    engine.on_progress(move |_| {
+        if expired.load(Ordering::Relaxed) {
+            Some(Dynamic::from(TIME))
+        } else if interrupt::pending() {
+            Some(Dynamic::from("interrupted"))
+        } else if budget.is_some_and(Budget::exceeded) {
+            Some(Dynamic::from(MEMORY))
+        } else {
+            None
+        }
+    });
+    if let Some(budget) = budget {
+        memory::register_builders(&mut engine, budget);
+    }
+    engine.register_type_with_name::<Failure>("Failure");
+    engine.register_fn("to_string", |f: &mut Failure| f.message.clone());
     // `catch (e)` can tell a timeout or noise (3) from a device error (1) by the exit code.
-    engine.register_get("exit", |f: &mut ScriptFailure| INT::from(f.exit.code()));
+    engine.register_get("exit", |f: &mut Failure| INT::from(f.exit.code()));
     engine
 }
 
-fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Report> {
-    engine.compile(source).map_err(|e| Report {
+/// Rhai's `print` by default: the line on stdout. Every sink gets the text with its control
+/// characters escaped like all other output (a line feed stays a line break). A script's strings
+/// routinely carry device text — a reply's `raw`, its items, a caught error's message — and by
+/// then nothing tells those bytes from the script's own, so a device could retitle or clear the
+/// terminal, or hide a failed verdict behind a carriage return, in the output a user or a CI log
+/// trusts. The price is that a script cannot colour its output or move the cursor; a verdict needs
+/// neither.
+pub fn print_to_stdout(escaped: &str) {
+    println!("{escaped}");
+}
+
+fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Failure> {
+    engine.compile(source).map_err(|e| Failure {
         exit: Exit::Refused,
         message: at(
             name,
@@ -195,7 +226,7 @@ fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Repor
     })
 }
 
-fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result<(), Report> {
+fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result<(), Failure> {
     let ast = compile(engine, name, source)?;
     let mut scope = Scope::new();
     let args: rhai::Array = args.iter().map(|a| Dynamic::from(a.clone())).collect();
@@ -206,7 +237,7 @@ fn execute(engine: &Engine, name: &str, source: &str, args: &[String]) -> Result
 }
 
 /// Maps a Rhai error to the exit code and message the user sees.
-fn report(name: &str, error: EvalAltResult) -> Report {
+fn report(name: &str, error: EvalAltResult) -> Failure {
     let position = error.position();
     match error {
         EvalAltResult::ErrorInFunctionCall(function, _, inner, _) => {
@@ -218,18 +249,22 @@ fn report(name: &str, error: EvalAltResult) -> Report {
             }
             inner
         }
-        EvalAltResult::ErrorRuntime(value, _) if value.is::<ScriptFailure>() => {
-            let failure = value.cast::<ScriptFailure>();
-            Report {
+        EvalAltResult::ErrorRuntime(value, _) if value.is::<Failure>() => {
+            let failure = value.cast::<Failure>();
+            Failure {
                 exit: failure.exit,
                 message: at(name, position, &failure.message),
             }
         }
-        EvalAltResult::ErrorTerminated(..) => Report {
+        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == MEMORY => Failure {
+            exit: Exit::DeviceError,
+            message: at(name, position, memory::MESSAGE),
+        },
+        EvalAltResult::ErrorTerminated(..) => Failure {
             exit: Exit::Interrupted,
             message: at(name, position, "interrupted"),
         },
-        EvalAltResult::ErrorTooManyOperations(..) => Report {
+        EvalAltResult::ErrorTooManyOperations(..) => Failure {
             exit: Exit::DeviceError,
             message: at(
                 name,
@@ -237,7 +272,7 @@ fn report(name: &str, error: EvalAltResult) -> Report {
                 "runaway script: too many operations (raise the cap with --max-operations)",
             ),
         },
-        EvalAltResult::ErrorStackOverflow(..) => Report {
+        EvalAltResult::ErrorStackOverflow(..) => Failure {
             exit: Exit::DeviceError,
             message: at(
                 name,
@@ -245,14 +280,18 @@ fn report(name: &str, error: EvalAltResult) -> Report {
                 "calls nested too deeply (raise the cap with --max-call-depth)",
             ),
         },
-        EvalAltResult::ErrorRuntime(value, _) => Report {
+        EvalAltResult::ErrorRuntime(value, _) => Failure {
             exit: Exit::DeviceError,
             message: at(name, position, &format!("error: {value}")),
         },
-        other => Report {
-            exit: Exit::DeviceError,
-            message: at(name, position, &strip_position(&other.to_string())),
-        },
+        mut other => {
+            // Rhai writes the position after the message; it is already in front.
+            other.clear_position();
+            Failure {
+                exit: Exit::DeviceError,
+                message: at(name, position, &other.to_string()),
+            }
+        }
     }
 }
 
@@ -261,14 +300,6 @@ fn at(name: &str, position: Position, message: &str) -> String {
         (Some(line), Some(column)) => format!("{name}:{line}:{column}: {message}"),
         (Some(line), None) => format!("{name}:{line}: {message}"),
         _ => format!("{name}: {message}"),
-    }
-}
-
-/// Rhai appends " (line L, position P)" to its messages; the position is already in front.
-fn strip_position(message: &str) -> String {
-    match message.rfind(" (line ") {
-        Some(i) if message.ends_with(')') => message[..i].to_string(),
-        _ => message.to_string(),
     }
 }
 

@@ -2,14 +2,16 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
+use crate::clock::ManualClock;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::sim::{Bus, BusOptions};
 use crate::link::{Link, LinkError};
-use crate::profile::Profile;
 use crate::session::SessionOptions;
-use crate::sim::clock::ManualClock;
 use crate::sim::inprocess::SimLink;
-use crate::sim::tmcl::{Bus, BusOptions};
 
 use super::*;
+use crate::dialect::tmcl::session::TmclSession;
+use crate::shell::run_source;
 
 /// A link that counts what is sent through it.
 struct Counting {
@@ -48,8 +50,14 @@ fn session() -> (TmclSession, Arc<AtomicUsize>) {
 fn device_functions_never_run_while_compiling_even_at_full_optimisation() {
     let (session, sent) = session();
     let shared = Rc::new(RefCell::new(session));
-    let mut engine = base_engine(Limits::default());
-    tmcl::register(&mut engine, &shared);
+    let mut engine = base_engine(
+        &Limits::default(),
+        None,
+        Arc::default(),
+        &(Rc::new(print_to_stdout) as PrintSink),
+    );
+    let sandbox = Rc::new(Sandbox::new([std::path::Path::new(".")], false));
+    crate::dialect::tmcl::script::register(&mut engine, &shared, &sandbox);
     engine.set_optimization_level(OptimizationLevel::Full);
     let before = sent.load(Ordering::SeqCst);
     let ast = engine
@@ -75,7 +83,7 @@ fn run_source_gives_the_session_back_and_reports_positions() {
         "t.rhai",
         "sap(6, 0, 4);\nassert_eq(gap(6, 0), 5);",
         &[],
-        Session::Tmcl(session),
+        Box::new(session),
         Limits::default(),
     );
     let report = result.unwrap_err();
@@ -84,11 +92,11 @@ fn run_source_gives_the_session_back_and_reports_positions() {
         report.message,
         "t.rhai:2:1: assert_eq failed: left = 4, right = 5"
     );
-    let Session::Tmcl(mut session) = session else {
+    let Ok(mut session) = session.into_any().downcast::<TmclSession>() else {
         panic!("TMCL session back")
     };
     assert_eq!(
-        session.execute("GAP 6, 0").unwrap().value(),
+        session.exchange_line("GAP 6, 0").unwrap().value(),
         Some(4),
         "the session still works"
     );
@@ -98,13 +106,7 @@ fn run_source_gives_the_session_back_and_reports_positions() {
 fn errors_inside_script_functions_keep_their_exit_code() {
     let (session, _) = session();
     let source = "fn check(v) { assert_eq(v, 2); }\ncheck(1);";
-    let (_, result) = run_source(
-        "f.rhai",
-        source,
-        &[],
-        Session::Tmcl(session),
-        Limits::default(),
-    );
+    let (_, result) = run_source("f.rhai", source, &[], Box::new(session), Limits::default());
     let report = result.unwrap_err();
     assert_eq!(report.exit, Exit::DeviceError);
     assert!(
@@ -122,26 +124,47 @@ fn errors_inside_script_functions_keep_their_exit_code() {
 }
 
 #[test]
+fn print_goes_to_the_sink_given_escaped_like_all_output() {
+    let (session, _) = session();
+    let printed = Rc::new(RefCell::new(Vec::<String>::new()));
+    let lines = printed.clone();
+    let script = Script::from_source(
+        "p.rhai",
+        "print(\"pos \" + gap(1, 0));\nprint(\"a\\x1b]0;owned\\x07b\\rc\\nd\");",
+        &[],
+        Limits::default(),
+    )
+    .print_to(Rc::new(move |line: &str| {
+        lines.borrow_mut().push(line.to_string())
+    }));
+    let (_, result) = crate::dialect::DialectSession::run_script(Box::new(session), &script);
+    result.unwrap();
+    assert_eq!(
+        *printed.borrow(),
+        ["pos 0", "a\\x1B]0;owned\\x07b\\rc\nd"],
+        "captured, nothing on stdout, device-like text escaped and a line feed kept"
+    );
+}
+
+#[test]
 fn a_caught_failure_tells_its_exit_code() {
     let (session, _) = session();
-    let shared = Rc::new(RefCell::new(session));
-    let mut engine = base_engine(Limits::default());
-    tmcl::register(&mut engine, &shared);
+    let printed = Rc::new(RefCell::new(Vec::<String>::new()));
+    let lines = printed.clone();
     let source = r#"
-        let codes = [];
-        try { send("GAP 200, 0") } catch (e) { codes.push(e.exit); codes.push(`${e}`) }
-        try { gap(1, 300) } catch (e) { codes.push(e.exit) }
-        codes
+        try { send("GAP 200, 0") } catch (e) { print(`${e.exit} ${e}`) }
+        try { gap(1, 300) } catch (e) { print(`${e.exit}`) }
     "#;
-    let codes: rhai::Array = engine.eval(source).unwrap();
-    assert_eq!(codes[0].as_int(), Ok(1), "a device error status: {codes:?}");
+    let script = Script::from_source("c.rhai", source, &[], Limits::default()).print_to(Rc::new(
+        move |line: &str| lines.borrow_mut().push(line.to_string()),
+    ));
+    let (_, result) = crate::dialect::DialectSession::run_script(Box::new(session), &script);
+    result.unwrap();
+    let printed = printed.borrow();
+    assert_eq!(printed.len(), 2, "{printed:?}");
     assert!(
-        codes[1].clone().into_string().unwrap().contains("status 3"),
-        "{codes:?}"
+        printed[0].starts_with("1 ") && printed[0].contains("status 3"),
+        "a device error status: {printed:?}"
     );
-    assert_eq!(
-        codes[2].as_int(),
-        Ok(2),
-        "refused before sending: {codes:?}"
-    );
+    assert_eq!(printed[1], "2", "refused before sending");
 }

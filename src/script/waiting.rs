@@ -1,14 +1,12 @@
 //! Waiting inside scripts: sliced so Ctrl-C interrupts promptly, with a spinner on a terminal.
 
-use std::io::IsTerminal;
 use std::time::{Duration, Instant};
 
-use indicatif::{ProgressBar, ProgressStyle};
-
-use crate::exit::Exit;
+use crate::exit::{Exit, Failure};
+use crate::progress::Progress;
 use crate::session::interrupt;
 
-use super::failure::{Fallible, ScriptFailure};
+use super::failure::{Fallible, thrown};
 
 /// How often a wait re-checks its condition.
 pub const POLL: Duration = Duration::from_millis(10);
@@ -18,7 +16,7 @@ pub fn sleep(duration: Duration) -> Fallible<()> {
     let end = Instant::now() + duration;
     loop {
         if interrupt::pending() {
-            return Err(ScriptFailure::new(Exit::Interrupted, "interrupted").into_rhai());
+            return Err(thrown(Failure::new(Exit::Interrupted, "interrupted")));
         }
         let now = Instant::now();
         if now >= end {
@@ -36,7 +34,12 @@ pub fn until(
     mut check: impl FnMut() -> Fallible<bool>,
 ) -> Fallible<()> {
     let start = Instant::now();
-    let spinner = spinner(what, timeout);
+    // A spinner for waits long enough to wonder about.
+    let spinner = if timeout >= Duration::from_millis(500) {
+        Progress::waiting(what)
+    } else {
+        Progress::hidden()
+    };
     let result = loop {
         match check() {
             Ok(true) => break Ok(()),
@@ -44,32 +47,18 @@ pub fn until(
             Err(e) => break Err(e),
         }
         if start.elapsed() >= timeout {
-            break Err(ScriptFailure::new(
+            break Err(thrown(Failure::new(
                 Exit::DeviceError,
                 format!(
                     "timed out after {} ms waiting for {what}",
                     timeout.as_millis()
                 ),
-            )
-            .into_rhai());
+            )));
         }
         if let Err(e) = sleep(POLL) {
             break Err(e);
         }
     };
-    if let Some(spinner) = spinner {
-        spinner.finish_and_clear();
-    }
+    drop(spinner);
     result
-}
-
-fn spinner(what: &str, timeout: Duration) -> Option<ProgressBar> {
-    if !std::io::stderr().is_terminal() || timeout < Duration::from_millis(500) {
-        return None;
-    }
-    let bar = ProgressBar::new_spinner();
-    bar.set_style(ProgressStyle::with_template("{spinner} {msg} {elapsed}").ok()?);
-    bar.set_message(format!("waiting for {what}"));
-    bar.enable_steady_tick(Duration::from_millis(120));
-    Some(bar)
 }

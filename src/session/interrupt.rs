@@ -8,8 +8,8 @@ use std::time::Duration;
 static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 static INSTALL: Once = Once::new();
 
-/// The longest a wait runs before checking for Ctrl-C.
-pub const SLICE: Duration = Duration::from_millis(50);
+/// The longest a wait runs before checking for Ctrl-C (the signal may wake another thread).
+pub const SLICE: Duration = Duration::from_millis(20);
 
 /// Routes SIGINT/SIGTERM to the flag (once per process).
 pub fn install() {

@@ -4,21 +4,22 @@
 //! stopping motors it set moving when a run is aborted. The REPL, `-c` lines, piped stdin and
 //! Rhai scripts all go through the same session.
 
-mod any;
+pub mod core;
 pub mod interrupt;
-mod rx;
-pub mod smd4;
-pub mod tmcl;
+pub(crate) mod rx;
 pub mod transcript;
-mod wire;
+pub(crate) mod wire;
 
 use std::time::Duration;
 
-use crate::exit::{Exit, ExitStatus};
-use crate::protocol::tmcl::InputError;
+use crate::exit::{Exit, ExitStatus, Failure};
 
-pub use any::{Reply, Session};
 pub use transcript::Transcript;
+
+/// How long a stop (MST, MOTOR:STOP) waits for its answer besides the exchange's wire time. Stops
+/// go out at once; a module answers them at once; and after Ctrl-C the user hears within this that
+/// the stop went out, however long the interrupted reply would have taken.
+pub(crate) const STOP_CONFIRMATION: Duration = Duration::from_millis(50);
 
 /// Settings shared by every dialect's session.
 #[derive(Debug, Clone)]
@@ -50,9 +51,9 @@ impl Default for SessionOptions {
 /// Why a request failed.
 #[derive(Debug, thiserror::Error)]
 pub enum SessionError {
-    /// The line was refused before sending.
+    /// The line was refused before sending (TMCL's parser or validator says why).
     #[error("{0}")]
-    Refused(#[from] InputError),
+    Refused(String),
     /// A helper command or argument was wrong.
     #[error("{0}")]
     Usage(String),
@@ -88,14 +89,10 @@ pub enum SessionError {
     /// Ctrl-C.
     #[error("interrupted")]
     Interrupted,
-    /// A script (`:source`) failed; the message names file, line and column.
-    #[error("{message}")]
-    Script {
-        /// The exit code the failure means.
-        exit: Exit,
-        /// What happened.
-        message: String,
-    },
+    /// A failure with its own exit code: a script (`:source`, its message naming file, line and
+    /// column), a download as a whole, a snapshot's differences.
+    #[error(transparent)]
+    Failed(#[from] Failure),
 }
 
 impl ExitStatus for SessionError {
@@ -109,7 +106,7 @@ impl ExitStatus for SessionError {
                 Exit::Link
             }
             SessionError::Interrupted => Exit::Interrupted,
-            SessionError::Script { exit, .. } => *exit,
+            SessionError::Failed(failure) => failure.exit,
         }
     }
 }
@@ -122,5 +119,13 @@ impl From<crate::link::LinkError> for SessionError {
             LinkError::Open(message) => SessionError::Link(message),
             LinkError::Timeout => SessionError::Link("timed out".into()),
         }
+    }
+}
+
+/// Output that cannot be written (a helper's table, a report) ends the command as a link
+/// failure: the user can see nothing more of it.
+impl From<std::io::Error> for SessionError {
+    fn from(e: std::io::Error) -> Self {
+        SessionError::Link(format!("output: {e}"))
     }
 }

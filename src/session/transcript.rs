@@ -1,17 +1,28 @@
 //! The `--log` transcript: every byte sent and received, timestamped, escaped so the file stays
 //! readable, with the decoded meaning after `;`. Each line is written with one call and flushed,
-//! so a crash loses nothing.
+//! so a crash loses nothing. Every session's part of the file starts with a header saying what
+//! it is a transcript of, so it can be read back without guessing.
 //!
 //! ```text
+//! 2026-11-22T10:15:02.118Z ## tmclsh transcript: dialect "tmcl", module "TMCM-142", profile "built-in", version "0.1.0"
 //! 2026-11-22T10:15:02.120Z tx "AGAP 1, 0\r" ; GAP 1, 0 to module A
 //! 2026-11-22T10:15:02.123Z rx "AGAP 1, 0\rBA 100 -5000\r" ; A: 100 (successfully executed), value -5000
 //! ```
+//!
+//! A transcript that cannot be written (a full disk) stops recording at the first failed line and
+//! says why ([`Transcript::failure`]); the faces decide what that means for the run.
 
 use std::fmt::{Display, Write as _};
 use std::fs::{File, OpenOptions};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
+
+use crate::exit::{Exit, ExitStatus};
+
+mod header;
+
+pub use header::{HEADER_TAG, HEADER_TITLE, Header, split_quoted};
 
 /// Direction or kind of a transcript line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -22,6 +33,8 @@ pub enum Entry {
     Received,
     /// A remark (mode changes, line noise, safety stops).
     Note,
+    /// The header that starts a session's part of the file.
+    Header,
 }
 
 impl Entry {
@@ -30,6 +43,37 @@ impl Entry {
             Entry::Sent => "tx",
             Entry::Received => "rx",
             Entry::Note => "--",
+            Entry::Header => HEADER_TAG,
+        }
+    }
+}
+
+/// Why a transcript could not be started.
+#[derive(Debug, thiserror::Error)]
+pub enum TranscriptError {
+    /// The file could not be opened (a bad path, no permission): the request is refused.
+    #[error("cannot open log file {path}: {source}")]
+    Open {
+        /// The file.
+        path: String,
+        /// What the OS said.
+        source: io::Error,
+    },
+    /// The file opened, but its header could not be written (a full disk).
+    #[error("cannot write the transcript {path}: {source}")]
+    Write {
+        /// The file.
+        path: String,
+        /// What the OS said.
+        source: io::Error,
+    },
+}
+
+impl ExitStatus for TranscriptError {
+    fn exit(&self) -> Exit {
+        match self {
+            TranscriptError::Open { .. } => Exit::Refused,
+            TranscriptError::Write { .. } => Exit::Link,
         }
     }
 }
@@ -40,17 +84,35 @@ pub struct Transcript {
     path: PathBuf,
     file: File,
     line: String,
+    /// Why writing failed; nothing more is written after that.
+    failed: Option<String>,
 }
 
 impl Transcript {
-    /// Opens `path` for appending (created if missing).
-    pub fn open(path: &Path) -> io::Result<Self> {
-        let file = OpenOptions::new().create(true).append(true).open(path)?;
-        Ok(Transcript {
+    /// Opens `path` for appending (created if missing) and writes the header of this session.
+    pub fn open(path: &Path, header: &Header) -> Result<Self, TranscriptError> {
+        let shown = || path.display().to_string();
+        let file = OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(path)
+            .map_err(|source| TranscriptError::Open {
+                path: shown(),
+                source,
+            })?;
+        let mut transcript = Transcript {
             path: path.to_path_buf(),
             file,
             line: String::with_capacity(128),
-        })
+            failed: None,
+        };
+        transcript
+            .record(Entry::Header, b"", header.to_text())
+            .map_err(|source| TranscriptError::Write {
+                path: shown(),
+                source,
+            })?;
+        Ok(transcript)
     }
 
     /// The file written to.
@@ -58,8 +120,22 @@ impl Transcript {
         &self.path
     }
 
-    /// Records bytes or a note with its meaning. Write errors are returned, not hidden.
+    /// Why the transcript stopped being written, if it did: "cannot write the transcript FILE:
+    /// No space left on device".
+    pub fn failure(&self) -> Option<String> {
+        let error = self.failed.as_ref()?;
+        Some(format!(
+            "cannot write the transcript {}: {error}",
+            self.path.display()
+        ))
+    }
+
+    /// Records bytes or a note with its meaning. The first write error is returned, not hidden;
+    /// after it nothing more is written (a partly written line would make the file unreadable).
     pub fn record(&mut self, entry: Entry, bytes: &[u8], meaning: impl Display) -> io::Result<()> {
+        if self.failed.is_some() {
+            return Ok(());
+        }
         self.line.clear();
         // Writing into a String cannot fail.
         let _ = write!(
@@ -68,7 +144,7 @@ impl Transcript {
             humantime::format_rfc3339_millis(SystemTime::now()),
             entry.tag()
         );
-        if entry == Entry::Note {
+        if matches!(entry, Entry::Note | Entry::Header) {
             let _ = write!(self.line, "{meaning}");
         } else {
             escape_into(bytes, &mut self.line);
@@ -79,7 +155,11 @@ impl Transcript {
             }
         }
         self.line.push('\n');
-        self.file.write_all(self.line.as_bytes())
+        let written = self.file.write_all(self.line.as_bytes());
+        if let Err(e) = &written {
+            self.failed = Some(e.to_string());
+        }
+        written
     }
 }
 
@@ -129,6 +209,24 @@ pub fn unescape(quoted: &str) -> Option<Vec<u8>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dialect::smd4::config::header as smd4_header;
+    use crate::dialect::tmcl::config::header as tmcl_header;
+    use crate::dialect::tmcl::profile::Profile;
+
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_transcript_that_cannot_be_written_says_so_once() {
+        let header = tmcl_header(&Profile::builtin());
+        let error = Transcript::open(Path::new("/dev/full"), &header).unwrap_err();
+        assert_eq!(error.exit(), Exit::Link);
+        assert!(
+            error
+                .to_string()
+                .starts_with("cannot write the transcript /dev/full: ")
+        );
+        let error = Transcript::open(Path::new("/nonexistent/dir/t.log"), &header).unwrap_err();
+        assert_eq!(error.exit(), Exit::Refused);
+    }
 
     #[test]
     fn escaping_round_trips_every_byte() {
@@ -146,25 +244,38 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("t.log");
         let _ = std::fs::remove_file(&path);
-        let mut t = Transcript::open(&path).unwrap();
+        let header = tmcl_header(&Profile::builtin());
+        let mut t = Transcript::open(&path, &header).unwrap();
         t.record(Entry::Sent, b"AGAP 1, 0\r", "GAP 1, 0 to module A")
             .unwrap();
         t.record(Entry::Received, b"BA 100 -5000\r", "A: 100")
             .unwrap();
         t.record(Entry::Note, b"", "entered ASCII mode").unwrap();
         drop(t);
-        let mut again = Transcript::open(&path).unwrap();
+        let smd4 = smd4_header();
+        let mut again = Transcript::open(&path, &smd4).unwrap();
         again.record(Entry::Note, b"", "second session").unwrap();
         let text = std::fs::read_to_string(&path).unwrap();
         let lines: Vec<&str> = text.lines().collect();
-        assert_eq!(lines.len(), 4);
+        assert_eq!(lines.len(), 6);
         assert!(
-            lines[0].ends_with(" tx \"AGAP 1, 0\\r\" ; GAP 1, 0 to module A"),
+            lines[0].ends_with(&format!(
+                " ## tmclsh transcript: dialect \"tmcl\", module \"TMCM-142\", profile \"built-in\", version \"{}\"",
+                env!("CARGO_PKG_VERSION")
+            )),
             "{}",
             lines[0]
         );
-        assert!(lines[1].contains(" rx \"BA 100 -5000\\r\" ; A: 100"));
-        assert!(lines[2].ends_with(" -- entered ASCII mode"));
-        assert!(lines[0].starts_with("20") && lines[0].as_bytes()[10] == b'T');
+        assert!(
+            lines[1].ends_with(" tx \"AGAP 1, 0\\r\" ; GAP 1, 0 to module A"),
+            "{}",
+            lines[1]
+        );
+        assert!(lines[2].contains(" rx \"BA 100 -5000\\r\" ; A: 100"));
+        assert!(lines[3].ends_with(" -- entered ASCII mode"));
+        assert!(
+            lines[4].contains(" ## tmclsh transcript: dialect \"smd4\", module \"SMD4\", version")
+        );
+        assert!(lines[1].starts_with("20") && lines[1].as_bytes()[10] == b'T');
     }
 }

@@ -1,6 +1,26 @@
 //! The byte side every dialect's session shares: the link, the receive buffer, the transcript and
-//! the notices. Every byte goes through here, so every byte reaches the transcript, and every wait
-//! is sliced so Ctrl-C is noticed promptly.
+//! the notices, and the rules that decide when the line can be trusted. Every byte goes through
+//! here, so every byte reaches the transcript, and every wait is sliced so Ctrl-C is noticed
+//! promptly.
+//!
+//! Trust, one mechanism for both dialects:
+//! - An exchange runs between [`Wire::begin`] and [`Wire::finish`]. One that fails in any way
+//!   (timeout, line noise, Ctrl-C, a reply that does not check out) leaves its peer *suspect*: its
+//!   answer may still be on the way. So may bytes found on the line between exchanges.
+//! - Before the next exchange with a suspect peer the line is resynchronised: everything that
+//!   arrives is discarded until the line has been quiet for the resync window (the session
+//!   timeout up to a second, at least 32 byte times), bounded by one more timeout
+//!   if the line never goes quiet. A clean line costs nothing: no exchange waits unless one
+//!   failed. (With an echo, a peer whose late answers have all been seen is trusted at once.)
+//! - A complete reply is trusted only once the bytes right after it have been seen: a reply cut
+//!   short by a corrupted byte, or glued to more data, is line noise. The wait for them
+//!   ([`Wire::await_more`]) follows the pace at which this reply's bytes arrived, so a link that
+//!   delivers whole replies at once pays only a poll.
+//! - Whatever is discarded is counted and summarised in one notice per kind and exchange.
+
+mod discard;
+mod pace;
+mod trust;
 
 use std::fmt::Display;
 use std::time::{Duration, Instant};
@@ -11,7 +31,26 @@ use super::rx::Rx;
 use super::transcript::{Entry, Transcript};
 use super::{SessionError, interrupt};
 
-/// A link with its receive buffer, transcript and notices.
+use discard::Discards;
+use pace::Pace;
+use trust::Suspicion;
+pub(crate) use trust::{Benign, Harmless, Settled, nothing_benign};
+
+/// Who an exchange talks to, as far as replies tell: a module or drive whose replies carry its
+/// address, or anyone (replies that name no sender).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Peer {
+    /// Replies do not say who sent them.
+    Any,
+    /// Replies carry this address.
+    Module(u32),
+}
+
+/// A partial line longer than this cannot be a reply or an echo of either dialect: it is dropped
+/// as noise instead of being kept until its line end comes.
+pub(crate) const MAX_LINE: usize = 1024;
+
+/// A link with its receive buffer, transcript, notices and trust.
 pub(crate) struct Wire {
     pub link: Box<dyn Link>,
     pub rx: Rx,
@@ -19,17 +58,63 @@ pub(crate) struct Wire {
     pub notices: Vec<String>,
     /// When the last byte was sent, for [`Wire::idle_for`].
     last_sent: Option<Instant>,
+    /// Peers whose answers may still be on the way.
+    suspect: Suspicion,
+    /// The peer of the exchange in progress.
+    in_flight: Option<Peer>,
+    discards: Discards,
+    /// Discarded bytes not yet written to the transcript.
+    discarded: Vec<u8>,
+    pace: Pace,
 }
 
 impl Wire {
     pub fn new(link: Box<dyn Link>, transcript: Option<Transcript>) -> Self {
+        precise_timers();
         Wire {
             link,
             rx: Rx::default(),
             transcript,
             notices: Vec::new(),
             last_sent: None,
+            suspect: Suspicion::default(),
+            in_flight: None,
+            discards: Discards::default(),
+            discarded: Vec::new(),
+            pace: Pace::default(),
         }
+    }
+
+    /// Starts an exchange with `peer`: takes what arrived since the last one (anything but line
+    /// ends and `benign` data makes the line suspect), and unless `urgent` (a stop that must go
+    /// out now) resynchronises first when the peer is suspect.
+    pub fn begin(
+        &mut self,
+        peer: Peer,
+        urgent: bool,
+        timeout: Duration,
+        benign: Benign,
+    ) -> Result<(), SessionError> {
+        self.in_flight = None;
+        self.drain(benign)?;
+        if !urgent && self.suspect.covers(peer) {
+            self.resync(timeout)?;
+        }
+        self.pace = Pace::default();
+        self.in_flight = Some(peer);
+        Ok(())
+    }
+
+    /// Ends the exchange started by [`Wire::begin`]: a failed one leaves its peer suspect; what
+    /// was discarded becomes one notice per kind.
+    pub fn finish(&mut self, ok: bool) {
+        if let (Some(peer), false) = (self.in_flight.take(), ok) {
+            self.suspect.add(peer);
+        }
+        self.flush_discarded();
+        let summary = self.discards.summary();
+        self.notices.extend(summary);
+        self.discards = Discards::default();
     }
 
     /// Writes bytes to the link and the transcript. The meaning is formatted only when a
@@ -62,21 +147,34 @@ impl Wire {
         }
     }
 
-    /// Reads what arrives before `deadline` into the receive buffer. `Ok(false)` when the
-    /// deadline passed with nothing new; `Err(Interrupted)` on Ctrl-C.
-    pub fn fill(&mut self, deadline: Instant) -> Result<bool, SessionError> {
-        let mut buf = [0u8; 512];
+    /// Reads what arrives before `until` into the receive buffer: `Ok(false)` when `until`
+    /// passed with nothing new (an `until` already past still takes what has arrived);
+    /// `Err(Interrupted)` on Ctrl-C. Callers bound their loops with their own deadline, so a
+    /// line that never stops talking cannot keep them.
+    pub fn fill(&mut self, until: Instant) -> Result<bool, SessionError> {
+        let mut buf = [0u8; 4096];
         loop {
             if interrupt::pending() {
                 return Err(SessionError::Interrupted);
             }
-            let slice_end = deadline.min(Instant::now() + interrupt::SLICE);
+            let slice_end = until.min(Instant::now() + interrupt::SLICE);
             match self.link.recv(&mut buf, slice_end) {
                 Ok(n) => {
-                    self.rx.extend(&buf[..n]);
+                    self.pace.record(n);
+                    if self.rx.extend(&buf[..n]).is_err() {
+                        let held = self.rx.clear();
+                        self.log(Entry::Received, &held, "receive buffer full, discarded");
+                        self.log(Entry::Received, &buf[..n], "receive buffer full, discarded");
+                        self.note("line noise: 64 KiB arrived without a usable line");
+                        return Err(SessionError::Link(
+                            "line noise: 64 KiB arrived without a usable line; check the port, the \
+                             baud rate and what else talks on the line"
+                                .into(),
+                        ));
+                    }
                     return Ok(true);
                 }
-                Err(LinkError::Timeout) if Instant::now() >= deadline => return Ok(false),
+                Err(LinkError::Timeout) if Instant::now() >= until => return Ok(false),
                 Err(LinkError::Timeout) => continue,
                 Err(e) => {
                     let message = e.to_string();
@@ -87,26 +185,9 @@ impl Wire {
         }
     }
 
-    /// Drops bytes that arrived outside any exchange (late replies, line noise), logging them.
-    pub fn drain(&mut self) -> Result<(), SessionError> {
-        let mut buf = [0u8; 512];
-        loop {
-            match self.link.recv(&mut buf, Instant::now()) {
-                Ok(n) => self.rx.extend(&buf[..n]),
-                Err(LinkError::Timeout) => break,
-                Err(e) => return Err(e.into()),
-            }
-        }
-        let stale = self.rx.bytes();
-        if stale.iter().any(|b| !matches!(b, b'\r' | b'\n' | 0)) {
-            self.log_received(stale.len(), "arrived outside any exchange, discarded");
-        }
-        self.rx.consume(self.rx.len());
-        Ok(())
-    }
-
     /// Records the first `n` bytes of the receive buffer as received and removes them.
     pub fn log_received(&mut self, n: usize, meaning: impl Display) {
+        self.flush_discarded();
         if let Some(t) = &mut self.transcript {
             let n = n.min(self.rx.len());
             if let Err(e) = t.record(Entry::Received, &self.rx.bytes()[..n], meaning) {
@@ -123,6 +204,7 @@ impl Wire {
 
     /// Records bytes or a note; a transcript that cannot be written is closed with a notice.
     pub fn log(&mut self, entry: Entry, bytes: &[u8], meaning: impl Display) {
+        self.flush_discarded();
         if let Some(t) = &mut self.transcript {
             if let Err(e) = t.record(entry, bytes, meaning) {
                 self.close_transcript(&e);
@@ -130,13 +212,32 @@ impl Wire {
         }
     }
 
-    /// Stops writing a transcript that failed, with a notice.
+    /// Says that the transcript failed. It stays attached, so the faces can see its
+    /// [`Transcript::failure`] and end a run that asked for it; it records nothing more.
     fn close_transcript(&mut self, error: &std::io::Error) {
-        if let Some(t) = self.transcript.take() {
+        if let Some(t) = &self.transcript {
             self.notices.push(format!(
-                "stopped writing the transcript {}: {error}",
+                "cannot write the transcript {}: {error}; nothing more is recorded",
                 t.path().display()
             ));
         }
     }
+
+    /// Forgets what was received (a link opened anew). Suspicion stays: a device behind a
+    /// reopened port may still answer what it was asked before.
+    pub fn reset(&mut self) {
+        self.rx.clear();
+        self.discarded.clear();
+    }
 }
+
+/// Asks the kernel to wake this thread at its timers' exact times: the wait for the byte after a
+/// reply is about a byte time long (87 µs at 115200 baud), and the default timer slack of a Linux
+/// thread (50 µs) would add half as much again to every exchange.
+fn precise_timers() {
+    #[cfg(any(target_os = "linux", target_os = "android"))]
+    let _ = nix::sys::prctl::set_timerslack(1);
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,21 +1,23 @@
-//! What the REPL and non-interactive use share: a session of either dialect plus display
-//! settings, and the helper commands (`:help`, `:target`, `:run` …).
+//! What the REPL and non-interactive use share: a session of any dialect plus display settings,
+//! and the helper commands (`:help`, `:target`, `:run` …).
 
 pub mod batch;
+pub mod commission;
 mod help;
 pub mod helpers;
-pub mod render;
-mod smd4_helpers;
-mod tmcl_helpers;
+mod script;
+pub mod terminal;
+pub mod words;
 
-use std::io::{self, Write};
+use std::io::Write;
 use std::path::Path;
 
-use crate::protocol::tmcl::line::address_char;
-use crate::script::{self, Limits};
-use crate::session::smd4::drive_name;
-use crate::session::tmcl::WireMode;
-use crate::session::{Session, SessionError, Transcript, interrupt};
+use crate::dialect::DialectSession;
+use crate::exit::{Exit, ExitStatus};
+use crate::script::Limits;
+use crate::session::{SessionError, Transcript, interrupt};
+
+pub use script::{run_file, run_source};
 
 /// Whether to go on after a helper command.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -29,39 +31,45 @@ pub enum Flow {
 /// A session and how its results are shown.
 pub struct Shell {
     /// The conversation with the modules; lent out while a script runs (`:source`).
-    session: Option<Session>,
+    session: Option<Box<dyn DialectSession>>,
     /// Show replies exactly as received (`:raw`).
     pub raw: bool,
+    /// Put the time before each reply on screen (`:log time on`).
+    pub timestamps: bool,
     /// What the commissioning helpers remember (the last recording).
-    pub commission: crate::commission::shell::State,
+    pub commission: commission::State,
 }
 
 impl Shell {
     /// A shell over an open session.
-    pub fn new(session: Session) -> Self {
+    pub fn new(session: Box<dyn DialectSession>) -> Self {
         Shell {
             session: Some(session),
             raw: false,
+            timestamps: false,
             commission: Default::default(),
         }
     }
 
     /// The session.
-    pub fn session(&mut self) -> &mut Session {
+    pub fn session(&mut self) -> &mut dyn DialectSession {
         self.session
-            .as_mut()
+            .as_deref_mut()
             .expect("the session is back after every script run")
     }
 
     /// The session, read-only.
-    pub fn session_ref(&self) -> &Session {
+    pub fn session_ref(&self) -> &dyn DialectSession {
         self.session
-            .as_ref()
+            .as_deref()
             .expect("the session is back after every script run")
     }
 
     /// Lends the session to `f` by value (scripts own the session while they run).
-    pub fn lend<T>(&mut self, f: impl FnOnce(Session) -> (Session, T)) -> T {
+    pub fn lend<T>(
+        &mut self,
+        f: impl FnOnce(Box<dyn DialectSession>) -> (Box<dyn DialectSession>, T),
+    ) -> T {
         let session = self
             .session
             .take()
@@ -71,22 +79,9 @@ impl Shell {
         result
     }
 
-    /// The prompt: TMCL shows the target's address character and binary mode; SMD4 the prefix.
+    /// The prompt: which module typed lines go to, and how (the dialect says).
     pub fn prompt(&self) -> String {
-        match self.session_ref() {
-            Session::Tmcl(session) => {
-                let target = session.target();
-                let c = address_char(target).unwrap_or('?');
-                match session.module_state(target) {
-                    Some((WireMode::Binary, _)) => format!("{c}[bin]> "),
-                    _ => format!("{c}> "),
-                }
-            }
-            Session::Smd4(session) => match session.address() {
-                Some(_) => format!("smd4 {}> ", drive_name(session.address())),
-                None => "smd4> ".to_string(),
-            },
-        }
+        self.session_ref().prompt()
     }
 
     /// Runs a helper command line (starting with `:`), writing its output to `out`.
@@ -98,7 +93,7 @@ impl Shell {
         };
         let dialect = self.session_ref().dialect();
         let helper = helpers::find(name, dialect).map_err(SessionError::Usage)?;
-        if helper.arg == helpers::ArgKind::None && !arg.is_empty() {
+        if helper.arg == crate::dialect::ArgKind::None && !arg.is_empty() {
             return Err(SessionError::Usage(format!(
                 "{} takes no argument",
                 helper.usage
@@ -113,20 +108,11 @@ impl Shell {
             }
             "source" => self.source(arg, out)?,
             "snapshot" | "scan" | "watch" | "record" | "plot" => {
-                let session = self.session.as_mut().expect("the session is back");
-                crate::commission::shell::helper(
-                    session,
-                    &mut self.commission,
-                    helper.name,
-                    arg,
-                    out,
-                )?
+                let session = self.session.as_deref_mut().expect("the session is back");
+                commission::helper(session, &mut self.commission, helper.name, arg, out)?
             }
             "quit" => return Ok(Flow::Quit),
-            name => match self.session() {
-                Session::Tmcl(session) => tmcl_helpers::run(session, helper, arg, out)?,
-                Session::Smd4(session) => smd4_helpers::run(session, name, arg, out)?,
-            },
+            _ => self.session().run_helper(helper, arg, out)?,
         }
         Ok(Flow::Continue)
     }
@@ -138,32 +124,45 @@ impl Shell {
             .next()
             .ok_or_else(|| SessionError::Usage("usage: :source SCRIPT.rhai [ARGS...]".into()))?;
         let args: Vec<String> = words.map(String::from).collect();
-        let outcome = self
-            .lend(|session| script::run_file(Path::new(path), &args, session, Limits::default()));
-        let Err(report) = outcome else { return Ok(()) };
+        let outcome =
+            self.lend(|session| run_file(Path::new(path), &args, session, Limits::default()));
+        let Err(failure) = outcome else { return Ok(()) };
         interrupt::take();
         for message in self.session().stop_motion() {
-            writeln!(out, "{message}")?;
+            writeln!(out, "{}", crate::escape::escape_control(&message))?;
         }
-        Err(SessionError::Script {
-            exit: report.exit,
-            message: report.message,
-        })
+        Err(failure.into())
     }
 
     fn set_log(&mut self, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
+        if let Some(timestamps) = timestamps_arg(arg, self.timestamps)? {
+            self.timestamps = timestamps;
+            let state = if timestamps { "on" } else { "off" };
+            writeln!(out, "timestamps on screen {state}")?;
+            return Ok(());
+        }
+        let timestamps = self.timestamps;
         let session = self.session();
         if arg.is_empty() {
+            let state = if timestamps { "on" } else { "off" };
+            writeln!(out, "timestamps on screen {state} (:log time on|off)")?;
             match session.transcript() {
-                Some(t) => writeln!(out, "logging to {}", t.path().display())?,
+                Some(t) => match t.failure() {
+                    Some(failure) => writeln!(out, "not logging: {failure}; :log FILE starts")?,
+                    None => writeln!(out, "logging to {}", t.path().display())?,
+                },
                 None => writeln!(out, "not logging; :log FILE starts")?,
             }
         } else if arg == "off" {
             session.set_transcript(None);
             writeln!(out, "transcript stopped")?;
         } else {
-            let transcript = Transcript::open(Path::new(arg))
-                .map_err(|e| SessionError::Usage(format!("cannot open log file {arg}: {e}")))?;
+            let header = session.header();
+            let transcript =
+                Transcript::open(Path::new(arg), &header).map_err(|e| match e.exit() {
+                    Exit::Refused => SessionError::Usage(e.to_string()),
+                    _ => SessionError::Link(e.to_string()),
+                })?;
             session.set_transcript(Some(transcript));
             writeln!(out, "logging to {arg}")?;
         }
@@ -171,8 +170,24 @@ impl Shell {
     }
 }
 
-impl From<io::Error> for SessionError {
-    fn from(e: io::Error) -> Self {
-        SessionError::Link(format!("output: {e}"))
+/// `:log time [on|off]`: the new setting (a bare `time` toggles), or `None` for other arguments.
+fn timestamps_arg(arg: &str, now: bool) -> Result<Option<bool>, SessionError> {
+    let mut words = arg.split_whitespace();
+    if words.next() != Some("time") {
+        return Ok(None);
     }
+    match (words.next(), words.next()) {
+        (None, _) => Ok(Some(!now)),
+        (Some("on"), None) => Ok(Some(true)),
+        (Some("off"), None) => Ok(Some(false)),
+        _ => Err(SessionError::Usage("usage: :log time [on|off]".into())),
+    }
+}
+
+/// The time of day to put before a line on screen (`:log time on`): UTC with milliseconds, the
+/// clock of the transcript's timestamps, so the two can be read side by side.
+pub fn time_of_day() -> String {
+    let now = humantime::format_rfc3339_millis(std::time::SystemTime::now()).to_string();
+    now.split_once('T')
+        .map_or(now.clone(), |(_, time)| time.to_string())
 }

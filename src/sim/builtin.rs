@@ -2,27 +2,15 @@
 
 use std::sync::Arc;
 
+use crate::clock::SystemClock;
 use crate::link::Link;
-use crate::profile::Profile;
-use crate::protocol::Dialect;
 
-use super::clock::SystemClock;
+use super::Device;
 use super::inprocess::SimLink;
-use super::smd4::{Smd4Options, Smd4Sim};
-use super::tmcl::{Bus, BusOptions};
 
-/// A link to a freshly powered-up simulated module (address 1) of `profile`, or a simulated SMD4,
-/// in-process, running on the wall clock so motion takes real time.
-pub fn builtin_link(profile: &Arc<Profile>, dialect: Dialect) -> Box<dyn Link> {
+/// A link to `device` (a freshly powered-up simulated module), in-process, running on the wall
+/// clock so motion takes real time; `name` is what the link says it talks to.
+pub fn builtin_link(device: Box<dyn Device>, name: String) -> Box<dyn Link> {
     let clock = Arc::new(SystemClock::new());
-    let link = match dialect {
-        Dialect::Tmcl => SimLink::new(
-            Box::new(Bus::new(profile.clone(), BusOptions::default())),
-            clock,
-        )
-        .named(format!("simulated {} (built-in)", profile.module)),
-        Dialect::Smd4 => SimLink::new(Box::new(Smd4Sim::new(Smd4Options::default())), clock)
-            .named("simulated SMD4 (built-in)"),
-    };
-    Box::new(link)
+    Box::new(SimLink::new(device, clock).named(name))
 }

@@ -3,41 +3,35 @@
 //! simulator runs, and wait for the answer before going on.
 
 use std::sync::Arc;
-use std::time::Duration;
 
-use super::clock::{Clock, ManualClock};
 use super::inprocess::SharedDevice;
+use crate::clock::{Clock, ManualClock};
 
-/// The console commands, for `--help` and `help`.
-pub const HELP: &str = "\
-Console commands (one per line on stdin; each is answered by one line, `ok ...` or `error: ...`):
- TMCL module bus (--protocol tmcl):
-  input PORT 0|1                     set a digital input (GIO bank 0)
-  analog PORT VALUE                  set an analog input (GIO bank 1, 0..1023)
-  switch left|right|home POS|off     move a virtual switch (physical microsteps) or disconnect it
-  output PORT                        show an output (SIO bank 2)
-  motor                              show position, target, velocity, target reached
-  @N COMMAND                         any of the above for the module with factory address N
- SMD4 drive (--protocol smd4):
-  limit pos|neg 0|1                  set the level of a limit input (active after LIMIT:POL+/-)
-  exten 0|1                          set the external enable input
-  joystick 0|1                       plug a joystick in or out
-  fault BIT|NAME                     latch an EFLAGS bit (e.g. 2 or TempOver); the motor stops
-  flash-failure on|off               make STORE fail with -5 (worn-out flash) or work again
-  power-cycle                        restart from the stored configuration
-  motor                              show position, velocity, standby, target velocity reached
-  flags                              show SFLAGS, EFLAGS and whether addressing mode is on
-  setting MNEMONIC                   show a working setting (e.g. COMS:SERIAL:SLAVEADDR)
- Both:
+/// What every console says before the commands of its simulator.
+const HELP_TITLE: &str = "Console commands (one per line on stdin; each is answered by one line, `ok ...` or `error: ...`):";
+
+/// The commands every simulator's console has (faults, time, quitting).
+const SHARED_HELP: &str = " Both:
   drop RATE | corrupt RATE           drop or corrupt replies from now on (RATE 0..1)
   delay RATE MS                      hold replies back by MS milliseconds
   seed N                             restart the fault decisions from seed N (and the counts)
   faults                             show the seed and the faults injected since it was set
   silent on|off                      stop or resume answering (commands still execute)
   hangup                             hang up the connection now
-  advance DURATION                   with --manual-clock: let time pass (2s, 250ms, 1.5; plain = s)
+  advance DURATION                   with --manual-clock: let time pass (2s, 250ms, 1.5s; plain = ms)
   time                               show the simulation time
   quit                               end the simulator";
+
+/// The console commands, for `tmclsh sim --help` and `help`: those of each simulator (a dialect's
+/// section: a heading line, then two-space indented commands), then those every console has.
+pub fn help<'a>(sections: impl IntoIterator<Item = &'a str>) -> String {
+    let mut text = HELP_TITLE.to_string();
+    for section in sections.into_iter().chain([SHARED_HELP]) {
+        text.push('\n');
+        text.push_str(section);
+    }
+    text
+}
 
 /// What a console line asks for.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -67,19 +61,24 @@ pub struct Console {
     device: SharedDevice,
     clock: Arc<dyn Clock>,
     manual: Option<Arc<ManualClock>>,
+    /// The text of [`help`], whose command names `help` lists.
+    help: String,
 }
 
 impl Console {
-    /// `manual` is the clock when time only moves on `advance`.
+    /// `manual` is the clock when time only moves on `advance`; `help` is the text [`help`]
+    /// made, whose command names the console's `help` lists.
     pub fn new(
         device: SharedDevice,
         clock: Arc<dyn Clock>,
         manual: Option<Arc<ManualClock>>,
+        help: String,
     ) -> Self {
         Console {
             device,
             clock,
             manual,
+            help,
         }
     }
 
@@ -89,9 +88,9 @@ impl Console {
         match words.as_slice() {
             [] => Answer::Ok(String::new()),
             ["quit" | "exit"] => Answer::Quit,
-            ["help"] => Answer::Ok(summary()),
+            ["help"] => Answer::Ok(summary(&self.help)),
             ["time"] => Answer::Ok(format!("{:.6} s", self.clock.now().as_secs_f64())),
-            ["advance", amount] => match (&self.manual, parse_duration(amount)) {
+            ["advance", amount] => match (&self.manual, crate::duration::parse(amount)) {
                 (None, _) => Answer::Error("advance needs --manual-clock".into()),
                 (_, Err(e)) => Answer::Error(e),
                 (Some(clock), Ok(d)) => {
@@ -114,9 +113,9 @@ impl Console {
 
 /// The answer to `help`: the command names on one line (the console answers every command with
 /// one line; `tmclsh sim --help` describes them).
-fn summary() -> String {
+fn summary(help: &str) -> String {
     let mut names: Vec<&str> = Vec::new();
-    for line in HELP.lines().filter(|l| l.starts_with("  ")) {
+    for line in help.lines().filter(|l| l.starts_with("  ")) {
         let syntax = line.trim().split("  ").next().unwrap_or_default();
         for form in syntax.split(" | ") {
             let name = form.split_whitespace().next().unwrap_or_default();
@@ -131,63 +130,41 @@ fn summary() -> String {
     )
 }
 
-/// `2s`, `250ms`, `10us`, `1.5` (seconds); decimal digits are taken exactly, to the
-/// nanosecond.
-pub fn parse_duration(text: &str) -> Result<Duration, String> {
-    let (number, unit_ns) = if let Some(n) = text.strip_suffix("ms") {
-        (n, 1_000_000u128)
-    } else if let Some(n) = text.strip_suffix("us") {
-        (n, 1_000)
-    } else if let Some(n) = text.strip_suffix('s') {
-        (n, 1_000_000_000)
-    } else {
-        (text, 1_000_000_000)
-    };
-    let bad = || format!("'{text}' is not a duration (e.g. 2s, 250ms)");
-    let (whole, fraction) = number.split_once('.').unwrap_or((number, ""));
-    let digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
-    if (whole.is_empty() && fraction.is_empty()) || !digits(whole) || !digits(fraction) {
-        return Err(bad());
-    }
-    let whole: u128 = if whole.is_empty() {
-        0
-    } else {
-        whole.parse().map_err(|_| bad())?
-    };
-    let mut nanos = whole.checked_mul(unit_ns).ok_or_else(bad)?;
-    let mut scale = unit_ns;
-    for digit in fraction.bytes() {
-        scale /= 10;
-        nanos += u128::from(digit - b'0') * scale;
-    }
-    u64::try_from(nanos)
-        .map(Duration::from_nanos)
-        .map_err(|_| bad())
-}
-
 #[cfg(test)]
 mod tests {
     use std::sync::Mutex;
+    use std::time::Duration;
 
     use super::*;
-    use crate::sim::tmcl::Bus;
+    use crate::dialect::tmcl::sim::Bus;
 
     fn console(manual: bool) -> (Console, Arc<ManualClock>) {
         let clock = Arc::new(ManualClock::new());
         let device: SharedDevice = Arc::new(Mutex::new(Bus::builtin()));
-        let console = Console::new(device, clock.clone(), manual.then(|| clock.clone()));
+        let sections = crate::dialect::DIALECTS.iter().map(|d| d.console_help);
+        let console = Console::new(
+            device,
+            clock.clone(),
+            manual.then(|| clock.clone()),
+            help(sections),
+        );
         (console, clock)
     }
 
     #[test]
-    fn durations_take_units() {
-        assert_eq!(parse_duration("2s"), Ok(Duration::from_secs(2)));
-        assert_eq!(parse_duration("250ms"), Ok(Duration::from_millis(250)));
-        assert_eq!(parse_duration("1.5"), Ok(Duration::from_millis(1500)));
-        assert_eq!(parse_duration("18.75ms"), Ok(Duration::from_micros(18_750)));
-        assert_eq!(parse_duration("5.24s"), Ok(Duration::from_millis(5240)));
-        assert!(parse_duration("-1s").is_err());
-        assert!(parse_duration("soon").is_err());
+    fn advance_reads_times_as_everything_else_does() {
+        // The grammar is `crate::duration`'s (tested there): a bare number is milliseconds.
+        let (console, clock) = console(true);
+        assert_eq!(console.run("advance 1.5"), Answer::Ok("0.001500 s".into()));
+        assert_eq!(console.run("advance 2s"), Answer::Ok("2.001500 s".into()));
+        assert_eq!(clock.now(), Duration::from_micros(2_001_500));
+        for refused in ["-1s", "soon", "8days"] {
+            assert!(
+                matches!(console.run(&format!("advance {refused}")), Answer::Error(_)),
+                "{refused}"
+            );
+        }
+        assert_eq!(clock.now(), Duration::from_micros(2_001_500));
     }
 
     #[test]

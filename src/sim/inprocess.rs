@@ -1,6 +1,6 @@
 //! The simulator in-process, behind the [`Link`] trait: sending hands bytes to the device at the
 //! clock's time, receiving waits on the clock until the device has output or the deadline
-//! passes. There are no threads: with a [`super::clock::ManualClock`] waiting is instant and
+//! passes. There are no threads: with a [`crate::clock::ManualClock`] waiting is instant and
 //! deterministic; with the system clock it is a real wait for real output.
 
 use std::sync::{Arc, Mutex, MutexGuard};
@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 use crate::link::{Link, LinkError};
 
 use super::Device;
-use super::clock::Clock;
+use crate::clock::Clock;
 
 /// A device shared between a link and whoever inspects it (tests, the console).
 pub type SharedDevice = Arc<Mutex<dyn Device>>;

@@ -6,17 +6,18 @@
 //! [`crate::link::Link`]; decorators add line pacing and fault injection to any device.
 
 mod builtin;
-pub mod clock;
 pub mod console;
 pub mod fault;
 pub mod inprocess;
 pub mod pacing;
 #[cfg(unix)]
 pub mod serve;
-pub mod smd4;
-pub mod tmcl;
+pub mod store;
 
 pub use builtin::builtin_link;
+
+/// Where a simulator logs its traffic (`tmclsh sim --verbose`): one decoded line at a time.
+pub type LogSink = Box<dyn FnMut(&str) + Send>;
 
 use std::time::Duration;
 

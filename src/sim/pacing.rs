@@ -157,8 +157,8 @@ impl<D: Device> Device for Paced<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::protocol::tmcl::{CommandFrame, Instruction};
-    use crate::sim::tmcl::Bus;
+    use crate::dialect::tmcl::protocol::{CommandFrame, Instruction};
+    use crate::dialect::tmcl::sim::Bus;
 
     fn ms(x: f64) -> Duration {
         Duration::from_secs_f64(x / 1000.0)

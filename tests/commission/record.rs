@@ -5,14 +5,15 @@
 use std::sync::Arc;
 use std::time::Duration;
 
+use tmclsh::clock::{Clock, ManualClock};
 use tmclsh::commission::ParamDevice;
 use tmclsh::commission::record::{self, Plan, Recording};
-use tmclsh::profile::Profile;
+use tmclsh::dialect::session::DialectSession;
+use tmclsh::dialect::tmcl::profile::Profile;
+use tmclsh::dialect::tmcl::session::TmclSession;
+use tmclsh::dialect::tmcl::sim::Bus;
 use tmclsh::session::SessionOptions;
-use tmclsh::session::tmcl::TmclSession;
-use tmclsh::sim::clock::{Clock, ManualClock};
 use tmclsh::sim::inprocess::SimLink;
-use tmclsh::sim::tmcl::Bus;
 
 use super::{arg, expect};
 use crate::sim::Sim;
@@ -151,4 +152,26 @@ fn record_needs_a_duration_without_a_terminal_and_plot_needs_a_recording() {
     assert!(crate::util::stderr(&out).contains("nothing recorded yet"));
     let out = expect(&["-c", ":record x.csv no_such_param 10ms 1s"], 2);
     assert!(crate::util::stderr(&out).contains("unknown parameter 'no_such_param'"));
+}
+
+#[test]
+fn a_bare_number_is_milliseconds_in_record_as_everywhere() {
+    let dir = tempdir();
+    let csv = dir.join("bare.csv");
+    let record = format!(":record {} actual_position 20 150", arg(&csv));
+    expect(&["-c", &record], 0);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let recording = Recording::from_csv(&text).unwrap();
+    let times: Vec<u64> = recording.samples.iter().map(|s| s.time_ms).collect();
+    assert!(times.len() >= 2, "{text}");
+    assert!(
+        times.iter().all(|&t| t <= 150),
+        "150 is 150 ms, 20 is 20 ms: {times:?}"
+    );
+    let out = expect(&["-c", ":help time"], 0);
+    assert!(
+        stdout(&out).contains("a bare number of milliseconds (250 is 250ms), at most 7 days"),
+        "{}",
+        stdout(&out)
+    );
 }

@@ -1,7 +1,7 @@
 //! Bus scans against a simulated bus with modules at 1, 2 and 4 (a gap at 3), and one at 40 that
 //! has no ASCII address character.
 
-use tmclsh::protocol::tmcl::Status;
+use tmclsh::dialect::tmcl::protocol::Status;
 
 use super::expect;
 use crate::sim::Sim;

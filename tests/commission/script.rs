@@ -52,7 +52,7 @@ fn scripts_may_write_only_snapshots_and_recordings() {
     std::fs::write(&script, format!("snapshot_save(\"{}\");", arg(&target))).unwrap();
     let out = expect(&["run", arg(&script)], 2);
     assert!(
-        stderr(&out).contains("must be a .toml file"),
+        stderr(&out).contains("a snapshot is written to a .toml file"),
         "{}",
         stderr(&out)
     );
@@ -66,6 +66,6 @@ fn scripts_may_write_only_snapshots_and_recordings() {
     )
     .unwrap();
     let out = expect(&["run", arg(&script)], 2);
-    assert!(stderr(&out).contains("must be a .csv file"));
+    assert!(stderr(&out).contains("a recording is written to a .csv file"));
     assert!(!target.exists());
 }

@@ -6,14 +6,15 @@
 use std::sync::Arc;
 use std::time::Duration;
 
+use tmclsh::clock::{Clock, ManualClock};
 use tmclsh::commission::record::{self, Plan, Recording};
 use tmclsh::commission::{ParamDevice, ParamValue, Tolerance};
-use tmclsh::protocol::smd4::{Sflags, Smd4Spec};
+use tmclsh::dialect::session::DialectSession;
+use tmclsh::dialect::smd4::protocol::{Sflags, Smd4Spec};
+use tmclsh::dialect::smd4::session::Smd4Session;
+use tmclsh::dialect::smd4::sim::Smd4Sim;
 use tmclsh::session::SessionOptions;
-use tmclsh::session::smd4::Smd4Session;
-use tmclsh::sim::clock::{Clock, ManualClock};
 use tmclsh::sim::inprocess::SimLink;
-use tmclsh::sim::smd4::Smd4Sim;
 
 use super::arg;
 use super::repl::Terminal;
@@ -46,12 +47,12 @@ fn trapezoid(distance: f64, v0: f64, v: f64, a: f64, t: f64) -> (f64, f64) {
 #[test]
 fn samples_follow_a_move_exactly_on_a_shared_manual_clock() {
     let clock = Arc::new(ManualClock::new());
-    let drive = Smd4Sim::new(tmclsh::sim::smd4::Smd4Options::default());
+    let drive = Smd4Sim::new(tmclsh::dialect::smd4::sim::Smd4SimOptions::default());
     let link = SimLink::new(Box::new(drive), clock.clone());
     let mut session = Smd4Session::open(
         Box::new(link),
         SessionOptions::default(),
-        tmclsh::session::smd4::Smd4Options::default(),
+        tmclsh::dialect::smd4::session::Smd4SessionOptions::default(),
         None,
     )
     .unwrap();

@@ -52,7 +52,7 @@ fn a_logged_session_replays_against_a_fresh_drive_and_fails_on_a_different_one()
         text.contains("assert_eq(check(\"MOTOR:VMAX,2000\", [2000.0, 2000.0]), \"\");"),
         "{text}"
     );
-    let temperature = tmclsh::protocol::smd4::Smd4Spec::builtin()
+    let temperature = tmclsh::dialect::smd4::protocol::Smd4Spec::builtin()
         .commands
         .get("MOTOR:T")
         .and_then(|c| c.sim_value.clone())

@@ -5,14 +5,16 @@
 use std::sync::Arc;
 use std::time::Duration;
 
-use tmclsh::commission::smd4_scan;
-use tmclsh::protocol::smd4::Smd4Spec;
-use tmclsh::session::smd4::Smd4Session;
+use tmclsh::clock::ManualClock;
+use tmclsh::dialect::session::DialectSession;
+use tmclsh::dialect::smd4::protocol::Smd4Spec;
+use tmclsh::dialect::smd4::scan as smd4_scan;
+use tmclsh::dialect::smd4::session::Smd4Session;
+use tmclsh::dialect::smd4::sim::{Smd4Sim, Smd4SimOptions};
 use tmclsh::session::{SessionError, SessionOptions};
 use tmclsh::sim::Device;
-use tmclsh::sim::clock::ManualClock;
 use tmclsh::sim::inprocess::SimLink;
-use tmclsh::sim::smd4::{ConfigStore, MemoryStore, Smd4Options, Smd4Sim};
+use tmclsh::sim::store::{MemoryStore, Store};
 
 use crate::smd4::{Drive, Via, assert_exit, client, lines};
 
@@ -45,7 +47,7 @@ fn drive_at(address: u32) -> Smd4Sim {
             "format = 1\n[stored]\n\"COMS:SERIAL:SLAVEADDR\" = {address}\n"
         ))
         .unwrap();
-    Smd4Sim::with_store(Smd4Options::default(), Box::new(store))
+    Smd4Sim::with_store(Smd4SimOptions::default(), Box::new(store))
 }
 
 fn sim_value(mnemonic: &str) -> String {
@@ -60,7 +62,7 @@ fn three_drives_with_gaps_are_found_with_firmware_and_serial() {
     let mut session = Smd4Session::open(
         Box::new(link),
         SessionOptions::default(),
-        tmclsh::session::smd4::Smd4Options::default(),
+        tmclsh::dialect::smd4::session::Smd4SessionOptions::default(),
         None,
     )
     .unwrap();

@@ -28,8 +28,11 @@ assert_eq(snapshot_restore(args[0]), 2);
 assert_eq(parse_number(send("MOTOR:VMAX")[0]), 1000.0);
 assert_eq(snapshot_diff(args[0]).len(), 0);
 
-// Nothing left to write; STORE saves the configuration, BAKE:T = 111 included.
+// Nothing left to write: nothing to store either.
 assert_eq(snapshot_restore(args[0], true), 0);
+// One setting written; STORE saves the whole configuration, BAKE:T = 111 included.
+send("MOTOR:VMAX,2000");
+assert_eq(snapshot_restore(args[0], true), 1);
 send("BAKE:T,5");
 send("SYS:LOAD");
 assert_eq(send("BAKE:T"), ["111"]);

@@ -8,13 +8,13 @@ use std::path::Path;
 use std::process::Output;
 
 use tmclsh::commission::{ParamValue, Scope, Snapshot, Tolerance};
-use tmclsh::protocol::smd4::{CommandSpec, Smd4Spec};
+use tmclsh::dialect::smd4::protocol::{Smd4Command, Smd4Spec};
 
 use super::arg;
 use crate::smd4::{Drive, Via, assert_exit, client, lines};
 use crate::util::tempdir;
 
-fn command(mnemonic: &str) -> &'static CommandSpec {
+fn command(mnemonic: &str) -> &'static Smd4Command {
     Smd4Spec::builtin().commands.get(mnemonic).unwrap()
 }
 
@@ -306,7 +306,7 @@ fn store_survives_sys_load_and_a_power_cycle_and_a_dry_run_changes_nothing() {
 }
 
 #[test]
-fn settings_the_drive_or_the_table_refuses_are_reported_each_and_the_rest_is_restored() {
+fn a_file_the_table_refuses_is_refused_whole_and_settings_the_drive_refuses_are_reported_each() {
     let drive = Drive::start(Via::Tcp, &[]);
     let dir = tempdir();
     let file = dir.join("edited.toml");
@@ -322,23 +322,21 @@ fn settings_the_drive_or_the_table_refuses_are_reported_each_and_the_rest_is_res
     std::fs::write(&file, edited).unwrap();
     send(&drive, &[], &["LIMIT:EN,1"]);
 
-    // Checked against data/smd4.toml before sending.
+    // Checked against data/smd4.toml before sending: the whole file is refused, nothing sent.
     let out = snapshot(&drive, &["restore", arg(&file)], &[]);
-    assert_exit(&out, 1);
-    let report = stdout(&out);
-    let failed: Vec<&str> = report
-        .lines()
-        .filter(|l| l.starts_with("FAILED "))
-        .collect();
-    assert_eq!(failed.len(), 2, "{report}");
-    assert!(failed[0].starts_with("FAILED MOTOR:RES: "), "{report}");
-    assert!(failed[1].starts_with("FAILED BAKE:T: "), "{report}");
+    assert_exit(&out, 2);
+    let err = stderr(&out);
+    assert!(err.contains("nothing was sent (2 problems)"), "{err}");
     assert!(
-        report.contains("restored 1 parameters"),
-        "LIMIT:EN: {report}"
+        err.contains("\n  MOTOR:RES: 100 is not accepted by MOTOR:RES"),
+        "{err}"
     );
-    assert!(stderr(&out).contains("2 parameters were not restored"));
-    assert!(send(&drive, &[], &["LIMIT:EN"])[0].ends_with(",0"));
+    assert!(err.contains("\n  BAKE:T: "), "{err}");
+    assert!(!stdout(&out).contains("restored"), "{}", stdout(&out));
+    assert!(
+        send(&drive, &[], &["LIMIT:EN"])[0].ends_with(",1"),
+        "LIMIT:EN, a good value of the file, was not written either"
+    );
 
     // Sent anyway: the drive refuses them itself (-2), each reported, nothing stored.
     send(&drive, &[], &["LIMIT:EN,1"]);
@@ -453,4 +451,55 @@ fn the_shell_helper_saves_diffs_and_restores_an_smd4() {
     let out = drive.run(&["-c", &restore, "-c", &diff]);
     assert_exit(&out, 0);
     assert!(stdout(&out).contains("restored 1 parameters"));
+}
+
+#[test]
+fn a_tmcl_snapshot_or_one_of_another_drive_is_refused_by_an_smd4() {
+    let drive = Drive::start(Via::Pty, &[]);
+    let dir = tempdir();
+    let (tmcl, other) = (dir.join("tmcl.toml"), dir.join("other.toml"));
+    // A TMCM-142 snapshot, from the built-in simulator.
+    let out = crate::util::run(&["snapshot", "save", arg(&tmcl)]);
+    assert_exit(&out, 0);
+    for force in [&[][..], &["--force"]] {
+        let out = snapshot(&drive, &["restore", arg(&tmcl)], force);
+        assert_exit(&out, 2);
+        let err = stderr(&out);
+        assert!(
+            err.contains("nothing in it is a setting of the SMD4"),
+            "{err}"
+        );
+        if force.is_empty() {
+            assert!(
+                err.contains(
+                    "it holds TMCL axis and global parameters, and the SMD4 is an SMD4 drive"
+                ),
+                "{err}"
+            );
+            assert!(err.contains("it is a snapshot of a TMCM-142"), "{err}");
+        }
+    }
+    assert_exit(&snapshot(&drive, &["save", arg(&other)], &[]), 0);
+    let text = std::fs::read_to_string(&other).unwrap();
+    let text = text
+        .replace("name = \"SMD4\"", "name = \"SMD2\"")
+        .replace("\"LIMIT:EN\" = { value = 0,", "\"LIMIT:EN\" = { value = 1,");
+    std::fs::write(&other, text).unwrap();
+    let out = snapshot(&drive, &["restore", arg(&other)], &[]);
+    assert_exit(&out, 2);
+    assert!(
+        stderr(&out).contains("it is a snapshot of a SMD2"),
+        "{}",
+        stderr(&out)
+    );
+    assert!(
+        send(&drive, &[], &["LIMIT:EN"])[0].ends_with(",0"),
+        "nothing sent"
+    );
+    let out = snapshot(&drive, &["restore", arg(&other)], &["--force"]);
+    assert_exit(&out, 0);
+    assert!(
+        send(&drive, &[], &["LIMIT:EN"])[0].ends_with(",1"),
+        "forced"
+    );
 }

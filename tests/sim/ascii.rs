@@ -1,6 +1,6 @@
 //! ASCII mode over a real pty: entered with 139, in each echo mode of GP 67.
 
-use tmclsh::protocol::tmcl::Status;
+use tmclsh::dialect::tmcl::protocol::Status;
 
 use super::{Port, Sim};
 

@@ -1,7 +1,7 @@
 //! Binary TMCL over a real pty and over loopback TCP.
 
-use tmclsh::protocol::tmcl::Status;
-use tmclsh::protocol::tmcl::frame::decode_version_string;
+use tmclsh::dialect::tmcl::protocol::Status;
+use tmclsh::dialect::tmcl::protocol::frame::decode_version_string;
 
 use super::{Sim, decode, frame};
 
@@ -22,7 +22,9 @@ fn binary_frames_over_the_pty() {
     assert_eq!(port.transact(1, 5, 8, 0, 1).status, Status::WrongType);
     assert_eq!(port.transact(1, 5, 6, 0, 99).status, Status::InvalidValue);
     assert_eq!(port.transact(1, 29, 0, 0, 0).status, Status::NotAvailable);
-    assert_eq!(port.transact(1, 19, 0, 0, 0).status, Status::InvalidCommand);
+    // JA is for programs only; CALC may also be sent directly (manual 6.4.4 / 6.4.5).
+    assert_eq!(port.transact(1, 22, 0, 0, 0).status, Status::InvalidCommand);
+    assert_eq!(port.transact(1, 19, 9, 0, 5).status, Status::Ok);
 
     port.send(&frame(1, 136, 0, 0, 0));
     let version = port.read_n(9);
@@ -35,7 +37,10 @@ fn binary_frames_over_the_pty() {
     bad[8] ^= 0xFF;
     port.send(&bad);
     let reply = decode(&port.read_n(9));
-    assert_eq!((reply.status, reply.command), (Status::WrongChecksum, 0));
+    assert_eq!(
+        (reply.status, reply.command.number()),
+        (Status::WrongChecksum, 0)
+    );
 
     // Frames for module 2 and 137 (factory reset) get no answer: the next bytes are the reply to
     // the command after them.

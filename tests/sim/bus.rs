@@ -1,6 +1,6 @@
 //! Two modules on one simulated line, reached over TCP.
 
-use tmclsh::protocol::tmcl::Status;
+use tmclsh::dialect::tmcl::protocol::Status;
 
 use super::Sim;
 

@@ -1,7 +1,7 @@
 //! Each injected fault, through the real binary. Where a reply is missing on purpose, the test
 //! waits for the command's effect through the console instead of waiting for silence.
 
-use tmclsh::protocol::tmcl::{ReplyFrame, Status};
+use tmclsh::dialect::tmcl::protocol::{ReplyFrame, Status};
 
 use super::{Closed, Port, Sim, frame};
 

@@ -1,7 +1,7 @@
 //! Motion over a pty with a manual clock: time passes only when the console says so, so
 //! positions and durations are exact.
 
-use tmclsh::protocol::tmcl::Status;
+use tmclsh::dialect::tmcl::protocol::Status;
 
 use super::{Sim, decode};
 
@@ -43,6 +43,18 @@ fn a_move_lasts_as_long_as_its_trapezoid() {
 }
 
 #[test]
+fn advance_reads_a_bare_number_as_milliseconds_like_every_time() {
+    let (mut sim, _port) = setup(&[]);
+    assert_eq!(sim.console("advance 250"), "ok 0.250000 s");
+    assert_eq!(sim.console("advance 1.5s"), "ok 1.750000 s");
+    assert!(
+        sim.console("advance 8days")
+            .starts_with("error: '8days' is longer than 7days")
+    );
+    assert_eq!(sim.console("time"), "ok 1.750000 s");
+}
+
+#[test]
 fn the_second_reply_of_138_comes_on_arrival() {
     let (mut sim, mut port) = setup(&[]);
     assert_eq!(port.transact(1, 138, 0, 0, 1).status, Status::Ok);
@@ -50,7 +62,7 @@ fn the_second_reply_of_138_comes_on_arrival() {
     assert!(sim.console("advance 1s").starts_with("ok"));
     let event = decode(&port.read_n(9));
     assert_eq!(
-        (event.status, event.command),
+        (event.status, event.command.number()),
         (Status::PositionReachedEvent, 138)
     );
 }

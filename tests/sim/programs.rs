@@ -1,7 +1,7 @@
 //! Stand-alone programs in the simulator, over a real pty: download (132/133, read back with
 //! 134), ASCII RUN and STOP, stepping, with a manual clock so the motion is exact.
 
-use tmclsh::protocol::tmcl::Status;
+use tmclsh::dialect::tmcl::protocol::Status;
 
 use super::{Port, Sim};
 

@@ -1,6 +1,6 @@
 //! The state file: stored values survive a restart of the simulator.
 
-use tmclsh::protocol::tmcl::Status;
+use tmclsh::dialect::tmcl::protocol::Status;
 
 use super::Sim;
 use crate::util::{code, run, stderr, tempdir};

@@ -3,7 +3,7 @@
 //! in addressing mode ignores unprefixed packets — the client then times out with exit 3 and says
 //! why.
 
-use tmclsh::protocol::smd4::Smd4Spec;
+use tmclsh::dialect::smd4::protocol::Smd4Spec;
 
 use super::{BOTH, Drive, Via, assert_exit, lines};
 

@@ -2,7 +2,7 @@
 //! client, bad commands are answered with an error line, and the flags that only the TMCL bus
 //! understands are refused.
 
-use tmclsh::protocol::smd4::{Eflags, Sflags};
+use tmclsh::dialect::smd4::protocol::{Eflags, Sflags};
 
 use super::{Drive, Via, assert_exit, lines};
 use crate::util::{code, run, stderr, stdout};

@@ -2,7 +2,7 @@
 //! 1 for an error code (decoded on stderr), 2 for a line refused before sending (and nothing
 //! sent), 3 for a drive that stays silent.
 
-use tmclsh::protocol::smd4::{ErrorCode, Smd4Spec};
+use tmclsh::dialect::smd4::protocol::{ErrorCode, Smd4Spec};
 
 use super::{BOTH, Drive, Via, assert_exit, lines};
 
@@ -192,7 +192,7 @@ fn flags_helper_prints_the_table_with_the_drive_s_flags() {
         .lines()
         .filter(|l| l.trim_start().starts_with("[X]"))
         .collect();
-    let named = |table: &tmclsh::protocol::smd4::FlagTable, bit: u8| {
+    let named = |table: &tmclsh::dialect::smd4::protocol::FlagTable, bit: u8| {
         table
             .bits()
             .iter()

@@ -2,7 +2,7 @@
 //! simulator runs on `--manual-clock`: the motor is seen running at VMAX before, and standing
 //! after time is advanced — where it would still run at VMAX had nothing stopped it.
 
-use tmclsh::protocol::smd4::{Sflags, Smd4Spec};
+use tmclsh::dialect::smd4::protocol::{Sflags, Smd4Spec};
 
 use super::{BOTH, Drive, Streaming, Via, assert_exit};
 

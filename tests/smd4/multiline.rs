@@ -3,7 +3,7 @@
 //! `--quiet-gap` on a paced line where the lines dribble in; the next command still gets its own
 //! reply, with nothing left over.
 
-use tmclsh::protocol::smd4::Smd4Spec;
+use tmclsh::dialect::smd4::protocol::Smd4Spec;
 
 use super::{BOTH, Drive, assert_exit, lines};
 
@@ -72,7 +72,7 @@ fn a_multi_line_command_that_fails_ends_at_its_first_line() {
     let drive = Drive::start(super::Via::Pty, &[]);
     let out = drive.run(&["--no-validate", "-c", "SYS:FLAGSV,1", "-c", "SYS:FW"]);
     assert_exit(&out, 1);
-    let code = tmclsh::protocol::smd4::ErrorCode::ArgumentCount;
+    let code = tmclsh::dialect::smd4::protocol::ErrorCode::ArgumentCount;
     assert_eq!(
         lines(&out),
         [format!("0x0888,0x0000,{} ({})", code.code(), code.name())]

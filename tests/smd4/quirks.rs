@@ -2,7 +2,7 @@
 //! drive spelled it, values are read right whatever the spelling (a script checks them), and an
 //! error code is decoded and exits 1 in every spelling.
 
-use tmclsh::protocol::smd4::{ErrorCode, Smd4Spec};
+use tmclsh::dialect::smd4::protocol::{ErrorCode, Smd4Spec};
 
 use super::lines::{rounded_current, scientific};
 use super::{Drive, Via, assert_exit, lines};

@@ -9,7 +9,7 @@ use std::process::{Child, Command, Stdio};
 use std::sync::mpsc::{Receiver, RecvTimeoutError, channel};
 use std::time::Instant;
 
-use tmclsh::protocol::smd4::ErrorCode;
+use tmclsh::dialect::smd4::protocol::ErrorCode;
 
 use super::{Drive, Via};
 use crate::sim::PATIENCE;

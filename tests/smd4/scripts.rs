@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use tmclsh::protocol::smd4::{ErrorCode, Smd4Spec};
+use tmclsh::dialect::smd4::protocol::{ErrorCode, Smd4Spec};
 
 use super::{BOTH, Drive, Via, assert_exit, lines};
 use crate::util::{code, repo, run, stderr, stdout};

@@ -5,6 +5,7 @@ use super::super::diff::{self, Side};
 use super::super::fake::FakeDevice;
 use super::super::restore::{self, Reason};
 use super::*;
+use crate::exit::ExitStatus;
 
 /// A diff side holding the integer `v`.
 fn int(v: i64) -> Side {
@@ -228,7 +229,8 @@ fn restore_skips_read_only_live_and_link_settings_and_lists_them() {
     assert_eq!(reason("serial_address"), Some(Reason::Manual));
     assert_eq!(reason("max_current"), None);
     let mut out = Vec::new();
-    restore::write_skipped(&plan, &mut out).unwrap();
+    let by_hand = vec![device.write_line(&device.param("serial_address"), &ParamValue::Int(1))];
+    restore::write_skipped(&plan, &by_hand, &mut out).unwrap();
     let text = String::from_utf8(out).unwrap();
     assert!(text.contains("(read-only): "), "{text}");
     assert!(text.contains("target_position_reached"));
@@ -245,6 +247,7 @@ fn a_restore_brings_changed_settings_back_and_verifies_each() {
     device.set("pid_p", 77);
     device.set("actual_position", 500);
     let plan = restore::plan(&snapshot, &device.params, &device);
+    assert_eq!(plan.problems, []);
     let outcome = restore::execute(&mut device, &plan).unwrap();
     assert_eq!(device.get("max_current"), 10);
     assert_eq!(
@@ -261,7 +264,11 @@ fn a_restore_brings_changed_settings_back_and_verifies_each() {
         500,
         "live values are not written"
     );
-    assert_eq!(outcome.verified, 2, "the two changed settings");
+    assert_eq!(
+        outcome.verified,
+        ["max_current", "pid_p"],
+        "the two changed settings"
+    );
     assert_eq!(outcome.unchanged, plan.writes.len() - 2);
     assert_eq!(device.log, ["write max_current 10", "write pid_p 0"]);
     assert!(outcome.failed.is_empty());
@@ -277,6 +284,7 @@ fn a_refused_write_and_a_value_that_does_not_stick_are_reported_and_the_rest_goe
     device.set("pid_i", 5);
     device.set("pid_d", 6);
     let plan = restore::plan(&snapshot, &device.params, &device);
+    assert_eq!(plan.problems, []);
     let outcome = restore::execute(&mut device, &plan).unwrap();
     let failed: Vec<&str> = outcome.failed.iter().map(|(n, _)| n.as_str()).collect();
     assert_eq!(failed, ["max_current", "pid_i"]);
@@ -290,11 +298,11 @@ fn a_refused_write_and_a_value_that_does_not_stick_are_reported_and_the_rest_goe
         0,
         "writes after a failure still happen"
     );
-    assert_eq!(outcome.verified, 1, "pid_d");
+    assert_eq!(outcome.verified, ["pid_d"]);
 }
 
 #[test]
-fn store_happens_only_when_confirmed_and_only_for_eeprom_parameters() {
+fn store_happens_only_when_confirmed_and_only_for_the_written_eeprom_parameters() {
     let dir = std::env::temp_dir().join(format!("tmclsh-store-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("s.toml");
@@ -302,13 +310,40 @@ fn store_happens_only_when_confirmed_and_only_for_eeprom_parameters() {
     actions::save(&mut device, &path, &mut Vec::new()).unwrap();
     let options = RestoreOptions {
         store: true,
-        dry_run: false,
+        ..RestoreOptions::default()
     };
-    let mut no = |_: &str| Ok(false);
+    let mut never = |_: &str| -> Result<bool, SessionError> { panic!("nothing to store") };
+    let mut out = Vec::new();
+    actions::restore(&mut device, &path, options, &mut never, &mut out).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(
+        text.contains("not stored to EEPROM: the restore wrote nothing"),
+        "{text}"
+    );
+    assert!(
+        text.contains("nothing to write: the module already has"),
+        "{text}"
+    );
+
+    device.set("standby_current", 9);
+    device.set("stop_deceleration", 9);
+    device.set("max_current", 9);
+    let mut asked = Vec::new();
+    let mut no = |q: &str| {
+        asked.push(q.to_string());
+        Ok(false)
+    };
     actions::restore(&mut device, &path, options, &mut no, &mut Vec::new()).unwrap();
     assert!(!device.log.iter().any(|l| l.starts_with("store")));
+    assert_eq!(
+        asked,
+        ["store 2 parameters to the EEPROM of module 1 (max_current, standby_current)?"],
+        "the question names what would be stored: the written EEPROM parameters"
+    );
+
     device.log.clear();
-    device.set("standby_current", 9);
+    device.set("standby_current", 7);
+    device.set("max_current", 7);
     let mut yes = |_: &str| Ok(true);
     let outcome = actions::restore(&mut device, &path, options, &mut yes, &mut Vec::new()).unwrap();
     let stored: Vec<&str> = device
@@ -316,12 +351,8 @@ fn store_happens_only_when_confirmed_and_only_for_eeprom_parameters() {
         .iter()
         .filter_map(|l| l.strip_prefix("store "))
         .collect();
-    assert_eq!(outcome.stored, stored.len());
-    assert!(stored.contains(&"max_current"));
-    assert!(
-        !stored.contains(&"stop_deceleration"),
-        "RW without E is not stored"
-    );
+    assert_eq!(stored, ["max_current", "standby_current"]);
+    assert_eq!(outcome.stored, 2);
     let last_write = device
         .log
         .iter()
@@ -347,6 +378,7 @@ fn a_dry_run_prints_the_lines_and_sends_nothing() {
     let options = RestoreOptions {
         store: true,
         dry_run: true,
+        ..RestoreOptions::default()
     };
     let mut out = Vec::new();
     let mut never = |_: &str| -> Result<bool, SessionError> { panic!("no prompt") };
@@ -354,14 +386,269 @@ fn a_dry_run_prints_the_lines_and_sends_nothing() {
     assert!(device.log.is_empty());
     assert_eq!(device.get("pid_p"), 3);
     let text = String::from_utf8(out).unwrap();
-    let lines: Vec<&str> = text.lines().take(3).collect();
+    let lines: Vec<&str> = text.lines().take(4).collect();
     assert_eq!(
         lines,
         [
             "SET max_current 8",
             "SET pid_p 0",
-            "STORE unit_conversion_mode"
+            "STORE max_current",
+            "STORE pid_p"
         ]
     );
-    assert!(text.contains("\nSTORE max_current\n"));
+}
+
+/// The snapshot of a fresh fake module with `edit` applied to its entries.
+fn edited(device: &mut FakeDevice, edit: impl FnOnce(&mut Snapshot)) -> Snapshot {
+    let mut snapshot = captured(device);
+    edit(&mut snapshot);
+    snapshot
+}
+
+fn entry<'a>(snapshot: &'a mut Snapshot, name: &str) -> &'a mut Entry {
+    snapshot
+        .entries
+        .iter_mut()
+        .find(|e| e.name == name)
+        .unwrap()
+}
+
+fn restore_file(
+    device: &mut FakeDevice,
+    snapshot: &Snapshot,
+    options: RestoreOptions,
+) -> (Result<restore::Outcome, SessionError>, String) {
+    let mut out = Vec::new();
+    let mut yes = |_: &str| Ok(true);
+    let result = actions::restore_snapshot(device, snapshot, "s.toml", options, &mut yes, &mut out);
+    (result, String::from_utf8(out).unwrap())
+}
+
+#[test]
+fn a_bad_value_anywhere_refuses_the_whole_file_before_anything_is_sent() {
+    let mut device = FakeDevice::new();
+    let snapshot = edited(&mut device, |s| {
+        entry(s, "max_current").value = Ok(ParamValue::Int(3));
+        entry(s, "pid_p").value = Ok(ParamValue::Text("abc".into()));
+        entry(s, "standby_current").value = Ok(ParamValue::Int(99999));
+        entry(s, "user_variable_9").value = Ok(ParamValue::Float(1.5));
+    });
+    device.set("max_current", 5);
+    for force in [false, true] {
+        let options = RestoreOptions {
+            force,
+            ..RestoreOptions::default()
+        };
+        let (result, _) = restore_file(&mut device, &snapshot, options);
+        let error = result.unwrap_err();
+        assert_eq!(error.exit(), crate::exit::Exit::Refused);
+        let message = error.to_string();
+        assert!(
+            message.contains("nothing was sent (3 problems)"),
+            "{message}"
+        );
+        for name in ["pid_p", "standby_current", "user_variable_9"] {
+            assert!(
+                message.contains(&format!("\n  {name}: ")),
+                "{name}: {message}"
+            );
+        }
+        assert!(
+            !message.contains("--force restores"),
+            "bad values are never forced"
+        );
+    }
+    assert!(device.log.is_empty(), "{:?}", device.log);
+    assert_eq!(
+        device.get("max_current"),
+        5,
+        "the good value was not written either"
+    );
+}
+
+#[test]
+fn another_module_wrong_numbers_unknown_motors_and_names_are_refused_unless_forced() {
+    let mut device = FakeDevice::new();
+    let mut snapshot = edited(&mut device, |s| {
+        s.module = "TMCM-1140".into();
+        entry(s, "pid_i").number = Some(99);
+        let mut extra = s.entries[0].clone();
+        extra.scope = Scope::Axis { motor: 3 };
+        s.entries.push(extra);
+        let mut extra = s.entries[0].clone();
+        extra.name = "max_curent".into();
+        s.entries.push(extra);
+    });
+    entry(&mut snapshot, "pid_i").value = Ok(ParamValue::Int(21));
+    let (result, _) = restore_file(&mut device, &snapshot, RestoreOptions::default());
+    let message = result.unwrap_err().to_string();
+    assert!(message.contains("(4 problems)"), "{message}");
+    assert!(message.contains("a snapshot of a TMCM-1140, and module 1 is a TMCM-142"));
+    assert!(
+        message.contains("pid_i: number = 99 in the file, but it is axis 3"),
+        "{message}"
+    );
+    assert!(message.contains("[axis.3]: the TMCM-142 has no motor 3 (it has motors 0..0)"));
+    assert!(
+        message.contains("max_curent: not a parameter of the TMCM-142; did you mean max_current?"),
+        "{message}"
+    );
+    assert!(message.contains("--force restores by name"));
+    assert!(device.log.is_empty());
+
+    let force = RestoreOptions {
+        force: true,
+        ..RestoreOptions::default()
+    };
+    let (result, report) = restore_file(&mut device, &snapshot, force);
+    let outcome = result.unwrap();
+    assert_eq!(outcome.verified, ["pid_i"], "written by name");
+    assert_eq!(device.get("pid_i"), 21);
+    assert_eq!(
+        report.lines().filter(|l| l.starts_with("forced: ")).count(),
+        4,
+        "{report}"
+    );
+    assert!(
+        report.contains("(not parameters of this module)"),
+        "{report}"
+    );
+}
+
+#[test]
+fn a_file_of_the_other_dialect_or_with_nothing_restorable_is_refused_even_forced() {
+    let mut device = FakeDevice::new();
+    let drive = edited(&mut device, |s| {
+        s.module = "SMD4".into();
+        for e in &mut s.entries {
+            e.scope = Scope::Drive;
+            e.number = None;
+        }
+    });
+    let live_only = edited(&mut device, |s| {
+        s.entries.retain(|e| e.name == "actual_position");
+    });
+    for snapshot in [&drive, &live_only] {
+        for force in [false, true] {
+            let options = RestoreOptions {
+                force,
+                ..RestoreOptions::default()
+            };
+            let (result, _) = restore_file(&mut device, snapshot, options);
+            let message = result.unwrap_err().to_string();
+            assert!(
+                message.contains("nothing in it is a setting of the TMCM-142"),
+                "{message}"
+            );
+        }
+    }
+    let (result, _) = restore_file(&mut device, &drive, RestoreOptions::default());
+    assert!(
+        result
+            .unwrap_err()
+            .to_string()
+            .contains("it holds SMD4 drive settings, and module 1 is a TMCL module")
+    );
+    assert!(device.log.is_empty());
+}
+
+#[test]
+fn problems_told_to_a_script_quote_nothing_from_the_file() {
+    let mut device = FakeDevice::new();
+    let snapshot = edited(&mut device, |s| {
+        s.module = "secret-module".into();
+        entry(s, "pid_p").value = Ok(ParamValue::Text("secret-value".into()));
+        entry(s, "pid_i").number = Some(77);
+        let mut extra = s.entries[0].clone();
+        extra.name = "secret_name".into();
+        s.entries.push(extra);
+    });
+    let redact = RestoreOptions {
+        redact: true,
+        ..RestoreOptions::default()
+    };
+    let (result, _) = restore_file(&mut device, &snapshot, redact);
+    let message = result.unwrap_err().to_string();
+    assert!(message.contains("(4 problems)"), "{message}");
+    assert!(
+        !message.contains("secret") && !message.contains("77"),
+        "{message}"
+    );
+    assert!(
+        message.contains("pid_p: the module would refuse this value"),
+        "{message}"
+    );
+
+    let text = "[module]\nname = \"x\"\n[axis.0]\npassword = \"secret-line\"\n";
+    let error = Snapshot::parse(text).unwrap_err();
+    assert!(
+        error.message.contains("secret-line"),
+        "the CLI may show it: {}",
+        error.message
+    );
+    assert_eq!(
+        error.redacted(),
+        "the first problem is at line 4, column 12"
+    );
+}
+
+#[test]
+fn a_link_failure_midway_reports_what_was_written_in_flight_and_not_sent() {
+    let mut device = FakeDevice::new();
+    let snapshot = captured(&mut device);
+    device.set("max_current", 1);
+    device.set("pid_i", 5);
+    device.set("pid_d", 6);
+    device.time_out_at = Some("pid_i".into());
+    let (result, report) = restore_file(&mut device, &snapshot, RestoreOptions::default());
+    let error = result.unwrap_err();
+    assert_eq!(error.exit(), crate::exit::Exit::Link, "{error}");
+    assert!(
+        report.contains("restored 1 parameters, each read back and verified (max_current)"),
+        "{report}"
+    );
+    assert!(
+        report.contains("the restore stopped: no reply from module A"),
+        "{report}"
+    );
+    assert!(
+        report.contains("UNKNOWN pid_i: it was being written"),
+        "{report}"
+    );
+    let not_reached = report
+        .lines()
+        .find(|l| l.starts_with("NOT REACHED "))
+        .unwrap();
+    assert!(not_reached.contains(": pid_d, "), "{report}");
+    assert!(!not_reached.contains("max_current") && !not_reached.contains("pid_i,"));
+    assert_eq!(device.log, ["write max_current 8"]);
+    assert_eq!(device.get("pid_d"), 6);
+}
+
+#[test]
+fn the_by_hand_list_shows_only_the_manual_settings_that_differ() {
+    let mut device = FakeDevice::new();
+    let snapshot = edited(&mut device, |s| {
+        entry(s, "max_current").value = Ok(ParamValue::Int(3));
+    });
+    let (result, report) = restore_file(&mut device, &snapshot, RestoreOptions::default());
+    result.unwrap();
+    assert!(
+        report.contains("set them by hand): eeprom_magic"),
+        "{report}"
+    );
+    assert!(
+        !report.contains("by hand:"),
+        "serial_address is the same: {report}"
+    );
+    let snapshot = edited(&mut device, |s| {
+        entry(s, "serial_address").value = Ok(ParamValue::Int(2));
+    });
+    let (result, report) = restore_file(&mut device, &snapshot, RestoreOptions::default());
+    result.unwrap();
+    assert!(
+        report.contains("  by hand: SET serial_address 2"),
+        "{report}"
+    );
+    assert!(!device.log.iter().any(|l| l.contains("serial_address")));
 }

@@ -1,7 +1,19 @@
 use super::*;
+use crate::dialect::smd4::Smd4Grammar;
+use crate::dialect::tmcl::TmclGrammar;
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::protocol::validate::Mode;
+
+fn tmcl() -> TmclGrammar {
+    TmclGrammar::new(Profile::builtin(), Mode::Ascii)
+}
+
+fn smd4() -> Smd4Grammar {
+    Smd4Grammar::new(crate::dialect::smd4::protocol::Smd4Spec::builtin())
+}
 
 fn words(line: &str) -> Vec<String> {
-    match complete(line, line.len(), Grammar::Tmcl(&Profile::builtin())) {
+    match complete(line, line.len(), &tmcl()) {
         Completion::Words { candidates, .. } => {
             candidates.into_iter().map(|c| c.replacement).collect()
         }
@@ -36,7 +48,7 @@ fn axis_parameter_names_for_axis_commands() {
     assert_eq!(words("SAP max_c"), vec!["max_current, "]);
     assert_eq!(words("A GAP max_c"), vec!["max_current, "]);
     assert!(words("STAP ").len() > 10);
-    let all = complete("RSAP max_", 9, Grammar::Tmcl(&Profile::builtin()));
+    let all = complete("RSAP max_", 9, &tmcl());
     let Completion::Words { start, candidates } = all else {
         panic!()
     };
@@ -46,9 +58,7 @@ fn axis_parameter_names_for_axis_commands() {
 
 #[test]
 fn global_parameter_names_show_their_bank() {
-    let Completion::Words { candidates, .. } =
-        complete("GGP serial_ho", 13, Grammar::Tmcl(&Profile::builtin()))
-    else {
+    let Completion::Words { candidates, .. } = complete("GGP serial_ho", 13, &tmcl()) else {
         panic!()
     };
     assert_eq!(candidates.len(), 1);
@@ -73,8 +83,7 @@ fn helpers_and_their_arguments() {
 
 #[test]
 fn smd4_mnemonics_complete_level_by_level() {
-    let spec = crate::protocol::smd4::Smd4Spec::builtin();
-    let Completion::Words { candidates, .. } = complete("MOTOR:VM", 8, Grammar::Smd4(spec)) else {
+    let Completion::Words { candidates, .. } = complete("MOTOR:VM", 8, &smd4()) else {
         panic!()
     };
     assert_eq!(
@@ -84,14 +93,36 @@ fn smd4_mnemonics_complete_level_by_level() {
             .collect::<Vec<_>>(),
         ["MOTOR:VMAX"]
     );
-    let Completion::Words { candidates, .. } = complete(":fl", 3, Grammar::Smd4(spec)) else {
+    let Completion::Words { candidates, .. } = complete(":fl", 3, &smd4()) else {
         panic!()
     };
     assert_eq!(candidates[0].replacement, ":flags ");
-    let Completion::Words { candidates, .. } =
-        complete(":fl", 3, Grammar::Tmcl(&Profile::builtin()))
-    else {
+    let Completion::Words { candidates, .. } = complete(":fl", 3, &tmcl()) else {
         panic!()
     };
     assert!(candidates.is_empty(), ":flags is SMD4 only");
+}
+
+proptest::proptest! {
+    /// Whatever is typed and wherever the cursor is, completion, hints and the highlighter's
+    /// check answer: a panic here would strike while the line editor holds the terminal.
+    #[test]
+    fn any_line_and_cursor_is_answered(
+        line in "[ -~äé\t]{0,40}",
+        cut in 0usize..41,
+    ) {
+        let profile = Profile::builtin();
+        let mut pos = cut.min(line.len());
+        while !line.is_char_boundary(pos) {
+            pos -= 1;
+        }
+        let grammars: [std::sync::Arc<dyn Grammar>; 2] = [std::sync::Arc::new(tmcl()), std::sync::Arc::new(smd4())];
+        for grammar in &grammars {
+            let _ = complete(&line, pos, &**grammar);
+        }
+        let _ = crate::dialect::tmcl::hint::hint(&line[..pos], &profile);
+        for grammar in grammars {
+            let _ = crate::repl::editor::ReplHelper::new(grammar, true).is_invalid(&line);
+        }
+    }
 }

@@ -1,6 +1,6 @@
 use super::*;
-use crate::protocol::tmcl::{CommandFrame, Instruction, ReplyFrame};
-use crate::sim::tmcl::Bus;
+use crate::dialect::tmcl::protocol::{CommandFrame, Instruction, ReplyFrame};
+use crate::dialect::tmcl::sim::Bus;
 
 fn gap4() -> [u8; 9] {
     CommandFrame {

@@ -2,11 +2,11 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use super::*;
-use crate::protocol::tmcl::{CommandFrame, Instruction, ReplyFrame, Status};
-use crate::sim::clock::ManualClock;
+use crate::clock::ManualClock;
+use crate::dialect::tmcl::protocol::{CommandFrame, Instruction, ReplyFrame, Status};
+use crate::dialect::tmcl::sim::Bus;
 use crate::sim::fault::{Faults, Faulty};
 use crate::sim::pacing::Paced;
-use crate::sim::tmcl::Bus;
 
 fn frame(command: u8, type_: u8, value: i32) -> [u8; 9] {
     CommandFrame {
@@ -116,10 +116,9 @@ fn tests_reach_the_bus_typed_or_by_control_commands() {
 
 #[test]
 fn the_builtin_link_answers_on_the_system_clock() {
-    let mut link = crate::sim::builtin_link(
-        &crate::profile::Profile::builtin(),
-        crate::protocol::Dialect::Tmcl,
-    );
+    let config = (crate::dialect::tmcl::DIALECT.configure)(None).unwrap();
+    let name = format!("simulated {} (built-in)", config.simulated_module());
+    let mut link = crate::sim::builtin_link(config.simulator(), name);
     assert_eq!(link.describe(), "simulated TMCM-142 (built-in)");
     link.send(&frame(6, 4, 0)).unwrap();
     assert_eq!(

@@ -17,8 +17,8 @@ use nix::poll::{PollFd, PollFlags};
 use nix::poll::{PollTimeout, poll};
 
 use super::Device;
-use super::clock::Clock;
 use super::inprocess::SharedDevice;
+use crate::clock::Clock;
 
 /// Wakes a serving thread, e.g. after a console command changed the device or the clock.
 #[derive(Debug, Clone)]

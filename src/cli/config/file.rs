@@ -1,0 +1,222 @@
+//! The configuration files: where they are, and each checked whole — an unknown key or a value
+//! the option would refuse is an error naming the file and the line, never ignored.
+
+use std::borrow::Cow;
+use std::path::{Path, PathBuf};
+
+use clap::Command;
+use clap::error::{ContextKind, ContextValue};
+use toml::Spanned;
+use toml::de::{DeTable, DeValue};
+
+use super::super::ports::usb::UsbSpec;
+use super::{KEYS, Key, Kind};
+
+/// Which file a value comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scope {
+    /// `tmclsh.toml` in the working directory or above it.
+    Project,
+    /// `$XDG_CONFIG_HOME/tmclsh/config.toml` (or `~/.config/tmclsh/config.toml`).
+    User,
+}
+
+impl Scope {
+    /// The word `tmclsh config` shows.
+    pub fn name(self) -> &'static str {
+        match self {
+            Scope::Project => "project",
+            Scope::User => "user",
+        }
+    }
+}
+
+/// One value read from a file, checked, in the form the option takes it.
+#[derive(Debug, Clone)]
+pub struct Entry {
+    /// The key.
+    pub key: &'static Key,
+    /// The option's value (paths resolved against the file's directory).
+    pub value: String,
+    /// The file.
+    pub file: PathBuf,
+    /// The line of the key.
+    pub line: usize,
+    /// Which file it is.
+    pub scope: Scope,
+}
+
+/// The user's configuration file, whether or not it exists.
+pub fn user_file() -> Option<PathBuf> {
+    let base = std::env::var_os("XDG_CONFIG_HOME")
+        .map(PathBuf::from)
+        .filter(|p| p.is_absolute())
+        .or_else(|| dirs::home_dir().map(|home| home.join(".config")))?;
+    Some(base.join("tmclsh").join("config.toml"))
+}
+
+/// The project's configuration file: `tmclsh.toml` in `from` or the nearest directory above it.
+pub fn project_file(from: &Path) -> Option<PathBuf> {
+    from.ancestors()
+        .map(|dir| dir.join("tmclsh.toml"))
+        .find(|file| file.is_file())
+}
+
+/// Reads and checks one file against the options of `cmd`.
+pub fn read(path: &Path, scope: Scope, cmd: &Command) -> Result<Vec<Entry>, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let at = |offset: usize| format!("{}:{}", path.display(), line_at(&text, offset));
+    let root = DeTable::parse(&text).map_err(|e| {
+        let place = e
+            .span()
+            .map_or_else(|| path.display().to_string(), |s| at(s.start));
+        format!("{place}: {}", e.message().trim_end())
+    })?;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let mut entries = Vec::new();
+    for (name, value) in root.get_ref().iter() {
+        let Some(key) = KEYS.iter().find(|k| k.name == name.get_ref().as_ref()) else {
+            let known: Vec<&str> = KEYS.iter().map(|k| k.name).collect();
+            let nearest = crate::suggest::nearest(name.get_ref(), known.iter().copied());
+            return Err(format!(
+                "{}: unknown key `{}`{}; the keys are {}",
+                at(name.span().start),
+                name.get_ref(),
+                crate::suggest::did_you_mean(&nearest.map(|n| format!("`{n}`"))),
+                known.join(", ")
+            ));
+        };
+        let value = checked(key, value, dir, cmd)
+            .map_err(|why| format!("{}: {why}", at(value.span().start)))?;
+        entries.push(Entry {
+            key,
+            value,
+            file: path.to_path_buf(),
+            line: line_at(&text, name.span().start),
+            scope,
+        });
+    }
+    Ok(entries)
+}
+
+/// The value of `key` as its option takes it, or why it cannot be.
+fn checked(
+    key: &Key,
+    value: &Spanned<DeValue<'_>>,
+    dir: &Path,
+    cmd: &Command,
+) -> Result<String, String> {
+    let name = key.name;
+    let text = match (key.kind, value.get_ref()) {
+        (Kind::Integer, DeValue::Integer(n)) => i64::from_str_radix(n.as_str(), n.radix())
+            .map(|n| n.to_string())
+            .map_err(|_| format!("{name} is out of range"))?,
+        (Kind::Integer, other) => {
+            return Err(format!(
+                "{name} must be a number ({}), not {}",
+                key.example,
+                describe(other)
+            ));
+        }
+        (_, DeValue::String(s)) if s.is_empty() => {
+            return Err(format!("{name} is empty ({})", key.example));
+        }
+        (Kind::Text, DeValue::String(s)) => {
+            if let Some(Err(why)) = UsbSpec::parse(s) {
+                return Err(why);
+            }
+            s.to_string()
+        }
+        (Kind::NameOrPath, DeValue::String(s)) if !names_a_file(s) => s.to_string(),
+        (Kind::Path | Kind::Dir | Kind::NameOrPath, DeValue::String(s)) => {
+            let path = dir.join(expand_home(s));
+            match key.kind {
+                Kind::Path | Kind::NameOrPath if !path.is_file() => {
+                    return Err(format!("{name}: no such file {}", path.display()));
+                }
+                Kind::Dir if path.exists() && !path.is_dir() => {
+                    return Err(format!("{name}: {} is not a directory", path.display()));
+                }
+                _ => {}
+            }
+            let mut text = path.to_string_lossy().into_owned();
+            if key.kind == Kind::Dir && !text.ends_with(std::path::MAIN_SEPARATOR) {
+                // The trailing separator is what makes `--log` take it as a directory.
+                text.push(std::path::MAIN_SEPARATOR);
+            }
+            text
+        }
+        (_, other) => {
+            return Err(format!(
+                "{name} must be a string in quotes ({}), not {}",
+                key.example,
+                describe(other)
+            ));
+        }
+    };
+    option_accepts(cmd, key.id, &text).map_err(|why| format!("{name}: {why}"))?;
+    Ok(text)
+}
+
+/// Whether a name-or-file value is a file: it has a directory part or a `.toml` ending.
+fn names_a_file(text: &str) -> bool {
+    text.contains('/') || text.contains(std::path::MAIN_SEPARATOR) || text.ends_with(".toml")
+}
+
+/// `~/…` in a configuration file means the home directory.
+fn expand_home(path: &str) -> Cow<'_, Path> {
+    match (path.strip_prefix("~/"), dirs::home_dir()) {
+        (Some(rest), Some(home)) => Cow::Owned(home.join(rest)),
+        _ => Cow::Borrowed(Path::new(path)),
+    }
+}
+
+/// Whether the option `id` of `cmd` takes `value`, by the option's own value parser (so a file
+/// can never hold what the command line would refuse), and if not, why.
+fn option_accepts(cmd: &Command, id: &str, value: &str) -> Result<(), String> {
+    let arg = cmd
+        .get_arguments()
+        .find(|a| a.get_id() == id)
+        .expect("every configuration key is an option of the shell");
+    let long = arg
+        .get_long()
+        .expect("every configuration key sets a long option");
+    let alone = Command::new("tmclsh")
+        .no_binary_name(true)
+        .arg(arg.clone().required(false).env(None::<&str>));
+    let error = match alone.try_get_matches_from([format!("--{long}={value}")]) {
+        Ok(_) => return Ok(()),
+        Err(error) => error,
+    };
+    if let Some(source) = std::error::Error::source(&error) {
+        return Err(format!("invalid value '{value}': {source}"));
+    }
+    if let Some(ContextValue::Strings(valid)) = error.get(ContextKind::ValidValue) {
+        return Err(format!(
+            "invalid value '{value}' (possible values: {})",
+            valid.join(", ")
+        ));
+    }
+    Err(format!("invalid value '{value}'"))
+}
+
+/// A TOML value's kind in words.
+fn describe(value: &DeValue<'_>) -> &'static str {
+    match value {
+        DeValue::String(_) => "a string",
+        DeValue::Integer(_) => "a number",
+        DeValue::Float(_) => "a fractional number",
+        DeValue::Boolean(_) => "true or false",
+        DeValue::Datetime(_) => "a date",
+        DeValue::Array(_) => "a list",
+        DeValue::Table(_) => "a table",
+    }
+}
+
+fn line_at(text: &str, offset: usize) -> usize {
+    text.as_bytes()[..offset.min(text.len())]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+        + 1
+}

@@ -1,0 +1,350 @@
+//! Defaults that stick: a user file (`$XDG_CONFIG_HOME/tmclsh/config.toml`, else
+//! `~/.config/tmclsh/config.toml`) and a project file (`tmclsh.toml` in the working directory or
+//! the nearest one above it) give port, baud, protocol, profile, module, timeout, echo and a log
+//! directory. Precedence: command line > environment > project > user > built-in.
+//!
+//! A file's values become the defaults of the options (clap then ranks them below the command
+//! line and the environment by itself), so they count wherever the option does and, like
+//! environment values, are never refused where the option has no use (`cli::relevance` refuses
+//! only what was written on the command line): a configured port does not bother `tmclsh asm`.
+//! `tmclsh config` shows every value and where it came from.
+
+mod file;
+
+use std::io::{self, Write};
+use std::path::PathBuf;
+
+use clap::parser::ValueSource;
+use clap::{ArgMatches, Command};
+
+use crate::exit::Exit;
+
+pub use file::Scope;
+use file::{Entry, project_file, user_file};
+
+use super::connection::ModuleArgs;
+use super::position::leaf_matches;
+
+/// What a key's value is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Text, as the option takes it.
+    Text,
+    /// A whole number.
+    Integer,
+    /// A file (relative to the configuration file's directory).
+    Path,
+    /// A built-in name, kept as written, or — with a directory part or a `.toml` ending — a file
+    /// as for [`Kind::Path`] (`profile = "tmcm-6110"`, `profile = "rig/my.toml"`).
+    NameOrPath,
+    /// A directory (relative to the configuration file's directory).
+    Dir,
+}
+
+/// A key of the configuration files and the option it sets.
+#[derive(Debug)]
+pub struct Key {
+    /// The key in the file.
+    pub name: &'static str,
+    /// The id of the option it sets.
+    pub id: &'static str,
+    /// What its value is.
+    pub kind: Kind,
+    /// An example, for messages.
+    pub example: &'static str,
+    /// What it means when nothing sets it.
+    pub unset: &'static str,
+}
+
+/// Every key, in the order `tmclsh config` shows them.
+pub const KEYS: &[Key] = &[
+    Key {
+        name: "port",
+        id: "port",
+        kind: Kind::Text,
+        example: "port = \"/dev/ttyUSB0\" or \"usb:0403:6001\"",
+        unset: "the built-in simulated module",
+    },
+    Key {
+        name: "baud",
+        id: "baud",
+        kind: Kind::Integer,
+        example: "baud = 115200",
+        unset: "",
+    },
+    Key {
+        name: "protocol",
+        id: "protocol",
+        kind: Kind::Text,
+        example: "protocol = \"smd4\"",
+        unset: "",
+    },
+    Key {
+        name: "profile",
+        id: "profile",
+        kind: Kind::NameOrPath,
+        example: "profile = \"tmcm-1140\" or \"profiles/my-module.toml\"",
+        unset: "the built-in TMCM-142 tables",
+    },
+    Key {
+        name: "module",
+        id: "module",
+        kind: Kind::Integer,
+        example: "module = 2",
+        unset: "",
+    },
+    Key {
+        name: "timeout",
+        id: "timeout",
+        kind: Kind::Integer,
+        example: "milliseconds, timeout = 500",
+        unset: "",
+    },
+    Key {
+        name: "echo",
+        id: "echo",
+        kind: Kind::Text,
+        example: "echo = \"line\"",
+        unset: "each module's echo as found",
+    },
+    Key {
+        name: "log_dir",
+        id: "log",
+        kind: Kind::Dir,
+        example: "log_dir = \"logs\"",
+        unset: "no transcript",
+    },
+];
+
+/// The values of the configuration files that apply, the project's over the user's.
+#[derive(Debug, Default, Clone)]
+pub struct Defaults {
+    entries: Vec<Entry>,
+    /// The user's file (whether or not it exists).
+    user: Option<PathBuf>,
+    /// The project's file, if one was found.
+    project: Option<PathBuf>,
+    /// Where the project file was looked for.
+    searched_from: Option<PathBuf>,
+}
+
+impl Defaults {
+    /// No configuration files (the built-in defaults only).
+    pub fn none() -> Defaults {
+        Defaults::default()
+    }
+
+    /// Reads the user's and the project's files; a file with an unknown key or a bad value is an
+    /// error naming the file and line (exit 2).
+    pub fn load() -> Result<Defaults, String> {
+        let cwd = std::env::current_dir().ok();
+        let user = user_file();
+        let project = cwd.as_deref().and_then(project_file);
+        let cmd = super::command();
+        let mut entries = Vec::new();
+        if let Some(path) = project.as_deref() {
+            entries.extend(file::read(path, Scope::Project, &cmd)?);
+        }
+        if let Some(path) = user.as_deref().filter(|p| p.is_file()) {
+            let user_entries = file::read(path, Scope::User, &cmd)?;
+            let overridden = |e: &Entry| entries.iter().any(|p: &Entry| p.key.name == e.key.name);
+            let kept: Vec<Entry> = user_entries
+                .into_iter()
+                .filter(|e| !overridden(e))
+                .collect();
+            entries.extend(kept);
+        }
+        Ok(Defaults {
+            entries,
+            user,
+            project,
+            searched_from: cwd,
+        })
+    }
+
+    /// The value `key` gets from a file, if any.
+    fn entry(&self, key: &Key) -> Option<&Entry> {
+        self.entries.iter().find(|e| e.key.name == key.name)
+    }
+
+    /// Makes the files' values the defaults of the options of `cmd` and its subcommands, except
+    /// `sim`, whose options of the same names are the simulator's own. Global options (`--profile`)
+    /// are set once at the top and reach every subcommand.
+    pub fn apply(&self, cmd: Command) -> Command {
+        let mut cmd = cmd;
+        for entry in &self.entries {
+            cmd = set_default(cmd, entry.key.id, &entry.value);
+        }
+        cmd
+    }
+}
+
+fn set_default(cmd: Command, id: &'static str, value: &str) -> Command {
+    let has = cmd.get_arguments().any(|a| a.get_id() == id);
+    let cmd = if has {
+        let value = value.to_string();
+        cmd.mut_arg(id, |a| a.default_value(value))
+    } else {
+        cmd
+    };
+    cmd.mut_subcommands(|sub| {
+        if sub.get_name() == "sim" {
+            sub
+        } else {
+            set_default(sub, id, value)
+        }
+    })
+}
+
+/// Arguments of `config`: the options whose values it shows, so that `tmclsh config --port X`
+/// shows what `--port X` would do to the rest.
+#[derive(Debug, Clone, clap::Args)]
+pub struct ConfigArgs {
+    // Parsed so that every option is accepted here; the report reads their values and sources
+    // from the matches, which know where each came from.
+    #[allow(dead_code)]
+    #[command(flatten)]
+    module: ModuleArgs,
+    /// Filled in after parsing: every value and where it came from.
+    #[arg(skip)]
+    report: Vec<Line>,
+    /// Filled in after parsing: the files read.
+    #[arg(skip)]
+    defaults: Option<Defaults>,
+}
+
+/// One line of `tmclsh config`.
+#[derive(Debug, Clone)]
+struct Line {
+    key: &'static Key,
+    /// The value in TOML, if any.
+    value: Option<String>,
+    /// Where it came from.
+    origin: String,
+}
+
+/// Fills in the report of a parsed `tmclsh config` from its matches.
+pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults) {
+    let leaf = leaf_matches(matches);
+    args.report = KEYS
+        .iter()
+        .map(|key| {
+            let raw: Option<String> = leaf
+                .try_get_raw(key.id)
+                .ok()
+                .flatten()
+                .and_then(|mut values| values.next())
+                .map(|v| v.to_string_lossy().into_owned());
+            let origin = match leaf.value_source(key.id) {
+                Some(ValueSource::CommandLine) => "command line".to_string(),
+                Some(ValueSource::EnvVariable) => {
+                    let cmd = super::command();
+                    let var = cmd
+                        .get_arguments()
+                        .find(|a| a.get_id() == key.id)
+                        .and_then(|a| a.get_env())
+                        .map(|v| v.to_string_lossy().into_owned())
+                        .unwrap_or_default();
+                    format!("environment {var}")
+                }
+                Some(ValueSource::DefaultValue) => match defaults.entry(key) {
+                    Some(e) => format!("{} {}:{}", e.scope.name(), e.file.display(), e.line),
+                    None => "built-in".to_string(),
+                },
+                _ => "built-in".to_string(),
+            };
+            let value = raw.map(|raw| match key.kind {
+                Kind::Integer => raw,
+                _ => toml::Value::String(raw).to_string(),
+            });
+            Line { key, value, origin }
+        })
+        .collect();
+    args.defaults = Some(defaults.clone());
+}
+
+/// Prints every value and where it came from, as TOML a file could hold.
+pub fn run(args: &ConfigArgs, out: &mut dyn Write) -> io::Result<Exit> {
+    let defaults = args.defaults.clone().unwrap_or_default();
+    writeln!(
+        out,
+        "# precedence: command line > environment > project file > user file > built-in"
+    )?;
+    match (&defaults.project, &defaults.searched_from) {
+        (Some(path), _) => writeln!(out, "# project file: {}", path.display())?,
+        (None, Some(dir)) => writeln!(
+            out,
+            "# project file: none (no tmclsh.toml in {} or above)",
+            dir.display()
+        )?,
+        (None, None) => writeln!(out, "# project file: none")?,
+    }
+    match &defaults.user {
+        Some(path) if path.is_file() => writeln!(out, "# user file: {}", path.display())?,
+        Some(path) => writeln!(out, "# user file: none ({} does not exist)", path.display())?,
+        None => writeln!(out, "# user file: none (no home directory)")?,
+    }
+    let width = args
+        .report
+        .iter()
+        .filter_map(|l| l.value.as_ref().map(|v| l.key.name.len() + 3 + v.len()))
+        .max()
+        .unwrap_or(0);
+    for line in &args.report {
+        match &line.value {
+            Some(value) => {
+                let setting = format!("{} = {value}", line.key.name);
+                writeln!(out, "{setting:<width$}  # {}", line.origin)?;
+            }
+            None => writeln!(out, "# {} is not set: {}", line.key.name, line.key.unset)?,
+        }
+    }
+    Ok(Exit::Success)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_key_sets_a_long_option_of_the_shell() {
+        let cmd = super::super::command();
+        for key in KEYS {
+            let arg = cmd
+                .get_arguments()
+                .find(|a| a.get_id() == key.id)
+                .unwrap_or_else(|| panic!("{} sets no option", key.name));
+            assert!(arg.get_long().is_some(), "{}", key.name);
+            assert!(arg.get_action().takes_values(), "{}", key.name);
+        }
+    }
+
+    #[test]
+    fn defaults_reach_nested_subcommands_but_not_the_simulator() {
+        let place = std::env::temp_dir().join(format!("tmclsh-config-unit-{}", std::process::id()));
+        std::fs::create_dir_all(&place).unwrap();
+        let file = place.join("tmclsh.toml");
+        std::fs::write(&file, "baud = 300\nprotocol = \"smd4\"\n").unwrap();
+        let cmd = super::super::command();
+        let entries = file::read(&file, Scope::Project, &cmd).unwrap();
+        let defaults = Defaults {
+            entries,
+            ..Defaults::none()
+        };
+        let applied = defaults.apply(cmd);
+        let default_of = |path: &[&str], id: &str| {
+            let sub = path
+                .iter()
+                .try_fold(&applied, |c, name| c.find_subcommand(name))
+                .unwrap();
+            sub.get_arguments()
+                .find(|a| a.get_id() == id)
+                .map(|a| a.get_default_values().to_vec())
+        };
+        assert_eq!(default_of(&[], "baud").unwrap(), ["300"]);
+        assert_eq!(default_of(&["snapshot", "save"], "baud").unwrap(), ["300"]);
+        assert_eq!(default_of(&["params"], "protocol").unwrap(), ["smd4"]);
+        assert_eq!(default_of(&["sim"], "protocol").unwrap(), ["tmcl"]);
+        std::fs::remove_dir_all(&place).unwrap();
+    }
+}

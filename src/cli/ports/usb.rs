@@ -1,0 +1,151 @@
+//! `--port usb:VID:PID[:SERIAL]`: a USB adapter named by what it is rather than by the device
+//! file it happens to get, resolved to that file when the port is opened.
+
+use std::path::PathBuf;
+
+use crate::exit::Exit;
+
+use super::list::{Kind, Port, Usb, ports};
+
+/// The prefix of a port named by USB ids.
+pub const PREFIX: &str = "usb:";
+
+/// An adapter named by USB ids.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UsbSpec {
+    vid: u16,
+    pid: u16,
+    serial: Option<String>,
+}
+
+impl UsbSpec {
+    /// `usb:VID:PID[:SERIAL]`, ids in hex; `None` when `port` is a path.
+    pub fn parse(port: &str) -> Option<Result<UsbSpec, String>> {
+        let rest = port.strip_prefix(PREFIX)?;
+        let bad = || {
+            format!(
+                "`{port}`: a USB adapter is named usb:VID:PID or usb:VID:PID:SERIAL, with the \
+                 ids in hex as `tmclsh ports` shows them (e.g. usb:0403:6001)"
+            )
+        };
+        let mut parts = rest.splitn(3, ':');
+        let hex = |s: Option<&str>| {
+            s.filter(|s| (1..=4).contains(&s.len()))
+                .and_then(|s| u16::from_str_radix(s, 16).ok())
+        };
+        let vid = hex(parts.next());
+        let pid = hex(parts.next());
+        let serial = parts.next().map(str::to_string);
+        Some(match (vid, pid, &serial) {
+            (Some(vid), Some(pid), Some(s)) if !s.is_empty() => Ok(UsbSpec { vid, pid, serial }),
+            (Some(vid), Some(pid), None) => Ok(UsbSpec { vid, pid, serial }),
+            _ => Err(bad()),
+        })
+    }
+
+    fn matches(&self, port: &Port) -> bool {
+        match &port.kind {
+            Kind::Usb(usb) => {
+                usb.vid == self.vid
+                    && usb.pid == self.pid
+                    && (self.serial.is_none() || self.serial == usb.serial)
+            }
+            _ => false,
+        }
+    }
+}
+
+impl std::fmt::Display for UsbSpec {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{PREFIX}{:04x}:{:04x}", self.vid, self.pid)?;
+        match &self.serial {
+            Some(serial) => write!(f, ":{serial}"),
+            None => Ok(()),
+        }
+    }
+}
+
+/// Where a port named by USB ids is now.
+#[derive(Debug)]
+pub enum Found {
+    /// One adapter matches: its device file.
+    One(PathBuf),
+    /// None is plugged in (exit 3 when it is opened: the link is not there).
+    None(String),
+    /// Several match (exit 2: the name does not say which).
+    Several(String),
+}
+
+impl Found {
+    /// The device file, or the failure with its exit code.
+    pub fn path(self) -> Result<PathBuf, (Exit, String)> {
+        match self {
+            Found::One(path) => Ok(path),
+            Found::None(why) => Err((Exit::Link, why)),
+            Found::Several(why) => Err((Exit::Refused, why)),
+        }
+    }
+}
+
+/// Looks the adapter up among the ports of this machine.
+pub fn find(spec: &UsbSpec) -> Found {
+    let ports = ports().unwrap_or_default();
+    let found: Vec<&Port> = ports.iter().filter(|p| spec.matches(p)).collect();
+    match found.as_slice() {
+        [one] => Found::One(one.path.clone()),
+        [] => Found::None(format!(
+            "no USB adapter {spec} is plugged in (`tmclsh ports` lists the serial ports)"
+        )),
+        several => {
+            let listed: Vec<String> = several
+                .iter()
+                .map(|p| match &p.kind {
+                    Kind::Usb(Usb {
+                        serial: Some(serial),
+                        ..
+                    }) => format!("{} (serial {serial})", p.path.display()),
+                    _ => format!("{} (no serial number)", p.path.display()),
+                })
+                .collect();
+            let example = several.iter().find_map(|p| match &p.kind {
+                Kind::Usb(Usb {
+                    serial: Some(serial),
+                    ..
+                }) => Some(format!(
+                    "; name one by its serial number, e.g. {spec}:{serial}"
+                )),
+                _ => None,
+            });
+            Found::Several(format!(
+                "{spec} matches {} ports: {}{}",
+                several.len(),
+                listed.join(", "),
+                example.unwrap_or_else(|| "; give the device file instead".into())
+            ))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_parse_with_hex_ids_and_an_optional_serial() {
+        let spec = UsbSpec::parse("usb:0403:6001").unwrap().unwrap();
+        assert_eq!(spec.to_string(), "usb:0403:6001");
+        let spec = UsbSpec::parse("usb:2E8A:a:AB:CD").unwrap().unwrap();
+        assert_eq!(spec.to_string(), "usb:2e8a:000a:AB:CD");
+        assert!(UsbSpec::parse("/dev/ttyUSB0").is_none());
+        for bad in [
+            "usb:",
+            "usb:0403",
+            "usb:0403:",
+            "usb:xyz:6001",
+            "usb:12345:1",
+            "usb:1:2:",
+        ] {
+            assert!(UsbSpec::parse(bad).unwrap().is_err(), "{bad}");
+        }
+    }
+}

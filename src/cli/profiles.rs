@@ -1,0 +1,257 @@
+//! `tmclsh profiles [NAME|FILE]`: the built-in TMCL module profiles with their sources, or one
+//! profile in full (identification, ASCII interface, command set, I/O map, every source).
+
+use std::io::{self, Write};
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use crate::dialect::tmcl::profile::catalogue::{self, GENERIC};
+use crate::dialect::tmcl::profile::{Param, Profile};
+use crate::escape::escape_control;
+use crate::exit::Exit;
+
+use super::Failure;
+
+/// Arguments of `profiles`.
+#[derive(Debug, clap::Args)]
+pub struct ProfilesArgs {
+    /// Show this profile in full: a built-in name, alias or module number, or a profile file.
+    #[arg(value_name = "NAME|FILE")]
+    pub name: Option<PathBuf>,
+}
+
+/// Lists the built-in profiles, or shows one.
+pub fn run(args: &ProfilesArgs, out: &mut dyn Write) -> Result<Exit, Failure> {
+    let result = match &args.name {
+        None => list(out),
+        Some(arg) => {
+            let profile =
+                catalogue::resolve(arg).map_err(|e| Failure::new(Exit::Refused, e.to_string()))?;
+            detail(&profile, out)
+        }
+    };
+    match result {
+        Ok(()) => Ok(Exit::Success),
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(Exit::Success),
+        Err(e) => Err(Failure::new(Exit::Link, e.to_string())),
+    }
+}
+
+/// One row of the list.
+struct Row {
+    name: String,
+    module: String,
+    aliases: String,
+    number: String,
+    axes: String,
+    ascii: String,
+    generation: String,
+    parameters: String,
+}
+
+fn row(p: &Profile) -> Row {
+    let id = &p.identity;
+    Row {
+        name: p.name.clone(),
+        module: if p.generic {
+            "any other".into()
+        } else {
+            p.module.clone()
+        },
+        aliases: dash(id.aliases.join(", ")),
+        number: id
+            .module_number
+            .map_or_else(|| "-".to_string(), |n| n.to_string()),
+        axes: p.axes.to_string(),
+        ascii: id.ascii_interface().as_str().to_string(),
+        generation: dash(id.generation.clone().unwrap_or_default()),
+        parameters: if p.generic {
+            "by number only".into()
+        } else {
+            parameter_count(p)
+        },
+    }
+}
+
+fn dash(text: String) -> String {
+    if text.is_empty() { "-".into() } else { text }
+}
+
+/// "85 (62 uncertain)".
+fn parameter_count(p: &Profile) -> String {
+    let all: Vec<&Param> = p.axis.iter().chain(&p.global).collect();
+    let uncertain = all.iter().filter(|p| p.uncertain).count();
+    format!("{} ({uncertain} uncertain)", all.len())
+}
+
+fn list(out: &mut dyn Write) -> io::Result<()> {
+    let mut profiles: Vec<Arc<Profile>> = catalogue::all().to_vec();
+    profiles.push(catalogue::generic());
+    let rows: Vec<Row> = profiles.iter().map(|p| row(p)).collect();
+    let header = Row {
+        name: "profile".into(),
+        module: "module".into(),
+        aliases: "aliases".into(),
+        number: "number".into(),
+        axes: "axes".into(),
+        ascii: "ascii".into(),
+        generation: "generation".into(),
+        parameters: "parameters".into(),
+    };
+    let width = |f: fn(&Row) -> &str| {
+        rows.iter()
+            .chain([&header])
+            .map(|r| f(r).len())
+            .max()
+            .unwrap_or(0)
+    };
+    let w = [
+        width(|r| &r.name),
+        width(|r| &r.module),
+        width(|r| &r.aliases),
+        width(|r| &r.number),
+        width(|r| &r.axes),
+        width(|r| &r.ascii),
+        width(|r| &r.generation),
+    ];
+    for r in [&header].into_iter().chain(&rows) {
+        writeln!(
+            out,
+            "{:<w0$}  {:<w1$}  {:<w2$}  {:<w3$}  {:<w4$}  {:<w5$}  {:<w6$}  {}",
+            r.name,
+            r.module,
+            r.aliases,
+            r.number,
+            r.axes,
+            r.ascii,
+            r.generation,
+            r.parameters,
+            w0 = w[0],
+            w1 = w[1],
+            w2 = w[2],
+            w3 = w[3],
+            w4 = w[4],
+            w5 = w[5],
+            w6 = w[6],
+        )?;
+    }
+    writeln!(out)?;
+    writeln!(
+        out,
+        "sources (`tmclsh profiles NAME` shows each document; uncertain facts are marked in the files):"
+    )?;
+    for p in &profiles {
+        let id = &p.identity;
+        let what = if p.generic {
+            "the built-in command table; no module's parameters".to_string()
+        } else if id.manual.is_empty() {
+            "no manual named".to_string()
+        } else {
+            id.manual.clone()
+        };
+        writeln!(
+            out,
+            "{:<w0$}  {what}; {} documents",
+            p.name,
+            id.sources.len(),
+            w0 = w[0]
+        )?;
+    }
+    Ok(())
+}
+
+fn detail(p: &Profile, out: &mut dyn Write) -> io::Result<()> {
+    let id = &p.identity;
+    let origin = match (&p.source, p.name.as_str()) {
+        (Some(path), _) => path.display().to_string(),
+        (None, GENERIC) => "built in, data/generic.toml".to_string(),
+        (None, name) => format!("built in, data/profiles/{name}.toml"),
+    };
+    let heading = format!("{}: {} ({origin})", p.name, p.module);
+    writeln!(out, "{}", escape_control(&heading))?;
+    let field = |out: &mut dyn Write, name: &str, value: &str| -> io::Result<()> {
+        if value.is_empty() {
+            return Ok(());
+        }
+        // A profile file is anyone's text: its control characters are shown, not obeyed.
+        writeln!(out, "  {name:<16}{}", escape_control(value))
+    };
+    if let Some(number) = id.module_number {
+        let formats = match (&id.version_format, &id.bootloader_format) {
+            (Some(v), Some(b)) => format!(" (136 answers {v}; the boot loader {b})"),
+            (Some(v), None) => format!(" (136 answers {v})"),
+            _ => String::new(),
+        };
+        field(out, "module number", &format!("{number}{formats}"))?;
+    }
+    field(out, "aliases", &id.aliases.join(", "))?;
+    let motors = match p.axes {
+        1 => "motor 0".to_string(),
+        n => format!("motors 0..{}", n - 1),
+    };
+    field(out, "axes", &format!("{} ({motors})", p.axes))?;
+    field(out, "ASCII interface", id.ascii_interface().as_str())?;
+    let parameters = if p.generic {
+        "by number only (0..255), no names, values unchecked".to_string()
+    } else {
+        let generation = id
+            .generation
+            .as_ref()
+            .map(|g| format!("generation {g}: "))
+            .unwrap_or_default();
+        format!(
+            "{generation}{} axis, {} global; {}",
+            p.axis.len(),
+            p.global.len(),
+            parameter_count(p)
+        )
+    };
+    field(out, "parameters", &parameters)?;
+    field(out, "motion control", &id.motion_controller)?;
+    field(out, "manual", &id.manual)?;
+    field(out, "", &id.manual_url)?;
+    let absent: Vec<String> = p
+        .commands
+        .absent_commands()
+        .map(|(c, reason)| format!("{} {} ({reason})", c.number, c.display_name()))
+        .collect();
+    field(out, "commands absent", &absent.join("; "))?;
+    let builtin = Profile::builtin();
+    let extra: Vec<String> = p
+        .commands
+        .iter()
+        .filter(|c| builtin.commands.by_number(c.number).is_none())
+        .map(|c| format!("{} {}", c.number, c.display_name()))
+        .collect();
+    field(out, "commands added", &extra.join(", "))?;
+    let ascii: Vec<&str> = p
+        .commands
+        .iter()
+        .filter(|c| c.ascii_allowed)
+        .map(|c| c.mnemonic.as_str())
+        .collect();
+    field(out, "ASCII commands", &ascii.join(" "))?;
+    let ports: Vec<String> = p
+        .io_ports
+        .iter()
+        .map(|port| format!("{}/{} {}", port.bank, port.port, port.name))
+        .collect();
+    field(out, "I/O (bank/port)", &ports.join(", "))?;
+    for (fact, source) in &id.fact_sources {
+        field(out, "source of", &format!("{fact}: {source}"))?;
+    }
+    for (fact, why) in &id.uncertain_facts {
+        field(out, "uncertain", &format!("{fact}: {why}"))?;
+    }
+    if !id.sources.is_empty() {
+        writeln!(out, "  documents")?;
+        for doc in &id.sources {
+            let what = format!("{}: {}", doc.id, doc.what);
+            writeln!(out, "    {}", escape_control(&what))?;
+            if !doc.at.is_empty() {
+                writeln!(out, "      {}", escape_control(&doc.at))?;
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,269 @@
+//! Options that would change nothing are refused, not ignored: the shared group of connection
+//! and session options is flattened into every subcommand that talks to a module, and these
+//! tables say which of them a subcommand, a dialect or a connection has no use for. An option
+//! given on the command line where it has no use ends the run with exit code 2 before anything
+//! is sent; the same option from an environment variable (`TMCLSH_BAUD`, …) is left alone.
+
+use clap::error::ErrorKind;
+use clap::parser::ValueSource;
+use clap::{ArgMatches, Args, Command};
+
+use crate::dialect::{DIALECTS, Dialect};
+
+use super::connection::ModuleArgs;
+use super::position::{flag, leaf_matches, subcommand_mut, subcommand_path};
+
+/// Shared options a subcommand receives with the group but has no use for: hidden from its help
+/// and refused when given. (subcommand, option ids, why) — the ids are checked by a test.
+const UNUSED: &[(&str, &[&str], &str)] = &[
+    (
+        "download",
+        &["no_validate"],
+        "a program is checked when it is assembled or loaded",
+    ),
+    (
+        "download",
+        &["address", "prefix_comma", "quiet_gap"],
+        "it stores TMCL programs",
+    ),
+    (
+        "scan",
+        &["module", "address"],
+        "a scan tries every address in --addresses",
+    ),
+    (
+        "scan",
+        &["no_enter", "stay_ascii"],
+        "a scan finds modules in either mode and leaves each in the mode it was found in",
+    ),
+    (
+        "scan",
+        &["echo"],
+        "a scan reads the echo of every module and leaves it as found",
+    ),
+    (
+        "scan",
+        &["no_validate", "quiet_gap"],
+        "it sends no typed lines",
+    ),
+    (
+        "snapshot save",
+        &["no_validate", "quiet_gap"],
+        "it sends no typed lines",
+    ),
+    (
+        "snapshot diff",
+        &["no_validate", "quiet_gap"],
+        "it sends no typed lines",
+    ),
+    (
+        "snapshot restore",
+        &["quiet_gap"],
+        "it asks for no multi-line replies",
+    ),
+];
+
+/// Subcommands that only one dialect has: (subcommand, dialect name).
+const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl")];
+
+/// The subcommand that takes every shared option to show what it would set (`tmclsh config`).
+const SHOWS_ALL: &str = "config";
+
+/// Subcommands that read no module tables (`--profile` is global, so every one receives it).
+const NO_TABLES: &[&str] = &["ports", "completions", "man", "profiles"];
+
+/// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
+/// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).
+pub fn hide_unused(mut cmd: Command) -> Command {
+    for (path, ids, _) in UNUSED {
+        let words: Vec<&str> = path.split(' ').collect();
+        cmd = in_subcommand(cmd, &words, &|sub: Command| {
+            ids.iter()
+                .fold(sub, |sub, id| sub.mut_arg(*id, |a| a.hide(true)))
+        });
+    }
+    cmd
+}
+
+/// Applies `f` to the subcommand at `words`, keeping the subcommands in their order.
+fn in_subcommand(cmd: Command, words: &[&str], f: &dyn Fn(Command) -> Command) -> Command {
+    match words.split_first() {
+        None => f(cmd),
+        Some((first, rest)) => cmd.mut_subcommands(|sub| {
+            if sub.get_name() == *first {
+                in_subcommand(sub, rest, f)
+            } else {
+                sub
+            }
+        }),
+    }
+}
+
+/// Refuses (with a usage error naming each) the options given on the command line that the
+/// parsed command has no use for. `cmd` is the built command `matches` came from.
+pub fn check(cmd: &mut Command, matches: &ArgMatches) -> Result<(), clap::Error> {
+    let path = subcommand_path(matches).unwrap_or_default();
+    if path == [SHOWS_ALL] {
+        return Ok(());
+    }
+    let refusals = refusals(&path.join(" "), leaf_matches(matches));
+    if refusals.is_empty() {
+        return Ok(());
+    }
+    let sub = subcommand_mut(cmd, &path);
+    let lines: Vec<String> = refusals
+        .iter()
+        .map(|(id, why)| {
+            let arg = sub
+                .get_arguments()
+                .find(|a| a.get_id().as_str() == id)
+                .expect("a given option is an argument of its command");
+            format!("{} {why}", flag(arg))
+        })
+        .collect();
+    Err(sub.error(ErrorKind::ArgumentConflict, lines.join("\n")))
+}
+
+/// The options given on the command line of subcommand `words` ("" for the shell) that it has no
+/// use for, each once, with why.
+fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
+    let given = |id: &str| {
+        leaf.ids().any(|i| i.as_str() == id)
+            && leaf.value_source(id) == Some(ValueSource::CommandLine)
+    };
+    let mut refusals: Vec<(String, String)> = Vec::new();
+    let mut refuse = |ids: &[&str], why: String| {
+        for id in ids.iter().filter(|id| given(id)) {
+            if refusals.iter().all(|(seen, _)| seen != id) {
+                refusals.push((id.to_string(), why.clone()));
+            }
+        }
+    };
+    let named = if words.is_empty() {
+        "the shell".to_string()
+    } else {
+        format!("`tmclsh {words}`")
+    };
+    for (at, ids, why) in UNUSED {
+        if *at == words {
+            refuse(ids, format!("does not apply to {named}: {why}"));
+        }
+    }
+    if let Some(chosen) = dialect(leaf) {
+        for other in DIALECTS.iter().filter(|d| !std::ptr::eq(**d, chosen)) {
+            let why = other.refusal.replace("{protocol}", chosen.name);
+            let ids = own_options(other);
+            refuse(&ids.iter().map(String::as_str).collect::<Vec<_>>(), why);
+        }
+        for (at, owner) in ONE_DIALECT {
+            let owner = crate::dialect::by_name(owner).expect("a listed dialect");
+            if *at == words && owner != chosen {
+                let why = format!(
+                    "{} does not apply to {named}: it works with {} only",
+                    chosen.name, owner.devices
+                );
+                refuse(&["protocol"], why);
+            }
+        }
+    }
+    if given("port") && given("tcp") {
+        refuse(&["tcp"], "and --port name two links; give one".into());
+    }
+    if !has_value(leaf, "port") || given("tcp") {
+        let why = "is the bit rate of a serial port; give it with --port";
+        refuse(&["baud"], why.into());
+    }
+    if words == "snapshot diff" && has_value(leaf, "other") {
+        let ids = module_ids();
+        let offline: Vec<&str> = ids
+            .iter()
+            .map(String::as_str)
+            .filter(|id| *id != "protocol")
+            .collect();
+        refuse(
+            &offline,
+            "does not apply to comparing two snapshot files".into(),
+        );
+    }
+    if NO_TABLES.contains(&words) {
+        refuse(&["profile"], format!("does not apply to {named}"));
+    }
+    refusals
+}
+
+/// The protocol in effect, for commands that have the option.
+fn dialect(matches: &ArgMatches) -> Option<&'static Dialect> {
+    matches
+        .try_get_one::<&'static Dialect>("protocol")
+        .ok()
+        .flatten()
+        .copied()
+}
+
+/// The options only `dialect` uses: those of the shared group it lists, and its own flags.
+fn own_options(dialect: &Dialect) -> Vec<String> {
+    let flags = (dialect.session_flags)(Command::new("flags"));
+    dialect
+        .own_options
+        .iter()
+        .map(|id| id.to_string())
+        .chain(flags.get_arguments().map(|a| a.get_id().to_string()))
+        .collect()
+}
+
+/// Whether `id` has a value from anywhere (command line or environment).
+fn has_value(matches: &ArgMatches, id: &str) -> bool {
+    matches.try_contains_id(id).unwrap_or(false) && matches.value_source(id).is_some()
+}
+
+/// The ids of the shared connection and session options.
+fn module_ids() -> Vec<String> {
+    ModuleArgs::augment_args(Command::new("module"))
+        .get_arguments()
+        .map(|a| a.get_id().to_string())
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_unused_option_names_a_subcommand_and_an_option_it_has() {
+        let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
+        for (path, ids, _) in UNUSED {
+            let sub = path
+                .split(' ')
+                .try_fold(&cmd, |cmd, word| cmd.find_subcommand(word))
+                .unwrap_or_else(|| panic!("no subcommand `{path}`"));
+            for id in *ids {
+                assert!(
+                    sub.get_arguments().any(|a| a.get_id() == id),
+                    "`{path}` has no option {id}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn the_dialect_options_are_options_of_the_shell() {
+        let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
+        for id in DIALECTS.iter().flat_map(|d| own_options(d)) {
+            assert!(cmd.get_arguments().any(|a| a.get_id() == &id), "{id}");
+        }
+        for path in NO_TABLES {
+            assert!(cmd.find_subcommand(path).is_some(), "{path}");
+        }
+    }
+
+    #[test]
+    fn hiding_keeps_the_subcommands_in_their_order() {
+        let names = |cmd: &Command| -> Vec<String> {
+            cmd.get_subcommands()
+                .map(|s| s.get_name().to_string())
+                .collect()
+        };
+        let plain = <crate::cli::Cli as clap::CommandFactory>::command();
+        assert_eq!(names(&hide_unused(plain.clone())), names(&plain));
+    }
+}

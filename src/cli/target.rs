@@ -1,0 +1,141 @@
+//! Where a link goes, decided before it is opened: a TCP address, a serial device (a `usb:` name
+//! resolved to the device file the adapter has now), or the built-in simulator. The transcript's
+//! file name in a `--log` directory comes from it too.
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, SystemTime};
+
+use crate::dialect::{Dialect, DialectConfig};
+use crate::exit::{Exit, Failure};
+use crate::link::{Link, SerialLink, TcpLink};
+
+use super::ports::usb::{UsbSpec, find};
+
+/// The place a link goes to.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Target {
+    /// A TCP address.
+    Tcp(String),
+    /// A serial device file.
+    Serial(String),
+    /// The built-in simulated module.
+    Builtin,
+}
+
+impl Target {
+    /// Where `--tcp` and `--port` point (`--tcp`, which only the command line gives, wins over a
+    /// port from the environment or a file); a `usb:` name is looked up now: exit 3 when no such
+    /// adapter is plugged in, exit 2 when the name is malformed or fits several.
+    pub fn of(port: Option<&str>, tcp: Option<&str>) -> Result<Target, Failure> {
+        if let Some(address) = tcp {
+            return Ok(Target::Tcp(address.to_string()));
+        }
+        let Some(port) = port else {
+            return Ok(Target::Builtin);
+        };
+        match UsbSpec::parse(port) {
+            None => Ok(Target::Serial(port.to_string())),
+            Some(spec) => {
+                let spec = spec.map_err(|why| Failure::new(Exit::Refused, why))?;
+                let path = find(&spec)
+                    .path()
+                    .map_err(|(exit, why)| Failure::new(exit, why))?;
+                Ok(Target::Serial(path.to_string_lossy().into_owned()))
+            }
+        }
+    }
+
+    /// Opens the link; the built-in simulator is `config`'s dialect's.
+    pub fn open(
+        &self,
+        baud: u32,
+        config: &dyn DialectConfig,
+        timeout: Duration,
+    ) -> Result<Box<dyn Link>, Failure> {
+        let failed = |e: crate::link::LinkError| Failure::new(Exit::Link, e.to_string());
+        Ok(match self {
+            Target::Tcp(address) => Box::new(TcpLink::connect(address, timeout).map_err(failed)?),
+            Target::Serial(path) => Box::new(SerialLink::open(path, baud).map_err(failed)?),
+            Target::Builtin => {
+                let name = format!("simulated {} (built-in)", config.simulated_module());
+                crate::sim::builtin_link(config.simulator(), name)
+            }
+        })
+    }
+
+    /// A short name for file names: `ttyUSB0`, `pts-3`, `tcp-127.0.0.1-4001`, `sim-tmcl`.
+    pub fn file_name(&self, dialect: &Dialect) -> String {
+        let name = match self {
+            Target::Tcp(address) => format!("tcp-{address}"),
+            Target::Serial(path) => {
+                let path = Path::new(path);
+                match path.strip_prefix("/dev") {
+                    Ok(rest) => rest.to_string_lossy().into_owned(),
+                    Err(_) => path
+                        .file_name()
+                        .map(|n| n.to_string_lossy().into_owned())
+                        .unwrap_or_else(|| "serial".into()),
+                }
+            }
+            Target::Builtin => format!("sim-{}", dialect.name),
+        };
+        name.chars()
+            .map(|c| match c {
+                'a'..='z' | 'A'..='Z' | '0'..='9' | '.' | '_' | '-' => c,
+                _ => '-',
+            })
+            .collect()
+    }
+}
+
+/// Whether `--log PATH` names a directory: one that exists, or a path ending with a separator
+/// (created when the session opens).
+pub fn is_log_dir(path: &Path) -> bool {
+    path.is_dir()
+        || path
+            .as_os_str()
+            .to_string_lossy()
+            .ends_with(['/', std::path::MAIN_SEPARATOR])
+}
+
+/// The transcript file for a session with `device` in the log directory `dir`:
+/// `DEVICE-YYYY-MM-DDTHH-MM-SS.log`, the time in UTC like the transcript's own timestamps.
+pub fn log_file(dir: &Path, device: &str, now: SystemTime) -> PathBuf {
+    let stamp = humantime::format_rfc3339_seconds(now).to_string();
+    let stamp = stamp.trim_end_matches('Z').replace(':', "-");
+    dir.join(format!("{device}-{stamp}.log"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn devices_name_their_files() {
+        let serial = |p: &str| Target::Serial(p.into()).file_name(&crate::dialect::tmcl::DIALECT);
+        assert_eq!(serial("/dev/ttyUSB0"), "ttyUSB0");
+        assert_eq!(serial("/dev/pts/3"), "pts-3");
+        assert_eq!(
+            serial("/dev/serial/by-id/usb-FTDI_FT232R_A50285BI-if00-port0"),
+            "serial-by-id-usb-FTDI_FT232R_A50285BI-if00-port0"
+        );
+        assert_eq!(serial("COM3"), "COM3");
+        assert_eq!(
+            Target::Tcp("127.0.0.1:4001".into()).file_name(&crate::dialect::tmcl::DIALECT),
+            "tcp-127.0.0.1-4001"
+        );
+        assert_eq!(
+            Target::Builtin.file_name(&crate::dialect::smd4::DIALECT),
+            "sim-smd4"
+        );
+    }
+
+    #[test]
+    fn log_files_are_named_by_device_and_date() {
+        let at = SystemTime::UNIX_EPOCH + Duration::from_secs(1_796_120_102);
+        assert_eq!(
+            log_file(Path::new("logs"), "ttyUSB0", at),
+            Path::new("logs/ttyUSB0-2026-12-01T10-15-02.log")
+        );
+    }
+}

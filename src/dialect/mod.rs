@@ -1,0 +1,127 @@
+//! The protocols tmclsh speaks. Each dialect is one folder ([`tmcl`], [`smd4`]) holding
+//! everything about it — pure protocol code, tables, session, simulator, script functions, shell
+//! helpers, completion, commissioning adapter, scan and replay — and one line in [`DIALECTS`].
+//!
+//! The layers above (shell, REPL, CLI) know a dialect only through its [`Dialect`] descriptor, the
+//! [`DialectConfig`] the command line configures from it, and the [`DialectSession`] it opens. A
+//! dialect's own code that needs its concrete session type gets it back by downcasting inside its
+//! folder, never outside it.
+
+mod config;
+pub mod grammar;
+pub mod guard;
+pub mod helper;
+pub mod replay;
+pub mod session;
+pub mod smd4;
+pub mod tmcl;
+
+use std::fmt;
+use std::path::Path;
+
+use clap::ArgMatches;
+use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+
+pub use config::{Configured, DialectConfig, Opening, Purpose};
+pub use grammar::Grammar;
+pub use helper::{ArgKind, Helper, Section};
+pub use session::{DialectSession, Reply};
+
+/// Every dialect, the default first: `--protocol` offers them in this order.
+pub static DIALECTS: &[&Dialect] = &[&tmcl::DIALECT, &smd4::DIALECT];
+
+/// A dialect: what the layers above need to know about it without knowing it. One static value
+/// per dialect, listed in [`DIALECTS`].
+pub struct Dialect {
+    /// The name `--protocol` takes and transcript headers record (`tmcl`).
+    pub name: &'static str,
+    /// One line for the help of `--protocol`.
+    pub summary: &'static str,
+    /// What its modules are called in messages (`TMCL modules`, `SMD4 drives`).
+    pub devices: &'static str,
+    /// Its helper commands besides those every dialect has (`:bin`, `:flags` …).
+    pub helpers: &'static [Helper],
+    /// Reads the dialect's tables (TMCL: the `--profile` file) into a [`DialectConfig`].
+    pub configure: Configure,
+    /// Options of the shared group only this dialect uses (its own flags count too): refused
+    /// when another dialect is chosen.
+    pub own_options: &'static [&'static str],
+    /// Why one of its options is refused under another dialect; `{protocol}` names that one.
+    pub refusal: &'static str,
+    /// Adds its session flags (`tmclsh --protocol NAME --FLAG`) to a command.
+    pub session_flags: fn(clap::Command) -> clap::Command,
+    /// Adds its simulator flags of one group to `tmclsh sim`.
+    pub sim_flags: fn(SimFlags, clap::Command) -> clap::Command,
+    /// The first of its simulator flags given on a command line, which the other dialects'
+    /// simulators refuse.
+    pub sim_flag_given: fn(&ArgMatches) -> Option<&'static str>,
+    /// The module its simulator stands for in messages (`TMCM-142`).
+    pub simulated: &'static str,
+    /// The commands of its simulator's console, for `tmclsh sim --help`: a heading line, then
+    /// one two-space indented line per command.
+    pub console_help: &'static str,
+    /// The note that opens its sessions in a transcript written before transcripts had headers;
+    /// a file with none of these notes is read as the default dialect's.
+    pub legacy_note: Option<&'static str>,
+    /// Whether a line (not a helper line) of the history file earlier versions shared between
+    /// the dialects was typed in this one, from its look.
+    pub typed_here: fn(&str) -> bool,
+    /// What `:scan` and `tmclsh scan` try by default (`1-26`).
+    pub scan_addresses: &'static str,
+    /// The example in the usage of `:scan`.
+    pub scan_example: &'static str,
+}
+
+/// How a dialect reads its tables: from the `--profile` file, if one is given; the error is a
+/// refusal (exit 2).
+pub type Configure = fn(profile: Option<&Path>) -> Result<Box<dyn DialectConfig>, String>;
+
+impl fmt::Debug for Dialect {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_tuple("Dialect").field(&self.name).finish()
+    }
+}
+
+impl PartialEq for Dialect {
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::eq(self, other)
+    }
+}
+
+impl Eq for Dialect {}
+
+/// Where a dialect's simulator flags are listed in `tmclsh sim --help`: with the bus layout
+/// (after `--listen`), with the module's setup (after `--manual-clock`), or among the quirk
+/// switches (after the faults).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SimFlags {
+    /// Bus layout (TMCL: `--modules`).
+    Bus,
+    /// The simulated module's setup (TMCL: switches, the choices the manual leaves open).
+    Module,
+    /// Switches for each reading of an ambiguous document (SMD4 quirks).
+    Quirks,
+}
+
+/// The dialect named `name` (as `--protocol` and transcript headers write it).
+pub fn by_name(name: &str) -> Option<&'static Dialect> {
+    DIALECTS.iter().copied().find(|d| d.name == name)
+}
+
+/// The default dialect (the first in the list).
+pub fn default_dialect() -> &'static Dialect {
+    DIALECTS[0]
+}
+
+/// The value parser of `--protocol`: the names in the list, each with its summary.
+pub fn protocol_parser() -> impl TypedValueParser<Value = &'static Dialect> {
+    let values = DIALECTS
+        .iter()
+        .map(|d| PossibleValue::new(d.name).help(d.summary));
+    PossibleValuesParser::new(values).map(|name| by_name(&name).expect("a listed name"))
+}
+
+/// No flags.
+pub(crate) fn no_flags(cmd: clap::Command) -> clap::Command {
+    cmd
+}

@@ -1,0 +1,308 @@
+//! An open session of any dialect, as the faces (the REPL, `-c`/stdin lines, scripts, the
+//! commissioning helpers, the CLI) use it: one object-safe trait. What every dialect does alike
+//! is written here once, over the [`SessionCore`] each session holds; a dialect implements only
+//! what differs. Code that needs a dialect's own session type downcasts inside that dialect's
+//! folder ([`AsAny`]).
+
+use std::any::Any;
+use std::fmt;
+use std::io::{self, Write};
+use std::sync::Arc;
+use std::time::Duration;
+
+use crate::commission::ParamDevice;
+use crate::exit::Failure;
+use crate::script::Script;
+use crate::session::core::SessionCore;
+use crate::session::transcript::{Header, Transcript};
+use crate::session::{SessionError, SessionOptions};
+
+use super::{Dialect, Grammar, Helper};
+
+/// A typed line's outcome, in the forms the faces show it.
+#[derive(Debug, Clone)]
+pub struct Reply {
+    /// The answer as the module sent it, for stdout in non-interactive use: the reply line
+    /// without echo and line ending, the version string of TMCL command 136, the lines of an
+    /// SMD4 reply.
+    pub shown: String,
+    /// The answer decoded for people (the REPL): `actual_position = -5000 usteps`.
+    pub decoded: String,
+    /// The error status or code the module answered with, if any.
+    pub refusal: Option<Refusal>,
+    /// The forms of the output modes (`--value`, `--json`), made when asked for.
+    pub forms: Arc<dyn ReplyForms>,
+}
+
+/// A reply in the output modes of non-interactive use, made from the dialect's own exchange only
+/// when a mode asks for it.
+pub trait ReplyForms: fmt::Debug + Send + Sync {
+    /// Only the value (`--value`): TMCL the number (or the version string of 136), SMD4 the data
+    /// items as received; empty when the module sends no reply.
+    fn value(&self) -> String;
+
+    /// The dialect's fields of the line's JSON object (`--json`): where it went, whether it
+    /// succeeded, status or flags and error, value or items, the reply as received.
+    fn json_fields(&self) -> Vec<(&'static str, serde_json::Value)>;
+}
+
+/// How a reply reads to a person, and whether it is good news.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Decoded {
+    /// The text (`actual_position = -5000 usteps`).
+    pub text: String,
+    /// Whether the module reported success.
+    pub ok: bool,
+}
+
+/// A module's answer that it could not do what was asked: an error status or error code.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Refusal {
+    /// The module (address character, or `@N` for SMD4).
+    pub module: String,
+    /// The line sent.
+    pub sent: String,
+    /// The status or error it answered.
+    pub reason: String,
+}
+
+impl From<Refusal> for SessionError {
+    fn from(refusal: Refusal) -> Self {
+        SessionError::Device {
+            module: refusal.module,
+            sent: refusal.sent,
+            reason: refusal.reason,
+        }
+    }
+}
+
+impl Reply {
+    /// Whether the module reported success.
+    pub fn ok(&self) -> bool {
+        self.refusal.is_none()
+    }
+
+    /// The reply, or the device error it carries (exit 1).
+    pub fn checked(self) -> Result<Reply, SessionError> {
+        match self.refusal {
+            Some(refusal) => Err(refusal.into()),
+            None => Ok(self),
+        }
+    }
+}
+
+/// What a bus scan found, ready to print.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct BusScan {
+    /// How many modules answered.
+    pub found: usize,
+    /// One line: how many answered where (`3 modules answered at 1-26 …`).
+    pub summary: String,
+    /// The table of modules found, the summary line and any notes, line by line.
+    pub report: String,
+}
+
+/// Any value as [`Any`], so a dialect can get its own session type back from a trait object.
+pub trait AsAny: Any {
+    /// As a reference to [`Any`].
+    fn as_any(&self) -> &dyn Any;
+    /// As a mutable reference to [`Any`].
+    fn as_any_mut(&mut self) -> &mut dyn Any;
+    /// As a box of [`Any`].
+    fn into_any(self: Box<Self>) -> Box<dyn Any>;
+}
+
+impl<T: Any> AsAny for T {
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+
+    fn as_any_mut(&mut self) -> &mut dyn Any {
+        self
+    }
+
+    fn into_any(self: Box<Self>) -> Box<dyn Any> {
+        self
+    }
+}
+
+/// An open session of one dialect.
+pub trait DialectSession: AsAny {
+    /// The dialect spoken.
+    fn dialect(&self) -> &'static Dialect;
+
+    /// The state every session shares.
+    fn core(&self) -> &SessionCore;
+
+    /// The state every session shares, to change.
+    fn core_mut(&mut self) -> &mut SessionCore;
+
+    /// Parses, validates and sends one typed line. An error status or code from the module is an
+    /// `Ok` reply whose [`Reply::ok`] is false.
+    fn execute(&mut self, line: &str) -> Result<Reply, SessionError>;
+
+    /// Stops whatever this session set moving (motors, programs), at once even on a line that
+    /// has not settled since a failure; returns what was done.
+    fn stop_motion(&mut self) -> Vec<String>;
+
+    /// The address of the module or drive typed lines go to, which Ctrl-C stops even when this
+    /// session did not start it.
+    fn target_address(&self) -> Option<u32>;
+
+    /// Ends the session, putting modules back in the mode they were found in; returns what was
+    /// done.
+    fn close(&mut self) -> Vec<String>;
+
+    /// The REPL's prompt: which module typed lines go to, and how.
+    fn prompt(&self) -> String;
+
+    /// The banner's words for what is talked to (`TMCM-142, module 1`).
+    fn banner(&self) -> String;
+
+    /// The header of this session's transcripts (`:log FILE`).
+    fn header(&self) -> Header;
+
+    /// What typed lines mean, for the line editor: a snapshot of the current state (the REPL
+    /// asks again before each prompt).
+    fn grammar(&self) -> Arc<dyn Grammar>;
+
+    /// Runs a helper command the dialect answers: one of its own ([`Dialect::helpers`]), or
+    /// `:params` and `:target`, which every dialect has in its own way.
+    fn run_helper(
+        &mut self,
+        helper: &Helper,
+        arg: &str,
+        out: &mut dyn Write,
+    ) -> Result<(), SessionError>;
+
+    /// The first lines of `:help`: how this dialect's lines are typed.
+    fn help_intro(&self, out: &mut dyn Write) -> io::Result<()>;
+
+    /// The topics `:help` names at its end (`:help COMMAND, :help exit …`).
+    fn help_more(&self) -> &'static str;
+
+    /// `:help TOPIC` for a topic of this dialect (`ascii`, `addressing`); false when `topic`
+    /// (lower case) is none of them.
+    fn help_topic(&self, topic: &str, out: &mut dyn Write) -> io::Result<bool>;
+
+    /// `:help WORD` for one of its commands; false when `word` names none.
+    fn help_command(&self, word: &str, out: &mut dyn Write) -> io::Result<bool>;
+
+    /// The module talked to, as the commissioning tools see it (snapshots, watches,
+    /// recordings).
+    fn param_device(&mut self) -> &mut dyn ParamDevice;
+
+    /// Finds the modules at `addresses`, awaiting each reply at most `per_reply`.
+    fn scan_bus(&mut self, addresses: &[u8], per_reply: Duration) -> Result<BusScan, SessionError>;
+
+    /// Runs `script` over this session, with the dialect's device functions and the
+    /// commissioning functions; gives the session back with the outcome.
+    fn run_script(
+        self: Box<Self>,
+        script: &Script,
+    ) -> (Box<dyn DialectSession>, Result<(), Failure>);
+
+    /// After the link was reopened: puts the modules back in the mode the session had them in.
+    fn reenter(&mut self) -> Result<(), SessionError> {
+        Ok(())
+    }
+
+    /// What the link talks to.
+    fn describe(&self) -> String {
+        self.core().describe()
+    }
+
+    /// The session's settings.
+    fn options(&self) -> &SessionOptions {
+        &self.core().options
+    }
+
+    /// Messages gathered since the last call: validator warnings, line noise, ignored replies.
+    fn take_notices(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.core_mut().wire.notices)
+    }
+
+    /// Adds a message for the user, shown with the session's own notices (on stderr in
+    /// non-interactive use) at the next [`take_notices`](Self::take_notices).
+    fn notify(&mut self, text: String) {
+        self.core_mut().wire.notices.push(text);
+    }
+
+    /// The transcript being written, if any.
+    fn transcript(&self) -> Option<&Transcript> {
+        self.core().wire.transcript.as_ref()
+    }
+
+    /// Starts or stops writing the transcript.
+    fn set_transcript(&mut self, transcript: Option<Transcript>) {
+        self.core_mut().wire.transcript = transcript;
+    }
+
+    /// Writes a remark into the transcript; false when no transcript is being written.
+    fn annotate(&mut self, text: &str) -> bool {
+        let core = self.core_mut();
+        core.wire.note(text);
+        core.wire.transcript.is_some()
+    }
+
+    /// Whether this session started motion or a program that may still be going.
+    fn may_be_moving(&self) -> bool {
+        let core = self.core();
+        !core.moved.is_empty() || !core.running.is_empty()
+    }
+
+    /// Sets how long replies are awaited; returns the previous time.
+    fn set_timeout(&mut self, timeout: Duration) -> Duration {
+        std::mem::replace(&mut self.core_mut().options.timeout, timeout)
+    }
+
+    /// Runs `f` with replies awaited at most `timeout` (a bus scan's time per address, a stop's
+    /// confirmation), then restores the session's timeout.
+    fn with_timeout<T>(&mut self, timeout: Duration, f: impl FnOnce(&mut Self) -> T) -> T
+    where
+        Self: Sized,
+    {
+        let saved = self.set_timeout(timeout);
+        let result = f(self);
+        self.set_timeout(saved);
+        result
+    }
+
+    /// Runs `f` with requests sent at once, without resynchronising a suspect line first (stops,
+    /// mode restores).
+    fn urgently<T>(&mut self, f: impl FnOnce(&mut Self) -> T) -> T
+    where
+        Self: Sized,
+    {
+        let was = std::mem::replace(&mut self.core_mut().urgent, true);
+        let result = f(self);
+        self.core_mut().urgent = was;
+        result
+    }
+
+    /// Reopens a lost link, and puts the modules back in the mode the session had them in.
+    fn reconnect(&mut self) -> Result<(), SessionError> {
+        let wire = &mut self.core_mut().wire;
+        wire.link.reopen()?;
+        wire.reset();
+        let reopened = format!("link reopened: {}", wire.link.describe());
+        wire.note(&reopened);
+        self.reenter()
+    }
+
+    /// After Ctrl-C: stops the target's motors even if this session did not start them, and
+    /// everything the session set moving — each once, sent at once even while an interrupted
+    /// reply may still be arriving. Returns one line per stop, then whatever else the session has
+    /// to report, so nothing is left over for the next command.
+    fn stop_target(&mut self) -> Vec<String> {
+        let target = self.target_address();
+        self.core_mut().moved.insert(target);
+        let mut report: Vec<String> = self
+            .stop_motion()
+            .into_iter()
+            .map(|line| format!("interrupted: {line}"))
+            .collect();
+        report.extend(self.take_notices());
+        report
+    }
+}

@@ -1,0 +1,93 @@
+//! The helper commands of SMD4 drives: the address prefix, settings, flag tables.
+
+use std::io::Write;
+
+use crate::dialect::helper::{ArgKind, Helper, Section, helper};
+use crate::dialect::smd4::protocol::{MAX_ADDRESS, hints};
+use crate::dialect::smd4::session::{Smd4Session, drive_name};
+use crate::session::SessionError;
+
+/// The helpers only SMD4 drives have.
+pub const HELPERS: &[Helper] = &[helper(
+    "flags",
+    ":flags",
+    "the SFLAGS and EFLAGS bit tables with the drive's current flags",
+    ArgKind::None,
+    Section::Session,
+)];
+
+/// Runs one SMD4 helper.
+pub fn run(
+    session: &mut Smd4Session,
+    helper: &Helper,
+    arg: &str,
+    out: &mut dyn Write,
+) -> Result<(), SessionError> {
+    match helper.name {
+        "params" => {
+            for spec in hints::matching(&session.spec().commands, arg) {
+                writeln!(out, "{}", hints::table_row(spec))?;
+            }
+        }
+        "target" => {
+            let address = parse_address(arg)?;
+            session.set_address(address);
+            writeln!(out, "requests go to {}", describe(address))?;
+        }
+        "flags" => {
+            let reply = session.exchange_line("SYS:FLAGS")?.checked()?;
+            let (sflags, eflags) = reply
+                .reply
+                .map(|r| (r.sflags.0, r.eflags.0))
+                .unwrap_or((0, 0));
+            let spec = session.spec();
+            writeln!(out, "SFLAGS {sflags:#06X}")?;
+            for bit in spec.sflags.bits() {
+                let mark = if sflags & (1 << bit.bit) != 0 {
+                    'X'
+                } else {
+                    ' '
+                };
+                writeln!(out, "  [{mark}] {:>2} {}", bit.bit, bit.name)?;
+            }
+            writeln!(
+                out,
+                "EFLAGS {eflags:#06X} (latching; SYS:CLR clears; any set bit disables the motor)"
+            )?;
+            for bit in spec.eflags.bits() {
+                let mark = if eflags & (1 << bit.bit) != 0 {
+                    'X'
+                } else {
+                    ' '
+                };
+                writeln!(out, "  [{mark}] {:>2} {}", bit.bit, bit.name)?;
+            }
+        }
+        other => unreachable!("helper table and SMD4 dispatch disagree on :{other}"),
+    }
+    Ok(())
+}
+
+fn describe(address: Option<u32>) -> String {
+    match address {
+        None => "the drive without an address prefix".into(),
+        Some(0) => "every drive (@0 broadcast: no replies)".into(),
+        Some(_) => format!("drive {}", drive_name(address)),
+    }
+}
+
+fn parse_address(arg: &str) -> Result<Option<u32>, SessionError> {
+    let text = arg.trim().trim_start_matches('@');
+    if text.eq_ignore_ascii_case("none") {
+        return Ok(None);
+    }
+    text.parse::<u32>()
+        .ok()
+        .filter(|a| *a <= MAX_ADDRESS)
+        .map(Some)
+        .ok_or_else(|| {
+            SessionError::Usage(format!(
+                "usage: :target N (0..{MAX_ADDRESS}, 0 broadcasts) or :target none, not '{arg}'"
+            ))
+        })
+}

@@ -1,0 +1,61 @@
+//! AML SMD4: everything tmclsh knows about SMD4 drives — the pure protocol and its command table,
+//! the session, the simulated drive, and the faces the shell, the REPL and scripts use.
+
+pub mod commission;
+pub mod config;
+mod exit;
+pub mod flags;
+mod grammar;
+mod help;
+pub mod helpers;
+mod output;
+pub mod params;
+pub mod protocol;
+pub mod render;
+pub mod replay;
+pub mod scan;
+pub mod script;
+pub mod session;
+pub mod sim;
+
+pub use grammar::Smd4Grammar;
+
+use crate::dialect::Dialect;
+
+/// SMD4 in the list of dialects.
+pub static DIALECT: Dialect = Dialect {
+    name: "smd4",
+    summary: "AML SMD4 text protocol",
+    devices: "SMD4 drives",
+    helpers: helpers::HELPERS,
+    configure: config::configure,
+    own_options: &[],
+    refusal: "is for SMD4 drives (--protocol smd4)",
+    session_flags: <flags::SessionFlags as clap::Args>::augment_args,
+    sim_flags: sim::flags::add,
+    sim_flag_given: sim::flags::given,
+    simulated: "SMD4",
+    console_help: CONSOLE_HELP,
+    legacy_note: Some(replay::OPENED),
+    typed_here,
+    scan_addresses: "1-247",
+    scan_example: "1-247 50ms",
+};
+
+/// SMD4 mnemonics have colons (`MOTOR:VMAX`, `@3,SYS:FW`): how the history of earlier versions,
+/// shared with TMCL, is split.
+fn typed_here(line: &str) -> bool {
+    line.contains(':')
+}
+
+/// The commands of its simulator's console (`tmclsh sim --help`).
+const CONSOLE_HELP: &str = " SMD4 drive (--protocol smd4):
+  limit pos|neg 0|1                  set the level of a limit input (active after LIMIT:POL+/-)
+  exten 0|1                          set the external enable input
+  joystick 0|1                       plug a joystick in or out
+  fault BIT|NAME                     latch an EFLAGS bit (e.g. 2 or TempOver); the motor stops
+  flash-failure on|off               make STORE fail with -5 (worn-out flash) or work again
+  power-cycle                        restart from the stored configuration
+  motor                              show position, velocity, standby, target velocity reached
+  flags                              show SFLAGS, EFLAGS and whether addressing mode is on
+  setting MNEMONIC                   show a working setting (e.g. COMS:SERIAL:SLAVEADDR)";

@@ -1,0 +1,20 @@
+//! The command table of the SMD4: `tmclsh --protocol smd4 params FILTER` and the shell's
+//! `:params`.
+
+use std::io::{self, Write};
+
+use super::protocol::{Smd4Spec, hints};
+
+/// The SMD4 commands matching `filter`, one row each, as the shell's `:params` shows them; when
+/// none matches, says so on stderr and returns false.
+pub fn write_params(filter: &str, out: &mut dyn Write) -> io::Result<bool> {
+    let mut rows = hints::matching(&Smd4Spec::builtin().commands, filter).peekable();
+    if rows.peek().is_none() {
+        eprintln!("no SMD4 command matches '{filter}'");
+        return Ok(false);
+    }
+    for spec in rows {
+        writeln!(out, "{}", hints::table_row(spec))?;
+    }
+    Ok(true)
+}

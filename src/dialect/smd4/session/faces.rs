@@ -1,0 +1,132 @@
+//! The SMD4 session as the faces see every session ([`DialectSession`]): replies decoded with the
+//! command table, the prompt, the grammar, helpers, help, scan and scripts.
+
+use std::io::{self, Write};
+use std::sync::Arc;
+use std::time::Duration;
+
+use crate::commission::ParamDevice;
+use crate::dialect::session::{BusScan, DialectSession, Reply};
+use crate::dialect::smd4::{Smd4Grammar, config, help, helpers, render, scan};
+use crate::dialect::{Dialect, Grammar, Helper};
+use crate::exit::Failure;
+use crate::script::Script;
+use crate::session::SessionError;
+use crate::session::core::SessionCore;
+use crate::session::transcript::Header;
+
+use super::{Smd4Session, drive_name};
+
+impl DialectSession for Smd4Session {
+    fn dialect(&self) -> &'static Dialect {
+        &crate::dialect::smd4::DIALECT
+    }
+
+    fn core(&self) -> &SessionCore {
+        &self.core
+    }
+
+    fn core_mut(&mut self) -> &mut SessionCore {
+        &mut self.core
+    }
+
+    fn execute(&mut self, line: &str) -> Result<Reply, SessionError> {
+        let exchange = self.exchange_line(line)?;
+        Ok(Reply {
+            shown: exchange.raw(),
+            decoded: render::decode(&exchange, self.spec).text,
+            refusal: exchange.refusal(),
+            forms: Arc::new(exchange),
+        })
+    }
+
+    /// MOTOR:STOP to every drive this session set moving.
+    fn stop_motion(&mut self) -> Vec<String> {
+        self.urgently(Self::stop_drives)
+    }
+
+    fn target_address(&self) -> Option<u32> {
+        self.smd4.address
+    }
+
+    /// Nothing to restore on an SMD4.
+    fn close(&mut self) -> Vec<String> {
+        self.core.wire.note("session closed");
+        Vec::new()
+    }
+
+    /// `smd4>`, with the address prefix requests get.
+    fn prompt(&self) -> String {
+        match self.smd4.address {
+            Some(_) => format!("smd4 {}> ", drive_name(self.smd4.address)),
+            None => "smd4> ".to_string(),
+        }
+    }
+
+    fn banner(&self) -> String {
+        "SMD4".to_string()
+    }
+
+    fn header(&self) -> Header {
+        config::header()
+    }
+
+    fn grammar(&self) -> Arc<dyn Grammar> {
+        Arc::new(Smd4Grammar::new(self.spec))
+    }
+
+    fn run_helper(
+        &mut self,
+        helper: &Helper,
+        arg: &str,
+        out: &mut dyn Write,
+    ) -> Result<(), SessionError> {
+        helpers::run(self, helper, arg, out)
+    }
+
+    fn help_intro(&self, out: &mut dyn Write) -> io::Result<()> {
+        help::intro(out)
+    }
+
+    fn help_more(&self) -> &'static str {
+        help::MORE
+    }
+
+    fn help_topic(&self, topic: &str, out: &mut dyn Write) -> io::Result<bool> {
+        help::topic(topic, out)
+    }
+
+    fn help_command(&self, word: &str, out: &mut dyn Write) -> io::Result<bool> {
+        help::command(self.spec, word, out)
+    }
+
+    fn param_device(&mut self) -> &mut dyn ParamDevice {
+        self
+    }
+
+    fn scan_bus(&mut self, addresses: &[u8], per_reply: Duration) -> Result<BusScan, SessionError> {
+        scan::bus_scan(self, addresses, per_reply)
+    }
+
+    fn run_script(
+        self: Box<Self>,
+        script: &Script,
+    ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
+        let (session, result) = script.run(
+            *self,
+            |s, text| s.annotate(text),
+            |engine, s, files| {
+                crate::dialect::smd4::script::register(engine, s);
+                crate::script::commission::register(engine, s, files);
+            },
+        );
+        (Box::new(session), result)
+    }
+}
+
+/// An SMD4 session dropped during a panic stops its drives (see [`crate::dialect::guard`]).
+impl Drop for Smd4Session {
+    fn drop(&mut self) {
+        crate::dialect::guard::on_panic(self, |session| session.close());
+    }
+}

@@ -1,0 +1,255 @@
+//! The SMD4 session: validated requests `[@addr]MNEMONIC[,arg…]` CR LF, replies collected line by
+//! line — including the multi-line ones, which end only when the line has been quiet for the gap
+//! (`--quiet-gap`) because the document defines no end marker — replies from other drives and
+//! line noise reported, not taken, and MOTOR:STOP for drives the session set moving when a run
+//! is aborted. SMD4 drives have no echo and no separate ASCII mode, so there is nothing to enter
+//! or restore.
+//!
+//! With no echo, nothing in a reply says which request it answers: after any failed exchange the
+//! wire resynchronises before the next request (see `session/wire.rs`). Replies of an addressed
+//! drive carry its `@N,` prefix, so a failure at one address does not hold up the others — unless
+//! the drives turn out to answer without the prefix.
+
+mod faces;
+mod receive;
+
+use std::time::Duration;
+
+use crate::dialect::session::{DialectSession, Refusal};
+use crate::dialect::smd4::protocol::{PrefixStyle, Request, Smd4Reply, Smd4Spec, validate};
+use crate::link::Link;
+use crate::session::core::SessionCore;
+use crate::session::transcript::Transcript;
+use crate::session::wire::{Peer, nothing_benign};
+use crate::session::{SessionError, SessionOptions};
+
+/// SMD4-specific settings.
+#[derive(Debug, Clone, Copy)]
+pub struct Smd4SessionOptions {
+    /// `@N` prefix for requests without one (`--address`); `None` sends no prefix.
+    pub address: Option<u32>,
+    /// Whether a comma follows the prefix (`--prefix-comma`).
+    pub prefix: PrefixStyle,
+    /// How long the line must be quiet to end a multi-line reply (`--quiet-gap`).
+    pub quiet_gap: Duration,
+}
+
+impl Default for Smd4SessionOptions {
+    fn default() -> Self {
+        Smd4SessionOptions {
+            address: None,
+            prefix: PrefixStyle::Attached,
+            quiet_gap: crate::dialect::smd4::protocol::default_quiet_gap(),
+        }
+    }
+}
+
+/// One request and its reply.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Smd4Exchange {
+    /// The line sent (without CR LF).
+    pub sent: String,
+    /// What was sent.
+    pub request: Request,
+    /// The reply; `None` for broadcasts and commands the drive does not answer.
+    pub reply: Option<Smd4Reply>,
+}
+
+impl Smd4Exchange {
+    /// Whether no error code came back.
+    pub fn ok(&self) -> bool {
+        self.reply.as_ref().is_none_or(Smd4Reply::is_ok)
+    }
+
+    /// The reply as received: the first line, then any following lines, without line endings.
+    pub fn raw(&self) -> String {
+        match &self.reply {
+            None => String::new(),
+            Some(r) if r.lines.is_empty() => r.raw.clone(),
+            Some(r) => format!("{}\n{}", r.raw, r.lines.join("\n")),
+        }
+    }
+
+    /// The exchange, or a device error when the reply carries an error code.
+    pub fn checked(self) -> Result<Smd4Exchange, SessionError> {
+        match self.refusal() {
+            Some(refusal) => Err(refusal.into()),
+            None => Ok(self),
+        }
+    }
+
+    /// The error code the drive answered with, if any.
+    pub fn refusal(&self) -> Option<Refusal> {
+        let error = self.reply.as_ref()?.error.as_ref()?;
+        Some(Refusal {
+            module: drive_name(self.request.address),
+            sent: self.sent.clone(),
+            reason: format!("error {error}"),
+        })
+    }
+}
+
+/// How messages name a drive: `@3`, or `SMD4` when requests carry no prefix.
+pub fn drive_name(address: Option<u32>) -> String {
+    address.map_or_else(|| "SMD4".to_string(), |a| format!("@{a}"))
+}
+
+/// A conversation with the SMD4 drives on one link.
+pub struct Smd4Session {
+    core: SessionCore,
+    spec: &'static Smd4Spec,
+    smd4: Smd4SessionOptions,
+    /// An addressed drive answered without its `@N,` prefix: replies cannot be told apart.
+    unprefixed_replies: bool,
+}
+
+impl Smd4Session {
+    /// Opens a session (SMD4 drives need no mode change).
+    pub fn open(
+        link: Box<dyn Link>,
+        options: SessionOptions,
+        smd4: Smd4SessionOptions,
+        transcript: Option<Transcript>,
+    ) -> Result<Self, SessionError> {
+        let mut session = Smd4Session {
+            core: SessionCore::new(link, options, transcript),
+            spec: Smd4Spec::builtin(),
+            smd4,
+            unprefixed_replies: false,
+        };
+        let opened = format!(
+            "SMD4 session opened on {}",
+            session.core.wire.link.describe()
+        );
+        session.core.wire.note(&opened);
+        Ok(session)
+    }
+
+    /// The command table, flags and errors.
+    pub fn spec(&self) -> &'static Smd4Spec {
+        self.spec
+    }
+
+    /// The `@N` prefix used for requests without one.
+    pub fn address(&self) -> Option<u32> {
+        self.smd4.address
+    }
+
+    /// The line `request` is sent as (the session's address applied), for dry runs.
+    pub fn format(&self, request: &Request) -> String {
+        let mut request = request.clone();
+        if request.address.is_none() {
+            request.address = self.smd4.address;
+        }
+        request.format(self.smd4.prefix)
+    }
+
+    /// Changes the prefix used for requests without one.
+    pub fn set_address(&mut self, address: Option<u32>) {
+        self.smd4.address = address;
+    }
+
+    /// Parses, validates and sends one request line; an error code is an `Ok` exchange whose
+    /// [`Smd4Exchange::ok`] is false.
+    pub fn exchange_line(&mut self, line: &str) -> Result<Smd4Exchange, SessionError> {
+        let request = Request::parse(line).map_err(|e| SessionError::Rejected(e.to_string()))?;
+        self.request(request)
+    }
+
+    /// Validates and sends a request (the session's address applies when it has none).
+    pub fn request(&mut self, mut request: Request) -> Result<Smd4Exchange, SessionError> {
+        if request.address.is_none() {
+            request.address = self.smd4.address;
+        }
+        match validate(&request, &self.spec.commands) {
+            Ok(_) => {}
+            Err(error) if self.core.options.validate => {
+                return Err(SessionError::Rejected(error.to_string()));
+            }
+            Err(error) => self
+                .core
+                .wire
+                .notices
+                .push(format!("not validated: {error}")),
+        }
+        let spec = self.spec.commands.get(&request.mnemonic);
+        let sent = request.format(self.smd4.prefix);
+        let silent = request.is_broadcast() || spec.is_some_and(|s| s.no_response);
+        let peer = match request.address {
+            Some(address) if !self.unprefixed_replies => Peer::Module(address),
+            _ => Peer::Any,
+        };
+        let timeout = self.core.options.timeout;
+        let result = self
+            .core
+            .wire
+            .begin(peer, self.core.urgent, timeout, &mut nothing_benign)
+            .and_then(|()| self.transact(&request, silent));
+        self.core.wire.finish(result.is_ok());
+        let exchange = Smd4Exchange {
+            sent,
+            request,
+            reply: result?,
+        };
+        if exchange.ok() && spec.is_some_and(|s| s.starts_motion) {
+            self.core.moved.insert(exchange.request.address);
+        }
+        Ok(exchange)
+    }
+
+    /// Sends a request and reads its reply (none for broadcasts and silent commands). Any error
+    /// returned from here, whatever finds it, leaves the line suspect until it has settled.
+    fn transact(
+        &mut self,
+        request: &Request,
+        silent: bool,
+    ) -> Result<Option<Smd4Reply>, SessionError> {
+        self.core.wire.send(
+            &request.wire(self.smd4.prefix),
+            format_args!("to {}", drive_name(request.address)),
+        )?;
+        if silent {
+            return Ok(None);
+        }
+        let response = self.receive(request)?;
+        if request.address.is_some() && response.address.is_none() {
+            self.unprefixed_replies = true;
+        }
+        Ok(Some(response))
+    }
+
+    /// Stops every drive this session set moving (MOTOR:STOP). Returns what was done.
+    fn stop_drives(&mut self) -> Vec<String> {
+        let moved: Vec<Option<u32>> = std::mem::take(&mut self.core.moved).into_iter().collect();
+        let wire = self
+            .core
+            .wire
+            .link
+            .byte_time()
+            .map_or(Duration::ZERO, |b| b * 64);
+        let wait = self
+            .core
+            .options
+            .timeout
+            .min(crate::session::STOP_CONFIRMATION + wire);
+        let mut report = Vec::new();
+        for address in moved {
+            let mut stop = Request::new("MOTOR:STOP");
+            stop.address = address;
+            let name = drive_name(address);
+            let result = self.with_timeout(wait, |s| s.request(stop));
+            match result.and_then(Smd4Exchange::checked) {
+                Ok(_) => report.push(format!("stopped the motor of drive {name} (MOTOR:STOP)")),
+                Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
+                    "sent MOTOR:STOP to drive {name}; no answer within {} ms",
+                    timeout.as_millis()
+                )),
+                Err(e) => report.push(format!("could not stop the motor of drive {name}: {e}")),
+            }
+        }
+        for line in &report {
+            self.core.wire.note(line);
+        }
+        report
+    }
+}

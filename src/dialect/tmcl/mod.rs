@@ -1,0 +1,74 @@
+//! Trinamic TMCL: everything tmclsh knows about TMCL modules — the pure protocol, the module
+//! profiles, the session (ASCII mode, binary direct mode), the simulated module bus, the assembler
+//! and stand-alone programs, and the faces the shell, the REPL and scripts use.
+
+pub mod asm;
+pub mod commission;
+pub mod complete;
+pub mod config;
+mod grammar;
+mod help;
+pub mod helpers;
+pub mod hint;
+mod output;
+pub mod params;
+pub mod profile;
+pub mod program;
+pub mod protocol;
+pub mod render;
+pub mod replay;
+pub mod scan;
+pub mod script;
+pub mod session;
+pub mod sim;
+
+pub use grammar::TmclGrammar;
+
+use crate::dialect::{Dialect, DialectSession, no_flags};
+
+use session::TmclSession;
+
+/// TMCL in the list of dialects.
+pub static DIALECT: Dialect = Dialect {
+    name: "tmcl",
+    summary: "Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`",
+    devices: "TMCL modules",
+    helpers: helpers::HELPERS,
+    configure: config::configure,
+    own_options: &["module", "no_enter", "stay_ascii", "profile", "echo"],
+    refusal: "is for TMCL modules, and the protocol is {protocol}",
+    session_flags: no_flags,
+    sim_flags: sim::flags::add,
+    sim_flag_given: sim::flags::given,
+    simulated: "TMCM-142",
+    console_help: CONSOLE_HELP,
+    legacy_note: None,
+    typed_here,
+    scan_addresses: "1-26",
+    scan_example: "1-26 200ms",
+};
+
+/// Whether `dialect` is TMCL (for the subcommands only TMCL has: `download`).
+pub fn is(dialect: &Dialect) -> bool {
+    *dialect == DIALECT
+}
+
+/// The TMCL session behind a session of any dialect, if it is one.
+pub fn session(session: &mut dyn DialectSession) -> Option<&mut TmclSession> {
+    session.as_any_mut().downcast_mut()
+}
+
+/// TMCL lines have no colons (SMD4 mnemonics do): how the history of earlier versions, shared
+/// with SMD4, is split.
+fn typed_here(line: &str) -> bool {
+    !line.contains(':')
+}
+
+/// The commands of its simulator's console (`tmclsh sim --help`).
+const CONSOLE_HELP: &str = " TMCL module bus (--protocol tmcl):
+  input PORT 0|1                     set a digital input (GIO bank 0)
+  analog PORT VALUE                  set an analog input (GIO bank 1, 0..1023)
+  switch left|right|home POS|off     move a virtual switch (physical microsteps) or disconnect it
+  output PORT                        show an output (SIO bank 2)
+  motor                              show position, target, velocity, target reached
+  @N COMMAND                         any of the above for the module with factory address N";

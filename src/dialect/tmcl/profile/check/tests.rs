@@ -1,0 +1,192 @@
+use crate::dialect::tmcl::profile::{BUILTIN_TOML, Profile};
+
+/// A small valid profile; `row` is spliced in as a third axis parameter starting on line 14.
+fn with_row(row: &str) -> String {
+    format!(
+        "[meta]\n\
+         module = \"TMCM-9\"\n\
+         axes = 2\n\
+         [[axis_parameter]]\n\
+         number = 4\n\
+         name = \"Max speed\"\n\
+         ident = \"max_speed\"\n\
+         access = \"RW\"\n\
+         range = [0, 100]\n\
+         [[axis_parameter]]\n\
+         number = 5\n\
+         name = \"Max acceleration\"\n\
+         ident = \"max_acceleration\"\n\
+         [[axis_parameter]]\n\
+         {row}"
+    )
+}
+
+fn refused(text: &str) -> String {
+    let builtin = Profile::builtin();
+    Profile::from_toml(text, Some(&builtin.commands)).unwrap_err()
+}
+
+#[test]
+fn the_builtin_profile_passes_every_check() {
+    let file = super::ProfileFile::parse(BUILTIN_TOML).unwrap();
+    assert_eq!(super::check(&file, None), Vec::new());
+}
+
+#[test]
+fn each_bad_row_is_refused_on_its_own_line() {
+    let cases = [
+        (
+            "number = 6\nname = \"a\"\nident = \"a\"\nrange = [10, 1]\n",
+            18,
+            "reversed",
+        ),
+        (
+            "number = 6\nname = \"a\"\nident = \"a\"\naccess = \"RX\"\n",
+            18,
+            "unknown letter 'X'",
+        ),
+        (
+            "number = 6\nname = \"a\"\nident = \"\"\n",
+            17,
+            "must not be empty",
+        ),
+        (
+            "number = 6\nname = \"a\"\nident = \"max pos\"\n",
+            17,
+            "no spaces",
+        ),
+        (
+            "number = 6\nname = \"a\"\nident = \"max_speed\"\n",
+            17,
+            "'max_speed' is defined twice (first on line 7)",
+        ),
+        (
+            "number = 4\nname = \"a\"\nident = \"a\"\n",
+            15,
+            "axis parameter 4 is defined twice (first on line 5)",
+        ),
+        (
+            "number = 6\nname = \"a\"\nident = \"a\"\nrange = [0, 9]\ndefault = 10\n",
+            19,
+            "default 10 lies outside the range 0..9",
+        ),
+        (
+            "number = 300\nname = \"a\"\nident = \"a\"\n",
+            15,
+            "outside 0..255",
+        ),
+        (
+            "number = 6\nnumber_last = 2\nname = \"a\"\nident = \"a\"\n",
+            16,
+            "number_last 2",
+        ),
+        (
+            "number = 6\nname = \"a\"\nident = \"a\"\nrange = [0, 4294967295]\n",
+            18,
+            "beyond 32-bit",
+        ),
+    ];
+    for (row, line, message) in cases {
+        let error = refused(&with_row(row));
+        assert!(
+            error.starts_with(&format!("line {line}: ")) && error.contains(message),
+            "{row}: {error}"
+        );
+    }
+}
+
+#[test]
+fn zero_axes_and_schema_errors_name_their_line() {
+    let error = refused("[meta]\nmodule = \"X\"\naxes = 0\n");
+    assert!(
+        error.starts_with("line 3: axes must be at least 1"),
+        "{error}"
+    );
+    let error = refused("[meta]\nmodule = \"X\"\naxes = 300\n");
+    assert!(error.starts_with("line 3: invalid value"), "{error}");
+    let error = refused("[meta]\nmodule = \"X\"\n[[axis_parameter]]\nnumber = 1\n");
+    assert!(error.starts_with("line 3: missing field"), "{error}");
+    let error = refused("[meta]\nmodule = \"X\"\nbroken = [\n");
+    assert!(
+        error.starts_with("line 3: ") || error.starts_with("line 4: "),
+        "{error}"
+    );
+}
+
+#[test]
+fn every_problem_is_listed_in_file_order() {
+    let text = "[meta]\nmodule = \"\"\naxes = 0\n[[axis_parameter]]\nnumber = 1\nname = \"a\"\n\
+                ident = \"a b\"\naccess = \"Q\"\n";
+    let error = refused(text);
+    let lines: Vec<&str> = error
+        .lines()
+        .map(|l| l.split(':').next().unwrap())
+        .collect();
+    assert_eq!(lines, ["line 2", "line 3", "line 7", "line 8"], "{error}");
+}
+
+#[test]
+fn spanning_rows_collide_with_the_identifiers_they_make() {
+    let text = "[meta]\nmodule = \"X\"\n\
+                [[global_parameter]]\nbank = 2\nnumber = 0\nnumber_last = 3\nname = \"v\"\nident = \"var\"\n\
+                [[global_parameter]]\nbank = 2\nnumber = 9\nname = \"v2\"\nident = \"VAR_2\"\n";
+    let error = refused(text);
+    assert!(
+        error.starts_with(
+            "line 13: global parameter identifier 'var_2' is defined twice (first on line 8)"
+        ),
+        "{error}"
+    );
+    let text = "[meta]\nmodule = \"X\"\n\
+                [[global_parameter]]\nbank = 0\nnumber = 5\nname = \"a\"\nident = \"a\"\n\
+                [[global_parameter]]\nbank = 2\nnumber = 5\nname = \"b\"\nident = \"b\"\n";
+    assert!(Profile::from_toml(text, Some(&Profile::builtin().commands)).is_ok());
+}
+
+#[test]
+fn command_rows_are_checked_too() {
+    let row = |extra: &str| {
+        format!(
+            "[meta]\nmodule = \"X\"\n\
+             [[command]]\nnumber = 1\nmnemonic = \"ROR\"\nname = \"r\"\n\
+             [[command]]\nnumber = 2\nmnemonic = \"ROL\"\nname = \"l\"\n{extra}"
+        )
+    };
+    let error = Profile::from_toml(&row("value_range = [5, 0]\n"), None).unwrap_err();
+    assert!(
+        error.starts_with("line 11: value_range [5, 0] is reversed"),
+        "{error}"
+    );
+    let error =
+        Profile::from_toml(&row("operands = [\"motor\", \"nonsense\"]\n"), None).unwrap_err();
+    assert!(
+        error.starts_with("line 7: command 2: unknown operand kind"),
+        "{error}"
+    );
+    let text = row("").replace("\"ROL\"", "\"ror\"");
+    let error = Profile::from_toml(&text, None).unwrap_err();
+    assert!(
+        error.contains("line 9: mnemonic ROR is defined twice (first on line 5)"),
+        "{error}"
+    );
+    let text = row(
+        "[[command.types]]\nvalue = 0\nname = \"A\"\n[[command.types]]\nvalue = 0\nname = \"B C\"\n",
+    );
+    let error = Profile::from_toml(&text, None).unwrap_err();
+    assert!(error.contains("line 16: keyword \"B C\""), "{error}");
+}
+
+#[test]
+fn simulation_constants_must_be_usable() {
+    let error = refused(
+        "[meta]\nmodule = \"X\"\n[simulation]\ntick_ms = 0\nvelocity_pps_per_unit = -1.0\n",
+    );
+    assert!(
+        error.contains("line 4: tick_ms must be at least 1"),
+        "{error}"
+    );
+    assert!(
+        error.contains("line 5: velocity_pps_per_unit must be a positive number"),
+        "{error}"
+    );
+}

@@ -1,0 +1,307 @@
+//! What the TMCL family adds to a module's tables (schema in `data/profiles/README.md`): how the
+//! module identifies itself, whether it has the ASCII interface, its I/O map, ranges that depend on
+//! another parameter, and how its command set differs from the built-in table.
+
+use super::ParamKind;
+use super::commands::CommandTable;
+use super::load::{ProfileFile, RangeWhenRow};
+
+/// Whether a module has the ASCII interface (manual: "ASCII interface", command 139).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AsciiInterface {
+    /// The manual documents it.
+    Yes,
+    /// Binary-only: sessions send binary frames.
+    No,
+    /// Not confirmed by a manual page: binary unless the module answers 139.
+    Unconfirmed,
+}
+
+impl AsciiInterface {
+    /// The word of the profile file (`yes`, `no`, `unconfirmed`).
+    pub fn parse(word: &str) -> Option<AsciiInterface> {
+        match word {
+            "yes" => Some(AsciiInterface::Yes),
+            "no" => Some(AsciiInterface::No),
+            "unconfirmed" => Some(AsciiInterface::Unconfirmed),
+            _ => None,
+        }
+    }
+
+    /// The word as written in a profile.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            AsciiInterface::Yes => "yes",
+            AsciiInterface::No => "no",
+            AsciiInterface::Unconfirmed => "unconfirmed",
+        }
+    }
+}
+
+/// The parameter numberings of the family (`parameter_generation`): one number means different
+/// things in different generations.
+pub const GENERATIONS: &[&str] = &["TMCM-142", "A", "B"];
+
+/// Who the module is, and what its profile rests on.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Identity {
+    /// The module number (`142`, `6110`): what command 136 names.
+    pub module_number: Option<u32>,
+    /// The digits that open the 136 type-0 answer.
+    pub version_prefix: Option<String>,
+    /// The 8-character 136 string: `NNNVa.bc` or `NNNNVabc`.
+    pub version_format: Option<String>,
+    /// The same with `B` for `V`: the boot loader answering.
+    pub bootloader_format: Option<String>,
+    /// Other product names with the same firmware (`PD-1141`).
+    pub aliases: Vec<String>,
+    /// Whether the module has the ASCII interface.
+    pub ascii: Option<AsciiInterface>,
+    /// Which parameter numbering it follows (one of [`GENERATIONS`]).
+    pub generation: Option<String>,
+    /// The manual the tables come from.
+    pub manual: String,
+    /// Where it was read.
+    pub manual_url: String,
+    /// The motion controller chip, as the profile names it.
+    pub motion_controller: String,
+    /// The documents the profile's facts cite (`[[source_doc]]`).
+    pub sources: Vec<SourceDoc>,
+    /// `[meta]` fields with the source each rests on.
+    pub fact_sources: Vec<(String, String)>,
+    /// `[meta]` fields that are best knowledge, with the reason.
+    pub uncertain_facts: Vec<(String, String)>,
+}
+
+impl Identity {
+    /// The ASCII interface as the session treats it: a profile that does not say has it (the
+    /// schema before the family fields, and custom profiles written for it).
+    pub fn ascii_interface(&self) -> AsciiInterface {
+        self.ascii.unwrap_or(AsciiInterface::Yes)
+    }
+}
+
+/// One document a profile cites.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SourceDoc {
+    /// The id facts name in their `source`.
+    pub id: String,
+    /// What it is.
+    pub what: String,
+    /// Where it is (URL or repository path).
+    pub at: String,
+}
+
+/// A parameter and the value it must have for a [`RangeWhen`] to apply.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Condition {
+    /// Axis parameter (of the same motor) or global parameter of a bank.
+    pub kind: ParamKind,
+    /// Its number.
+    pub number: u8,
+    /// The value that selects the range.
+    pub equals: i64,
+}
+
+impl Condition {
+    /// "axis parameter 255 = 1".
+    pub fn describe(&self) -> String {
+        match self.kind {
+            ParamKind::Axis => format!("axis parameter {} = {}", self.number, self.equals),
+            ParamKind::Global { bank } => format!(
+                "global parameter {} of bank {bank} = {}",
+                self.number, self.equals
+            ),
+        }
+    }
+}
+
+/// A range that applies instead of the usual one while another parameter has a value
+/// (`range_when`: TMCM-142 velocities are pps in 0..31999999 while AP255 = 1).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RangeWhen {
+    /// When it applies.
+    pub when: Condition,
+    /// The range then.
+    pub range: (i64, i64),
+    /// The unit then.
+    pub unit: String,
+}
+
+impl RangeWhen {
+    /// The rows of a file, which the checker has passed (each names one parameter).
+    pub(crate) fn from_rows(rows: &[RangeWhenRow]) -> Vec<RangeWhen> {
+        rows.iter()
+            .filter_map(|row| {
+                let (kind, number) = match (row.axis_parameter, row.global_parameter) {
+                    (Some(n), None) => (ParamKind::Axis, n),
+                    (None, Some(n)) => (ParamKind::Global { bank: row.bank }, n),
+                    _ => return None,
+                };
+                Some(RangeWhen {
+                    when: Condition {
+                        kind,
+                        number,
+                        equals: row.equals,
+                    },
+                    range: (row.range[0], row.range[1]),
+                    unit: row.unit.clone(),
+                })
+            })
+            .collect()
+    }
+
+    /// "0..31999999 usteps/s when axis parameter 255 = 1".
+    pub fn describe(&self) -> String {
+        let unit = if self.unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {}", self.unit)
+        };
+        format!(
+            "{}..{}{unit} when {}",
+            self.range.0,
+            self.range.1,
+            self.when.describe()
+        )
+    }
+}
+
+/// One GIO/SIO address of the module's I/O map.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct IoPort {
+    /// 0 digital inputs, 1 analog inputs, 2 output states (the family's numbering).
+    pub bank: u8,
+    /// The port number (type byte of GIO/SIO).
+    pub port: u8,
+    /// The signal's name (`IN0`, `AIN4`, `OUT7`).
+    pub name: String,
+    /// What it is.
+    pub kind: String,
+    /// The values GIO reads there.
+    pub range: Option<(i64, i64)>,
+    /// Their unit.
+    pub unit: String,
+}
+
+/// The bank SIO writes: the output states.
+pub const OUTPUT_BANK: u8 = 2;
+
+/// The I/O map of a file: the rows with a bank and a port (the others document signals only).
+pub(crate) fn io_ports(file: &ProfileFile) -> Vec<IoPort> {
+    let mut ports: Vec<IoPort> = file
+        .io_port
+        .iter()
+        .filter_map(|row| {
+            Some(IoPort {
+                bank: row.bank?,
+                port: row.port?,
+                name: row
+                    .name
+                    .clone()
+                    .or_else(|| row.signal.clone())
+                    .unwrap_or_default(),
+                kind: row.kind.clone(),
+                range: row.range.map(|[lo, hi]| (lo, hi)),
+                unit: row.unit.clone(),
+            })
+        })
+        .collect();
+    ports.sort_by_key(|p| (p.bank, p.port));
+    ports
+}
+
+/// Who the module of a file is.
+pub(crate) fn identity(file: &ProfileFile) -> Identity {
+    let meta = &file.meta;
+    Identity {
+        module_number: meta.module_number,
+        version_prefix: meta.version_prefix.clone(),
+        version_format: meta.version_format.clone(),
+        bootloader_format: meta.bootloader_format.clone(),
+        aliases: meta.aliases.clone(),
+        ascii: meta
+            .ascii_interface
+            .as_deref()
+            .and_then(AsciiInterface::parse),
+        generation: meta.parameter_generation.clone(),
+        manual: meta.manual.clone(),
+        manual_url: meta.manual_url.clone(),
+        motion_controller: meta.motion_controller.clone(),
+        sources: file
+            .source_doc
+            .iter()
+            .map(|d| SourceDoc {
+                id: d.id.clone(),
+                what: d.what.clone(),
+                at: d.at.clone(),
+            })
+            .collect(),
+        fact_sources: meta
+            .sources
+            .iter()
+            .map(|(k, v)| (k.clone(), v.clone()))
+            .collect(),
+        uncertain_facts: meta
+            .uncertain_facts
+            .iter()
+            .map(|(k, v)| (k.clone(), v.clone()))
+            .collect(),
+    }
+}
+
+/// The command table of a file without `[[command]]` rows: the built-in one less `[commands]
+/// absent`, plus `[[extra_command]]`. The checker has passed the numbers and mnemonics.
+pub(crate) fn compose(base: &CommandTable, file: &ProfileFile) -> Result<CommandTable, String> {
+    let mut table = base.clone();
+    // The built-in table's conditions name the TMCM-142's parameters: they hold for a module
+    // whose profile has the parameter named.
+    table.keep_range_when(|c| defines(file, c));
+    if let Some(section) = &file.commands {
+        table.remove(&section.absent, &section.absent_reason);
+    }
+    if !file.extra_command.is_empty() {
+        let extra = CommandTable::from_rows(&file.extra_command, Vec::new())?;
+        table.extend(extra);
+    }
+    if let Some(words) = file.ascii.as_ref().map(|a| &a.ascii_only_commands) {
+        if !words.is_empty() {
+            table.set_ascii_words(words);
+        }
+    }
+    Ok(table)
+}
+
+/// Whether the file has the parameter a condition names.
+pub(crate) fn defines(file: &ProfileFile, condition: &Condition) -> bool {
+    let covers = |row: &super::load::ParamRow| {
+        let n = i64::from(condition.number);
+        row.number >= 0 && (row.number..=row.number_last.unwrap_or(row.number)).contains(&n)
+    };
+    match condition.kind {
+        ParamKind::Axis => file.axis_parameter.iter().any(covers),
+        ParamKind::Global { bank } => file
+            .global_parameter
+            .iter()
+            .any(|row| row.bank == bank && covers(row)),
+    }
+}
+
+/// Applies the module's ASCII interface to its table: the `[ascii] allowed_commands` list where
+/// there is one, nothing at all on a module without the interface.
+pub(crate) fn apply_ascii(table: &mut CommandTable, file: &ProfileFile) {
+    let ascii = file
+        .meta
+        .ascii_interface
+        .as_deref()
+        .and_then(AsciiInterface::parse);
+    let allowed = file
+        .ascii
+        .as_ref()
+        .and_then(|a| a.allowed_commands.as_ref());
+    match (ascii, allowed) {
+        (Some(AsciiInterface::No), _) => table.set_ascii_allowed(&[]),
+        (_, Some(list)) => table.set_ascii_allowed(list),
+        _ => {}
+    }
+}

@@ -1,0 +1,215 @@
+//! Stand-alone TMCL programs on the module, from the host's side: download with read-back
+//! verification, and program control (run, stop, step, reset, status) from ASCII mode, switching
+//! to binary mode transparently for the control functions ASCII mode lacks.
+
+pub mod download;
+
+use crate::dialect::session::DialectSession;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use crate::dialect::tmcl::protocol::line::address_char;
+use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
+use crate::dialect::tmcl::render::application_status;
+use crate::dialect::tmcl::session::{TmclExchange, TmclSession, WireMode};
+use crate::session::{SessionError, interrupt};
+
+/// What a download did.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct DownloadReport {
+    /// Instructions stored.
+    pub stored: usize,
+    /// Whether every instruction was read back and matched (false when the module cannot read
+    /// its memory back, e.g. code protection).
+    pub verified: bool,
+}
+
+/// Downloads `program` to `module` from address 0: download mode (132), each instruction,
+/// quit (133), then read-back through 134 where the module allows it. `progress(done, total)` is
+/// called as instructions go out. The module is returned to the mode it was in.
+pub fn download(
+    session: &mut TmclSession,
+    module: u8,
+    program: &[Instruction],
+    mut progress: impl FnMut(usize, usize),
+) -> Result<DownloadReport, SessionError> {
+    session.in_binary(module, |s| {
+        let mut download_mode = DownloadMode::enter(s, module)?;
+        let stored = store_all(download_mode.session, module, program, &mut progress);
+        let quit = download_mode.leave();
+        drop(download_mode);
+        stored?;
+        quit?;
+        let verified = verify(s, module, program, &mut progress)?;
+        Ok(DownloadReport {
+            stored: program.len(),
+            verified,
+        })
+    })
+}
+
+/// A module in download mode (132), which stores every command instead of executing it — the MST
+/// meant to stop a motor included. It is left (133) whatever ends the download: an error, Ctrl-C
+/// (whose flag would cancel the request and is put back afterwards) or a panic unwinding
+/// through it.
+struct DownloadMode<'s> {
+    session: &'s mut TmclSession,
+    module: u8,
+    open: bool,
+}
+
+impl<'s> DownloadMode<'s> {
+    fn enter(session: &'s mut TmclSession, module: u8) -> Result<Self, SessionError> {
+        session
+            .request(module, Instruction::new(Opcode::StartDownload, 0, 0, 0))?
+            .checked()?;
+        Ok(DownloadMode {
+            session,
+            module,
+            open: true,
+        })
+    }
+
+    fn leave(&mut self) -> Result<(), SessionError> {
+        self.open = false;
+        let interrupted = interrupt::take();
+        let quit = self
+            .session
+            .request(self.module, Instruction::new(Opcode::QuitDownload, 0, 0, 0))
+            .and_then(TmclExchange::checked);
+        if interrupted {
+            interrupt::raise();
+        }
+        quit.map(|_| ())
+    }
+}
+
+impl Drop for DownloadMode<'_> {
+    fn drop(&mut self) {
+        if self.open {
+            let _ = catch_unwind(AssertUnwindSafe(|| self.leave()));
+        }
+    }
+}
+
+fn store_all(
+    s: &mut TmclSession,
+    module: u8,
+    program: &[Instruction],
+    progress: &mut impl FnMut(usize, usize),
+) -> Result<(), SessionError> {
+    for (address, instruction) in program.iter().enumerate() {
+        let exchange = s.store_instruction(module, *instruction)?;
+        if exchange.status() != Some(Status::Stored) {
+            let status = exchange.status().unwrap_or(Status::Other(0));
+            return Err(SessionError::Device {
+                module: address_char(module).unwrap_or('?').to_string(),
+                sent: format!("instruction {address} ({})", exchange.sent),
+                reason: format!("status {status}, expected 101 (stored)"),
+            });
+        }
+        progress(address + 1, program.len() * 2);
+        crate::crash::point("download", &address.to_string());
+    }
+    Ok(())
+}
+
+/// Reads the program back with 134 (type 0 value, type 1 command/type/motor — the simulator's
+/// documented convention). Returns false when the module does not support reading back.
+fn verify(
+    s: &mut TmclSession,
+    module: u8,
+    program: &[Instruction],
+    progress: &mut impl FnMut(usize, usize),
+) -> Result<bool, SessionError> {
+    for (address, expected) in program.iter().enumerate() {
+        let at = address as i32;
+        let value = s.request(module, Instruction::new(Opcode::ReadMemory, 0, 0, at))?;
+        if matches!(
+            value.status(),
+            Some(Status::NotAvailable | Status::InvalidCommand | Status::WrongType)
+        ) {
+            s.annotate("the module does not read its program memory back; download not verified");
+            return Ok(false);
+        }
+        let value = value.checked()?.value().unwrap_or(0);
+        let fields = s
+            .request(module, Instruction::new(Opcode::ReadMemory, 1, 0, at))?
+            .checked()?
+            .value()
+            .unwrap_or(0);
+        let got = Instruction::new(
+            (fields >> 16) as u8,
+            (fields >> 8) as u8,
+            fields as u8,
+            value,
+        );
+        if got != *expected {
+            return Err(SessionError::Link(format!(
+                "verification failed at address {address}: stored {got:?}, expected {expected:?}"
+            )));
+        }
+        progress(program.len() + address + 1, program.len() * 2);
+    }
+    Ok(true)
+}
+
+/// A control function (130 step, 131 reset, 135 status) sent in binary mode, switching there and
+/// back when the module is in ASCII mode.
+pub fn control(
+    session: &mut TmclSession,
+    module: u8,
+    instruction: Instruction,
+) -> Result<TmclExchange, SessionError> {
+    session.in_binary(module, |s| s.request(module, instruction)?.checked())
+}
+
+/// The application status (135): 0 stopped, 1 running, 2 stepping, 3 reset.
+pub fn status(session: &mut TmclSession, module: u8) -> Result<i32, SessionError> {
+    Ok(control(
+        session,
+        module,
+        Instruction::new(Opcode::ApplicationStatus, 0, 0, 0),
+    )?
+    .value()
+    .unwrap_or(0))
+}
+
+/// Warnings about the motors of `module` that still turn, with their speed: stopping a program
+/// does not stop the motion it started. A check that cannot be made says why.
+pub fn still_turning(session: &mut TmclSession, module: u8) -> Vec<String> {
+    let c = address_char(module).unwrap_or('?');
+    let Ok(speed) = session.profile().find_axis("actual_speed") else {
+        return Vec::new();
+    };
+    let (number, ident) = (speed.number, speed.ident.clone());
+    let mut warnings = Vec::new();
+    for motor in 0..session.profile().axes {
+        let read = session
+            .request(module, Instruction::new(Opcode::Gap, number, motor, 0))
+            .and_then(TmclExchange::checked);
+        match read.map(|x| x.value().unwrap_or(0)) {
+            Ok(0) => {}
+            Ok(value) => warnings.push(format!(
+                "motor {motor} of module {c} is still turning ({ident} = {value}): the program \
+                 stopped, its motion did not; MST {motor} or Ctrl-C stops it"
+            )),
+            Err(e) => warnings.push(format!(
+                "could not check whether motor {motor} of module {c} still turns: {e}"
+            )),
+        }
+    }
+    warnings
+}
+
+/// "stopped", "running" … for a status value.
+pub fn status_name(value: i32) -> &'static str {
+    application_status(value)
+}
+
+/// The mode the module is left in, for messages.
+pub fn mode_text(session: &TmclSession, module: u8) -> &'static str {
+    match session.module_state(module) {
+        Some((WireMode::Binary, _)) => "binary",
+        _ => "ASCII",
+    }
+}

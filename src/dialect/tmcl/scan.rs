@@ -1,0 +1,320 @@
+//! Finding the modules on a bus, in three rounds so binary-mode modules never see a frame out
+//! of step:
+//!
+//! 1. Binary frames only: command 136 type 1 (checksummed, answered by the addressed module
+//!    alone) to every address finds the modules in binary mode, then 136 type 0 reads their
+//!    version string. Modules in ASCII mode take these bytes as lines for other modules.
+//! 2. ASCII: every address 1..26 (A..Z) that did not answer is reached the way the session reaches
+//!    any module — command 139, then the echo setting from global parameter 67 — which finds the
+//!    modules already in ASCII mode; their version comes from 136 in binary mode, there and back.
+//! 3. The echo setting of the binary-mode modules (global parameter 67 over a binary frame), after
+//!    the line has been quiet long enough for their receivers to drop what the ASCII lines left
+//!    in them (the firmware's frame timeout). Skipped when a module in ASCII mode answers to C:
+//!    the frame's bytes 10, 67 ("LF", "C") would start a line for it.
+//!
+//! Each reply is awaited at most the given time; the session puts every module it switched back
+//! in its mode when it closes, and modules only probed with binary frames are never switched.
+
+use std::collections::BTreeMap;
+use std::io::{self, Write};
+use std::time::Duration;
+
+use crate::dialect::tmcl::protocol::line::address_char;
+use crate::dialect::tmcl::protocol::{Instruction, Opcode};
+use crate::dialect::tmcl::session::{Echo, TmclReply, TmclSession, WireMode};
+use crate::session::SessionError;
+
+use crate::commission::scan::describe_addresses;
+use crate::dialect::session::{BusScan, DialectSession};
+use crate::progress::Progress;
+
+/// A module that answered.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FoundModule {
+    /// Its bus address.
+    pub address: u8,
+    /// The mode it was in when found.
+    pub mode: WireMode,
+    /// Its firmware version (command 136), where it told it.
+    pub firmware: Option<String>,
+    /// Its echo setting (global parameter 67), where it could be read.
+    pub echo: Option<Echo>,
+}
+
+/// What a scan found.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TmclScan {
+    /// The addresses tried.
+    pub scanned: Vec<u8>,
+    /// The modules that answered, by address.
+    pub found: Vec<FoundModule>,
+    /// How long each reply was awaited.
+    pub per_reply: Duration,
+}
+
+/// Tries every address in `addresses`, waiting at most `per_reply` for each reply; `quiet` is how
+/// long binary-mode receivers need to drop a partial frame. Ctrl-C and a lost link end the scan;
+/// silence or garbage at an address means nobody is there.
+pub fn scan(
+    session: &mut TmclSession,
+    addresses: &[u8],
+    per_reply: Duration,
+    quiet: Duration,
+) -> Result<TmclScan, SessionError> {
+    let original = session.target();
+    let mut addresses = addresses.to_vec();
+    addresses.sort_unstable();
+    addresses.dedup();
+    let progress = Progress::steps(addresses.len(), 2, "scanning (binary)");
+    let mut found: BTreeMap<u8, FoundModule> = BTreeMap::new();
+    for &address in &addresses {
+        progress.step(&address.to_string());
+        if let Some(module) = session.with_timeout(per_reply, |s| probe_binary(s, address))? {
+            found.insert(address, module);
+        }
+    }
+    // Round 2: the addresses with a character that did not answer binary frames.
+    let candidates: Vec<u8> = addresses
+        .iter()
+        .copied()
+        .filter(|a| !found.contains_key(a) && address_char(*a).is_some())
+        .collect();
+    let in_step = candidates.is_empty();
+    if !in_step {
+        session.end_partial_line()?;
+    }
+    drop(progress);
+    let progress = Progress::steps(candidates.len(), 2, "scanning (ASCII)");
+    for &address in &candidates {
+        progress.step(&address.to_string());
+        if let Some(module) = session.with_timeout(per_reply, |s| probe_ascii(s, address))? {
+            found.insert(address, module);
+        }
+    }
+    // Round 3: the echo setting of the modules found in binary mode.
+    let in_ascii =
+        |m: &FoundModule| m.mode == WireMode::Ascii || session.module_state(m.address).is_some();
+    let c_in_ascii = found.get(&3).is_some_and(in_ascii);
+    let ascii_modules = found.values().any(in_ascii);
+    let binary: Vec<u8> = found
+        .values()
+        .filter(|m| !in_ascii(m))
+        .map(|m| m.address)
+        .collect();
+    if !binary.is_empty() && !c_in_ascii {
+        if !in_step {
+            session.quiet(quiet)?;
+        }
+        for address in binary {
+            let echo = session.with_timeout(per_reply, |s| read_echo_binary(s, address))?;
+            if let Some(m) = found.get_mut(&address) {
+                m.echo = echo;
+            }
+        }
+        if ascii_modules {
+            session.end_partial_line()?;
+        }
+    }
+    if session.module_state(original).is_some() && session.target() != original {
+        session.set_target(original)?;
+    }
+    Ok(TmclScan {
+        scanned: addresses,
+        found: found.into_values().collect(),
+        per_reply,
+    })
+}
+
+/// [`scan`] with the quiet time of the session's profile, its report ready to print.
+pub fn bus_scan(
+    session: &mut TmclSession,
+    addresses: &[u8],
+    per_reply: Duration,
+) -> Result<BusScan, SessionError> {
+    let quiet = quiet_time(session.profile());
+    let report = scan(session, addresses, per_reply, quiet)?;
+    let mut text = Vec::new();
+    write_report(&report, &mut text).expect("writing to memory cannot fail");
+    Ok(BusScan {
+        found: report.found.len(),
+        summary: summary(&report),
+        report: String::from_utf8_lossy(&text).into_owned(),
+    })
+}
+
+/// How long the line stays quiet before binary frames follow ASCII lines: twice the frame timeout
+/// after which the module's receiver drops a partial frame (best knowledge, in the profile).
+pub fn quiet_time(profile: &crate::dialect::tmcl::profile::Profile) -> Duration {
+    Duration::from_millis(u64::from(profile.sim.frame_timeout_ms) * 2)
+}
+
+/// Whether an error means "nobody (usable) at this address" rather than "stop scanning".
+fn absent(error: &SessionError) -> bool {
+    matches!(
+        error,
+        SessionError::Timeout { .. } | SessionError::Link(_) | SessionError::Device { .. }
+    )
+}
+
+/// Round 1: a module in binary mode answers 136 type 1; then its version string.
+fn probe_binary(
+    session: &mut TmclSession,
+    address: u8,
+) -> Result<Option<FoundModule>, SessionError> {
+    if session.module_state(address).is_some() {
+        return Ok(None); // already reached by this session: round 2 reports it
+    }
+    match session.probe_binary(address, Instruction::new(Opcode::FirmwareVersion, 1, 0, 0)) {
+        Ok(x) if x.value().is_some() => {}
+        Ok(_) => return Ok(None),
+        Err(e) if absent(&e) => return Ok(None),
+        Err(e) => return Err(e),
+    }
+    let firmware = match session.probe_binary(address, Instruction::new(136, 0, 0, 0)) {
+        Ok(x) => version_text(&x.reply),
+        Err(e) if absent(&e) => None,
+        Err(e) => return Err(e),
+    };
+    Ok(Some(FoundModule {
+        address,
+        mode: WireMode::Binary,
+        firmware,
+        echo: None,
+    }))
+}
+
+/// Round 2: a module in ASCII mode (or one this session already reached) answers in ASCII.
+fn probe_ascii(
+    session: &mut TmclSession,
+    address: u8,
+) -> Result<Option<FoundModule>, SessionError> {
+    let known = session.found_in(address);
+    match session.set_target(address) {
+        Ok(()) => {}
+        Err(e) if absent(&e) => return Ok(None),
+        Err(e) => return Err(e),
+    }
+    // It did not answer binary frames, so it was in ASCII mode unless this session put it there.
+    let mode = known.unwrap_or(WireMode::Ascii);
+    session.set_found_in(address, mode);
+    let echo = session.module_state(address).map(|(_, echo)| echo);
+    let version = session.in_binary(address, |s| {
+        s.request(address, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0))
+    });
+    let firmware = match version {
+        Ok(x) => version_text(&x.reply),
+        Err(e) if absent(&e) => None,
+        Err(e) => return Err(e),
+    };
+    Ok(Some(FoundModule {
+        address,
+        mode,
+        firmware,
+        echo,
+    }))
+}
+
+/// Round 3: global parameter 67 over a binary frame.
+fn read_echo_binary(session: &mut TmclSession, address: u8) -> Result<Option<Echo>, SessionError> {
+    match session.probe_binary(address, Instruction::new(Opcode::Ggp, 67, 0, 0)) {
+        Ok(x) if x.ok() => Ok(x.value().map(Echo::from_gp67)),
+        Ok(_) => Ok(None),
+        Err(e) if absent(&e) => Ok(None),
+        Err(e) => Err(e),
+    }
+}
+
+fn version_text(answer: &TmclReply) -> Option<String> {
+    match answer {
+        TmclReply::Version(text) if !text.trim().is_empty() => Some(text.trim().to_string()),
+        _ => None,
+    }
+}
+
+/// Prints the table of modules found and a summary line.
+pub fn write_report(report: &TmclScan, out: &mut dyn Write) -> io::Result<()> {
+    if !report.found.is_empty() {
+        writeln!(out, "address  char  found in  firmware  echo")?;
+    }
+    for m in &report.found {
+        let c = address_char(m.address).map_or("-".to_string(), String::from);
+        let mode = match m.mode {
+            WireMode::Ascii => "ASCII",
+            WireMode::Binary => "binary",
+        };
+        let firmware = m.firmware.as_deref().unwrap_or("?");
+        let echo = m.echo.map_or("?", Echo::name);
+        writeln!(
+            out,
+            "{:>7}  {c:<4}  {mode:<8}  {firmware:<8}  {echo}",
+            m.address
+        )?;
+    }
+    writeln!(out, "{}", summary(report))
+}
+
+/// "3 modules answered at 1-26 (at most 200 ms per reply)".
+pub fn summary(report: &TmclScan) -> String {
+    let n = report.found.len();
+    let who = match n {
+        0 => "no module answered".to_string(),
+        1 => "1 module answered".to_string(),
+        n => format!("{n} modules answered"),
+    };
+    format!(
+        "{who} at {} (at most {} ms per reply)",
+        describe_addresses(&report.scanned),
+        report.per_reply.as_millis()
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_table_lists_each_module_with_mode_firmware_and_echo() {
+        let report = TmclScan {
+            scanned: (1..=30).collect(),
+            found: vec![
+                FoundModule {
+                    address: 1,
+                    mode: WireMode::Binary,
+                    firmware: Some("142V1.00".into()),
+                    echo: Some(Echo::Character),
+                },
+                FoundModule {
+                    address: 3,
+                    mode: WireMode::Ascii,
+                    firmware: None,
+                    echo: Some(Echo::None),
+                },
+                FoundModule {
+                    address: 30,
+                    mode: WireMode::Binary,
+                    firmware: Some("142V1.00".into()),
+                    echo: None,
+                },
+            ],
+            per_reply: Duration::from_millis(150),
+        };
+        let mut out = Vec::new();
+        write_report(&report, &mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let rows: Vec<Vec<&str>> = text
+            .lines()
+            .map(|l| l.split_whitespace().collect())
+            .collect();
+        assert_eq!(
+            rows[0],
+            ["address", "char", "found", "in", "firmware", "echo"]
+        );
+        assert_eq!(rows[1], ["1", "A", "binary", "142V1.00", "char"]);
+        assert_eq!(rows[2], ["3", "C", "ASCII", "?", "none"]);
+        assert_eq!(rows[3], ["30", "-", "binary", "142V1.00", "?"]);
+        assert_eq!(
+            text.lines().last().unwrap(),
+            "3 modules answered at 1-30 (at most 150 ms per reply)"
+        );
+    }
+}

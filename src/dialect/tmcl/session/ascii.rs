@@ -1,0 +1,463 @@
+//! One ASCII exchange: send the line and CR, strip the echo (in whichever of the three echo modes,
+//! with CR, LF, CR LF or nothing after it), and take the reply line whose module character is the
+//! addressed module's, once nothing but line ends has followed it. Anything else is reported, not
+//! taken as the answer.
+//!
+//! Which request a reply answers: with an echo, only a reply after the complete echo of *this*
+//! request is taken. A request whose exchange failed may still be echoed and answered late, so an
+//! identical request after it is spelled differently — spaces after the address character, which
+//! the manual allows (`A GAP 1, 0`) — and a late echo cannot pass for its echo. Without an echo
+//! nothing in a reply says which request it answers; the wire's resynchronisation after a failure
+//! is what keeps a late reply out (see `session/wire.rs`).
+
+use std::time::{Duration, Instant};
+
+use crate::dialect::tmcl::protocol::line::{Op, address_char};
+use crate::dialect::tmcl::protocol::reply::{AsciiReply, parse_reply_bytes};
+use crate::dialect::tmcl::protocol::{AsciiWord, Status};
+
+use super::{TmclExchange, TmclReply, TmclSession};
+use crate::session::SessionError;
+use crate::session::rx::is_line_break;
+use crate::session::transcript::{Entry, escape_into};
+use crate::session::wire::{MAX_LINE, Peer, Settled, Wire};
+
+/// The most spaces put after the address character to tell a request from an unanswered one.
+const MAX_SPACES: usize = 8;
+
+/// What is discarded most often.
+const UNEXPECTED: &str = "unexpected data from the line";
+
+/// How far one exchange has got through the receive buffer. What it has judged is consumed as it
+/// goes — its own bytes (line ends, the echo) into `held` for the transcript, everything else
+/// discarded and counted — so a stale reply before the echo stays ignored when the echo arrives
+/// in a later read, and a flood never piles up.
+struct Scan<'a> {
+    /// The line as sent, without CR.
+    sent: &'a [u8],
+    echo_seen: bool,
+    /// The rest of an overlong line is still arriving: discard it up to its end.
+    in_junk: bool,
+    /// This exchange's bytes taken so far, for the transcript record of the reply.
+    held: Vec<u8>,
+}
+
+impl Scan<'_> {
+    /// Takes the first `n` buffered bytes as this exchange's own.
+    fn hold(&mut self, wire: &mut Wire, n: usize) {
+        self.held.extend_from_slice(&wire.rx.bytes()[..n]);
+        wire.rx.consume(n);
+        if self.held.len() > MAX_LINE {
+            // A flood of line ends: keep the record small.
+            let held = std::mem::take(&mut self.held);
+            wire.log(
+                Entry::Received,
+                &held,
+                "while waiting for the reply, discarded",
+            );
+        }
+    }
+}
+
+/// A reply found in the buffer: the reply, its text, and the bytes its line takes.
+type Found = (AsciiReply, String, usize);
+
+impl TmclSession {
+    /// Sends `text` to `module` and waits up to the session timeout for its reply.
+    pub(super) fn ascii_request(
+        &mut self,
+        module: u8,
+        text: &str,
+        op: Option<Op>,
+    ) -> Result<TmclExchange, SessionError> {
+        self.ascii_request_with(module, text, op, None)
+    }
+
+    /// As [`Self::ascii_request`]; with `optional_wait` the module may not answer at all (BIN),
+    /// so the reply is awaited that long and its absence leaves the line trusted.
+    pub(super) fn ascii_request_with(
+        &mut self,
+        module: u8,
+        text: &str,
+        op: Option<Op>,
+        optional_wait: Option<Duration>,
+    ) -> Result<TmclExchange, SessionError> {
+        let wire_text = self.spelling(text);
+        let optional = optional_wait.is_some();
+        let mut echoed = false;
+        let result = self.exchange(module, optional, |s| {
+            s.ascii_exchange(module, text, &wire_text, op, optional_wait, &mut echoed)
+        });
+        match &result {
+            Ok(_) => {}
+            Err(SessionError::Timeout { .. }) if optional => {}
+            Err(_) => self.unanswered.remember(wire_text.into_bytes(), echoed),
+        }
+        result
+    }
+
+    fn ascii_exchange(
+        &mut self,
+        module: u8,
+        text: &str,
+        wire_text: &str,
+        op: Option<Op>,
+        optional_wait: Option<Duration>,
+        echoed: &mut bool,
+    ) -> Result<TmclExchange, SessionError> {
+        let c = address_char(module).unwrap_or('?');
+        let mut line = Vec::with_capacity(wire_text.len() + 1);
+        line.extend_from_slice(wire_text.as_bytes());
+        line.push(b'\r');
+        self.core.wire.send(&line, format_args!("to module {c}"))?;
+        let timeout = optional_wait.unwrap_or(self.core.options.timeout);
+        let deadline = Instant::now() + timeout;
+        let state = self.modules.get(&module);
+        let echo_known = state.is_some_and(|m| m.echo_known);
+        let echo_required = state.is_some_and(|m| m.echo_known && m.echo != super::Echo::None);
+        let mut scan = Scan {
+            sent: wire_text.as_bytes(),
+            echo_seen: false,
+            in_junk: false,
+            held: Vec::new(),
+        };
+        loop {
+            let found = self.scan(&mut scan, module, echo_required);
+            *echoed = scan.echo_seen;
+            if let Some(found) = found? {
+                if !echo_known
+                    && !scan.echo_seen
+                    && self.echo_follows(&found, scan.sent, deadline)?
+                {
+                    // Taken without an echo (the echo mode is still being learnt), but the echo
+                    // of this request came after it: it was an earlier request's reply.
+                    self.core
+                        .wire
+                        .discard(found.2, "a reply that came before the echo (stale?)");
+                    continue;
+                }
+                let held = std::mem::take(&mut scan.held);
+                return self.accept(module, text, op, held, found, deadline);
+            }
+            if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
+                // After BIN the module may be in binary mode, where a CR would start a frame.
+                let resync_cr = !leaves_ascii(op, text);
+                return Err(self.timed_out(c, timeout, &mut scan, resync_cr));
+            }
+        }
+    }
+
+    /// Looks for this exchange's reply in the receive buffer, consuming what it judges.
+    fn scan(
+        &mut self,
+        scan: &mut Scan,
+        module: u8,
+        echo_required: bool,
+    ) -> Result<Option<Found>, SessionError> {
+        loop {
+            if scan.in_junk {
+                match self.core.wire.rx.line_end(0) {
+                    Some(end) => {
+                        self.core.wire.discard_more(end);
+                        scan.in_junk = false;
+                    }
+                    None => {
+                        let n = self.core.wire.rx.len();
+                        self.core.wire.discard_more(n);
+                        return Ok(None);
+                    }
+                }
+            }
+            let rest = self.core.wire.rx.bytes();
+            let breaks = rest.iter().take_while(|&&b| is_line_break(b)).count();
+            if breaks > 0 {
+                scan.hold(&mut self.core.wire, breaks);
+                continue;
+            }
+            if rest.is_empty() {
+                return Ok(None);
+            }
+            if !scan.echo_seen {
+                if rest.starts_with(scan.sent) {
+                    scan.echo_seen = true;
+                    scan.hold(&mut self.core.wire, scan.sent.len());
+                    continue;
+                }
+                if scan.sent.starts_with(rest) {
+                    return Ok(None); // the echo is still arriving
+                }
+            }
+            let Some(end) = self.core.wire.rx.line_end(0) else {
+                if self.core.wire.rx.len() > MAX_LINE {
+                    let n = self.core.wire.rx.len();
+                    self.core.wire.discard(n, UNEXPECTED);
+                    scan.in_junk = true;
+                }
+                return Ok(None);
+            };
+            let used = end + 1;
+            if end > MAX_LINE {
+                self.core.wire.discard(used, UNEXPECTED);
+                continue;
+            }
+            let line = self.core.wire.rx.bytes()[..end].to_vec();
+            if let Some(found) = self.judge(scan, module, &line, used, echo_required)? {
+                return Ok(Some(found));
+            }
+        }
+    }
+
+    /// Judges a whole line of `used` bytes at the front of the buffer: this exchange's reply
+    /// (returned), an event, a late or stray reply or echo (discarded), or line noise (an error).
+    fn judge(
+        &mut self,
+        scan: &mut Scan,
+        module: u8,
+        line: &[u8],
+        used: usize,
+        echo_required: bool,
+    ) -> Result<Option<Found>, SessionError> {
+        let c = address_char(module).unwrap_or('?');
+        let acceptable = scan.echo_seen || !echo_required;
+        match parse_reply_bytes(line) {
+            Some(reply) if reply.status == Status::PositionReachedEvent => {
+                self.core.wire.notices.push(format!(
+                    "module {}: target position reached (event)",
+                    reply.module
+                ));
+                self.core
+                    .wire
+                    .discard_quietly(used, "target position reached event, not a reply");
+            }
+            Some(reply) if reply.module == c && acceptable => {
+                return Ok(Some((reply, latin1(line), used)));
+            }
+            Some(reply) if reply.module == c && self.unanswered.reply_arrived(c) => {
+                self.core
+                    .wire
+                    .discard_quietly(used, "late reply to a request given up earlier");
+                // Every request to this module given up has now been answered: nothing
+                // more is on its way.
+                if !self.unanswered.pending(c) {
+                    self.core.wire.trust(Peer::Module(module.into()));
+                }
+            }
+            Some(reply) if reply.module == c => {
+                self.core
+                    .wire
+                    .discard(used, "a reply that came before the echo (stale?)");
+            }
+            Some(reply) => {
+                let kind = format!(
+                    "a reply from module {} while waiting for module {c}",
+                    reply.module
+                );
+                self.core.wire.discard(used, &kind);
+            }
+            None if !scan.echo_seen && self.unanswered.echo_arrived(line) => {
+                self.core
+                    .wire
+                    .discard_quietly(used, "late echo of a request given up earlier");
+            }
+            None if !scan.echo_seen && looks_like_echo(line, scan.sent) => {
+                let sent = latin1(scan.sent);
+                let message = format!(
+                    "line noise: module {c} echoed '{}' for '{sent}', so it may have executed \
+                     something else; check the cabling and the baud rate",
+                    latin1(line)
+                );
+                return Err(self.noise(scan, used, "garbled echo", message));
+            }
+            None if acceptable && reply_shaped(line, c) => {
+                let message = format!(
+                    "line noise: module {c} answered '{}', which is not a valid reply \
+                     (garbled, or an unknown status); not taken",
+                    latin1(line)
+                );
+                return Err(self.noise(scan, used, "not a valid reply", message));
+            }
+            None => self.core.wire.discard(used, UNEXPECTED),
+        }
+        Ok(None)
+    }
+
+    /// Whether the echo of this request follows a reply found before any echo: waits as long
+    /// as a trailing byte would take, and no longer.
+    fn echo_follows(
+        &mut self,
+        (_, _, used): &Found,
+        sent: &[u8],
+        deadline: Instant,
+    ) -> Result<bool, SessionError> {
+        let follows = |rx: &[u8]| {
+            let rest = &rx[*used..];
+            let start = rest.iter().take_while(|&&b| is_line_break(b)).count();
+            let rest = &rest[start..];
+            !rest.is_empty() && (rest.starts_with(sent) || sent.starts_with(rest))
+        };
+        if self.core.wire.rx.len() == *used && Instant::now() < deadline {
+            self.core.wire.await_more(deadline)?;
+        }
+        Ok(follows(self.core.wire.rx.bytes()))
+    }
+
+    /// Takes a found reply once what follows it has been seen: nothing but line ends and events.
+    fn accept(
+        &mut self,
+        module: u8,
+        text: &str,
+        op: Option<Op>,
+        mut record: Vec<u8>,
+        (reply, raw, used): Found,
+        deadline: Instant,
+    ) -> Result<TmclExchange, SessionError> {
+        let c = reply.module;
+        let mut events = Vec::new();
+        let settled =
+            self.core
+                .wire
+                .settle(used, deadline, &mut |line| match parse_reply_bytes(line) {
+                    Some(r) if r.status == Status::PositionReachedEvent => {
+                        events.push(format!(
+                            "module {}: target position reached (event)",
+                            r.module
+                        ));
+                        true
+                    }
+                    _ => false,
+                })?;
+        self.core.wire.notices.extend(events);
+        match settled {
+            Settled::Clean(n) => {
+                record.extend_from_slice(&self.core.wire.rx.bytes()[..n]);
+                self.core.wire.rx.consume(n);
+                self.core.wire.log(
+                    Entry::Received,
+                    &record,
+                    format_args!("{c}: {}, value {}", reply.status, reply.value),
+                );
+                Ok(TmclExchange {
+                    module,
+                    sent: text.to_string(),
+                    op,
+                    reply: TmclReply::Status {
+                        status: reply.status,
+                        value: reply.value,
+                    },
+                    raw,
+                })
+            }
+            Settled::Noise => {
+                let mut after = String::new();
+                let rest = &self.core.wire.rx.bytes()[used..];
+                escape_into(&rest[..rest.len().min(40)], &mut after);
+                record.extend(self.core.wire.rx.clear());
+                self.core.wire.log(
+                    Entry::Received,
+                    &record,
+                    "a reply followed by more data: line noise, discarded",
+                );
+                let message = format!(
+                    "line noise: the reply '{raw}' from module {c} was followed by {after}, so it \
+                     may be cut short or not the answer; not taken"
+                );
+                self.core.wire.note(&message);
+                Err(SessionError::Link(message))
+            }
+        }
+    }
+
+    /// Ends the exchange on line noise: the bytes up to the offending line's end go to the
+    /// transcript with the event.
+    fn noise(&mut self, scan: &mut Scan, used: usize, what: &str, message: String) -> SessionError {
+        let mut record = std::mem::take(&mut scan.held);
+        record.extend(self.core.wire.rx.take(used));
+        self.core.wire.log(
+            Entry::Received,
+            &record,
+            format_args!("{what}: line noise, discarded"),
+        );
+        self.core.wire.note(&message);
+        SessionError::Link(message)
+    }
+
+    fn timed_out(
+        &mut self,
+        module: char,
+        timeout: Duration,
+        scan: &mut Scan,
+        resync_cr: bool,
+    ) -> SessionError {
+        let leftover = self.core.wire.rx.clear();
+        let mut partial = std::mem::take(&mut scan.held);
+        partial.extend_from_slice(&leftover);
+        let hint = if scan.echo_seen && leftover.iter().all(|&b| is_line_break(b)) {
+            " (the command was echoed but not answered)".to_string()
+        } else if partial.iter().any(|&b| !is_line_break(b)) {
+            let mut shown = String::new();
+            escape_into(&partial[..partial.len().min(80)], &mut shown);
+            format!(" (received only {shown})")
+        } else {
+            String::new()
+        };
+        if !partial.is_empty() {
+            self.core
+                .wire
+                .log(Entry::Received, &partial, "incomplete, no reply");
+        }
+        if resync_cr {
+            // A CR ends whatever part of our line the module may still hold, so the next line
+            // starts clean; what it provokes is discarded while the line resynchronises.
+            let _ = self.core.wire.send(b"\r", "resynchronise after timeout");
+        }
+        self.core.wire.note(&format!(
+            "no reply from module {module} within {} ms",
+            timeout.as_millis()
+        ));
+        SessionError::Timeout {
+            module: module.to_string(),
+            timeout,
+            hint,
+        }
+    }
+
+    /// The line as it goes on the wire: the canonical text, or — while an identical request is
+    /// unanswered — the same with spaces after the address character, so each echo is unique.
+    fn spelling(&self, text: &str) -> String {
+        let split = text.chars().next().map_or(0, char::len_utf8);
+        let (address, rest) = text.split_at(split);
+        (0..=MAX_SPACES)
+            .map(|spaces| format!("{address}{}{rest}", " ".repeat(spaces)))
+            .find(|t| !self.unanswered.contains(t.as_bytes()))
+            .unwrap_or_else(|| text.to_string())
+    }
+}
+
+/// Whether a request may leave the module in binary mode (BIN, typed or sent unvalidated).
+fn leaves_ascii(op: Option<Op>, text: &str) -> bool {
+    matches!(op, Some(Op::Ascii(AsciiWord::Bin)))
+        || text
+            .get(1..)
+            .is_some_and(|rest| rest.trim().eq_ignore_ascii_case("BIN"))
+}
+
+/// Whether `line` is laid out like a reply from module `c` (host character, `c`, a space): such
+/// a line that does not parse is a damaged reply, not unrelated data.
+fn reply_shaped(line: &[u8], c: char) -> bool {
+    let start = line.iter().take_while(|&&b| b == b' ').count();
+    [0, start]
+        .iter()
+        .any(|&s| line.get(s + 1) == Some(&(c as u8)) && line.get(s + 2) == Some(&b' '))
+}
+
+/// Bytes as text, one character per byte (Latin-1), so no byte is lost or merged.
+fn latin1(bytes: &[u8]) -> String {
+    bytes.iter().map(|&b| char::from(b)).collect()
+}
+
+/// Whether `line` is a garbled copy of what was sent (same address character, nearly the same
+/// text) rather than unrelated data.
+fn looks_like_echo(line: &[u8], sent: &[u8]) -> bool {
+    line.first() == sent.first()
+        && strsim::normalized_levenshtein(&latin1(line), &latin1(sent)) >= 0.7
+}

@@ -1,0 +1,230 @@
+//! One binary exchange in direct mode: a 9-byte command frame out, a 9-byte reply frame back
+//! (or the version string of 136 type 0, or nothing after 137).
+
+use std::time::Instant;
+
+use crate::dialect::tmcl::protocol::frame::{
+    CommandFrame, FRAME_LEN, ReplyFrame, decode_version_string, hex,
+};
+use crate::dialect::tmcl::protocol::line::{Op, address_char};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
+
+use super::{TmclExchange, TmclReply, TmclSession};
+use crate::session::SessionError;
+use crate::session::transcript::Entry;
+
+impl TmclSession {
+    /// Sends one instruction as a binary frame and reads its reply.
+    pub(super) fn binary_request(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<TmclExchange, SessionError> {
+        self.exchange(module, false, |s| s.binary_exchange(module, instruction))
+    }
+
+    fn binary_exchange(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<TmclExchange, SessionError> {
+        let sent = self.describe_instruction(&instruction);
+        let frame = CommandFrame {
+            address: module,
+            instruction,
+        }
+        .encode();
+        self.core
+            .wire
+            .send(&frame, format_args!("{sent} to module {module} (binary)"))?;
+        let exchange = |(reply, raw)| TmclExchange {
+            module,
+            sent,
+            op: Some(Op::Command(instruction)),
+            reply,
+            raw,
+        };
+        if instruction.command == Opcode::FactoryDefaults {
+            return Ok(exchange((TmclReply::Nothing, String::new())));
+        }
+        let deadline = Instant::now() + self.core.options.timeout;
+        loop {
+            while let Some(raw) = self.front_frame() {
+                if let Some(answer) = self.take_frame(module, instruction, &raw, deadline)? {
+                    return Ok(exchange(answer));
+                }
+            }
+            if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
+                return Err(self.binary_timeout(module));
+            }
+        }
+    }
+
+    /// The frame at the front of the receive buffer, once nine bytes are there.
+    fn front_frame(&self) -> Option<[u8; FRAME_LEN]> {
+        let bytes = self.core.wire.rx.bytes().get(..FRAME_LEN)?;
+        let mut raw = [0u8; FRAME_LEN];
+        raw.copy_from_slice(bytes);
+        Some(raw)
+    }
+
+    /// Takes the frame at the front of the buffer: the answer to `instruction` with its text, or
+    /// `None` for a frame that is no answer (an event, a reply to another request), set aside.
+    fn take_frame(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+        raw: &[u8; FRAME_LEN],
+        deadline: Instant,
+    ) -> Result<Option<(TmclReply, String)>, SessionError> {
+        if instruction.command == Opcode::FirmwareVersion && instruction.type_ == 0 {
+            let (_, text) = decode_version_string(raw);
+            self.settle_binary(module, raw, deadline)?;
+            self.core
+                .wire
+                .log_received(FRAME_LEN, format_args!("version {text}"));
+            return Ok(Some((TmclReply::Version(text.clone()), text)));
+        }
+        let reply = ReplyFrame::decode(raw).map_err(|e| {
+            self.binary_noise(
+                "bad checksum",
+                format!("corrupted reply from module {module}: {e}"),
+            )
+        })?;
+        if reply.is_position_event() {
+            self.note_event(reply.module);
+            self.core.wire.log_received(
+                FRAME_LEN,
+                "target position reached event, not a reply; discarded",
+            );
+            return Ok(None);
+        }
+        if reply.module != module || reply.command != instruction.command {
+            let kind = format!("a reply frame not for module {module}'s request");
+            self.core.wire.discard(FRAME_LEN, &kind);
+            return Ok(None);
+        }
+        if let Status::Other(code) = reply.status {
+            return Err(self.binary_noise(
+                "unknown status",
+                format!(
+                    "line noise: module {module} answered with status {code}, which no module \
+                     sends; not taken"
+                ),
+            ));
+        }
+        self.settle_binary(module, raw, deadline)?;
+        self.core.wire.log_received(
+            FRAME_LEN,
+            format_args!(
+                "from module {}: {}, value {}",
+                reply.module, reply.status, reply.value
+            ),
+        );
+        let answer = TmclReply::Status {
+            status: reply.status,
+            value: reply.value,
+        };
+        Ok(Some((answer, binary_reply_text(&reply))))
+    }
+
+    /// No whole answer before the deadline: what came is logged and named in the error.
+    fn binary_timeout(&mut self, module: u8) -> SessionError {
+        let partial = self.core.wire.rx.clear();
+        if !partial.is_empty() {
+            self.core
+                .wire
+                .log(Entry::Received, &partial, "incomplete frame, no reply");
+        }
+        SessionError::Timeout {
+            module: address_char(module).unwrap_or('?').to_string(),
+            timeout: self.core.options.timeout,
+            hint: if partial.is_empty() {
+                String::new()
+            } else {
+                format!(" (received only {})", hex(&partial))
+            },
+        }
+    }
+
+    /// Tells the user of a position-reached event that came instead of, or after, a reply.
+    fn note_event(&mut self, module: u8) {
+        self.core
+            .wire
+            .notices
+            .push(format!("module {module}: target position reached (event)"));
+    }
+
+    /// Checks what follows the reply frame at the front of the buffer: nothing, or whole event
+    /// frames. Anything else — a frame that is longer than nine bytes, a second reply — is noise.
+    fn settle_binary(
+        &mut self,
+        module: u8,
+        reply: &[u8; FRAME_LEN],
+        deadline: Instant,
+    ) -> Result<(), SessionError> {
+        let hard_end = deadline.max(Instant::now() + self.core.wire.settle_time());
+        let mut pos = FRAME_LEN;
+        loop {
+            while self.core.wire.rx.len() >= pos + FRAME_LEN {
+                let mut frame = [0u8; FRAME_LEN];
+                frame.copy_from_slice(&self.core.wire.rx.bytes()[pos..pos + FRAME_LEN]);
+                match ReplyFrame::decode(&frame) {
+                    Ok(r) if r.is_position_event() => {
+                        self.note_event(r.module);
+                        pos += FRAME_LEN;
+                    }
+                    _ => return Err(self.trailing_noise(module, reply)),
+                }
+            }
+            let partial = self.core.wire.rx.len() > pos;
+            if Instant::now() >= hard_end || !self.core.wire.await_more(hard_end)? {
+                if partial {
+                    return Err(self.trailing_noise(module, reply));
+                }
+                return Ok(());
+            }
+        }
+    }
+
+    fn trailing_noise(&mut self, module: u8, reply: &[u8; FRAME_LEN]) -> SessionError {
+        let rest = &self.core.wire.rx.bytes()[FRAME_LEN..];
+        let after = hex(&rest[..rest.len().min(3 * FRAME_LEN)]);
+        self.binary_noise(
+            "a reply followed by more data",
+            format!(
+                "line noise: the reply {} from module {module} was followed by {after}; not taken",
+                hex(reply)
+            ),
+        )
+    }
+
+    /// Ends a binary exchange on line noise, logging what was received.
+    fn binary_noise(&mut self, what: &str, message: String) -> SessionError {
+        let bytes = self.core.wire.rx.clear();
+        self.core.wire.log(
+            Entry::Received,
+            &bytes,
+            format_args!("{what}: line noise, discarded"),
+        );
+        self.core.wire.note(&message);
+        SessionError::Link(message)
+    }
+}
+
+/// A binary reply in the ASCII reply format (`BA 100 -5000`), so one-shot output looks the same in
+/// both modes; addresses without a letter are shown as numbers.
+pub fn binary_reply_text(reply: &ReplyFrame) -> String {
+    let name = |a: u8| {
+        address_char(a)
+            .map(String::from)
+            .unwrap_or_else(|| format!("<{a}>"))
+    };
+    format!(
+        "{}{} {} {}",
+        name(reply.host),
+        name(reply.module),
+        reply.status.code(),
+        reply.value
+    )
+}

@@ -1,0 +1,149 @@
+//! The TMCL session as the faces see every session ([`DialectSession`]): replies decoded with the
+//! profile, the prompt, the grammar, helpers, help, scan and scripts.
+
+use std::io::{self, Write};
+use std::sync::Arc;
+use std::time::Duration;
+
+use crate::commission::ParamDevice;
+use crate::dialect::session::{BusScan, DialectSession, Reply};
+use crate::dialect::tmcl::protocol::line::address_char;
+use crate::dialect::tmcl::protocol::validate::Mode;
+use crate::dialect::tmcl::{TmclGrammar, config, help, helpers, render, scan};
+use crate::dialect::{Dialect, Grammar, Helper};
+use crate::exit::Failure;
+use crate::script::Script;
+use crate::session::SessionError;
+use crate::session::core::SessionCore;
+use crate::session::transcript::Header;
+
+use super::{TmclSession, WireMode};
+
+impl DialectSession for TmclSession {
+    fn dialect(&self) -> &'static Dialect {
+        &super::super::DIALECT
+    }
+
+    fn core(&self) -> &SessionCore {
+        &self.core
+    }
+
+    fn core_mut(&mut self) -> &mut SessionCore {
+        &mut self.core
+    }
+
+    fn execute(&mut self, line: &str) -> Result<Reply, SessionError> {
+        let exchange = self.exchange_line(line)?;
+        Ok(Reply {
+            shown: exchange.shown(),
+            decoded: render::decode(&exchange, &self.profile).text,
+            refusal: exchange.refusal(),
+            forms: Arc::new(exchange),
+        })
+    }
+
+    fn stop_motion(&mut self) -> Vec<String> {
+        self.urgently(Self::stop_everything)
+    }
+
+    fn target_address(&self) -> Option<u32> {
+        Some(self.target.into())
+    }
+
+    /// Every module goes back to the mode it was found in (unless `--stay-ascii`).
+    fn close(&mut self) -> Vec<String> {
+        if self.core.options.stay_ascii {
+            return Vec::new();
+        }
+        // Mode restores carry no value for anyone: they need not wait for a suspect line.
+        self.urgently(Self::restore_modes)
+    }
+
+    /// The target's address character, and `[bin]` in binary mode.
+    fn prompt(&self) -> String {
+        let c = address_char(self.target).unwrap_or('?');
+        match self.module_state(self.target) {
+            Some((WireMode::Binary, _)) => format!("{c}[bin]> "),
+            _ => format!("{c}> "),
+        }
+    }
+
+    fn banner(&self) -> String {
+        format!("{}, module {}", self.profile.module, self.target)
+    }
+
+    fn header(&self) -> Header {
+        config::header(&self.profile)
+    }
+
+    /// The profile, and the mode of the target module.
+    fn grammar(&self) -> Arc<dyn Grammar> {
+        let mode = match self.module_state(self.target) {
+            Some((WireMode::Binary, _)) => Mode::Binary,
+            _ => Mode::Ascii,
+        };
+        Arc::new(TmclGrammar::new(self.profile.clone(), mode))
+    }
+
+    fn run_helper(
+        &mut self,
+        helper: &Helper,
+        arg: &str,
+        out: &mut dyn Write,
+    ) -> Result<(), SessionError> {
+        helpers::run(self, helper, arg, out)
+    }
+
+    fn help_intro(&self, out: &mut dyn Write) -> io::Result<()> {
+        help::intro(out)
+    }
+
+    fn help_more(&self) -> &'static str {
+        help::MORE
+    }
+
+    fn help_topic(&self, topic: &str, out: &mut dyn Write) -> io::Result<bool> {
+        help::topic(&self.profile, topic, out)
+    }
+
+    fn help_command(&self, word: &str, out: &mut dyn Write) -> io::Result<bool> {
+        help::command(&self.profile, word, out)
+    }
+
+    fn param_device(&mut self) -> &mut dyn ParamDevice {
+        self
+    }
+
+    fn scan_bus(&mut self, addresses: &[u8], per_reply: Duration) -> Result<BusScan, SessionError> {
+        scan::bus_scan(self, addresses, per_reply)
+    }
+
+    fn run_script(
+        self: Box<Self>,
+        script: &Script,
+    ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
+        let (session, result) = script.run(
+            *self,
+            |s, text| s.annotate(text),
+            |engine, s, files| {
+                super::super::script::register(engine, s, files);
+                crate::script::commission::register(engine, s, files);
+            },
+        );
+        (Box::new(session), result)
+    }
+
+    /// Re-enters ASCII mode on the modules that were in it.
+    fn reenter(&mut self) -> Result<(), SessionError> {
+        let ascii: Vec<u8> = self
+            .modules
+            .iter()
+            .filter(|(_, m)| m.mode == WireMode::Ascii)
+            .map(|(&a, _)| a)
+            .collect();
+        for module in ascii {
+            self.enter_ascii(module)?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,408 @@
+//! The TMCL session: ASCII mode by default (manual §6.6), binary direct mode after `:bin`, and
+//! from the start for a module whose profile says it has no ASCII interface.
+//!
+//! On open the target module is put into ASCII mode with the binary command 139 and its echo
+//! behaviour is learnt from global parameter 67; other modules on the bus are entered the first
+//! time a line addresses them. On close every module is put back in the mode it was found in.
+
+mod ascii;
+mod binary;
+mod exchange;
+mod faces;
+mod guard;
+mod mode;
+mod probe;
+mod stop;
+mod unanswered;
+
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::profile::commands::AsciiWord;
+use crate::dialect::tmcl::protocol::line::{
+    self, Line, Op, address_char, format_instruction, format_line,
+};
+use crate::dialect::tmcl::protocol::syntax::parse_line;
+use crate::dialect::tmcl::protocol::validate::{self, Mode};
+use crate::dialect::tmcl::protocol::{Instruction, Opcode};
+use crate::link::Link;
+
+use crate::session::core::{Addresses, SessionCore};
+use crate::session::transcript::Transcript;
+use crate::session::wire::Peer;
+use crate::session::{SessionError, SessionOptions};
+
+pub use exchange::{TmclExchange, TmclReply};
+pub use mode::{Echo, WireMode};
+
+use unanswered::{Unanswered, harmless};
+
+/// A TMCL conversation with the modules on one link.
+pub struct TmclSession {
+    core: SessionCore,
+    profile: Arc<Profile>,
+    target: u8,
+    modules: BTreeMap<u8, mode::ModuleState>,
+    /// ASCII lines that failed: their echo and reply may still come.
+    unanswered: Unanswered,
+}
+
+impl TmclSession {
+    /// Opens a session: enters ASCII mode on the target module (unless `options.enter` is off)
+    /// and learns its echo behaviour.
+    pub fn open(
+        link: Box<dyn Link>,
+        profile: Arc<Profile>,
+        options: SessionOptions,
+        transcript: Option<Transcript>,
+    ) -> Result<Self, SessionError> {
+        let mut session = Self::open_idle(link, profile, options, transcript)?;
+        session.contact(session.target)?;
+        Ok(session)
+    }
+
+    /// Opens a session without contacting any module yet (a bus scan finds them first).
+    pub fn open_idle(
+        link: Box<dyn Link>,
+        profile: Arc<Profile>,
+        options: SessionOptions,
+        transcript: Option<Transcript>,
+    ) -> Result<Self, SessionError> {
+        if address_char(options.module).is_none() {
+            return Err(SessionError::Usage(format!(
+                "module address {} has no ASCII address character; use 1..26",
+                options.module
+            )));
+        }
+        let mut session = TmclSession {
+            target: options.module,
+            core: SessionCore::new(link, options, transcript),
+            profile,
+            modules: BTreeMap::new(),
+            unanswered: Unanswered::default(),
+        };
+        let opened = format!("session opened on {}", session.core.wire.link.describe());
+        session.core.wire.note(&opened);
+        if session.profile.generic {
+            let notice = crate::dialect::tmcl::profile::catalogue::GENERIC_NOTICE;
+            session.core.wire.notices.push(notice.to_string());
+        }
+        Ok(session)
+    }
+
+    /// The profile used for validation and decoding.
+    pub fn profile(&self) -> &Arc<Profile> {
+        &self.profile
+    }
+
+    /// The module lines without an address character go to.
+    pub fn target(&self) -> u8 {
+        self.target
+    }
+
+    /// Changes the target module, entering ASCII mode on it if it is new.
+    pub fn set_target(&mut self, module: u8) -> Result<(), SessionError> {
+        if address_char(module).is_none() {
+            return Err(SessionError::Usage(format!(
+                "module address {module} is not in 1..26"
+            )));
+        }
+        self.contact(module)?;
+        self.target = module;
+        Ok(())
+    }
+
+    /// The wire mode and echo of a module the session has talked to.
+    pub fn module_state(&self, module: u8) -> Option<(WireMode, Echo)> {
+        self.modules.get(&module).map(|m| (m.mode, m.echo))
+    }
+
+    /// Parses, validates and sends one command line; returns the module's answer. An error
+    /// status is an `Ok` exchange whose [`TmclExchange::ok`] is false.
+    pub fn exchange_line(&mut self, text: &str) -> Result<TmclExchange, SessionError> {
+        match line::parse(text, &self.profile) {
+            Ok(line) => {
+                let module = line.address.unwrap_or(self.target);
+                self.perform(module, line.op)
+            }
+            Err(error) if self.core.options.validate => Err(error.into()),
+            Err(error) => {
+                // --no-validate: send what parses, in canonical spelling.
+                let raw = parse_line(text, |w| self.profile.commands.is_word(w))
+                    .map_err(|_| SessionError::Refused(error.to_string()))?;
+                let module = raw
+                    .address
+                    .and_then(line::address_of)
+                    .unwrap_or(self.target);
+                self.contact(module)?;
+                self.core
+                    .wire
+                    .notices
+                    .push(format!("not validated: {error}"));
+                let sent = line::format_raw(&raw, self.target);
+                self.ascii_request(module, &sent, None)
+            }
+        }
+    }
+
+    /// Sends one instruction to a module (the typed path of scripts).
+    pub fn request(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<TmclExchange, SessionError> {
+        self.perform(module, Op::Command(instruction))
+    }
+
+    fn perform(&mut self, module: u8, op: Op) -> Result<TmclExchange, SessionError> {
+        let wire = self.contact(module)?;
+        let mode = match wire {
+            WireMode::Ascii => Mode::Ascii,
+            WireMode::Binary => Mode::Binary,
+        };
+        let line = Line {
+            address: Some(module),
+            op,
+        };
+        match validate::validate(&line, &self.profile, mode) {
+            Ok(warnings) => self
+                .core
+                .wire
+                .notices
+                .extend(warnings.iter().map(ToString::to_string)),
+            Err(error) if self.core.options.validate => return Err(error.into()),
+            Err(error) => self
+                .core
+                .wire
+                .notices
+                .push(format!("not validated: {error}")),
+        }
+        let exchange = match (wire, op) {
+            (WireMode::Ascii, Op::Ascii(AsciiWord::Bin)) => self.leave_ascii(module)?,
+            (WireMode::Ascii, _) => {
+                let text = format_line(&line, self.target, &self.profile);
+                self.ascii_request(module, &text, Some(op))?
+            }
+            (WireMode::Binary, Op::Command(instruction)) => {
+                self.binary_request(module, instruction)?
+            }
+            (WireMode::Binary, Op::Ascii(word)) => {
+                return Err(SessionError::Usage(format!(
+                    "{} is an ASCII-mode word and module {} is in binary mode; use :ascii, :run or :stop",
+                    word.as_str(),
+                    module
+                )));
+            }
+        };
+        self.after(&exchange);
+        Ok(exchange)
+    }
+
+    /// Bookkeeping after an answer: which modules move, what echo a module now uses.
+    fn after(&mut self, exchange: &TmclExchange) {
+        if !exchange.ok() {
+            return;
+        }
+        match exchange.op {
+            Some(Op::Command(i)) => {
+                let spec = self.profile.commands.by_number(i.command);
+                if spec.is_some_and(|s| s.starts_motion) {
+                    self.core.moved.insert(Some(exchange.module.into()));
+                }
+                if i.command == Opcode::RunApplication {
+                    self.core.running.insert(Some(exchange.module.into()));
+                }
+                if i.command == Opcode::StopApplication {
+                    self.stopped_program(exchange.module);
+                }
+                if mode::changes_echo(&i) {
+                    self.relearn_echo(exchange.module);
+                }
+            }
+            Some(Op::Ascii(AsciiWord::Run)) => {
+                self.core.running.insert(Some(exchange.module.into()));
+            }
+            Some(Op::Ascii(AsciiWord::Stop)) => {
+                self.stopped_program(exchange.module);
+            }
+            _ => {}
+        }
+    }
+
+    /// A program this session started was stopped: the motion it started goes on (STOP ends the
+    /// program, not the motion), so the module counts as set moving by this session.
+    fn stopped_program(&mut self, module: u8) {
+        let module = Some(module.into());
+        if self.core.running.remove(&module) {
+            self.core.moved.insert(module);
+        }
+    }
+
+    /// Stores one program instruction while the module is in download mode (binary mode, after
+    /// command 132). The instruction is checked as a program instruction, not as a direct-mode
+    /// command; the module answers status 101 (stored).
+    pub fn store_instruction(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+    ) -> Result<TmclExchange, SessionError> {
+        if self.contact(module)? != WireMode::Binary {
+            return Err(SessionError::Usage(format!(
+                "module {module} must be in binary mode to store a program"
+            )));
+        }
+        let line = Line {
+            address: Some(module),
+            op: Op::Command(instruction),
+        };
+        match validate::validate(&line, &self.profile, Mode::Program) {
+            Ok(_) => {}
+            Err(error) if self.core.options.validate => return Err(error.into()),
+            Err(error) => self
+                .core
+                .wire
+                .notices
+                .push(format!("not validated: {error}")),
+        }
+        self.binary_request(module, instruction)
+    }
+
+    /// Starts the module's stored TMCL program: ASCII `RUN`, or command 129 in binary mode.
+    pub fn run_program(
+        &mut self,
+        module: u8,
+        address: Option<i32>,
+    ) -> Result<TmclExchange, SessionError> {
+        let run_from = |address: Option<i32>| {
+            Op::Command(Instruction::new(
+                Opcode::RunApplication,
+                u8::from(address.is_some()),
+                0,
+                address.unwrap_or(0),
+            ))
+        };
+        match (self.contact(module)?, address) {
+            (WireMode::Ascii, None) => self.perform(module, Op::Ascii(AsciiWord::Run)),
+            // ASCII RUN has no address operand: a start address needs binary command 129.
+            (WireMode::Ascii, Some(_)) => {
+                self.in_binary(module, |s| s.perform(module, run_from(address)))
+            }
+            (WireMode::Binary, _) => self.perform(module, run_from(address)),
+        }
+    }
+
+    /// Stops the module's running TMCL program: ASCII `STOP`, or command 128 in binary mode.
+    pub fn stop_program(&mut self, module: u8) -> Result<TmclExchange, SessionError> {
+        let op = match self.contact(module)? {
+            WireMode::Ascii => Op::Ascii(AsciiWord::Stop),
+            WireMode::Binary => Op::Command(Instruction::new(Opcode::StopApplication, 0, 0, 0)),
+        };
+        self.perform(module, op)
+    }
+
+    /// Runs `f` with the module in binary mode, returning it to ASCII mode afterwards if it was.
+    pub fn in_binary<T>(
+        &mut self,
+        module: u8,
+        f: impl FnOnce(&mut Self) -> Result<T, SessionError>,
+    ) -> Result<T, SessionError> {
+        let was_ascii = self.contact(module)? == WireMode::Ascii;
+        if was_ascii {
+            self.leave_ascii(module)?;
+        }
+        let result = f(self);
+        if was_ascii {
+            self.enter_ascii(module)?;
+        }
+        result
+    }
+
+    /// Formats an instruction the way this session would send it to `module`.
+    pub fn format(&self, module: u8, op: Op) -> String {
+        format_line(
+            &Line {
+                address: Some(module),
+                op,
+            },
+            self.target,
+            &self.profile,
+        )
+    }
+
+    fn restore_modes(&mut self) -> Vec<String> {
+        let mut report = Vec::new();
+        let to_restore: Vec<u8> = self
+            .modules
+            .iter()
+            .filter(|(_, m)| m.mode == WireMode::Ascii && m.found_in == WireMode::Binary)
+            .map(|(&a, _)| a)
+            .collect();
+        for module in to_restore {
+            if let Err(e) = self.leave_ascii(module) {
+                report.push(format!(
+                    "could not return module {module} to binary mode: {e}"
+                ));
+            }
+        }
+        let back_to_ascii: Vec<u8> = self
+            .modules
+            .iter()
+            .filter(|(_, m)| m.mode == WireMode::Binary && m.found_in == WireMode::Ascii)
+            .map(|(&a, _)| a)
+            .collect();
+        for module in back_to_ascii {
+            if let Err(e) = self.enter_ascii(module) {
+                report.push(format!(
+                    "could not return module {module} to ASCII mode: {e}"
+                ));
+            }
+        }
+        self.core.wire.note("session closed");
+        report
+    }
+
+    /// A human description of an instruction for the transcript.
+    fn describe_instruction(&self, instruction: &Instruction) -> String {
+        format_instruction(instruction, &self.profile)
+    }
+
+    /// Runs one exchange with `module` between the wire's begin and finish, so that any failure
+    /// — whatever returns it — leaves the line suspect until it has settled. `optional` replies
+    /// (BIN) may fail to come without that.
+    fn exchange<T>(
+        &mut self,
+        module: u8,
+        optional: bool,
+        f: impl FnOnce(&mut Self) -> Result<T, SessionError>,
+    ) -> Result<T, SessionError> {
+        let timeout = self.core.options.timeout;
+        let peer = Peer::Module(module.into());
+        let unanswered = &mut self.unanswered;
+        let result = self
+            .core
+            .wire
+            .begin(peer, self.core.urgent, timeout, &mut |bytes| {
+                harmless(bytes, unanswered)
+            })
+            .and_then(|()| f(self));
+        let settled = match &result {
+            Ok(_) => true,
+            Err(SessionError::Timeout { .. }) => optional,
+            Err(_) => false,
+        };
+        self.core.wire.finish(settled);
+        result
+    }
+}
+
+/// The TMCL module addresses among `addresses`.
+fn modules(addresses: &Addresses) -> Vec<u8> {
+    addresses
+        .iter()
+        .filter_map(|a| a.and_then(|a| u8::try_from(a).ok()))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests;

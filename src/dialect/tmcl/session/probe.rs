@@ -1,0 +1,63 @@
+//! Looking for modules on the bus (`tmclsh scan`): a shorter timeout for the probes, binary frames
+//! to addresses that have no ASCII address character, and what the session learnt about a module.
+
+use std::time::{Duration, Instant};
+
+use crate::dialect::tmcl::protocol::Instruction;
+
+use super::{TmclExchange, TmclSession, WireMode};
+use crate::session::SessionError;
+
+impl TmclSession {
+    /// The mode a module was in when the session first reached it.
+    pub fn found_in(&self, module: u8) -> Option<WireMode> {
+        self.modules.get(&module).map(|m| m.found_in)
+    }
+
+    /// Corrects the mode a module was found in, when the caller knows better than the guess from
+    /// global parameter 67 bit 0 (a scan that saw it not answer binary frames); the session puts
+    /// it back in that mode when it closes.
+    pub fn set_found_in(&mut self, module: u8, mode: WireMode) {
+        if let Some(state) = self.modules.get_mut(&module) {
+            state.found_in = mode;
+        }
+    }
+
+    /// Sends one binary frame to any bus address (1..255) and waits for its reply, without
+    /// entering ASCII mode or remembering the module. ASCII-mode modules on the same bus take the
+    /// frame as the start of a line: call [`TmclSession::end_partial_line`] after probing.
+    pub fn probe_binary(
+        &mut self,
+        address: u8,
+        instruction: Instruction,
+    ) -> Result<TmclExchange, SessionError> {
+        self.binary_request(address, instruction)
+    }
+
+    /// Leaves the line quiet for `duration` — binary-mode receivers drop a partial frame after
+    /// their frame timeout — reading and discarding whatever arrives meanwhile.
+    pub fn quiet(&mut self, duration: Duration) -> Result<(), SessionError> {
+        let deadline = Instant::now() + duration;
+        while Instant::now() < deadline {
+            if self.core.wire.fill(deadline)? {
+                let n = self.core.wire.rx.len();
+                self.core
+                    .wire
+                    .discard_quietly(n, "while the line was kept quiet");
+            }
+        }
+        let n = self.core.wire.rx.len();
+        self.core
+            .wire
+            .discard_quietly(n, "while the line was kept quiet");
+        Ok(())
+    }
+
+    /// Sends a lone CR, which ends whatever partial line ASCII-mode modules hold.
+    pub fn end_partial_line(&mut self) -> Result<(), SessionError> {
+        self.core.wire.send(
+            b"\r",
+            "end of line, clears what the probes left in line buffers",
+        )
+    }
+}

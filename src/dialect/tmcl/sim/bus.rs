@@ -1,0 +1,253 @@
+//! Several simulated TMCM-142 modules on one RS-485 line: every byte reaches every module, each
+//! answers only its own address, in binary and in ASCII mode. The bus is the [`Device`] that
+//! adapters serve.
+
+use std::sync::Arc;
+use std::time::Duration;
+
+use crate::dialect::tmcl::profile::Profile;
+use crate::sim::{Device, LogSink};
+
+use super::control_cmd;
+use super::machine::Machine;
+use super::module::{Module, Sink};
+use super::motion::{Switch, Switches};
+use super::options::Quirks;
+use super::state::{BusImage, Eeprom};
+
+/// How to build a bus.
+pub struct BusOptions {
+    /// Factory addresses of the modules, in bus order. Default: one module at address 1.
+    pub addresses: Vec<u8>,
+    /// Behaviour the manual leaves open.
+    pub quirks: Quirks,
+    /// Where each module's virtual switches are (the same for every module).
+    pub switches: Switches,
+    /// The EEPROM kept between runs; `None` starts from factory settings every time.
+    pub eeprom: Option<Eeprom>,
+    /// Where to log decoded traffic; `None` logs nothing (and costs nothing).
+    pub log: Option<LogSink>,
+}
+
+impl Default for BusOptions {
+    fn default() -> Self {
+        BusOptions {
+            addresses: vec![1],
+            quirks: Quirks::default(),
+            switches: Switches::default(),
+            eeprom: None,
+            log: None,
+        }
+    }
+}
+
+/// What the motor of a module is doing, for tests and the console.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MotorState {
+    /// Position counter (AP 1).
+    pub position: i32,
+    /// Target position (AP 0).
+    pub target: i32,
+    /// Velocity in microsteps per second.
+    pub velocity: f64,
+    /// Target position reached (AP 8).
+    pub target_reached: bool,
+    /// Reference search in progress.
+    pub searching: bool,
+}
+
+/// Simulated modules sharing one serial line.
+pub struct Bus {
+    modules: Vec<Module>,
+    out: Vec<u8>,
+    quirks: Quirks,
+    eeprom: Option<Eeprom>,
+    log: Option<LogSink>,
+}
+
+fn secs(now: Duration) -> f64 {
+    now.as_secs_f64()
+}
+
+impl Bus {
+    /// Modules as `options` say, with their EEPROM from the store, powered up at time 0.
+    pub fn new(profile: Arc<Profile>, options: BusOptions) -> Bus {
+        let image = options.eeprom.as_ref().and_then(Eeprom::loaded);
+        let modules = options
+            .addresses
+            .iter()
+            .map(|&slot| {
+                let mut machine = Machine::new(profile.clone(), slot, options.switches);
+                if let Some(stored) = image.and_then(|i| i.module(slot)) {
+                    machine.load(stored);
+                }
+                Module::new(machine)
+            })
+            .collect();
+        let mut bus = Bus {
+            modules,
+            out: Vec::new(),
+            quirks: options.quirks,
+            eeprom: options.eeprom,
+            log: options.log,
+        };
+        bus.save_if_changed(true);
+        bus
+    }
+
+    /// One factory-fresh module at address 1 with the built-in TMCM-142 profile.
+    pub fn builtin() -> Bus {
+        Bus::new(Profile::builtin(), BusOptions::default())
+    }
+
+    /// Factory addresses of the modules, in bus order.
+    pub fn slots(&self) -> Vec<u8> {
+        self.modules.iter().map(|m| m.machine.slot).collect()
+    }
+
+    fn module(&mut self, slot: u8) -> Result<&mut Module, String> {
+        let slots = self.slots();
+        self.modules
+            .iter_mut()
+            .find(|m| m.machine.slot == slot)
+            .ok_or_else(|| format!("no module {slot} on the bus (modules: {slots:?})"))
+    }
+
+    /// Handles events due by `now` and sends what they produce.
+    fn advance(&mut self, now: Duration) {
+        let t = secs(now);
+        for module in &mut self.modules {
+            module.machine.advance(t);
+            if !module.machine.due_events.is_empty() {
+                let mut sink = Sink {
+                    out: &mut self.out,
+                    quirks: &self.quirks,
+                    log: self.log.as_deref_mut(),
+                    t,
+                };
+                module.send_events(&mut sink);
+            }
+        }
+    }
+
+    /// Saves the EEPROM image when a module's EEPROM changed (or when `force`d at start).
+    fn save_if_changed(&mut self, force: bool) {
+        let changed = self.modules.iter().any(|m| m.machine.eeprom_changed);
+        let Some(eeprom) = self.eeprom.as_mut() else {
+            return;
+        };
+        if !changed && !force {
+            return;
+        }
+        if !changed && eeprom.loaded().is_some() {
+            return;
+        }
+        let image = BusImage {
+            modules: self.modules.iter().map(|m| m.machine.image()).collect(),
+        };
+        eeprom.save(&image);
+        for module in &mut self.modules {
+            module.machine.eeprom_changed = false;
+        }
+    }
+
+    /// Sets a digital input of a module.
+    pub fn set_input(
+        &mut self,
+        now: Duration,
+        slot: u8,
+        port: u8,
+        high: bool,
+    ) -> Result<(), String> {
+        self.advance(now);
+        self.module(slot)?.machine.io.set_input(port, high)
+    }
+
+    /// Sets an analog input of a module (0..adc_max).
+    pub fn set_analog(
+        &mut self,
+        now: Duration,
+        slot: u8,
+        port: u8,
+        value: i32,
+    ) -> Result<(), String> {
+        self.advance(now);
+        self.module(slot)?.machine.io.set_analog(port, value)
+    }
+
+    /// Moves (or with `None` disconnects) a virtual switch of a module, in physical microsteps.
+    pub fn set_switch(
+        &mut self,
+        now: Duration,
+        slot: u8,
+        which: Switch,
+        position: Option<i64>,
+    ) -> Result<(), String> {
+        self.advance(now);
+        let machine = &mut self.module(slot)?.machine;
+        machine.axis.switches.set(which, position);
+        machine.axis.settle(secs(now));
+        Ok(())
+    }
+
+    /// The state of an output of a module.
+    pub fn output(&mut self, slot: u8, port: u8) -> Option<bool> {
+        self.module(slot).ok()?.machine.io.output(port)
+    }
+
+    /// What the motor of a module is doing at `now`.
+    pub fn motor(&mut self, now: Duration, slot: u8) -> Option<MotorState> {
+        self.advance(now);
+        let t = secs(now);
+        let machine = &self.module(slot).ok()?.machine;
+        Some(MotorState {
+            position: machine.axis.counter(t),
+            target: machine.axis_value(0, t),
+            velocity: machine.axis.state(t).v,
+            target_reached: machine.axis_value(8, t) == 1,
+            searching: machine.axis.search_status() != 0,
+        })
+    }
+
+    /// Whether a module is in ASCII mode.
+    pub fn is_ascii(&mut self, slot: u8) -> Option<bool> {
+        Some(self.module(slot).ok()?.is_ascii())
+    }
+}
+
+impl Device for Bus {
+    fn receive(&mut self, now: Duration, bytes: &[u8]) {
+        self.advance(now);
+        let t = secs(now);
+        for module in &mut self.modules {
+            let mut sink = Sink {
+                out: &mut self.out,
+                quirks: &self.quirks,
+                log: self.log.as_deref_mut(),
+                t,
+            };
+            module.receive(t, bytes, &mut sink);
+        }
+        self.save_if_changed(false);
+    }
+
+    fn poll_output(&mut self, now: Duration, out: &mut Vec<u8>) {
+        self.advance(now);
+        out.append(&mut self.out);
+    }
+
+    fn next_due(&self, now: Duration) -> Option<Duration> {
+        if !self.out.is_empty() {
+            return Some(now);
+        }
+        self.modules
+            .iter()
+            .filter_map(|m| m.machine.next_output())
+            .min_by(f64::total_cmp)
+            .map(|t| Duration::from_nanos((t.max(0.0) * 1e9).ceil() as u64))
+    }
+
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+        control_cmd::run(self, now, command)
+    }
+}

@@ -1,0 +1,32 @@
+//! The simulated TMCM-142: binary and ASCII TMCL on a bus of modules, motion that takes time,
+//! parameters and EEPROM from the profile, I/O, program memory.
+//!
+//! Everything here is a pure state machine: bytes and time in, bytes out. [`Bus`] is the
+//! [`crate::sim::Device`] the adapters serve; the modules on it ([`module`]) decode frames and
+//! lines and hand commands to their [`machine`], whose motor ([`motion`], [`ramp`]) is computed
+//! analytically from time, so results are exact and independent of how often anyone looks.
+
+mod ascii;
+mod bus;
+mod control;
+mod control_cmd;
+mod exec;
+pub mod flags;
+mod io;
+mod machine;
+mod module;
+mod motion;
+mod options;
+mod params;
+mod program;
+mod ramp;
+mod state;
+mod vm;
+
+pub use bus::{Bus, BusOptions, MotorState};
+pub use motion::{Switch, Switches};
+pub use options::{Backspace, LineEnd, Quirks};
+pub use state::{BusImage, Eeprom, ModuleImage, StateError};
+
+#[cfg(test)]
+mod tests;

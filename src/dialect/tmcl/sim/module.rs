@@ -1,0 +1,280 @@
+//! One module's serial interface: binary frames in binary mode, address-character lines in ASCII
+//! mode, and the replies to both. Lines are read with tmclsh's own command grammar, so client
+//! and simulator agree on one syntax.
+
+use crate::dialect::tmcl::protocol::frame::{ChecksumError, encode_version_string, hex};
+use crate::dialect::tmcl::protocol::line::{address_char, resolve};
+use crate::dialect::tmcl::protocol::syntax::parse_line;
+use crate::dialect::tmcl::protocol::{
+    AsciiReply, AsciiWord, CommandFrame, FrameDecoder, InputError, Instruction, Op, Opcode,
+    ReplyFrame, Status, format_instruction, host_char,
+};
+
+use super::ascii::{Context, Echo, LineInput};
+use super::exec::{Effect, Outcome, Reply, Source};
+use super::machine::Machine;
+use super::options::Quirks;
+
+/// Where a module's replies and log lines go.
+pub(crate) struct Sink<'a> {
+    pub out: &'a mut Vec<u8>,
+    pub quirks: &'a Quirks,
+    pub log: Option<&'a mut (dyn FnMut(&str) + Send + 'static)>,
+    /// The time, for log lines.
+    pub t: f64,
+}
+
+impl Sink<'_> {
+    fn log(&mut self, line: impl FnOnce() -> String) {
+        if let Some(log) = self.log.as_mut() {
+            log(&format!("{:12.6} {}", self.t, line()));
+        }
+    }
+}
+
+/// A module on the bus.
+pub(crate) struct Module {
+    pub machine: Machine,
+    ascii: bool,
+    decoder: FrameDecoder,
+    last_byte: f64,
+    line: LineInput,
+}
+
+impl Module {
+    pub fn new(machine: Machine) -> Module {
+        let mut module = Module {
+            machine,
+            ascii: false,
+            decoder: FrameDecoder::new(),
+            last_byte: 0.0,
+            line: LineInput::new(),
+        };
+        module.power_up();
+        module
+    }
+
+    /// The interface after power-up: ASCII when GP 67 bit 0 says so.
+    fn power_up(&mut self) {
+        self.ascii = self.machine.ascii_config() & 1 != 0;
+        self.decoder.clear();
+        self.line.clear();
+    }
+
+    /// Whether the module is in ASCII mode.
+    pub fn is_ascii(&self) -> bool {
+        self.ascii
+    }
+
+    /// Bytes from the line at `t` (the machine has been advanced to `t`).
+    pub fn receive(&mut self, t: f64, bytes: &[u8], sink: &mut Sink) {
+        let timeout = f64::from(self.machine.profile.sim.frame_timeout_ms) / 1000.0;
+        if self.decoder.pending() > 0 && t - self.last_byte > timeout {
+            self.decoder.clear();
+        }
+        self.last_byte = t;
+        for &byte in bytes {
+            if self.ascii {
+                self.ascii_byte(t, byte, sink);
+            } else {
+                self.decoder.push(&[byte]);
+                match self.decoder.next_frame() {
+                    None => {}
+                    Some(Ok(frame)) => self.frame(t, &frame, sink),
+                    Some(Err(error)) => self.bad_frame(&error, sink),
+                }
+            }
+        }
+    }
+
+    fn bad_frame(&mut self, error: &ChecksumError, sink: &mut Sink) {
+        if error.bytes[0] != self.machine.address() {
+            return;
+        }
+        sink.log(|| {
+            format!(
+                "module {} <- {}  bad checksum",
+                self.machine.slot,
+                hex(&error.bytes)
+            )
+        });
+        // Trinamic's firmware answers status 1 with command 0 and value 0.
+        self.send_frame(Status::WrongChecksum, Opcode::Other(0), 0, sink);
+    }
+
+    fn frame(&mut self, t: f64, bytes: &[u8; 9], sink: &mut Sink) {
+        let Ok(frame) = CommandFrame::decode(bytes) else {
+            return;
+        };
+        if frame.address != self.machine.address() {
+            return;
+        }
+        let instruction = frame.instruction;
+        sink.log(|| {
+            format!(
+                "module {} <- {}  {}",
+                self.machine.slot,
+                hex(bytes),
+                format_instruction(&instruction, &self.machine.profile)
+            )
+        });
+        let outcome = self.machine.execute(t, &instruction, Source::Direct);
+        match outcome.reply {
+            Reply::Normal(status, value) => {
+                let quiet = outcome.effect == Effect::EnterAscii && !sink.quirks.reply_to_139;
+                if !quiet {
+                    self.send_frame(status, instruction.command, value, sink);
+                }
+            }
+            Reply::Version => {
+                let reply = encode_version_string(
+                    self.machine.host(),
+                    &self.machine.profile.sim.version_string,
+                );
+                sink.log(|| format!("module {} -> {}", self.machine.slot, hex(&reply)));
+                sink.out.extend_from_slice(&reply);
+            }
+            Reply::Silent => {}
+        }
+        self.apply(outcome.effect);
+    }
+
+    fn apply(&mut self, effect: Effect) {
+        match effect {
+            Effect::None => {}
+            Effect::EnterAscii => {
+                self.ascii = true;
+                self.line.clear();
+            }
+            Effect::Rebooted => self.power_up(),
+        }
+    }
+
+    fn send_frame(&mut self, status: Status, command: Opcode, value: i32, sink: &mut Sink) {
+        let reply = ReplyFrame {
+            host: self.machine.host(),
+            module: self.machine.address(),
+            status,
+            command,
+            value,
+        }
+        .encode();
+        sink.log(|| {
+            format!(
+                "module {} -> {}  status {} value {value}",
+                self.machine.slot,
+                hex(&reply),
+                status.code()
+            )
+        });
+        sink.out.extend_from_slice(&reply);
+    }
+
+    fn ascii_byte(&mut self, t: f64, byte: u8, sink: &mut Sink) {
+        let config = self.machine.ascii_config();
+        let cx = Context {
+            address: address_char(self.machine.address()).map(|c| c as u8),
+            echo: Echo::from_config(config),
+            quirks: sink.quirks,
+            max: self.machine.profile.sim.ascii_line_max,
+        };
+        if !self.line.feed(byte, &cx, sink.out) {
+            return;
+        }
+        let text = self.line.line().unwrap_or("\u{FFFD}").to_string();
+        sink.log(|| format!("module {} <- {text:?}", self.machine.slot));
+        let (outcome, binary_after) = self.ascii_line(t, &text);
+        let reply_wanted = !binary_after || sink.quirks.reply_to_bin;
+        if let (Reply::Normal(status, value), true) = (outcome.reply, reply_wanted) {
+            self.send_line(status, value, sink);
+        }
+        if binary_after {
+            self.ascii = false;
+            self.decoder.clear();
+        }
+        self.apply(outcome.effect);
+    }
+
+    /// Executes one ASCII line; the flag says the module goes back to binary mode (BIN).
+    fn ascii_line(&mut self, t: f64, text: &str) -> (Outcome, bool) {
+        let profile = self.machine.profile.clone();
+        let parsed = parse_line(text, |w| profile.commands.is_word(w))
+            .map_err(InputError::from)
+            .and_then(|raw| match raw.address {
+                // The address character was the line's first; another one is not a command.
+                Some(_) => Err(InputError::UnknownCommand {
+                    word: text.to_string(),
+                    suggestion: None,
+                }),
+                None => resolve(&raw, &profile),
+            });
+        let line = match parsed {
+            Ok(line) => line,
+            Err(error) => return (Outcome::status(ascii_status(&error), 0), false),
+        };
+        match line.op {
+            Op::Ascii(AsciiWord::Bin) => (Outcome::ok(0), true),
+            Op::Ascii(AsciiWord::Run) => {
+                let run = Instruction::new(Opcode::RunApplication, 1, 0, 0);
+                (self.machine.control(t, &run), false)
+            }
+            Op::Ascii(AsciiWord::Stop) => {
+                let stop = Instruction::new(Opcode::StopApplication, 0, 0, 0);
+                (self.machine.control(t, &stop), false)
+            }
+            Op::Command(instruction) => {
+                let allowed = profile
+                    .commands
+                    .by_number(instruction.command)
+                    .is_some_and(|spec| spec.ascii_allowed);
+                if !allowed {
+                    return (Outcome::error(Status::InvalidCommand, &instruction), false);
+                }
+                (self.machine.execute(t, &instruction, Source::Direct), false)
+            }
+        }
+    }
+
+    fn send_line(&mut self, status: Status, value: i32, sink: &mut Sink) {
+        // The host and module characters follow the manual's rule for address characters,
+        // 0x40 + address, whatever the host address (GP 76, 0..255) is.
+        let reply = AsciiReply {
+            host: host_char(self.machine.host()),
+            module: host_char(self.machine.address()),
+            status,
+            value,
+        };
+        sink.log(|| format!("module {} -> {:?}", self.machine.slot, reply.format()));
+        sink.out.extend_from_slice(&reply.to_bytes());
+        sink.out.extend_from_slice(sink.quirks.reply_end.bytes());
+    }
+
+    /// Sends the second replies of 138 that have come due.
+    pub fn send_events(&mut self, sink: &mut Sink) {
+        let events = std::mem::take(&mut self.machine.due_events);
+        for (_, mask) in events {
+            if self.ascii {
+                self.send_line(Status::PositionReachedEvent, mask, sink);
+            } else {
+                self.send_frame(
+                    Status::PositionReachedEvent,
+                    Opcode::PositionEvent,
+                    mask,
+                    sink,
+                );
+            }
+        }
+    }
+}
+
+/// The status a module answers to an ASCII line it cannot use.
+fn ascii_status(error: &InputError) -> Status {
+    match error {
+        InputError::Syntax(_)
+        | InputError::UnknownCommand { .. }
+        | InputError::UnknownCommandNumber { .. }
+        | InputError::NotInMode { .. } => Status::InvalidCommand,
+        InputError::Param(_) => Status::WrongType,
+        _ => Status::InvalidValue,
+    }
+}

@@ -1,0 +1,245 @@
+//! Parameter memory of one simulated module: RAM values and their EEPROM copies, with the access
+//! rules, ranges and factory defaults of the profile. Parameters whose value is live (positions,
+//! switches, program status) are computed elsewhere; this is plain storage plus the rules.
+
+use std::sync::Arc;
+
+use crate::dialect::tmcl::profile::{Param, Profile};
+use crate::dialect::tmcl::protocol::Status;
+
+/// Global parameter banks the module has (0 module settings, 1 reserved, 2 user variables).
+pub(crate) const BANKS: usize = 3;
+
+/// Which parameter: an axis parameter number, or a bank and number.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Slot {
+    /// SAP/GAP parameter.
+    Axis(u8),
+    /// SGP/GGP parameter in a bank.
+    Global(u8, u8),
+}
+
+/// The bank-0 global parameters that live in EEPROM only: SGP writes them through at once
+/// (generic TMCL reference, chapter 8).
+pub(crate) fn eeprom_only(slot: Slot) -> bool {
+    matches!(slot, Slot::Global(0, 64..=127))
+}
+
+#[derive(Clone)]
+struct Values {
+    axis: [i32; 256],
+    global: [[i32; 256]; BANKS],
+}
+
+impl Values {
+    fn zero() -> Box<Values> {
+        Box::new(Values {
+            axis: [0; 256],
+            global: [[0; 256]; BANKS],
+        })
+    }
+
+    fn get(&self, slot: Slot) -> i32 {
+        match slot {
+            Slot::Axis(n) => self.axis[n as usize],
+            Slot::Global(bank, n) => self.global[bank as usize][n as usize],
+        }
+    }
+
+    fn set(&mut self, slot: Slot, value: i32) {
+        match slot {
+            Slot::Axis(n) => self.axis[n as usize] = value,
+            Slot::Global(bank, n) => self.global[bank as usize][n as usize] = value,
+        }
+    }
+}
+
+/// The profile, with the bank-0 interface settings (GP 64..127: address, host address, ASCII
+/// mode, EEPROM magic …) the simulated firmware works by. A custom profile that leaves them out
+/// gets the built-in profile's rows: without them the module would answer to no address at all.
+fn with_interface_settings(profile: Arc<Profile>) -> Arc<Profile> {
+    let builtin = Profile::builtin();
+    let missing: Vec<Param> = builtin
+        .global
+        .iter()
+        .filter(|p| eeprom_only(Slot::Global(p.bank(), p.number)))
+        .filter(|p| profile.global_param(0, p.number).is_none())
+        .cloned()
+        .collect();
+    if missing.is_empty() {
+        return profile;
+    }
+    let mut profile = Profile::clone(&profile);
+    profile.global.extend(missing);
+    profile.global.sort_by_key(|p| (p.bank(), p.number));
+    Arc::new(profile)
+}
+
+/// RAM and EEPROM values of every parameter of the profile.
+pub(crate) struct Params {
+    profile: Arc<Profile>,
+    axis_index: Box<[Option<u16>; 256]>,
+    global_index: Box<[[Option<u16>; 256]; BANKS]>,
+    ram: Box<Values>,
+    rom: Box<Values>,
+    factory_address: u8,
+}
+
+impl Params {
+    /// Factory state of a module whose serial address is `address`.
+    pub fn new(profile: Arc<Profile>, address: u8) -> Params {
+        let profile = with_interface_settings(profile);
+        let mut axis_index = Box::new([None; 256]);
+        for (i, p) in profile.axis.iter().enumerate() {
+            axis_index[p.number as usize] = Some(i as u16);
+        }
+        let mut global_index = Box::new([[None; 256]; BANKS]);
+        for (i, p) in profile.global.iter().enumerate() {
+            if let Some(bank) = global_index.get_mut(p.bank() as usize) {
+                bank[p.number as usize] = Some(i as u16);
+            }
+        }
+        let mut params = Params {
+            profile,
+            axis_index,
+            global_index,
+            ram: Values::zero(),
+            rom: Values::zero(),
+            factory_address: address,
+        };
+        params.factory();
+        params.power_up();
+        params
+    }
+
+    /// The profile row of a parameter, if the module has it.
+    pub fn spec(&self, slot: Slot) -> Option<&Param> {
+        let index = match slot {
+            Slot::Axis(n) => self.axis_index[n as usize],
+            Slot::Global(bank, n) => self.global_index.get(bank as usize)?[n as usize],
+        }?;
+        Some(match slot {
+            Slot::Axis(_) => &self.profile.axis[index as usize],
+            Slot::Global(..) => &self.profile.global[index as usize],
+        })
+    }
+
+    /// Checks that GAP/GGP may read the parameter: unknown or unreadable answers wrong type.
+    pub fn check_read(&self, slot: Slot) -> Result<(), Status> {
+        match self.spec(slot) {
+            Some(p) if p.access.read => Ok(()),
+            _ => Err(Status::WrongType),
+        }
+    }
+
+    /// Checks that SAP/SGP may write `value`: unknown or read-only answers wrong type (as
+    /// Trinamic's firmware does), a value outside the range answers invalid value.
+    pub fn check_write(&self, slot: Slot, value: i32) -> Result<(), Status> {
+        match self.spec(slot) {
+            Some(p) if p.access.write => {
+                if p.accepts(value.into()) {
+                    Ok(())
+                } else {
+                    Err(Status::InvalidValue)
+                }
+            }
+            _ => Err(Status::WrongType),
+        }
+    }
+
+    /// Checks that STAP/RSAP/STGP/RSGP apply: the parameter must be EEPROM backed.
+    pub fn check_store(&self, slot: Slot) -> Result<(), Status> {
+        match self.spec(slot) {
+            Some(p) if p.access.store => Ok(()),
+            _ => Err(Status::WrongType),
+        }
+    }
+
+    /// The RAM value.
+    pub fn get(&self, slot: Slot) -> i32 {
+        self.ram.get(slot)
+    }
+
+    /// Sets the RAM value (no checks).
+    pub fn set(&mut self, slot: Slot, value: i32) {
+        self.ram.set(slot, value);
+    }
+
+    /// The EEPROM value.
+    pub fn stored(&self, slot: Slot) -> i32 {
+        self.rom.get(slot)
+    }
+
+    /// Copies RAM to EEPROM; whether the EEPROM changed.
+    pub fn store(&mut self, slot: Slot) -> bool {
+        let value = self.ram.get(slot);
+        self.set_stored(slot, value)
+    }
+
+    /// Writes an EEPROM value; whether it changed.
+    pub fn set_stored(&mut self, slot: Slot, value: i32) -> bool {
+        let changed = self.rom.get(slot) != value;
+        self.rom.set(slot, value);
+        changed
+    }
+
+    /// Copies EEPROM to RAM.
+    pub fn restore(&mut self, slot: Slot) {
+        self.ram.set(slot, self.rom.get(slot));
+    }
+
+    /// Power-up: EEPROM-backed parameters from EEPROM, the others from their defaults.
+    pub fn power_up(&mut self) {
+        for slot in self.slots() {
+            let value = match self.spec(slot) {
+                Some(p) if p.access.store => self.rom.get(slot),
+                _ => self.factory_value(slot),
+            };
+            self.ram.set(slot, value);
+        }
+    }
+
+    /// Resets the EEPROM to factory values (RAM is untouched until the next power-up).
+    pub fn factory(&mut self) {
+        for slot in self.slots() {
+            let value = self.factory_value(slot);
+            self.rom.set(slot, value);
+        }
+    }
+
+    /// The factory value: the profile default, the module's own address for GP 66.
+    pub fn factory_value(&self, slot: Slot) -> i32 {
+        if slot == Slot::Global(0, 66) {
+            return self.factory_address.into();
+        }
+        self.spec(slot)
+            .and_then(|p| p.default)
+            .and_then(|d| i32::try_from(d).ok())
+            .unwrap_or(0)
+    }
+
+    /// Every parameter the profile defines (in the banks the module has).
+    pub fn slots(&self) -> Vec<Slot> {
+        self.profile
+            .axis
+            .iter()
+            .map(|p| Slot::Axis(p.number))
+            .chain(
+                self.profile
+                    .global
+                    .iter()
+                    .filter(|p| (p.bank() as usize) < BANKS)
+                    .map(|p| Slot::Global(p.bank(), p.number)),
+            )
+            .collect()
+    }
+
+    /// EEPROM-backed parameters with their stored values, for the state file.
+    pub fn stored_values(&self) -> Vec<(Slot, i32)> {
+        self.slots()
+            .into_iter()
+            .filter(|&s| self.spec(s).is_some_and(|p| p.access.store))
+            .map(|s| (s, self.rom.get(s)))
+            .collect()
+    }
+}

@@ -1,5 +1,0 @@
-//! Tests of the SMD4 protocol against the document: every example, every validation error.
-
-mod examples;
-mod responses;
-mod validation;

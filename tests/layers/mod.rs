@@ -1,0 +1,254 @@
+//! The layers of ARCHITECTURE.md's diagram are true of the code: every module of the library
+//! uses only modules of lower layers, the dialect folders never use each other, and outside them
+//! only the list of dialects and the subcommands of one dialect name one.
+
+mod paths;
+
+use std::collections::BTreeMap;
+
+use crate::util::repo;
+
+use paths::{Source, sources, used_paths};
+
+/// Files outside the dialect folders that may name one: the list of dialects, and the
+/// subcommands only TMCL has (the assembler, the disassembler, program download, the list of
+/// module profiles), and the fuzz targets' entry points, one per parser of either dialect.
+const NAMING_A_DIALECT: &[&str] = &[
+    "src/dialect/mod.rs",
+    "src/cli/mod.rs",
+    "src/cli/asm.rs",
+    "src/cli/disasm.rs",
+    "src/cli/download.rs",
+    "src/cli/profiles.rs",
+    "src/fuzz_entry.rs",
+];
+
+/// The layers of the diagram, top first: the module names on each line of the fenced block that
+/// follows the `<!-- layers -->` marker in ARCHITECTURE.md. Names on one line are peers.
+fn layers() -> Vec<Vec<String>> {
+    let text = std::fs::read_to_string(repo().join("ARCHITECTURE.md")).expect("ARCHITECTURE.md");
+    let after = text
+        .split_once("<!-- layers -->")
+        .expect("ARCHITECTURE.md marks its layer diagram with <!-- layers -->")
+        .1;
+    let block = after
+        .split("```")
+        .nth(1)
+        .expect("a fenced block after the marker");
+    block
+        .lines()
+        .skip(1)
+        .map(|line| line.split('(').next().unwrap_or(""))
+        .map(|line| {
+            line.split('·')
+                .map(|name| name.trim().to_string())
+                .filter(|name| {
+                    !name.is_empty() && name.chars().all(|c| c.is_alphanumeric() || c == '_')
+                })
+                .collect::<Vec<_>>()
+        })
+        .filter(|names| !names.is_empty())
+        .collect()
+}
+
+/// Each module's layer, 0 at the top.
+fn layer_of() -> BTreeMap<String, usize> {
+    let mut map = BTreeMap::new();
+    for (depth, names) in layers().into_iter().enumerate() {
+        for name in names {
+            assert!(
+                map.insert(name.clone(), depth).is_none(),
+                "{name} is in two layers"
+            );
+        }
+    }
+    map
+}
+
+fn library() -> Vec<Source> {
+    sources(repo())
+        .into_iter()
+        .filter(|s| !s.module.is_empty())
+        .collect()
+}
+
+#[test]
+fn the_diagram_names_every_module_of_the_library() {
+    let layers = layer_of();
+    for source in library() {
+        let top = &source.module[0];
+        assert!(
+            layers.contains_key(top),
+            "{} is in module {top}, which ARCHITECTURE.md's diagram does not place",
+            source.file.display()
+        );
+    }
+}
+
+#[test]
+fn every_module_uses_only_the_layers_below_it() {
+    let wrong = upward_uses(&library(), &layer_of());
+    assert!(
+        wrong.is_empty(),
+        "upward or sideways uses:\n{}",
+        wrong.join("\n")
+    );
+}
+
+/// The uses in `sources` of a module on the same layer or above.
+fn upward_uses(sources: &[Source], layers: &BTreeMap<String, usize>) -> Vec<String> {
+    let mut wrong = Vec::new();
+    for source in sources.iter().filter(|s| !s.test_only) {
+        let top = &source.module[0];
+        let own = layers[top];
+        for path in used_paths(source) {
+            let used = &path[0];
+            if used == top {
+                continue;
+            }
+            if layers.get(used).is_some_and(|&layer| layer <= own) {
+                wrong.push(format!(
+                    "{} ({top}) uses {} (not a layer below)",
+                    source.file.display(),
+                    path.join("::")
+                ));
+            }
+        }
+    }
+    wrong
+}
+
+#[test]
+fn dialect_folders_never_use_each_other() {
+    let wrong = crossings(&library(), &dialect_folders());
+    assert!(
+        wrong.is_empty(),
+        "dialects using each other:\n{}",
+        wrong.join("\n")
+    );
+}
+
+/// The uses in `sources` of one dialect folder by another.
+fn crossings(sources: &[Source], folders: &[String]) -> Vec<String> {
+    let mut wrong = Vec::new();
+    for source in sources.iter().filter(|s| !s.test_only) {
+        let own = folder_of(&source.module, folders);
+        for path in used_paths(source) {
+            if let Some(used) = folder_of(&path, folders) {
+                if own.is_some_and(|own| own != used) {
+                    wrong.push(format!(
+                        "{} uses {}",
+                        source.file.display(),
+                        path.join("::")
+                    ));
+                }
+            }
+        }
+    }
+    wrong
+}
+
+#[test]
+fn outside_its_folder_a_dialect_is_named_only_by_the_list_and_its_own_subcommands() {
+    let folders = dialect_folders();
+    let mut wrong = Vec::new();
+    for source in library().iter().filter(|s| !s.test_only) {
+        if folder_of(&source.module, &folders).is_some() {
+            continue;
+        }
+        let file = source.file.to_string_lossy().replace('\\', "/");
+        let names = used_paths(source)
+            .iter()
+            .any(|path| folder_of(path, &folders).is_some());
+        if names && !NAMING_A_DIALECT.contains(&file.as_str()) {
+            wrong.push(file);
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "shared files naming a dialect (use the descriptor or the trait):\n{}",
+        wrong.join("\n")
+    );
+}
+
+/// The dialect folders: the folders under `src/dialect/`.
+fn dialect_folders() -> Vec<String> {
+    let dir = repo().join("src").join("dialect");
+    let mut folders: Vec<String> = std::fs::read_dir(dir)
+        .expect("src/dialect")
+        .filter_map(|e| e.ok())
+        .filter(|e| e.path().is_dir() && e.path().join("mod.rs").exists())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|name| {
+            std::fs::read_to_string(repo().join("src/dialect").join(name).join("mod.rs"))
+                .is_ok_and(|text| text.contains("pub static DIALECT: Dialect"))
+        })
+        .collect();
+    folders.sort();
+    assert!(folders.len() >= 2, "dialect folders found: {folders:?}");
+    folders
+}
+
+/// The dialect folder a module path is in (`dialect::tmcl::…` → `tmcl`).
+fn folder_of<'a>(path: &[String], folders: &'a [String]) -> Option<&'a str> {
+    match path {
+        [dialect, folder, ..] if dialect == "dialect" => {
+            folders.iter().find(|f| *f == folder).map(String::as_str)
+        }
+        _ => None,
+    }
+}
+
+/// A source file made up for the checks' own tests.
+fn made_up(file: &str, module: &[&str], code: &str) -> Source {
+    Source {
+        file: file.into(),
+        module: module.iter().map(|m| m.to_string()).collect(),
+        code: paths::strip(code),
+        test_only: false,
+    }
+}
+
+#[test]
+fn the_checks_see_an_upward_use_and_a_dialect_crossing() {
+    let layers = layer_of();
+    let folders = dialect_folders();
+    let session = made_up(
+        "src/session/x.rs",
+        &["session", "x"],
+        "use crate::cli::Failure;\nuse super::super::dialect::DialectSession;\n// crate::repl\nlet s = \"crate::shell\";\nlet q = '\\'';\nlet r = r#\"crate::repl\"#;",
+    );
+    let wrong = upward_uses(&[session], &layers);
+    assert_eq!(wrong.len(), 2, "{wrong:?}");
+    assert!(wrong[0].contains("uses cli::Failure"), "{wrong:?}");
+    assert!(
+        wrong[1].contains("uses dialect::DialectSession"),
+        "{wrong:?}"
+    );
+    let peer = made_up(
+        "src/sim/x.rs",
+        &["sim", "x"],
+        "use crate::commission::Snapshot;",
+    );
+    assert_eq!(
+        upward_uses(&[peer], &layers).len(),
+        1,
+        "peers do not use each other"
+    );
+    let down = made_up(
+        "src/cli/x.rs",
+        &["cli", "x"],
+        "use crate::session::SessionError;",
+    );
+    assert!(upward_uses(&[down], &layers).is_empty());
+    let (a, b) = (&folders[0], &folders[1]);
+    let crossing = made_up(
+        "src/dialect/a/x.rs",
+        &["dialect", a, "x"],
+        &format!(
+            "use crate::dialect::{b}::Thing;\nuse crate::dialect::{a}::Own;\nuse crate::dialect::DIALECTS;"
+        ),
+    );
+    let wrong = crossings(&[crossing], &folders);
+    assert_eq!(wrong.len(), 1, "{wrong:?}");
+}
