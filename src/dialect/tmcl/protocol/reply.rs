@@ -113,6 +113,11 @@ fn reply_at(input: &str) -> IResult<&str, AsciiReply> {
     )
         .parse(input)?;
     let fail = || nom::Err::Error(nom::error::Error::new(input, nom::error::ErrorKind::Verify));
+    // A module writes numbers as printf's %d does: a `+` or a leading zero is a corrupted byte
+    // (`-0163803` was `40163803`), never a value.
+    if !canonical(status) || !canonical(value) {
+        return Err(fail());
+    }
     let status = status.parse::<u8>().map_err(|_| fail())?;
     let status = match Status::from_code(status) {
         Status::Other(_) => return Err(fail()),
@@ -128,6 +133,17 @@ fn reply_at(input: &str) -> IResult<&str, AsciiReply> {
             value,
         },
     ))
+}
+
+/// Whether `number` is written as a module writes it: an optional `-`, then digits without a
+/// leading zero (`0` itself aside), and no `-0`.
+fn canonical(number: &str) -> bool {
+    let digits = number.strip_prefix('-').unwrap_or(number);
+    let zero_led = digits.len() > 1 && digits.starts_with('0');
+    !digits.is_empty()
+        && digits.bytes().all(|b| b.is_ascii_digit())
+        && !zero_led
+        && !(digits == "0" && number.starts_with('-'))
 }
 
 #[cfg(test)]
@@ -175,6 +191,25 @@ mod tests {
             assert_eq!(parsed.is_some(), known, "status {code}");
         }
         assert!(parse_reply("BA 150 0").is_none(), "150 is a damaged reply");
+    }
+
+    #[test]
+    fn a_number_no_module_writes_is_a_damaged_reply() {
+        // A byte corrupted into a sign, or a sign into `+`, leaves text that parses as a number.
+        for damaged in [
+            "BA 100 -0163803",
+            "BA 100 +742783580",
+            "BA 100 0042",
+            "BA 100 -0",
+            "BA 0100 5",
+            "BA 100 +5",
+        ] {
+            assert!(parse_reply(damaged).is_none(), "{damaged}");
+        }
+        for value in [0, 7, -7, 10, -2147483648, 2147483647] {
+            let line = format!("BA 100 {value}");
+            assert_eq!(parse_reply(&line).map(|r| r.value), Some(value), "{line}");
+        }
     }
 
     #[test]
