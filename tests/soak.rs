@@ -6,13 +6,13 @@
 
 mod harness;
 
-use harness::{Counts, Fault, Plan, Target, one_digit_changed, run_cell};
+use harness::{Counts, Fault, Plan, Target, one_character_changed, one_digit_changed, run_cell};
 
 use crate::sim::Sim;
 use crate::util::bin;
 
-/// Reads per cell: 20 cells, 8,000 reads in all.
-const READS: u64 = 400;
+/// Reads per cell: 20 cells, 6,000 reads in all.
+const READS: u64 = 300;
 
 fn plan() -> Plan {
     Plan {
@@ -185,5 +185,25 @@ fn only_a_well_formed_one_character_change_counts_as_undetectable() {
     ];
     for (truth, got) in refusable {
         assert!(!one_digit_changed(got, truth), "{got} for {truth}");
+    }
+}
+
+#[test]
+fn in_a_text_item_only_one_printable_character_changed_counts_as_undetectable() {
+    for (truth, got) in [
+        ("[\"24044.12\"]", "[\"240A4.12\"]"),
+        ("[\"24044.12\"]", "[\"24044=12\"]"),
+        ("[\"24044.12\"]", "[\"!4044.12\"]"),
+    ] {
+        assert!(one_character_changed(got, truth), "{got} for {truth}");
+    }
+    for (truth, got) in [
+        ("[\"24044.12\"]", "[\"24044.1\"]"),
+        ("[\"24044.12\"]", "[\"24044.122\"]"),
+        ("[\"24044.12\"]", "[\"24A44.1b\"]"),
+        ("[\"24044.12\"]", "[\"2404\u{5}.12\"]"),
+        ("[\"24044.12\"]", "[\"24044.12\"]"),
+    ] {
+        assert!(!one_character_changed(got, truth), "{got} for {truth}");
     }
 }

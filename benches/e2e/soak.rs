@@ -133,7 +133,9 @@ pub fn section(cells: &[Cell], plan: &Plan, date: &str) -> String {
          a well-formed reply that no client can tell from the truth, since neither ASCII \
          protocol carries a checksum; where the cell corrupts bytes and the value is the truth \
          with exactly one digit or sign changed and still a well-formed number, it is counted \
-         as \"one digit changed\" instead. \"Restarts\" are runs whose \
+         as \"one digit changed\" instead; so is one printable character changed into another \
+         in the firmware version, which the document declares a STRING of no format. \
+         \"Restarts\" are runs whose \
          session could not open; a new run made the remaining reads. Replay a cell with its \
          seed: `tmclsh sim --seed N` or the console's `seed N`.\n\n",
         rate = plan.rate * 100.0,
