@@ -72,11 +72,13 @@ fn host_byte(host: char) -> u8 {
     u8::try_from(u32::from(host)).unwrap_or(b'?')
 }
 
-/// Parses a reply line (line ending optional). `None` when the text is not a reply.
+/// Parses a reply line (line ending optional). `None` when the text is not a reply. Nothing may
+/// follow the value, not even a space: a module writes none, and a digit corrupted into a space,
+/// a form feed or (read as Latin-1) a no-break space would otherwise cut the value short.
 pub fn parse_reply(line: &str) -> Option<AsciiReply> {
     let text = line.trim_end_matches(['\r', '\n']);
     match reply(text) {
-        Ok((rest, parsed)) if rest.trim().is_empty() => Some(parsed),
+        Ok((rest, parsed)) if rest.is_empty() => Some(parsed),
         _ => None,
     }
 }
@@ -166,12 +168,12 @@ mod tests {
     }
 
     #[test]
-    fn tolerates_spaces_and_any_line_ending() {
+    fn tolerates_spaces_between_fields_and_any_line_ending() {
         for line in [
             "BA 100 -5000\r",
             "BA 100 -5000\n",
             "BA 100 -5000\r\n",
-            " BA  100   -5000 ",
+            " BA  100   -5000",
         ] {
             assert_eq!(parse_reply(line).unwrap().value, -5000, "{line:?}");
         }
@@ -191,6 +193,18 @@ mod tests {
             assert_eq!(parsed.is_some(), known, "status {code}");
         }
         assert!(parse_reply("BA 150 0").is_none(), "150 is a damaged reply");
+    }
+
+    #[test]
+    fn nothing_may_follow_the_value() {
+        // `-2` + 0xA0 was `-27`: the 7 corrupted into a byte that Latin-1 reads as a no-break
+        // space, which `str::trim` removes.
+        assert!(parse_reply_bytes(b"BA 100 -2\xA0\r").is_none());
+        assert!(parse_reply_bytes(b"BA 100 -5227\x85\r").is_none());
+        for damaged in ["BA 100 5 ", "BA 100 5\t", "BA 100 5\x0c", "BA 100 5\x0b"] {
+            assert!(parse_reply(damaged).is_none(), "{damaged:?}");
+        }
+        assert_eq!(parse_reply("BA 100 5\r\n").map(|r| r.value), Some(5));
     }
 
     #[test]
