@@ -78,7 +78,7 @@ fn host_byte(host: char) -> u8 {
 pub fn parse_reply(line: &str) -> Option<AsciiReply> {
     let text = line.trim_end_matches(['\r', '\n']);
     match reply(text) {
-        Ok((rest, parsed)) if rest.is_empty() => Some(parsed),
+        Ok(("", parsed)) => Some(parsed),
         _ => None,
     }
 }
@@ -141,11 +141,10 @@ fn reply_at(input: &str) -> IResult<&str, AsciiReply> {
 /// leading zero (`0` itself aside), and no `-0`.
 fn canonical(number: &str) -> bool {
     let digits = number.strip_prefix('-').unwrap_or(number);
+    let all_digits = !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit());
     let zero_led = digits.len() > 1 && digits.starts_with('0');
-    !digits.is_empty()
-        && digits.bytes().all(|b| b.is_ascii_digit())
-        && !zero_led
-        && !(digits == "0" && number.starts_with('-'))
+    let minus_zero = digits == "0" && number.starts_with('-');
+    all_digits && !zero_led && !minus_zero
 }
 
 #[cfg(test)]
