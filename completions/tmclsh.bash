@@ -917,7 +917,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__sim)
-            opts="-v -h --protocol --pty --listen --modules --boot-loader --baud --state --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --profile --help"
+            opts="-v -h --protocol --pty --listen --modules --boot-loader --baud --state --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -988,6 +988,10 @@ _tmclsh() {
                     return 0
                     ;;
                 --hangup-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --seed)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1416,7 +1420,7 @@ _tmclsh_with_files() {
         esac
     done
     case "$prev" in
-        --address|--addresses|--allow-dir|--backspace-echo|--baud|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--echo|--echo-end|--error-spelling|--fault-seed|--flag-case|--float-decimals|--hangup-after|--home-switch|--left-switch|--listen|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reply-end|--right-switch|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--left-switch|--listen|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reply-end|--right-switch|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
     esac
     if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
         compopt -o filenames 2>/dev/null

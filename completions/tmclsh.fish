@@ -262,7 +262,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l delay-rate -d 'Del
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l delay-ms -d 'How long a delayed reply is held back' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l silent-after -d 'Answer nothing after N replies (commands still execute)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l hangup-after -d 'Hang up after N replies (pty: a new one appears, its path printed; TCP: the connection closes and the next client is served)' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l fault-seed -d 'Seed of the fault decisions (same seed, same faults)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l seed -l fault-seed -d 'Seed of the fault decisions: the same seed and traffic give the same faults, so a run replays exactly (also --fault-seed; the console\'s `seed N` restarts them)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l flag-case -d 'Hex case of the flag words: upper (0x088E, the text) or lower (0x088e, many examples)' -r -f -a "upper\t''
 lower\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l float-decimals -d 'Decimals of FLOAT replies: 4 (every example) or 5 (the type table)' -r

@@ -22,6 +22,8 @@ pub mod dialect;
 pub mod duration;
 pub mod escape;
 pub mod exit;
+#[doc(hidden)]
+pub mod fuzz_entry;
 pub mod link;
 pub mod progress;
 #[cfg(feature = "cli")]

@@ -286,7 +286,15 @@ fn a_scan_names_a_boot_loader_and_an_unknown_module_and_asks_the_loader_nothing_
         "--profile",
         module_answering(&dir, "142B1.06").to_str().unwrap(),
     ]);
-    let out = run(&["scan", "--port", &loader.first, "--addresses", "1-2"]);
+    let out = run(&[
+        "scan",
+        "--port",
+        &loader.first,
+        "--addresses",
+        "1-2",
+        "--timeout",
+        "1000",
+    ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(
         stdout(&out).contains("142B1.06  ?     TMCM-142 (boot loader)"),
@@ -303,7 +311,15 @@ fn a_scan_names_a_boot_loader_and_an_unknown_module_and_asks_the_loader_nothing_
         "--profile",
         module_answering(&dir, "9999V100").to_str().unwrap(),
     ]);
-    let out = run(&["scan", "--port", &unknown.first, "--addresses", "1"]);
+    let out = run(&[
+        "scan",
+        "--port",
+        &unknown.first,
+        "--addresses",
+        "1",
+        "--timeout",
+        "1000",
+    ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(
         stdout(&out).contains("9999V100  char  TMCM-9999 (no profile)"),

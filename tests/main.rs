@@ -8,6 +8,7 @@ mod binary_session;
 mod catalogue;
 mod cli;
 mod commission;
+mod fuzz_corpus;
 #[cfg(feature = "hardware")]
 mod hardware;
 mod hostile;
@@ -25,3 +26,4 @@ mod script;
 mod shell;
 mod sim;
 mod smd4;
+mod soak;

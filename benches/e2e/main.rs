@@ -2,7 +2,8 @@
 //! as one table and written to `BENCHMARKS.md` with the machine, the method and the date.
 //!
 //! `cargo bench --bench e2e -- --quick` runs fewer transactions and repetitions and only prints:
-//! for trying a change, not for publishing. Linux only: it uses ptys, wait4 and /proc.
+//! for trying a change, not for publishing. `-- --soak` runs only the fault soak (row 7) and
+//! rewrites only its row and section. Linux only: it uses ptys, wait4 and /proc.
 
 #[cfg(target_os = "linux")]
 #[path = "../pure/cases.rs"]
@@ -17,6 +18,11 @@ mod machine;
 mod proc;
 #[cfg(target_os = "linux")]
 mod report;
+#[cfg(target_os = "linux")]
+mod soak;
+#[cfg(target_os = "linux")]
+#[path = "../../tests/soak/harness.rs"]
+mod soak_harness;
 #[cfg(target_os = "linux")]
 mod wire;
 
@@ -38,6 +44,7 @@ struct Plan {
     in_process_reps: usize,
     start_up_runs: usize,
     memory_n: u32,
+    soak_reads: u64,
 }
 
 #[cfg(target_os = "linux")]
@@ -62,6 +69,7 @@ impl Plan {
             in_process_reps: 5,
             start_up_runs: 51,
             memory_n: 100_000,
+            soak_reads: 20_000,
         }
     }
 
@@ -85,6 +93,7 @@ impl Plan {
             in_process_reps: 1,
             start_up_runs: 11,
             memory_n: 100_000,
+            soak_reads: 1000,
         }
     }
 }
@@ -99,6 +108,26 @@ fn main() {
     // cargo passes `--bench`; anything else but `--quick` is ignored.
     let quick = std::env::args().any(|a| a == "--quick");
     let plan = if quick { Plan::quick() } else { Plan::full() };
+    let soak_plan = soak::plan(plan.soak_reads);
+    let date = || humantime::format_rfc3339_seconds(SystemTime::now()).to_string();
+    if std::env::args().any(|a| a == "--soak") {
+        eprintln!("e2e: fault soak only");
+        let cells = soak::measure(&soak_plan);
+        let row = soak::row(&cells, &soak_plan);
+        println!("{}", report::text(std::slice::from_ref(&row)));
+        let section = soak::section(&cells, &soak_plan, &date());
+        println!("{section}");
+        if quick {
+            eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
+            return;
+        }
+        let path = proc::repo_file("BENCHMARKS.md");
+        let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+        let new = soak::splice(&old, &report::markdown_line(&row), &section);
+        std::fs::write(&path, new).expect("write BENCHMARKS.md");
+        eprintln!("e2e: wrote the fault soak into {}", path.display());
+        return;
+    }
     let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("e2e");
     std::fs::create_dir_all(&scratch).expect("scratch directory");
     let machine = machine::Machine::probe();
@@ -125,7 +154,12 @@ fn main() {
     let transcript = host.pop().expect("the transcript row");
     rows.append(&mut host);
     rows.extend([in_process, start_up, size, memory, transcript]);
+    step("fault soak (a few minutes at full size)");
+    let soak_cells = soak::measure(&soak_plan);
+    rows.push(soak::row(&soak_cells, &soak_plan));
     let load_after = machine::load();
+    let date = date();
+    let soak_section = soak::section(&soak_cells, &soak_plan, &date);
 
     println!("{}", report::text(&rows));
     println!("{:<66} {:>12}", "pure part", "ns/op");
@@ -138,7 +172,7 @@ fn main() {
         return;
     }
     let markdown = report::markdown(&report::Run {
-        date: humantime::format_rfc3339_seconds(SystemTime::now()).to_string(),
+        date,
         command: COMMAND,
         machine: &machine,
         load_before,
@@ -146,6 +180,8 @@ fn main() {
         rows: &rows,
         pure: &pure,
     });
+    let soak_line = report::markdown_line(rows.last().expect("the soak row"));
+    let markdown = soak::splice(&markdown, &soak_line, &soak_section);
     let path = proc::repo_file("BENCHMARKS.md");
     std::fs::write(&path, markdown).expect("write BENCHMARKS.md");
     eprintln!("e2e: wrote {}", path.display());

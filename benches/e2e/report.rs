@@ -124,6 +124,11 @@ pub fn markdown(run: &Run) -> String {
     md
 }
 
+/// One row as a line of the markdown table.
+pub fn markdown_line(row: &Row) -> String {
+    table_row(&row.cells())
+}
+
 fn table_row(cells: &[&str]) -> String {
     format!("| {} |\n", cells.join(" | "))
 }
@@ -162,6 +167,8 @@ within the repetitions, so that a busy (or idle) spell of the machine hits both 
    N/10; flat means under 5 % growth.
 6. **Transcript cost**: row 2 with `--log FILE`, run right before or after (in turns) each of
    row 2's runs; CPU as in row 2.
+7. **Fault soak**: reads of known values under injected faults; its own section above has the
+   method and every cell's counts.
 ";
 
 /// What the reader should know about targets that were missed.

@@ -89,9 +89,16 @@ pub struct SimArgs {
     #[arg(long, value_name = "N", help_heading = "Faults")]
     pub hangup_after: Option<u64>,
 
-    /// Seed of the fault decisions (same seed, same faults).
-    #[arg(long, value_name = "N", default_value_t = 1, help_heading = "Faults")]
-    pub fault_seed: u64,
+    /// Seed of the fault decisions: the same seed and traffic give the same faults, so a run
+    /// replays exactly (also --fault-seed; the console's `seed N` restarts them).
+    #[arg(
+        long,
+        visible_alias = "fault-seed",
+        value_name = "N",
+        default_value_t = 1,
+        help_heading = "Faults"
+    )]
+    pub seed: u64,
 
     /// The quirk switches of each dialect's simulator.
     #[command(flatten)]
@@ -179,7 +186,7 @@ fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
         delay: Duration::from_millis(args.delay_ms),
         silent_after: args.silent_after,
         hangup_after: args.hangup_after,
-        seed: args.fault_seed,
+        seed: args.seed,
     };
     let device: Box<dyn Device> = Box::new(Faulty::new(device, faults));
     match args.baud {

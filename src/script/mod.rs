@@ -32,7 +32,7 @@ use std::rc::Rc;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use rhai::{Dynamic, Engine, EvalAltResult, OptimizationLevel, Position, Scope};
+use rhai::{Dynamic, Engine, EvalAltResult, INT, OptimizationLevel, Position, Scope};
 
 use crate::escape::escape_control;
 use crate::exit::{Exit, Failure};
@@ -218,6 +218,8 @@ fn base_engine(
     }
     engine.register_type_with_name::<Failure>("Failure");
     engine.register_fn("to_string", |f: &mut Failure| f.message.clone());
+    // `catch (e)` can tell a timeout or noise (3) from a device error (1) by the exit code.
+    engine.register_get("exit", |f: &mut Failure| INT::from(f.exit.code()));
     engine
 }
 

@@ -198,3 +198,26 @@ fn each_dialect_lists_the_functions_it_registers() {
     let smd4_names = registered(|engine| smd4::script::register(engine, &shared));
     assert_eq!(smd4_names, sorted(smd4::script::FUNCTIONS));
 }
+
+#[test]
+fn a_caught_failure_tells_its_exit_code() {
+    let (session, _) = session();
+    let printed = Rc::new(RefCell::new(Vec::<String>::new()));
+    let lines = printed.clone();
+    let source = r#"
+        try { send("GAP 200, 0") } catch (e) { print(`${e.exit} ${e}`) }
+        try { gap(1, 300) } catch (e) { print(`${e.exit}`) }
+    "#;
+    let script = Script::from_source("c.rhai", source, &[], Limits::default()).print_to(Rc::new(
+        move |line: &str| lines.borrow_mut().push(line.to_string()),
+    ));
+    let (_, result) = crate::dialect::DialectSession::run_script(Box::new(session), &script);
+    result.unwrap();
+    let printed = printed.borrow();
+    assert_eq!(printed.len(), 2, "{printed:?}");
+    assert!(
+        printed[0].starts_with("1 ") && printed[0].contains("status 3"),
+        "a device error status: {printed:?}"
+    );
+    assert_eq!(printed[1], "2", "refused before sending");
+}

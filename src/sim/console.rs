@@ -14,6 +14,8 @@ const HELP_TITLE: &str = "Console commands (one per line on stdin; each is answe
 const SHARED_HELP: &str = " Both:
   drop RATE | corrupt RATE           drop or corrupt replies from now on (RATE 0..1)
   delay RATE MS                      hold replies back by MS milliseconds
+  seed N                             restart the fault decisions from seed N (and the counts)
+  faults                             show the seed and the faults injected since it was set
   silent on|off                      stop or resume answering (commands still execute)
   hangup                             hang up the connection now
   advance DURATION                   with --manual-clock: let time pass (2s, 250ms, 1.5s; plain = ms)
@@ -211,6 +213,8 @@ mod tests {
             "flash-failure",
             "drop",
             "corrupt",
+            "seed",
+            "faults",
             "quit",
         ] {
             assert!(

@@ -2,6 +2,10 @@
 //! silent, or hang up after a number of replies. Decisions come from a seeded generator, so a
 //! run with the same seed and traffic fails the same way every time.
 //!
+//! The seed is part of the run's description: `tmclsh sim --seed N` (or the console's `seed N`,
+//! which also restarts the counts) replays the same decisions for the same traffic, and the
+//! console's `faults` shows how many of each were injected, so a soak can tell what it survived.
+//!
 //! A "reply" is what the wrapped device sends in answer to one piece of input (or at one event,
 //! such as the second reply of command 138): with the strict request/reply protocols served here
 //! that is one reply frame or line, together with its echo in ASCII mode. Wrap pacing around
@@ -47,8 +51,15 @@ impl Faults {
 struct Rng(u64);
 
 impl Rng {
+    /// The state is the seed through splitmix64's finaliser, a bijection, so every seed starts a
+    /// sequence of its own (xorshift needs a non-zero state; the one seed that mixes to zero
+    /// takes a fixed one instead).
     fn new(seed: u64) -> Rng {
-        Rng(seed ^ 0x9E37_79B9_7F4A_7C15 | 1)
+        let mut z = seed.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        Rng(if z == 0 { 0x9E37_79B9_7F4A_7C15 } else { z })
     }
 
     fn next(&mut self) -> u64 {
@@ -64,11 +75,25 @@ impl Rng {
     }
 }
 
+/// How many faults were injected since the seed was last set.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Injected {
+    /// Replies judged (delivered, dropped or silenced).
+    pub replies: u64,
+    /// Replies dropped at `drop_rate` (silence and hang-ups not counted).
+    pub dropped: u64,
+    /// Replies with one byte changed.
+    pub corrupted: u64,
+    /// Replies held back by `delay`.
+    pub delayed: u64,
+}
+
 /// A device whose replies suffer the configured faults.
 pub struct Faulty<D> {
     inner: D,
     faults: Faults,
     rng: Rng,
+    injected: Injected,
     /// Replies judged since the last (re)connection.
     replies: u64,
     /// Replies delivered since the last (re)connection.
@@ -86,6 +111,7 @@ impl<D: Device> Faulty<D> {
             inner,
             rng: Rng::new(faults.seed),
             faults,
+            injected: Injected::default(),
             replies: 0,
             delivered: 0,
             silent: false,
@@ -103,6 +129,19 @@ impl<D: Device> Faulty<D> {
     /// The wrapped device, mutably.
     pub fn inner_mut(&mut self) -> &mut D {
         &mut self.inner
+    }
+
+    /// Restarts the fault decisions from `seed` and the counts from zero (console `seed N`):
+    /// the same seed and the same traffic from here on give the same faults.
+    pub fn reseed(&mut self, seed: u64) {
+        self.faults.seed = seed;
+        self.rng = Rng::new(seed);
+        self.injected = Injected::default();
+    }
+
+    /// The faults injected since the seed was set.
+    pub fn injected(&self) -> Injected {
+        self.injected
     }
 
     /// Hangs up now (console `hangup`).
@@ -124,8 +163,11 @@ impl<D: Device> Faulty<D> {
         }
         let mut reply = std::mem::take(&mut self.scratch);
         self.replies += 1;
+        self.injected.replies += 1;
         let silenced = self.silent || self.faults.silent_after.is_some_and(|n| self.replies > n);
-        if self.hung || silenced || self.rng.chance(self.faults.drop_rate) {
+        let dropped = !(self.hung || silenced) && self.rng.chance(self.faults.drop_rate);
+        if self.hung || silenced || dropped {
+            self.injected.dropped += u64::from(dropped);
             reply.clear();
             self.scratch = reply;
             return;
@@ -133,8 +175,10 @@ impl<D: Device> Faulty<D> {
         if self.rng.chance(self.faults.corrupt_rate) {
             let at = (self.rng.next() % reply.len() as u64) as usize;
             reply[at] ^= (self.rng.next() as u8) | 1;
+            self.injected.corrupted += 1;
         }
         let release = if self.rng.chance(self.faults.delay_rate) {
+            self.injected.delayed += 1;
             now + self.faults.delay
         } else {
             now
@@ -212,6 +256,25 @@ impl<D: Device> Device for Faulty<D> {
             ["silent", "off"] => {
                 self.set_silent(false);
                 Ok("talking".to_string())
+            }
+            ["seed", n] => n
+                .parse::<u64>()
+                .map_err(|_| format!("'{n}' is not a seed (0..{})", u64::MAX))
+                .map(|seed| {
+                    self.reseed(seed);
+                    format!("seed {seed}")
+                }),
+            ["faults"] => {
+                let Injected {
+                    replies,
+                    dropped,
+                    corrupted,
+                    delayed,
+                } = self.injected;
+                Ok(format!(
+                    "seed {} replies {replies} dropped {dropped} corrupted {corrupted} delayed {delayed}",
+                    self.faults.seed
+                ))
             }
             ["drop", r] => rate(r).map(|r| {
                 self.faults.drop_rate = r;

@@ -201,7 +201,10 @@ fn every_module_found_is_named_by_the_built_in_profiles() {
 #[test]
 fn first_stops_at_the_first_module_and_asks_no_further_address() {
     let sim = Sim::start_capturing_stderr(&["--pty", "--verbose", "--modules", "3,5"]);
-    let out = expect(&["scan", "--port", &sim.first, "--first"], 0);
+    let out = expect(
+        &["scan", "--port", &sim.first, "--first", "--timeout", "1000"],
+        0,
+    );
     let text = stdout(&out);
     assert_eq!(
         table(&text),

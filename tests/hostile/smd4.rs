@@ -71,11 +71,23 @@ fn trailing_data(answer: &[u8]) -> Vec<u8> {
     [answer, b"0x0888,0x0000,1\r\n"].concat()
 }
 
+/// The last digit corrupted into CR: the value cut short, and a line end more after it.
+fn last_digit_cr(answer: &[u8]) -> Vec<u8> {
+    replace_last(answer, b"5.0000E+03\r\n", b"5.0000E+0\r\r\n")
+}
+
+/// The CR corrupted into a digit: appended to the value, the line ended by the LF alone.
+fn cr_into_digit(answer: &[u8]) -> Vec<u8> {
+    replace_last(answer, b"5.0000E+03\r\n", b"5.0000E+034\n")
+}
+
 #[test]
 fn a_corrupted_reply_is_line_noise_never_a_value() {
-    let cases: [(&str, Corruption); 2] = [
+    let cases: [(&str, Corruption); 4] = [
         ("a CR inside the value", cr_in_value),
         ("data after the reply", trailing_data),
+        ("the last digit turned into CR", last_digit_cr),
+        ("the CR turned into a digit", cr_into_digit),
     ];
     for via in BOTH {
         for address in ADDRESSINGS {

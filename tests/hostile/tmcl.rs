@@ -118,6 +118,25 @@ fn trailing_data(answer: &[u8]) -> Vec<u8> {
     [answer, b"143\r"].concat()
 }
 
+/// The last digit corrupted into a line end: `100000`, then the reply's own CR.
+fn last_digit_cr(answer: &[u8]) -> Vec<u8> {
+    replace_last(answer, b"1000000\r", b"100000\r\r")
+}
+
+fn last_digit_lf(answer: &[u8]) -> Vec<u8> {
+    replace_last(answer, b"1000000\r", b"100000\n\r")
+}
+
+/// The last digit corrupted into 0xA0, which Latin-1 reads as a no-break space.
+fn last_digit_nbsp(answer: &[u8]) -> Vec<u8> {
+    replace_last(answer, b"1000000\r", b"100000\xA0\r")
+}
+
+/// The first digit corrupted into a sign: `-000000` parses, but no module writes it.
+fn digit_into_sign(answer: &[u8]) -> Vec<u8> {
+    replace_last(answer, b"1000000\r", b"-000000\r")
+}
+
 fn unknown_status(answer: &[u8]) -> Vec<u8> {
     replace_last(answer, b"BA 100 ", b"BA 150 ")
 }
@@ -128,9 +147,21 @@ fn status_cut_short(answer: &[u8]) -> Vec<u8> {
 
 #[test]
 fn a_corrupted_reply_is_line_noise_never_a_value_nor_a_refusal() {
-    let cases: [(&str, Corruption, &str); 4] = [
+    let cases: [(&str, Corruption, &str); 8] = [
         ("a CR inside the value", cr_in_value, "line noise"),
         ("data after the reply", trailing_data, "line noise"),
+        ("the last digit turned into CR", last_digit_cr, "line noise"),
+        ("the last digit turned into LF", last_digit_lf, "line noise"),
+        (
+            "a digit turned into a sign",
+            digit_into_sign,
+            "not a valid reply",
+        ),
+        (
+            "the last digit turned into a no-break space",
+            last_digit_nbsp,
+            "not a valid reply",
+        ),
         ("an unknown status", unknown_status, "not a valid reply"),
         (
             "a CR inside the status",

@@ -12,7 +12,7 @@ use paths::{Source, sources, used_paths};
 
 /// Files outside the dialect folders that may name one: the list of dialects, and the
 /// subcommands only TMCL has (the assembler, the disassembler, program download, the list of
-/// module profiles).
+/// module profiles), and the fuzz targets' entry points, one per parser of either dialect.
 const NAMING_A_DIALECT: &[&str] = &[
     "src/dialect/mod.rs",
     "src/cli/mod.rs",
@@ -20,6 +20,7 @@ const NAMING_A_DIALECT: &[&str] = &[
     "src/cli/disasm.rs",
     "src/cli/download.rs",
     "src/cli/profiles.rs",
+    "src/fuzz_entry.rs",
 ];
 
 /// The layers of the diagram, top first: the module names on each line of the fenced block that

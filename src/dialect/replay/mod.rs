@@ -30,6 +30,21 @@ pub fn reply_after(rest: &[Entry]) -> Option<&[u8]> {
     None
 }
 
+/// Text for a `//` comment, on one line whatever it holds: a transcript's bytes may carry CR,
+/// LF or other line breaks, and after one of them the rest would be script code. Control
+/// characters and Unicode line separators are written as escapes instead.
+pub fn comment(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() || matches!(c, '\u{2028}' | '\u{2029}') {
+            let _ = write!(out, "\\u{{{:x}}}", c as u32);
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
 /// A Rhai string literal.
 pub fn rhai_string(text: &str) -> String {
     let mut out = String::with_capacity(text.len() + 2);

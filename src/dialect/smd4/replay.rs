@@ -17,7 +17,7 @@ use crate::dialect::smd4::protocol::{
 };
 
 use crate::dialect::replay::parse::{Entry, Record};
-use crate::dialect::replay::{nothing_to_replay, reply_after, rhai_string};
+use crate::dialect::replay::{comment, nothing_to_replay, reply_after, rhai_string};
 
 /// The session's first note in an SMD4 transcript, which tells one written before transcripts
 /// had headers.
@@ -157,7 +157,7 @@ pub fn to_rhai(steps: &[Step], spec: &Smd4Spec, source: &str, wait_ms: u64) -> S
     for (k, step) in steps.iter().enumerate() {
         let (line, request, response) = match step {
             Step::Comment(text) => {
-                let _ = writeln!(out, "// {text}");
+                let _ = writeln!(out, "// {}", comment(text));
                 continue;
             }
             Step::Exchange {
@@ -330,6 +330,21 @@ mod tests {
 2026-01-01T00:00:02.018Z -- no reply from SMD4
 2026-01-01T00:00:02.019Z -- session closed
 "#;
+
+    #[test]
+    fn line_breaks_in_sent_bytes_stay_inside_comments() {
+        let log = "2026-01-01T00:00:00.000Z -- SMD4 session opened on simulated SMD4 (built-in)\n\
+                   2026-01-01T00:00:00.001Z tx \"@5MOTOR:STOP\\rsend(\\\"MOTOR:RUNR,900\\\");\\r\\n\" ; to @5\n";
+        let entries = parse(log).unwrap();
+        let spec = Smd4Spec::builtin();
+        let script = to_rhai(&steps(&entries, spec), spec, "t.log", 5000);
+        let lines: Vec<&str> = script.lines().filter(|l| l.contains("RUNR")).collect();
+        assert_eq!(lines.len(), 1, "{script}");
+        assert!(
+            lines[0].starts_with("// not replayed (not a request): @5MOTOR:STOP\\u{d}send("),
+            "{script}"
+        );
+    }
 
     #[test]
     fn an_smd4_transcript_becomes_checks_of_values_codes_and_settled_reads() {

@@ -24,7 +24,7 @@ use crate::dialect::tmcl::protocol::reply::parse_reply;
 use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Opcode, Status};
 
 use crate::dialect::replay::parse::{Entry, Record};
-use crate::dialect::replay::{nothing_to_replay, reply_after, rhai_string};
+use crate::dialect::replay::{comment, nothing_to_replay, reply_after, rhai_string};
 use crate::session::transcript::Header;
 
 /// The Rhai script replaying a TMCL transcript with the modules of `profile`; refused when the
@@ -295,7 +295,7 @@ pub fn to_rhai(steps: &[Step], profile: &Profile, source: &str, wait_ms: u64) ->
     for (k, step) in steps.iter().enumerate() {
         match step {
             Step::Comment(text) => {
-                let _ = writeln!(out, "// {text}");
+                let _ = writeln!(out, "// {}", comment(text));
             }
             Step::Version { module, text } => {
                 if target != Some(*module) {

@@ -226,13 +226,20 @@ fn a_flood_between_exchanges_is_read_within_a_budget() {
 
 #[test]
 fn what_follows_a_reply_decides_whether_it_is_taken() {
-    let cases: [(&[u8], Option<usize>); 6] = [
+    let cases: [(&[u8], Option<usize>); 12] = [
         (b"BA 100 5\r", Some(9)),
         (b"BA 100 5\r\n\0", Some(11)),
+        (b"BA 100 5\r\0\n", Some(11)),
         (b"BA 100 -800\r143\r", None),
         (b"BA 100 5\rBA 100 6\r", None),
         (b"BA 100 5\r14", None),
-        (b"BA 100 5\rOK\r\r", Some(13)),
+        (b"BA 100 5\rOK\r", Some(12)),
+        (b"BA 100 5\rOK\r\n", Some(13)),
+        // A line end more than the reply's own: its last digit was corrupted into one.
+        (b"BA 100 5\r\r", None),
+        (b"BA 100 5\r\n\r\n", None),
+        (b"BA 100 5\n\r", None),
+        (b"BA 100 5\rOK\r\r", None),
     ];
     for (bytes, expected) in cases {
         let (mut w, _) = wire();

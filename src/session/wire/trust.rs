@@ -61,9 +61,11 @@ impl Wire {
 
     /// Checks what follows a complete reply that ends `from` bytes into the receive buffer,
     /// waiting as [`Wire::await_more`] does for the rest of the transmission (beyond `deadline`
-    /// by at most that wait, so a reply in its last moment is checked too). Line ends and lines
-    /// `benign` accepts may follow; anything else — the rest of a value a corrupted byte cut
-    /// short, a second reply, a fragment — is noise. Consumes nothing.
+    /// by at most that wait, so a reply in its last moment is checked too). `from` is just past
+    /// the byte that ended the reply's line. The rest of that line end (the LF of a CR LF), NULs
+    /// and lines `benign` accepts may follow; anything else — the rest of a value a corrupted
+    /// byte cut short, even a line end more (`-5227` CR CR was `-52270` CR), a second reply, a
+    /// fragment — is noise. Consumes nothing.
     pub fn settle(
         &mut self,
         from: usize,
@@ -72,10 +74,20 @@ impl Wire {
     ) -> Result<Settled, SessionError> {
         let hard_end = deadline.max(Instant::now() + self.settle_time());
         let mut pos = from;
+        // The byte that ended the last line: after a CR one LF may complete it, nothing more.
+        let mut ended_by = from
+            .checked_sub(1)
+            .and_then(|i| self.rx.bytes().get(i).copied())
+            .unwrap_or(b'\n');
         loop {
             loop {
                 let bytes = self.rx.bytes();
                 while pos < bytes.len() && is_line_break(bytes[pos]) {
+                    match (ended_by, bytes[pos]) {
+                        (_, 0) => {}
+                        (b'\r', b'\n') => ended_by = b'\n',
+                        _ => return Ok(Settled::Noise),
+                    }
                     pos += 1;
                 }
                 if pos == bytes.len() {
@@ -83,6 +95,7 @@ impl Wire {
                 }
                 match self.rx.line_end(pos) {
                     Some(end) if end - pos <= MAX_LINE && benign(&self.rx.bytes()[pos..end]) => {
+                        ended_by = self.rx.bytes()[end];
                         pos = end + 1;
                     }
                     Some(_) => return Ok(Settled::Noise),

@@ -145,3 +145,100 @@ fn faults_change_at_run_time_through_control_commands() {
     device.control(now, "hangup").unwrap().unwrap();
     assert!(device.hung_up());
 }
+
+/// The replies to `n` GAP 4 requests, from `t` on, one millisecond apart.
+fn replies(device: &mut Faulty<Bus>, n: u64) -> Vec<Vec<u8>> {
+    (0..n)
+        .map(|i| ask(device, Duration::from_millis(i)))
+        .collect()
+}
+
+#[test]
+fn reseeding_replays_the_same_faults_and_restarts_the_counts() {
+    let mut device = faulty(Faults {
+        drop_rate: 0.2,
+        corrupt_rate: 0.2,
+        ..Faults::default()
+    });
+    let before = replies(&mut device, 50);
+    assert_eq!(device.injected().replies, 50);
+    assert_eq!(
+        device.control(Duration::ZERO, "seed 42"),
+        Some(Ok("seed 42".to_string()))
+    );
+    assert_eq!(device.injected(), Injected::default(), "counts restart");
+    let first = replies(&mut device, 300);
+    let counts = device.injected();
+    device.reseed(42);
+    assert_eq!(replies(&mut device, 300), first, "same seed, same faults");
+    assert_eq!(device.injected(), counts);
+    device.reseed(43);
+    assert_ne!(
+        replies(&mut device, 300),
+        first,
+        "another seed, other faults"
+    );
+    assert_ne!(before, first[..50], "the seed was really changed");
+
+    // The counts are what happened to the replies.
+    let dropped = first.iter().filter(|r| r.is_empty()).count() as u64;
+    let corrupted = first
+        .iter()
+        .filter(|r| !r.is_empty() && ReplyFrame::decode(r[..].try_into().unwrap()).is_err())
+        .count() as u64;
+    assert_eq!(counts.replies, 300);
+    assert_eq!(counts.dropped, dropped);
+    assert_eq!(counts.corrupted, corrupted);
+    assert!(dropped > 20 && corrupted > 20, "{counts:?}");
+    assert_eq!(counts.delayed, 0);
+}
+
+#[test]
+fn the_console_shows_the_seed_and_the_injected_faults() {
+    let mut device = faulty(Faults {
+        delay_rate: 1.0,
+        delay: Duration::from_millis(5),
+        seed: 9,
+        ..Faults::default()
+    });
+    let now = Duration::ZERO;
+    replies(&mut device, 3);
+    assert_eq!(
+        device.control(now, "faults"),
+        Some(Ok(
+            "seed 9 replies 3 dropped 0 corrupted 0 delayed 3".to_string()
+        ))
+    );
+    device.control(now, "seed 10").unwrap().unwrap();
+    assert_eq!(
+        device.control(now, "faults"),
+        Some(Ok(
+            "seed 10 replies 0 dropped 0 corrupted 0 delayed 0".to_string()
+        ))
+    );
+    assert!(device.control(now, "seed -1").unwrap().is_err());
+    assert!(device.control(now, "seed many").unwrap().is_err());
+}
+
+#[test]
+fn silence_is_not_counted_as_dropped_replies() {
+    let mut device = faulty(Faults::default());
+    device.set_silent(true);
+    assert!(replies(&mut device, 4).iter().all(Vec::is_empty));
+    let counts = device.injected();
+    assert_eq!((counts.replies, counts.dropped), (4, 0));
+}
+
+#[test]
+fn neighbouring_seeds_make_different_decisions() {
+    let first_draws = |seed| {
+        let mut rng = Rng::new(seed);
+        (0..4).map(|_| rng.next()).collect::<Vec<u64>>()
+    };
+    let all: Vec<Vec<u64>> = (0..64).map(first_draws).collect();
+    for (i, a) in all.iter().enumerate() {
+        for b in &all[i + 1..] {
+            assert_ne!(a, b, "two of seeds 0..64 start the same sequence");
+        }
+    }
+}

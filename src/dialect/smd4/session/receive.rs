@@ -139,7 +139,9 @@ impl Smd4Session {
     }
 
     /// Takes a single-line reply whose line takes the first `used` buffered bytes, once what
-    /// follows it has been seen: nothing but line ends.
+    /// follows it has been seen: nothing but the rest of its CR LF. A drive ends every line with
+    /// CR LF, so a line ended by a bare LF lost its CR to a corrupted byte, which may have been
+    /// appended to the last item (`5.7750E+014`): noise.
     fn settle(
         &mut self,
         reply: Smd4Reply,
@@ -149,7 +151,13 @@ impl Smd4Session {
         expect: &Expectation,
         request: &Request,
     ) -> Result<Smd4Reply, SessionError> {
-        match self.core.wire.settle(used, deadline, &mut |_| false)? {
+        let ended_by_cr = used > 0 && self.core.wire.rx.bytes()[used - 1] == b'\r';
+        let settled = if ended_by_cr {
+            self.core.wire.settle(used, deadline, &mut |_| false)?
+        } else {
+            Settled::Noise
+        };
+        match settled {
             Settled::Clean(n) => {
                 reply_bytes.extend(self.core.wire.rx.take(n));
                 self.finish(reply, &reply_bytes, expect, request)
@@ -166,10 +174,17 @@ impl Smd4Session {
                 );
                 let mut shown = String::new();
                 escape_into(reply.raw.as_bytes(), &mut shown);
-                let message = format!(
-                    "line noise: the reply {shown} was followed by {after}, so it may be cut short \
-                     or not the answer; not taken"
-                );
+                let message = if ended_by_cr {
+                    format!(
+                        "line noise: the reply {shown} was followed by {after}, so it may be cut \
+                         short or not the answer; not taken"
+                    )
+                } else {
+                    format!(
+                        "line noise: the reply {shown} ended in a line feed without its carriage \
+                         return, so a byte of it was damaged; not taken"
+                    )
+                };
                 self.core.wire.note(&message);
                 Err(SessionError::Link(message))
             }

@@ -200,7 +200,9 @@ fn write_instruction(out: &mut String, instruction: &Instruction, profile: &Prof
             break;
         }
     }
-    if spec.mnemonic.is_empty() {
+    // A mnemonic that is also an ASCII-only word (command 28 is STOP, which ASCII mode reads as
+    // "stop the program") is written by number, so the line resolves to this command again.
+    if spec.mnemonic.is_empty() || profile.commands.ascii_word(&spec.mnemonic).is_some() {
         let _ = write!(out, "{}", spec.number);
     } else {
         out.push_str(&spec.mnemonic);

@@ -72,11 +72,13 @@ fn host_byte(host: char) -> u8 {
     u8::try_from(u32::from(host)).unwrap_or(b'?')
 }
 
-/// Parses a reply line (line ending optional). `None` when the text is not a reply.
+/// Parses a reply line (line ending optional). `None` when the text is not a reply. Nothing may
+/// follow the value, not even a space: a module writes none, and a digit corrupted into a space,
+/// a form feed or (read as Latin-1) a no-break space would otherwise cut the value short.
 pub fn parse_reply(line: &str) -> Option<AsciiReply> {
     let text = line.trim_end_matches(['\r', '\n']);
     match reply(text) {
-        Ok((rest, parsed)) if rest.trim().is_empty() => Some(parsed),
+        Ok(("", parsed)) => Some(parsed),
         _ => None,
     }
 }
@@ -113,6 +115,11 @@ fn reply_at(input: &str) -> IResult<&str, AsciiReply> {
     )
         .parse(input)?;
     let fail = || nom::Err::Error(nom::error::Error::new(input, nom::error::ErrorKind::Verify));
+    // A module writes numbers as printf's %d does: a `+` or a leading zero is a corrupted byte
+    // (`-0163803` was `40163803`), never a value.
+    if !canonical(status) || !canonical(value) {
+        return Err(fail());
+    }
     let status = status.parse::<u8>().map_err(|_| fail())?;
     let status = match Status::from_code(status) {
         Status::Other(_) => return Err(fail()),
@@ -128,6 +135,16 @@ fn reply_at(input: &str) -> IResult<&str, AsciiReply> {
             value,
         },
     ))
+}
+
+/// Whether `number` is written as a module writes it: an optional `-`, then digits without a
+/// leading zero (`0` itself aside), and no `-0`.
+fn canonical(number: &str) -> bool {
+    let digits = number.strip_prefix('-').unwrap_or(number);
+    let all_digits = !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit());
+    let zero_led = digits.len() > 1 && digits.starts_with('0');
+    let minus_zero = digits == "0" && number.starts_with('-');
+    all_digits && !zero_led && !minus_zero
 }
 
 #[cfg(test)]
@@ -150,12 +167,12 @@ mod tests {
     }
 
     #[test]
-    fn tolerates_spaces_and_any_line_ending() {
+    fn tolerates_spaces_between_fields_and_any_line_ending() {
         for line in [
             "BA 100 -5000\r",
             "BA 100 -5000\n",
             "BA 100 -5000\r\n",
-            " BA  100   -5000 ",
+            " BA  100   -5000",
         ] {
             assert_eq!(parse_reply(line).unwrap().value, -5000, "{line:?}");
         }
@@ -175,6 +192,37 @@ mod tests {
             assert_eq!(parsed.is_some(), known, "status {code}");
         }
         assert!(parse_reply("BA 150 0").is_none(), "150 is a damaged reply");
+    }
+
+    #[test]
+    fn nothing_may_follow_the_value() {
+        // `-2` + 0xA0 was `-27`: the 7 corrupted into a byte that Latin-1 reads as a no-break
+        // space, which `str::trim` removes.
+        assert!(parse_reply_bytes(b"BA 100 -2\xA0\r").is_none());
+        assert!(parse_reply_bytes(b"BA 100 -5227\x85\r").is_none());
+        for damaged in ["BA 100 5 ", "BA 100 5\t", "BA 100 5\x0c", "BA 100 5\x0b"] {
+            assert!(parse_reply(damaged).is_none(), "{damaged:?}");
+        }
+        assert_eq!(parse_reply("BA 100 5\r\n").map(|r| r.value), Some(5));
+    }
+
+    #[test]
+    fn a_number_no_module_writes_is_a_damaged_reply() {
+        // A byte corrupted into a sign, or a sign into `+`, leaves text that parses as a number.
+        for damaged in [
+            "BA 100 -0163803",
+            "BA 100 +742783580",
+            "BA 100 0042",
+            "BA 100 -0",
+            "BA 0100 5",
+            "BA 100 +5",
+        ] {
+            assert!(parse_reply(damaged).is_none(), "{damaged}");
+        }
+        for value in [0, 7, -7, 10, -2147483648, 2147483647] {
+            let line = format!("BA 100 {value}");
+            assert_eq!(parse_reply(&line).map(|r| r.value), Some(value), "{line}");
+        }
     }
 
     #[test]

@@ -215,6 +215,14 @@ fn rhai_strings_escape_quotes_and_backslashes() {
     assert_eq!(rhai_string("x\u{1}"), "\"x\\x01\"");
 }
 
+#[test]
+fn comments_escape_control_characters_and_line_separators() {
+    // Every comment goes through this; a line break in it would turn the rest into code.
+    assert_eq!(comment("a\r\nb"), "a\\u{d}\\u{a}b");
+    assert_eq!(comment("x\u{85}y\u{2029}"), "x\\u{85}y\\u{2029}");
+    assert_eq!(comment("plain // text"), "plain // text");
+}
+
 impl Log {
     fn header(&mut self, header: &Header) -> &mut Self {
         self.0.push_str("2026-01-01T00:00:00.000Z ## ");

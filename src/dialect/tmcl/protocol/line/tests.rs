@@ -44,6 +44,28 @@ fn lines_format_back_to_one_canonical_form() {
 }
 
 #[test]
+fn command_28_is_written_by_number_not_as_the_ascii_word_stop() {
+    // STOP is command 28's mnemonic and also ASCII mode's "stop the program"; a line that
+    // names command 28 must not be sent as the other one.
+    let profile = Profile::builtin();
+    let line = parse("C28", &profile).unwrap();
+    assert_eq!(line.op, Op::Command(Instruction::new(28, 0, 0, 0)));
+    assert_eq!(format_line(&line, 1, &profile), "C28");
+    assert_eq!(canonical("stop"), "ASTOP", "the ASCII word stays a word");
+}
+
+#[test]
+fn every_command_formats_to_a_line_that_resolves_to_it_again() {
+    let profile = Profile::builtin();
+    for spec in profile.commands.iter() {
+        let instruction = Instruction::new(spec.number, 0, 0, 0);
+        let text = format_instruction(&instruction, &profile);
+        let again = parse(&text, &profile).unwrap_or_else(|e| panic!("{text}: {e}"));
+        assert_eq!(again.op, Op::Command(instruction), "{text}");
+    }
+}
+
+#[test]
 fn resolution_fills_the_instruction_fields() {
     let profile = Profile::builtin();
     let line = parse("BMVP COORD, 0, 3", &profile).unwrap();

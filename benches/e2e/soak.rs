@@ -1,0 +1,233 @@
+//! Row 7: the fault soak at full size — every cell of the matrix {drop, corrupt, delay past the
+//! timeout, all three} × {TMCL char, line and no echo, SMD4 with and without `--address`} with
+//! 20,000 reads of known values at 1 % faults, through `tmclsh run` over a pty to `tmclsh sim`
+//! (the harness of the fast soak in `cargo test`, `tests/soak/harness.rs`). The row counts silent
+//! wrong values, which must be none; the section below the table has every cell's counts.
+//!
+//! `cargo bench --bench e2e -- --soak` measures this alone and rewrites only its row and section
+//! of `BENCHMARKS.md`.
+
+use std::fmt::Write as _;
+use std::time::{Duration, Instant};
+
+use crate::local::thousands;
+use crate::proc::tmclsh;
+use crate::report::Row;
+use crate::soak_harness::{Counts, Fault, Plan, Target, run_cell};
+
+/// The name the row starts with (a partial run finds its line by it).
+pub const ROW_PREFIX: &str = "7. Fault soak";
+
+/// The heading of the section with every cell.
+pub const HEADING: &str = "## Fault soak";
+
+/// One measured cell.
+pub struct Cell {
+    pub target: Target,
+    pub fault: Fault,
+    pub counts: Counts,
+    pub took: Duration,
+}
+
+/// The plan of every cell: `reads` per cell, 1 % faults, `--timeout 100`, delays of 150 ms.
+pub fn plan(reads: u64) -> Plan {
+    Plan {
+        reads,
+        rate: 0.01,
+        timeout_ms: 100,
+        delay_ms: 150,
+        seed: 12,
+    }
+}
+
+/// Runs the matrix: the configurations side by side (each waits on its timeouts most of the
+/// time), the fault kinds of one configuration one after the other.
+pub fn measure(plan: &Plan) -> Vec<Cell> {
+    let bin = tmclsh();
+    let mut cells: Vec<Cell> = std::thread::scope(|scope| {
+        let workers: Vec<_> = Target::ALL
+            .into_iter()
+            .map(|target| {
+                let bin = &bin;
+                scope.spawn(move || {
+                    Fault::ALL
+                        .into_iter()
+                        .map(|fault| {
+                            let start = Instant::now();
+                            let counts = run_cell(bin, target, fault, plan);
+                            eprintln!(
+                                "e2e: soak {} / {}: {}",
+                                target.name(),
+                                fault.name(),
+                                counts.summary()
+                            );
+                            Cell {
+                                target,
+                                fault,
+                                counts,
+                                took: start.elapsed(),
+                            }
+                        })
+                        .collect::<Vec<Cell>>()
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .flat_map(|w| w.join().expect("a soak worker"))
+            .collect()
+    });
+    cells.sort_by_key(|c| {
+        (
+            Target::ALL.iter().position(|t| *t == c.target),
+            Fault::ALL.iter().position(|f| *f == c.fault),
+        )
+    });
+    cells
+}
+
+/// The row of the results table.
+pub fn row(cells: &[Cell], plan: &Plan) -> Row {
+    let mut total = Counts::default();
+    for cell in cells {
+        total.add(&cell.counts);
+    }
+    Row {
+        name: format!(
+            "{ROW_PREFIX}: 1 % faults, {} cells × {} reads of known values",
+            cells.len(),
+            thousands(plan.reads as f64)
+        ),
+        measured: format!("{} silent wrong", thousands(total.silent_wrong as f64)),
+        reference: format!(
+            "{} reads: {} ok, {} failures reported, {} one digit changed",
+            thousands(total.reads as f64),
+            thousands(total.ok as f64),
+            thousands(total.failures() as f64),
+            thousands(total.undetectable as f64)
+        ),
+        ratio: "—".into(),
+        target: "0 silent wrong".into(),
+        met: Some(total.silent_wrong == 0),
+    }
+}
+
+/// The section with every cell's counts, its method and the date it was measured.
+pub fn section(cells: &[Cell], plan: &Plan, date: &str) -> String {
+    let mut md = format!("{HEADING}\n\n");
+    let _ = write!(
+        md,
+        "Row 7, cell by cell, measured on {date}. Each cell is a fresh `tmclsh sim --pty` whose \
+         faults are switched on through its console (`seed N`, then `drop`, `corrupt` or `delay` \
+         at {rate} % each; \"all three\" has the three at once), after the known values were set \
+         without faults: TMCL's 56 user variables (bank 2) set to values of one to ten digits, \
+         half of them negative; the SMD4's positions, speeds, accelerations, times and counts \
+         (13 settings, two of them fixed by the simulator). Any two known values differ in at \
+         least three characters. A Rhai script (`tmclsh run --timeout {timeout} --stay-ascii` \
+         for TMCL) reads them {reads} times in a seeded order, catching every failure, and \
+         prints what each read returned; delayed replies are held back {delay} ms, past the \
+         timeout. A read returns the truth (ok), fails with a reported error (timeout and line \
+         noise exit 3, a device error 1; no read here can fail on the device, so each device \
+         error is a damaged reply taken for a refusal) or returns another value normally: \
+         **silent wrong**. A digit corrupted into another digit (or a sign into a digit) leaves \
+         a well-formed reply that no client can tell from the truth, since neither ASCII \
+         protocol carries a checksum; where the cell corrupts bytes and the value is the truth \
+         with exactly one digit or sign changed and still a well-formed number, it is counted \
+         as \"one digit changed\" instead; so is one printable character changed into another \
+         in the firmware version, which the document declares a STRING of no format. \
+         \"Restarts\" are runs whose \
+         session could not open; a new run made the remaining reads. Replay a cell with its \
+         seed: `tmclsh sim --seed N` or the console's `seed N`.\n\n",
+        rate = plan.rate * 100.0,
+        timeout = plan.timeout_ms,
+        reads = thousands(plan.reads as f64),
+        delay = plan.delay_ms,
+    );
+    md.push_str(
+        "| configuration | faults | reads | ok | timeout | line noise | device error | other \
+         | silent wrong | one digit changed | restarts | injected: dropped / corrupted / delayed \
+         | seed | time |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n",
+    );
+    for cell in cells {
+        let c = &cell.counts;
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | **{}** | {} | {} | {} / {} / {} | {} | {:.0} s |",
+            cell.target.name(),
+            cell.fault.name(),
+            c.reads,
+            c.ok,
+            c.timeout,
+            c.noise,
+            c.device,
+            c.other,
+            c.silent_wrong,
+            c.undetectable,
+            c.restarts,
+            c.injected.dropped,
+            c.injected.corrupted,
+            c.injected.delayed,
+            c.seed,
+            cell.took.as_secs_f64(),
+        );
+    }
+    let wrong: Vec<String> = cells
+        .iter()
+        .filter(|c| !c.counts.examples.is_empty())
+        .map(|c| {
+            format!(
+                "- {} / {}: {}",
+                c.target.name(),
+                c.fault.name(),
+                c.counts.examples.join("; ")
+            )
+        })
+        .collect();
+    if !wrong.is_empty() {
+        md.push_str("\nThe first silent wrong values of each cell (index, value, truth):\n\n");
+        md.push_str(&wrong.join("\n"));
+        md.push('\n');
+    }
+    md
+}
+
+/// `BENCHMARKS.md` with the soak's row and section replaced by `row_line` and `section` (or
+/// added: the row after the last row of the results table, the section before the pure parts),
+/// everything else kept as it was.
+pub fn splice(markdown: &str, row_line: &str, section: &str) -> String {
+    let mut lines: Vec<String> = markdown.lines().map(str::to_string).collect();
+    let row_start = format!("| {ROW_PREFIX}");
+    match lines.iter().position(|l| l.starts_with(&row_start)) {
+        Some(i) => lines[i] = row_line.trim_end().to_string(),
+        None => {
+            let header = lines
+                .iter()
+                .position(|l| l.starts_with("| row |"))
+                .expect("BENCHMARKS.md has a results table");
+            let end = lines[header..]
+                .iter()
+                .position(|l| !l.starts_with('|'))
+                .map_or(lines.len(), |i| header + i);
+            lines.insert(end, row_line.trim_end().to_string());
+        }
+    }
+    let section_lines: Vec<String> = section.trim_end().lines().map(str::to_string).collect();
+    match lines.iter().position(|l| l == HEADING) {
+        Some(start) => {
+            let end = lines[start + 1..]
+                .iter()
+                .position(|l| l.starts_with("## "))
+                .map_or(lines.len(), |i| start + 1 + i);
+            lines.splice(start..end, section_lines.into_iter().chain([String::new()]));
+        }
+        None => {
+            let at = lines
+                .iter()
+                .position(|l| l == "## Pure parts")
+                .unwrap_or(lines.len());
+            lines.splice(at..at, section_lines.into_iter().chain([String::new()]));
+        }
+    }
+    lines.join("\n") + "\n"
+}
