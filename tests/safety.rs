@@ -215,8 +215,8 @@ fn a_crash_with_an_smd4_drive_sends_motor_stop() {
     let mut p = terminal(&args, &[(CRASH, "repl:crash now")]);
     p.exp_string("smd4> ").unwrap();
     p.send_line("MOTOR:RUNV,+").unwrap();
-    // The reply (its flags), not a redraw of the line being typed, says the drive has it.
-    p.exp_string("0x").unwrap();
+    // The reply, not a redraw of the line being typed, says the drive has it.
+    p.exp_string("\r\nok").unwrap();
     p.exp_string("smd4> ").unwrap();
     drive.console("advance 5s");
     assert!(drive.motor().velocity > 0.0, "the motor turns");
@@ -264,8 +264,8 @@ fn ctrl_c_at_the_idle_smd4_prompt_sends_motor_stop() {
     let mut p = terminal(&args, &[]);
     p.exp_string("smd4> ").unwrap();
     p.send_line("MOTOR:RUNV,+").unwrap();
-    // The reply (its flags), not a redraw of the line being typed, says the drive has it.
-    p.exp_string("0x").unwrap();
+    // The reply, not a redraw of the line being typed, says the drive has it.
+    p.exp_string("\r\nok").unwrap();
     p.exp_string("smd4> ").unwrap();
     drive.console("advance 5s");
     assert!(drive.motor().velocity > 0.0, "the motor turns");
