@@ -14,6 +14,7 @@ mod hostile;
 mod identify;
 mod inputs;
 mod layers;
+mod mixed_bus;
 mod options;
 mod profiles;
 mod program;
