@@ -29,16 +29,15 @@ impl TmclSession {
     /// read from its first byte. (ASCII text never forms a frame for a module at 1..26 but 10
     /// and 13: a frame's first byte is its address, and text bytes are printable, CR or LF.)
     pub(super) fn align_for_frame(&mut self) -> Result<(), SessionError> {
-        if self.frames_aligned || !self.ascii_sent {
+        if self.frames_aligned || !std::mem::take(&mut self.ascii_sent) {
             return Ok(());
         }
         self.core.wire.idle_for(self.resync_gap())?;
         let unanswered = &mut self.unanswered;
         self.core
             .wire
-            .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))?;
-        self.frames_aligned = true;
-        Ok(())
+            .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))
+            .map(|_| ())
     }
 
     pub(super) fn binary_exchange(

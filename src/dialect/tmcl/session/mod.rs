@@ -67,8 +67,8 @@ pub struct TmclSession {
     /// The last exchange on the line was a complete binary one: every binary receiver is at a
     /// frame boundary, and the next frame needs no quiet line before it.
     frames_aligned: bool,
-    /// ASCII bytes went out in this session: a module in binary mode may hold some of them as
-    /// the start of a frame.
+    /// ASCII bytes went out since the line was last kept quiet for a frame time-out: a module in
+    /// binary mode may hold some of them as the start of a frame.
     ascii_sent: bool,
     /// A binary frame went out since the last ASCII line: modules in ASCII mode hold its bytes
     /// as the start of a line, which a CR must end before the next line.
