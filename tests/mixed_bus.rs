@@ -102,8 +102,15 @@ fn a_line_to_the_first_module_is_checked_with_its_profile_after_a_switch_back() 
         stderr(&out)
     );
     // An address character picks the module's profile too, without switching.
-    let out = piped(&sim, &[], "B GAP 1, 5\nGAP 1, 0\n");
-    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let dir = tempdir();
+    let log = dir.join("second.log");
+    let out = piped(
+        &sim,
+        &["--log", log.to_str().unwrap()],
+        "B GAP 1, 5\nGAP 1, 0\n",
+    );
+    let log = std::fs::read_to_string(&log).unwrap_or_default();
+    assert_eq!(code(&out), 0, "{}{log}", stderr(&out));
 }
 
 #[test]
@@ -273,4 +280,32 @@ fn a_transcript_of_a_mixed_bus_is_not_replayed_with_one_profile() {
     let out = run(&["--profile", "tmcm-6110", "transcript", "to-rhai", log2]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(stdout(&out).contains("BGAP 1, 5"), "{}", stdout(&out));
+}
+
+#[test]
+fn frames_and_lines_interleave_line_by_line_without_losing_a_reply() {
+    let sim = bus_sim(&[]);
+    // Every line alternates mode: ASCII to A and B, a frame to C, by address character alone.
+    let mut input = String::new();
+    let mut expected = Vec::new();
+    for n in 1..=12 {
+        input.push_str(&format!(
+            "ASAP 4, 0, {n}\nCSAP 4, 0, {}\nBSAP 4, 5, {}\n",
+            n + 100,
+            n + 200
+        ));
+        input.push_str("CGAP 4, 0\nAGAP 4, 0\nBGAP 4, 5\n");
+        expected.extend([
+            format!("BA 100 {n}"),
+            format!("BC 100 {}", n + 100),
+            format!("BB 100 {}", n + 200),
+            format!("BC 100 {}", n + 100),
+            format!("BA 100 {n}"),
+            format!("BB 100 {}", n + 200),
+        ]);
+    }
+    let out = piped(&sim, &[], &input);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let shown: Vec<String> = stdout(&out).lines().map(str::to_string).collect();
+    assert_eq!(shown, expected, "{}", stderr(&out));
 }
