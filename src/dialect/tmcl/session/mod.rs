@@ -2,8 +2,9 @@
 //! from the start for a module whose profile says it has no ASCII interface.
 //!
 //! On open the target module is put into ASCII mode with the binary command 139 and its echo
-//! behaviour is learnt from global parameter 67; other modules on the bus are entered the first
-//! time a line addresses them. On close every module is put back in the mode it was found in.
+//! behaviour is learnt from global parameter 67; other modules on the bus are identified and
+//! entered the first time a line addresses them, each with its own profile and mode (see
+//! `identify.rs`). On close every module is put back in the mode it was found in.
 
 mod ascii;
 mod binary;
