@@ -162,7 +162,7 @@ fn two_modules_on_one_bus() {
             "BB 100 22",
             "BA 100 11",
             "BB 100 22",
-            "target: module 2 (B)",
+            "target: module 2 (B), TMCM-142, firmware 142V1.06, profile tmcm-142 (built in)",
             "BB 100 22"
         ]
     );

@@ -69,10 +69,7 @@ pub fn run(args: ScanArgs, configs: &Configured, out: &mut dyn Write) -> Result<
     Ok(Exit::Success)
 }
 
-/// How long a scan waits for each reply unless `--timeout` says otherwise: a module answers a
-/// probe at once, so this is the wire time of a short exchange at 9600 baud over a USB adapter
-/// (about 40 ms) with a margin; a scan of 26 empty TMCL addresses then takes about 5 s, not 50.
-pub const SCAN_WAIT: Duration = Duration::from_millis(100);
+pub use crate::commission::scan::SCAN_WAIT;
 
 /// Scans one address after another until a module answers.
 fn first_found(

@@ -1,6 +1,24 @@
 //! Bus addresses as users write them for a scan (`1-26`, `A-Z`, `A,C,30-40`) and as a scan
 //! report shows them: what every dialect's scan shares.
 
+use std::time::Duration;
+
+/// How long a scan waits for each reply unless `--timeout` says otherwise: a module answers a
+/// probe at once, so this is the wire time of a short exchange at 9600 baud over a USB adapter
+/// (about 40 ms) with a margin; a scan of 26 empty TMCL addresses then takes about 5 s, not 50.
+pub const SCAN_WAIT: Duration = Duration::from_millis(100);
+
+/// The wait per reply of a scan in a session whose reply timeout is `timeout`: [`SCAN_WAIT`]
+/// while it is the built-in default (the session's long default is for slow commands), the
+/// timeout itself when one was set.
+pub fn scan_wait(timeout: Duration) -> Duration {
+    if timeout == crate::session::SessionOptions::default().timeout {
+        SCAN_WAIT
+    } else {
+        timeout
+    }
+}
+
 /// Parses an address list: numbers 1..255 and letters A..Z, single or as ranges, comma separated
 /// (`1-26`, `A-Z`, `A,C,30-40`).
 pub fn parse_addresses(text: &str) -> Result<Vec<u8>, String> {

@@ -127,7 +127,8 @@ fn scan(
         .map_err(|e| usage(&format!("{usage_text}; {e}")))?;
     let per_reply = match words.get(1) {
         Some(t) => crate::duration::parse(t).map_err(|e| usage(&format!("{usage_text}; {e}")))?,
-        None => session.options().timeout,
+        // As `tmclsh scan`: a short wait per reply unless --timeout was set.
+        None => crate::commission::scan::scan_wait(session.options().timeout),
     };
     if words.len() > 2 {
         return Err(usage(&usage_text));

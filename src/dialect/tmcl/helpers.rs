@@ -133,7 +133,8 @@ fn target(session: &mut TmclSession, arg: &str, out: &mut dyn Write) -> Result<(
     let module = parse_module(arg)?;
     session.set_target(module)?;
     let c = address_char(module).unwrap_or('?');
-    writeln!(out, "target: module {module} ({c})")?;
+    let which = session.identity_line();
+    writeln!(out, "target: module {module} ({c}), {which}")?;
     Ok(())
 }
 

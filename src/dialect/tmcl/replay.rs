@@ -36,6 +36,7 @@ pub fn script(
     name: &str,
     wait_ms: u64,
 ) -> Result<String, String> {
+    refuse_mixed_bus(entries)?;
     if let Some(header) = header {
         let (module, origin) = match identified_profile(entries) {
             Some(used) => (used.module.clone(), used.name.clone()),
@@ -100,6 +101,44 @@ const PROBE_NOTE: &str = "in ASCII mode, echo";
 /// The session's note after asking for the firmware version on connect (see
 /// `session::tmcl::identify`): "identified: …" or "not identified: …".
 const IDENTIFIED_NOTE: &str = "identified: ";
+
+/// What each identification note says: (the module and its type, the profile label).
+fn identifications(entries: &[Entry]) -> Vec<(&str, &str)> {
+    entries
+        .iter()
+        .filter_map(|e| match &e.record {
+            Record::Note(note) => note
+                .strip_prefix(IDENTIFIED_NOTE)?
+                .rsplit_once(", profile "),
+            _ => None,
+        })
+        .collect()
+}
+
+/// A session on a bus of different modules checked each module's lines with its own profile; a
+/// replay script has one profile for all of them, so it would check module 2's lines against
+/// module 1's tables. Refused, naming the modules.
+fn refuse_mixed_bus(entries: &[Entry]) -> Result<(), String> {
+    let found = identifications(entries);
+    let Some((_, first)) = found.first() else {
+        return Ok(());
+    };
+    if found.iter().all(|(_, label)| label == first) {
+        return Ok(());
+    }
+    let mut modules: Vec<String> = found
+        .iter()
+        .map(|(module, label)| format!("{module} ({label})"))
+        .collect();
+    modules.sort();
+    modules.dedup();
+    Err(format!(
+        "a transcript of a bus of different modules: {}; a replay checks every line against one \
+         profile, so it cannot replay this one (log one session per module, or give the \
+         same --profile to every session)",
+        modules.join("; ")
+    ))
+}
 
 /// The built-in profile the session took from the module's answer on connect, where its note
 /// names one (`identified: TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`): the

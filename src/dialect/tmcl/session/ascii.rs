@@ -82,6 +82,11 @@ impl TmclSession {
         op: Option<Op>,
         optional_wait: Option<Duration>,
     ) -> Result<TmclExchange, SessionError> {
+        if std::mem::take(&mut self.line_dirty) {
+            self.end_partial_line()?;
+        }
+        self.ascii_sent = true;
+        self.frames_aligned = false;
         let wire_text = self.spelling(text);
         let optional = optional_wait.is_some();
         let mut echoed = false;

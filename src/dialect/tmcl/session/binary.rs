@@ -9,7 +9,7 @@ use crate::dialect::tmcl::protocol::frame::{
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
-use super::{TmclExchange, TmclReply, TmclSession};
+use super::{TmclExchange, TmclReply, TmclSession, WireMode};
 use crate::session::SessionError;
 use crate::session::transcript::Entry;
 
@@ -20,7 +20,24 @@ impl TmclSession {
         module: u8,
         instruction: Instruction,
     ) -> Result<TmclExchange, SessionError> {
+        self.align_for_frame()?;
         self.exchange(module, false, |s| s.binary_exchange(module, instruction))
+    }
+
+    /// On a bus where ASCII lines went out, a module in binary mode took their bytes as the
+    /// start of a frame: the line stays quiet for its frame time-out first, so the next frame is
+    /// read from its first byte. (ASCII text never forms a frame for a module at 1..26 but 10
+    /// and 13: a frame's first byte is its address, and text bytes are printable, CR or LF.)
+    pub(super) fn align_for_frame(&mut self) -> Result<(), SessionError> {
+        if self.frames_aligned || !std::mem::take(&mut self.ascii_sent) {
+            return Ok(());
+        }
+        self.core.wire.idle_for(self.resync_gap())?;
+        let unanswered = &mut self.unanswered;
+        self.core
+            .wire
+            .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))
+            .map(|_| ())
     }
 
     pub(super) fn binary_exchange(
@@ -37,6 +54,8 @@ impl TmclSession {
         self.core
             .wire
             .send(&frame, format_args!("{sent} to module {module} (binary)"))?;
+        // Modules in ASCII mode now hold the frame as the start of a line.
+        self.line_dirty = self.modules.values().any(|m| m.mode == WireMode::Ascii);
         let exchange = |(reply, raw)| TmclExchange {
             module,
             sent,

@@ -35,7 +35,7 @@ impl DialectSession for TmclSession {
         let exchange = self.exchange_line(line)?;
         Ok(Reply {
             shown: exchange.shown(),
-            decoded: render::decode(&exchange, &self.profile).text,
+            decoded: render::decode(&exchange, &self.profile_of(exchange.module)).text,
             refusal: exchange.refusal(),
             forms: Arc::new(exchange),
         })

@@ -1,6 +1,8 @@
 //! Identification on connect: before anything else the target module is asked for its firmware
 //! version (binary command 136 type 0, one 9-byte exchange), and the session takes the built-in
-//! profile of the module number it names — unless a profile was given, which then wins over the
+//! profile of the module number it names. Every other module is identified the same way the
+//! first time the session turns to it (`:target`, an address character, a script's `target()`),
+//! so on a bus of different modules each keeps its own profile and its own wire mode — unless a profile was given, which then wins over the
 //! answer (a mismatch is one warning). A module no profile describes gets the generic profile; a
 //! boot loader's answer (`B` for `V`) ends the session before anything else is sent.
 //!
@@ -12,6 +14,7 @@ use std::sync::Arc;
 
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::catalogue::{self, GENERIC_NOTICE, Identified};
+use crate::dialect::tmcl::profile::version::FirmwareVersion;
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 use crate::exit::{Exit, Failure};
@@ -48,18 +51,70 @@ fn module_of(number: u32) -> String {
     format!("TMCM-{number}")
 }
 
+/// What the session learnt about one module on the bus: the profile its lines are checked and
+/// decoded with, and what it said it is.
+#[derive(Debug, Clone)]
+pub(super) struct Known {
+    pub profile: Arc<Profile>,
+    pub identity: Identity,
+}
+
 impl TmclSession {
     /// Asks the target module for its firmware version and settles the profile: `given` says
     /// the session's profile was chosen by the user (`--profile`), so it stays whatever the
     /// module says. Fails (exit 3) when the boot loader answers: nothing else is sent then.
     pub fn identify(&mut self, given: bool) -> Result<(), SessionError> {
+        self.profile_given = given;
+        let module = self.target;
+        self.identify_module(module)?;
+        self.show_target();
+        Ok(())
+    }
+
+    /// Identifies `module` the first time the session turns to it, when the session identifies
+    /// modules at all (a session the command line opened, `--no-enter` off): on a bus of
+    /// different modules each one is checked, decoded and talked to with its own profile.
+    pub(super) fn identify_if_new(&mut self, module: u8) -> Result<(), SessionError> {
+        let new = !self.known.contains_key(&module) && !self.modules.contains_key(&module);
+        if self.identify_each && new {
+            self.identify_module(module)?;
+        }
+        Ok(())
+    }
+
+    /// Asks `module` for its firmware version (136 type 0) and records its profile and identity.
+    fn identify_module(&mut self, module: u8) -> Result<(), SessionError> {
+        self.identify_each = true;
         if !self.core.options.enter {
-            self.identity = Identity::NotAsked;
             return Ok(());
         }
-        let module = self.target;
+        let identity = self.ask_identity(module)?;
+        let profile = match &identity {
+            Identity::Answered { .. } if !self.profile_given => self
+                .identified
+                .clone()
+                .unwrap_or_else(|| self.fallback.clone()),
+            _ => self.fallback.clone(),
+        };
+        if profile.generic && !self.fallback.generic {
+            self.core.wire.notices.push(GENERIC_NOTICE.to_string());
+        }
+        let known = Known { profile, identity };
+        if matches!(known.identity, Identity::Answered { .. }) {
+            let c = address_char(module).unwrap_or('?');
+            let line = format!("identified: module {module} ({c}), {}", describe(&known));
+            self.core.wire.note(&line);
+        }
+        self.known.insert(module, known);
+        Ok(())
+    }
+
+    /// One 136 exchange with `module`; what it said (the profile it names in `self.identified`).
+    fn ask_identity(&mut self, module: u8) -> Result<Identity, SessionError> {
+        self.identified = None;
         let c = address_char(module).unwrap_or('?');
         let ask = Instruction::new(Opcode::FirmwareVersion, 0, 0, 0);
+        self.align_for_frame()?;
         let answer = self.exchange(module, true, |s| s.binary_exchange(module, ask));
         let text = match answer {
             // The binary exchange reads the answer to 136 type 0 as a version string.
@@ -68,8 +123,9 @@ impl TmclSession {
                 _ => String::new(),
             },
             Err(SessionError::Timeout { timeout, .. }) => {
-                self.identity = Identity::NoAnswer("no answer to 136".into());
-                self.core.wire.note("not identified: no answer to 136");
+                self.core
+                    .wire
+                    .note(&format!("not identified: module {c}: no answer to 136"));
                 // A module in ASCII mode holds the frame as the start of a line.
                 self.end_partial_line()?;
                 self.core.wire.notices.push(format!(
@@ -77,9 +133,9 @@ impl TmclSession {
                      identified (a module already in ASCII mode, or an old firmware); using the \
                      profile {}",
                     timeout.as_millis(),
-                    profile_label(&self.profile)
+                    profile_label(&self.fallback)
                 ));
-                return Ok(());
+                return Ok(Identity::NoAnswer("no answer to 136".into()));
             }
             Err(e) => return Err(e),
         };
@@ -89,13 +145,14 @@ impl TmclSession {
                 identified
             }
             Err(e) => {
-                self.identity = Identity::NoAnswer("answer not understood".into());
-                self.core.wire.note("not identified: answer not understood");
+                self.core.wire.note(&format!(
+                    "not identified: module {c}: answer not understood"
+                ));
                 self.core.wire.notices.push(format!(
                     "module {c} answered command 136 with {e}; not identified, using the profile {}",
-                    profile_label(&self.profile)
+                    profile_label(&self.fallback)
                 ));
-                return Ok(());
+                return Ok(Identity::NoAnswer("answer not understood".into()));
             }
         };
         let version = match &identified {
@@ -112,66 +169,81 @@ impl TmclSession {
         } else {
             named.module.clone()
         };
-        self.identity = Identity::Answered {
+        let identity = Identity::Answered {
             module: module_type.clone(),
             firmware: version.text.clone(),
         };
-        if given {
-            self.warn_mismatch(version.module, &module_type);
-        } else {
-            self.take_profile(named);
+        if self.profile_given {
+            self.warn_mismatch(module, version, &module_type);
         }
-        let line = format!("identified: {}", self.identity_line());
-        self.core.wire.note(&line);
-        Ok(())
+        self.identified = Some(named);
+        Ok(identity)
     }
 
     /// The given profile stays; a module it does not describe is one warning.
-    fn warn_mismatch(&mut self, number: u32, module_type: &str) {
-        let describes = self.profile.generic || self.profile.identity.module_number == Some(number);
-        if describes {
+    fn warn_mismatch(&mut self, module: u8, version: &FirmwareVersion, module_type: &str) {
+        let given = &self.fallback;
+        if given.generic || given.identity.module_number == Some(version.module) {
             return;
         }
-        let c = address_char(self.target).unwrap_or('?');
-        let firmware = match &self.identity {
-            Identity::Answered { firmware, .. } => firmware.clone(),
-            _ => String::new(),
-        };
-        self.core.wire.notices.push(format!(
-            "module {c} is a {module_type} ({firmware}), but the profile given is {} for the {}; \
+        let c = address_char(module).unwrap_or('?');
+        let warning = format!(
+            "module {c} is a {module_type} ({}), but the profile given is {} for the {}; \
              the given profile is used",
-            profile_label(&self.profile),
-            self.profile.module
-        ));
+            version.text,
+            profile_label(given),
+            given.module
+        );
+        self.core.wire.notices.push(warning);
     }
 
-    /// Talks to the module with `profile` from now on (the generic one says so once).
-    fn take_profile(&mut self, profile: Arc<Profile>) {
-        if profile.generic && !self.profile.generic {
-            self.core.wire.notices.push(GENERIC_NOTICE.to_string());
-        }
-        self.profile = profile;
+    /// Makes the target's profile and identity the session's (validation, completion, hints,
+    /// snapshots, `:params`, the banner).
+    pub(super) fn show_target(&mut self) {
+        let known = self.known_of(self.target);
+        self.profile = known.profile;
+        self.identity = known.identity;
+    }
+
+    /// The profile and identity of `module`: what identification found, or the profile the
+    /// session started with.
+    pub(super) fn known_of(&self, module: u8) -> Known {
+        self.known.get(&module).cloned().unwrap_or_else(|| Known {
+            profile: self.fallback.clone(),
+            identity: Identity::NotAsked,
+        })
+    }
+
+    /// The profile lines to `module` are checked and decoded with.
+    pub fn profile_of(&self, module: u8) -> Arc<Profile> {
+        self.known
+            .get(&module)
+            .map_or_else(|| self.fallback.clone(), |k| k.profile.clone())
     }
 
     /// What the session talks to: `TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`.
     pub fn identity_line(&self) -> String {
-        let label = profile_label(&self.profile);
-        match &self.identity {
-            Identity::Answered { module, firmware } => {
-                format!("{module}, firmware {firmware}, profile {label}")
-            }
-            Identity::NotAsked => format!("{}, profile {label}", self.profile.module),
-            Identity::NoAnswer(why) => {
-                format!(
-                    "{} (not identified: {why}), profile {label}",
-                    self.profile.module
-                )
-            }
-        }
+        describe(&Known {
+            profile: self.profile.clone(),
+            identity: self.identity.clone(),
+        })
     }
 
     /// What the session knows about its module.
     pub fn identity(&self) -> &Identity {
         &self.identity
+    }
+}
+
+/// `TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`.
+fn describe(known: &Known) -> String {
+    let label = profile_label(&known.profile);
+    let module = &known.profile.module;
+    match &known.identity {
+        Identity::Answered { module, firmware } => {
+            format!("{module}, firmware {firmware}, profile {label}")
+        }
+        Identity::NotAsked => format!("{module}, profile {label}"),
+        Identity::NoAnswer(why) => format!("{module} (not identified: {why}), profile {label}"),
     }
 }

@@ -2,8 +2,9 @@
 //! from the start for a module whose profile says it has no ASCII interface.
 //!
 //! On open the target module is put into ASCII mode with the binary command 139 and its echo
-//! behaviour is learnt from global parameter 67; other modules on the bus are entered the first
-//! time a line addresses them. On close every module is put back in the mode it was found in.
+//! behaviour is learnt from global parameter 67; other modules on the bus are identified and
+//! entered the first time a line addresses them, each with its own profile and mode (see
+//! `identify.rs`). On close every module is put back in the mode it was found in.
 
 mod ascii;
 mod binary;
@@ -50,11 +51,29 @@ pub struct TmclSession {
     unanswered: Unanswered,
     /// What the target module said it is (command 136).
     identity: Identity,
+    /// The profile the session was opened with: the given one (`--profile`), and the one of a
+    /// module that was not identified.
+    fallback: Arc<Profile>,
+    /// Every module identified so far, with its own profile.
+    known: BTreeMap<u8, identify::Known>,
+    /// The profile the last answer to 136 named.
+    identified: Option<Arc<Profile>>,
+    /// The profile was given: it stays for every module, whatever the modules say.
+    profile_given: bool,
+    /// Modules are identified the first time the session turns to them (sessions the command
+    /// line opens).
+    identify_each: bool,
     /// Every module in binary direct mode, whatever its profile says (`--binary`).
     binary_only: bool,
     /// The last exchange on the line was a complete binary one: every binary receiver is at a
     /// frame boundary, and the next frame needs no quiet line before it.
     frames_aligned: bool,
+    /// ASCII bytes went out since the line was last kept quiet for a frame time-out: a module in
+    /// binary mode may hold some of them as the start of a frame.
+    ascii_sent: bool,
+    /// A binary frame went out since the last ASCII line: modules in ASCII mode hold its bytes
+    /// as the start of a line, which a CR must end before the next line.
+    line_dirty: bool,
 }
 
 /// How the command line opens a session: what decides its profile and its mode.
@@ -113,12 +132,19 @@ impl TmclSession {
         let mut session = TmclSession {
             target: options.module,
             core: SessionCore::new(link, options, transcript),
+            fallback: profile.clone(),
+            known: BTreeMap::new(),
+            identified: None,
+            profile_given: false,
+            identify_each: false,
             profile,
             modules: BTreeMap::new(),
             unanswered: Unanswered::default(),
             identity: Identity::NotAsked,
             binary_only: false,
             frames_aligned: false,
+            ascii_sent: false,
+            line_dirty: false,
         };
         let opened = format!("session opened on {}", session.core.wire.link.describe());
         session.core.wire.note(&opened);
@@ -129,7 +155,7 @@ impl TmclSession {
         Ok(session)
     }
 
-    /// The profile used for validation and decoding.
+    /// The target module's profile, used for completion, hints, help, snapshots and `:params`.
     pub fn profile(&self) -> &Arc<Profile> {
         &self.profile
     }
@@ -139,7 +165,8 @@ impl TmclSession {
         self.target
     }
 
-    /// Changes the target module, entering ASCII mode on it if it is new.
+    /// Changes the target module, identifying it and entering ASCII mode on it if it is new;
+    /// its profile becomes the session's.
     pub fn set_target(&mut self, module: u8) -> Result<(), SessionError> {
         if address_char(module).is_none() {
             return Err(SessionError::Usage(format!(
@@ -148,6 +175,7 @@ impl TmclSession {
         }
         self.contact(module)?;
         self.target = module;
+        self.show_target();
         Ok(())
     }
 
@@ -156,7 +184,7 @@ impl TmclSession {
     pub fn validation_mode(&self, module: u8) -> Mode {
         let binary = match self.module_state(module) {
             Some((mode, _)) => mode == WireMode::Binary,
-            None => self.binary_only || !self.has_ascii(),
+            None => self.binary_only || !self.has_ascii(module),
         };
         if binary { Mode::Binary } else { Mode::Ascii }
     }
@@ -177,7 +205,18 @@ impl TmclSession {
     }
 
     fn exchange_typed(&mut self, text: &str) -> Result<TmclExchange, SessionError> {
-        match line::parse(text, &self.profile) {
+        // A line addressed to another module is read with that module's profile.
+        let addressed = parse_line(text, |w| self.profile.commands.is_word(w))
+            .ok()
+            .and_then(|raw| raw.address.and_then(line::address_of));
+        let profile = match addressed {
+            Some(module) if module != self.target => {
+                self.identify_if_new(module)?;
+                self.profile_of(module)
+            }
+            _ => self.profile.clone(),
+        };
+        match line::parse(text, &profile) {
             Ok(line) => {
                 let module = line.address.unwrap_or(self.target);
                 self.perform(module, line.op)
@@ -221,7 +260,8 @@ impl TmclSession {
             address: Some(module),
             op,
         };
-        match validate::validate(&line, &self.profile, mode) {
+        let profile = self.profile_of(module);
+        match validate::validate(&line, &profile, mode) {
             Ok(warnings) => self
                 .core
                 .wire
@@ -237,7 +277,7 @@ impl TmclSession {
         let exchange = match (wire, op) {
             (WireMode::Ascii, Op::Ascii(AsciiWord::Bin)) => self.leave_ascii(module)?,
             (WireMode::Ascii, _) => {
-                let text = format_line(&line, self.target, &self.profile);
+                let text = format_line(&line, self.target, &profile);
                 self.ascii_request(module, &text, Some(op))?
             }
             (WireMode::Binary, Op::Command(instruction)) => {
@@ -262,7 +302,8 @@ impl TmclSession {
         }
         match exchange.op {
             Some(Op::Command(i)) => {
-                let spec = self.profile.commands.by_number(i.command);
+                let profile = self.profile_of(exchange.module);
+                let spec = profile.commands.by_number(i.command);
                 if spec.is_some_and(|s| s.starts_motion) {
                     self.core.moved.insert(Some(exchange.module.into()));
                 }
@@ -312,7 +353,7 @@ impl TmclSession {
             address: Some(module),
             op: Op::Command(instruction),
         };
-        match validate::validate(&line, &self.profile, Mode::Program) {
+        match validate::validate(&line, &self.profile_of(module), Mode::Program) {
             Ok(_) => {}
             Err(error) if self.core.options.validate => return Err(error.into()),
             Err(error) => self
@@ -382,7 +423,7 @@ impl TmclSession {
                 op,
             },
             self.target,
-            &self.profile,
+            &self.profile_of(module),
         )
     }
 

@@ -111,12 +111,17 @@ impl TmclSession {
         if let Some(state) = self.modules.get(&module) {
             return Ok(state.mode);
         }
+        // 136 before 139: its answer decides the profile, and the profile the mode.
+        self.identify_if_new(module)?;
         if self.binary_only {
             self.start_binary(module, "--binary given")?;
             return Ok(WireMode::Binary);
         }
-        if !self.has_ascii() {
-            let why = format!("the {} has no ASCII interface", self.profile.module);
+        if !self.has_ascii(module) {
+            let why = format!(
+                "the {} has no ASCII interface",
+                self.profile_of(module).module
+            );
             self.start_binary(module, &why)?;
             return Ok(WireMode::Binary);
         }
@@ -152,7 +157,9 @@ impl TmclSession {
 
     /// Whether `module` has answered a binary frame in this session (the identification).
     fn answered_binary(&self, module: u8) -> bool {
-        module == self.target && matches!(self.identity, super::Identity::Answered { .. })
+        self.known
+            .get(&module)
+            .is_some_and(|k| matches!(k.identity, super::Identity::Answered { .. }))
     }
 
     /// Talks to `module` in binary direct mode from now on (`why` goes to the transcript). The
@@ -183,23 +190,31 @@ impl TmclSession {
         Ok(())
     }
 
-    /// How long the line stays quiet before a binary-mode receiver takes a new frame: its frame
-    /// time-out, and a tenth more.
+    /// How long the line stays quiet before a binary-mode receiver takes a new frame: the longest
+    /// frame time-out of the modules the session knows, and a tenth more.
     pub(super) fn resync_gap(&self) -> Duration {
-        Duration::from_millis(u64::from(self.profile.sim.frame_timeout_ms) * 11 / 10)
+        let longest = self
+            .known
+            .values()
+            .map(|k| k.profile.sim.frame_timeout_ms)
+            .chain([self.fallback.sim.frame_timeout_ms])
+            .max()
+            .unwrap_or_default();
+        Duration::from_millis(u64::from(longest) * 11 / 10)
     }
 
-    /// Whether the profile's module has the ASCII interface (or may have it).
-    pub(super) fn has_ascii(&self) -> bool {
-        self.profile.identity.ascii_interface() != AsciiInterface::No
+    /// Whether `module` has the ASCII interface (or may have it), as its profile says.
+    pub(super) fn has_ascii(&self, module: u8) -> bool {
+        self.profile_of(module).identity.ascii_interface() != AsciiInterface::No
     }
 
     /// Sends 139 and learns the echo mode (see the module docs).
     pub fn enter_ascii(&mut self, module: u8) -> Result<(), SessionError> {
-        if !self.has_ascii() {
+        if !self.has_ascii(module) {
+            let profile = self.profile_of(module);
             return Err(SessionError::Refused(format!(
                 "the {} has no ASCII interface (profile {}); it is used in binary direct mode",
-                self.profile.module, self.profile.name
+                profile.module, profile.name
             )));
         }
         // A module still in binary mode has seen our ASCII traffic to others as frame bytes; it
@@ -233,6 +248,8 @@ impl TmclSession {
             b"\r",
             "end of line, clears any partial line in ASCII-mode modules",
         )?;
+        self.ascii_sent = true;
+        self.line_dirty = false;
         let previous = self.modules.get(&module).map(|m| m.found_in);
         self.modules.insert(
             module,

@@ -87,6 +87,8 @@ impl TmclSession {
 
     /// Sends a lone CR, which ends whatever partial line ASCII-mode modules hold.
     pub fn end_partial_line(&mut self) -> Result<(), SessionError> {
+        self.ascii_sent = true;
+        self.frames_aligned = false;
         self.core.wire.send(
             b"\r",
             "end of line, clears what the probes left in line buffers",

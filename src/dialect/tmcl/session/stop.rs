@@ -5,6 +5,7 @@
 use std::time::Duration;
 
 use crate::dialect::tmcl::protocol::line::address_char;
+use crate::dialect::tmcl::protocol::validate::Mode;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 
 use super::{TmclExchange, TmclSession, modules};
@@ -16,7 +17,7 @@ impl TmclSession {
     /// failure; the answer for each motor.
     pub fn stop_motors(&mut self, module: u8) -> Vec<(u8, Result<TmclExchange, SessionError>)> {
         self.urgently(|s| {
-            (0..s.profile.axes)
+            (0..s.profile_of(module).axes)
                 .map(|motor| {
                     (
                         motor,
@@ -50,9 +51,17 @@ impl TmclSession {
         self.with_timeout(wait, Self::stop_each)
     }
 
+    /// Modules in binary mode before those in ASCII mode: on a bus of both, the line is quiet
+    /// for a frame time-out (see [`TmclSession::align_for_frame`]) at most once, before the
+    /// first frame, and never between two ASCII stops.
+    fn binary_first(&self, mut modules: Vec<u8>) -> Vec<u8> {
+        modules.sort_by_key(|&m| self.validation_mode(m) != Mode::Binary);
+        modules
+    }
+
     fn stop_each(&mut self) -> Vec<String> {
         let mut report = Vec::new();
-        let programs = modules(&self.core.running);
+        let programs = self.binary_first(modules(&self.core.running));
         for module in programs {
             let c = address_char(module).unwrap_or('?');
             match self.stop_program(module) {
@@ -64,7 +73,7 @@ impl TmclSession {
                 Err(e) => report.push(format!("could not stop the program of module {c}: {e}")),
             }
         }
-        let moved = modules(&self.core.moved);
+        let moved = self.binary_first(modules(&self.core.moved));
         for module in moved {
             let c = address_char(module).unwrap_or('?');
             for (motor, result) in self.stop_motors(module) {
