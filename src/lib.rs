@@ -11,6 +11,7 @@
 //! (`repl`) with their dependencies; without it the library is the dialects, sessions, scripts,
 //! simulators and commissioning tools alone, for embedding.
 #![deny(missing_docs)]
+#![warn(unreachable_pub)]
 
 #[cfg(feature = "cli")]
 pub mod cli;

@@ -9,7 +9,7 @@ use crate::exit::{Exit, Failure};
 
 /// Arguments of `asm`.
 #[derive(Debug, clap::Args)]
-pub struct AsmArgs {
+pub(super) struct AsmArgs {
     /// TMCL source file (as the TMCL-IDE writes it).
     #[arg(value_name = "FILE.tmc")]
     pub file: PathBuf,
@@ -21,7 +21,7 @@ pub struct AsmArgs {
     pub list: bool,
 }
 
-pub fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub(super) fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
     let name = args.file.display().to_string();
     let bytes = std::fs::read(&args.file)
         .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {name}: {e}")))?;

@@ -12,12 +12,12 @@ use clap_complete::Shell;
 
 /// Arguments of `completions`.
 #[derive(Debug, clap::Args)]
-pub struct CompletionsArgs {
+pub(super) struct CompletionsArgs {
     /// The shell to generate for.
     pub shell: Shell,
 }
 
-pub fn run(args: &CompletionsArgs, out: &mut dyn Write) -> io::Result<()> {
+pub(super) fn run(args: &CompletionsArgs, out: &mut dyn Write) -> io::Result<()> {
     out.write_all(&generate(args.shell))
 }
 
@@ -39,7 +39,7 @@ const SERIAL_GLOBS: &[&str] = &[
 ];
 
 /// The completion script for `shell`.
-pub fn generate(shell: Shell) -> Vec<u8> {
+pub(super) fn generate(shell: Shell) -> Vec<u8> {
     let mut cmd = super::command();
     let mut buf = Vec::new();
     clap_complete::generate(shell, &mut cmd, "tmclsh", &mut buf);

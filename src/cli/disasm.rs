@@ -9,13 +9,17 @@ use crate::exit::{Exit, Failure};
 
 /// Arguments of `disasm`.
 #[derive(Debug, clap::Args)]
-pub struct DisasmArgs {
+pub(super) struct DisasmArgs {
     /// Program file written by `tmclsh asm -o`.
     #[arg(value_name = "FILE.bin")]
     pub file: PathBuf,
 }
 
-pub fn run(args: &DisasmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub(super) fn run(
+    args: &DisasmArgs,
+    profile: &Profile,
+    out: &mut dyn Write,
+) -> Result<Exit, Failure> {
     let name = args.file.display().to_string();
     let bytes = std::fs::read(&args.file)
         .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {name}: {e}")))?;

@@ -10,7 +10,7 @@ use super::connection::DialectArgs;
 
 /// Arguments of `params`.
 #[derive(Debug, clap::Args)]
-pub struct ParamsArgs {
+pub(crate) struct ParamsArgs {
     /// Show parameters whose identifier or name contains FILTER, or whose number is FILTER
     /// (SMD4: commands whose mnemonic contains FILTER).
     pub filter: Option<String>,
@@ -21,7 +21,11 @@ pub struct ParamsArgs {
 
 /// Prints the table; a filter that matches nothing says so on stderr and exits 1 (as `grep`
 /// does), so a script can test whether a parameter exists.
-pub fn run(args: &ParamsArgs, configs: &Configured, out: &mut dyn Write) -> io::Result<Exit> {
+pub(crate) fn run(
+    args: &ParamsArgs,
+    configs: &Configured,
+    out: &mut dyn Write,
+) -> io::Result<Exit> {
     let filter = args.filter.as_deref().unwrap_or("");
     let matched = configs
         .of(args.dialect.protocol)

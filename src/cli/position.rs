@@ -13,7 +13,7 @@ use clap::{Arg, ArgMatches, Command};
 /// Moves the options given before the subcommand behind the name of the (innermost) subcommand.
 /// `cmd` is the built command and `first` the result of parsing `argv` with it once, so the
 /// arguments are known to be well formed. Global options (`--profile`) stay where they are.
-pub fn behind_subcommand(
+pub(super) fn behind_subcommand(
     cmd: &mut Command,
     first: &ArgMatches,
     argv: Vec<OsString>,
@@ -65,7 +65,7 @@ pub fn behind_subcommand(
 }
 
 /// The names of the nested subcommands given (`["snapshot", "save"]`), if any.
-pub fn subcommand_path(matches: &ArgMatches) -> Option<Vec<String>> {
+pub(super) fn subcommand_path(matches: &ArgMatches) -> Option<Vec<String>> {
     let mut path = Vec::new();
     let mut current = matches;
     while let Some((name, sub)) = current.subcommand() {
@@ -76,7 +76,7 @@ pub fn subcommand_path(matches: &ArgMatches) -> Option<Vec<String>> {
 }
 
 /// The matches of the innermost subcommand (the top level's without one).
-pub fn leaf_matches(matches: &ArgMatches) -> &ArgMatches {
+pub(super) fn leaf_matches(matches: &ArgMatches) -> &ArgMatches {
     let mut current = matches;
     while let Some((_, sub)) = current.subcommand() {
         current = sub;
@@ -85,7 +85,7 @@ pub fn leaf_matches(matches: &ArgMatches) -> &ArgMatches {
 }
 
 /// The subcommand at `path`, mutably (for an error that shows its usage).
-pub fn subcommand_mut<'a>(cmd: &'a mut Command, path: &[String]) -> &'a mut Command {
+pub(super) fn subcommand_mut<'a>(cmd: &'a mut Command, path: &[String]) -> &'a mut Command {
     path.iter().fold(cmd, |cmd, name| {
         cmd.find_subcommand_mut(name)
             .expect("the subcommand exists")
@@ -93,7 +93,7 @@ pub fn subcommand_mut<'a>(cmd: &'a mut Command, path: &[String]) -> &'a mut Comm
 }
 
 /// The option as the user writes it: `--port`, or `-c` for an option with only a short name.
-pub fn flag(arg: &Arg) -> String {
+pub(super) fn flag(arg: &Arg) -> String {
     match (arg.get_long(), arg.get_short()) {
         (Some(long), _) => format!("--{long}"),
         (None, Some(short)) => format!("-{short}"),

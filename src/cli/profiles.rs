@@ -14,14 +14,14 @@ use super::Failure;
 
 /// Arguments of `profiles`.
 #[derive(Debug, clap::Args)]
-pub struct ProfilesArgs {
+pub(super) struct ProfilesArgs {
     /// Show this profile in full: a built-in name, alias or module number, or a profile file.
     #[arg(value_name = "NAME|FILE")]
     pub name: Option<PathBuf>,
 }
 
 /// Lists the built-in profiles, or shows one.
-pub fn run(args: &ProfilesArgs, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub(super) fn run(args: &ProfilesArgs, out: &mut dyn Write) -> Result<Exit, Failure> {
     let result = match &args.name {
         None => list(out),
         Some(arg) => {

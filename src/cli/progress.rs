@@ -10,7 +10,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use crate::progress::{Display, Meter};
 
 /// Bars and spinners on a terminal's stderr.
-pub struct TerminalProgress;
+pub(super) struct TerminalProgress;
 
 impl Display for TerminalProgress {
     fn bar(&self, len: u64, label: &str) -> Option<Box<dyn Meter>> {

@@ -79,7 +79,7 @@ const NO_TABLES: &[&str] = &["ports", "completions", "man", "profiles"];
 
 /// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
 /// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).
-pub fn hide_unused(mut cmd: Command) -> Command {
+pub(super) fn hide_unused(mut cmd: Command) -> Command {
     for (path, ids, _) in UNUSED {
         let words: Vec<&str> = path.split(' ').collect();
         cmd = in_subcommand(cmd, &words, &|sub: Command| {
@@ -106,7 +106,7 @@ fn in_subcommand(cmd: Command, words: &[&str], f: &dyn Fn(Command) -> Command) -
 
 /// Refuses (with a usage error naming each) the options given on the command line that the
 /// parsed command has no use for. `cmd` is the built command `matches` came from.
-pub fn check(cmd: &mut Command, matches: &ArgMatches) -> Result<(), clap::Error> {
+pub(super) fn check(cmd: &mut Command, matches: &ArgMatches) -> Result<(), clap::Error> {
     let path = subcommand_path(matches).unwrap_or_default();
     if path == [SHOWS_ALL] {
         return Ok(());

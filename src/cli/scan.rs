@@ -19,7 +19,7 @@ use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `scan`.
 #[derive(Debug, Clone, clap::Args)]
-pub struct ScanArgs {
+pub(super) struct ScanArgs {
     /// Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40).
     /// TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with
     /// binary frames. SMD4: 1-247 by default, one @N SYS:FW each. Each reply is awaited 100 ms
@@ -35,7 +35,11 @@ pub struct ScanArgs {
 }
 
 /// Runs the scan; exit code 3 when nothing answered.
-pub fn run(args: ScanArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub(super) fn run(
+    args: ScanArgs,
+    configs: &Configured,
+    out: &mut dyn Write,
+) -> Result<Exit, Failure> {
     interrupt::install();
     let out = &mut super::snapshot::PipeSafe(out);
     let dialect = args.module.protocol();
@@ -69,7 +73,7 @@ pub fn run(args: ScanArgs, configs: &Configured, out: &mut dyn Write) -> Result<
     Ok(Exit::Success)
 }
 
-pub use crate::commission::scan::SCAN_WAIT;
+pub(super) use crate::commission::scan::SCAN_WAIT;
 
 /// Scans one address after another until a module answers.
 fn first_found(

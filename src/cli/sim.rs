@@ -20,7 +20,7 @@ use crate::sim::pacing::Paced;
 /// Arguments of `sim`.
 #[derive(Debug, clap::Args)]
 #[command(after_long_help = console_help())]
-pub struct SimArgs {
+pub(super) struct SimArgs {
     /// The protocol of the simulated module: a bus of TMCL modules (tmcl) or an SMD4 drive (smd4).
     #[arg(long, value_parser = protocol_parser(), default_value = default_dialect().name)]
     pub protocol: &'static Dialect,
@@ -108,7 +108,7 @@ pub struct SimArgs {
 /// The simulator flags of every dialect in one group of `sim --help` ([`SimFlags`]), kept as
 /// parsed for the chosen dialect to read its own.
 #[derive(Debug, Clone)]
-pub struct SimFlagGroup<const G: u8>(ArgMatches);
+pub(super) struct SimFlagGroup<const G: u8>(ArgMatches);
 
 const BUS: u8 = 0;
 const MODULE: u8 = 1;
@@ -197,7 +197,11 @@ fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
 
 /// Runs the simulator until interrupted (or `quit` on the console).
 #[cfg(unix)]
-pub fn run(args: &SimArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub(super) fn run(
+    args: &SimArgs,
+    configs: &Configured,
+    out: &mut dyn Write,
+) -> Result<Exit, Failure> {
     use crate::sim::serve::{Server, wake_pair};
 
     let device: SharedDevice = Arc::new(Mutex::new(decorate(device(args, configs)?, args)));

@@ -15,7 +15,7 @@ use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `snapshot`.
 #[derive(Debug, Clone, clap::Args)]
-pub struct SnapshotArgs {
+pub(super) struct SnapshotArgs {
     #[command(subcommand)]
     action: Action,
 }
@@ -74,7 +74,11 @@ enum Action {
 }
 
 /// Runs `snapshot`.
-pub fn run(args: SnapshotArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub(super) fn run(
+    args: SnapshotArgs,
+    configs: &Configured,
+    out: &mut dyn Write,
+) -> Result<Exit, Failure> {
     interrupt::install();
     match args.action {
         Action::Save {

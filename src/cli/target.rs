@@ -90,7 +90,7 @@ impl Target {
 
 /// Whether `--log PATH` names a directory: one that exists, or a path ending with a separator
 /// (created when the session opens).
-pub fn is_log_dir(path: &Path) -> bool {
+pub(super) fn is_log_dir(path: &Path) -> bool {
     path.is_dir()
         || path
             .as_os_str()
@@ -100,7 +100,7 @@ pub fn is_log_dir(path: &Path) -> bool {
 
 /// The transcript file for a session with `device` in the log directory `dir`:
 /// `DEVICE-YYYY-MM-DDTHH-MM-SS.log`, the time in UTC like the transcript's own timestamps.
-pub fn log_file(dir: &Path, device: &str, now: SystemTime) -> PathBuf {
+pub(super) fn log_file(dir: &Path, device: &str, now: SystemTime) -> PathBuf {
     let stamp = humantime::format_rfc3339_seconds(now).to_string();
     let stamp = stamp.trim_end_matches('Z').replace(':', "-");
     dir.join(format!("{device}-{stamp}.log"))

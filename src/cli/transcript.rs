@@ -10,7 +10,7 @@ use crate::exit::{Exit, Failure};
 
 /// Arguments of `transcript`.
 #[derive(Debug, Clone, clap::Args)]
-pub struct TranscriptArgs {
+pub(super) struct TranscriptArgs {
     #[command(subcommand)]
     action: Action,
 }
@@ -33,7 +33,7 @@ enum Action {
 }
 
 /// Runs `transcript`.
-pub fn run(
+pub(super) fn run(
     args: TranscriptArgs,
     configs: &Configured,
     out: &mut dyn Write,

@@ -12,7 +12,7 @@ use super::device::{ParamDevice, ParamRef, Scope, StoreStep};
 use super::value::{ParamValue, Reading};
 use crate::dialect::tmcl::commission::param_ref;
 
-pub struct FakeDevice {
+pub(super) struct FakeDevice {
     pub params: Vec<ParamRef>,
     pub values: BTreeMap<(Scope, String), i64>,
     /// Parameters whose reads are refused.
@@ -29,7 +29,7 @@ pub struct FakeDevice {
 
 impl FakeDevice {
     /// The built-in profile's parameters, all at their defaults (or 0).
-    pub fn new() -> FakeDevice {
+    pub(super) fn new() -> FakeDevice {
         let profile = Profile::builtin();
         let mut params = Vec::new();
         let mut values = BTreeMap::new();
@@ -54,16 +54,16 @@ impl FakeDevice {
         }
     }
 
-    pub fn param(&self, name: &str) -> ParamRef {
+    pub(super) fn param(&self, name: &str) -> ParamRef {
         self.params.iter().find(|p| p.name == name).unwrap().clone()
     }
 
-    pub fn set(&mut self, name: &str, value: i64) {
+    pub(super) fn set(&mut self, name: &str, value: i64) {
         let p = self.param(name);
         self.values.insert((p.scope, p.name), value);
     }
 
-    pub fn get(&self, name: &str) -> i64 {
+    pub(super) fn get(&self, name: &str) -> i64 {
         let p = self.param(name);
         self.values[&(p.scope, p.name)]
     }

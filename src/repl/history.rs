@@ -12,14 +12,14 @@ use crate::dialect::Dialect;
 use super::editor::ReplHelper;
 
 /// The history file of `dialect`, in the user's data directory (`history-NAME`).
-pub fn path(dialect: &Dialect) -> Option<PathBuf> {
+pub(super) fn path(dialect: &Dialect) -> Option<PathBuf> {
     let name = format!("history-{}", dialect.name);
     dirs::data_dir().map(|d| d.join("tmclsh").join(name))
 }
 
 /// Loads `dialect`'s history into the editor (from the shared file of earlier versions, keeping
 /// this dialect's lines, when it has none yet). A missing or unreadable file is an empty history.
-pub fn load(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Dialect) {
+pub(super) fn load(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Dialect) {
     let Some(path) = path(dialect) else { return };
     if path.exists() {
         let _ = editor.load_history(&path);
@@ -36,7 +36,7 @@ pub fn load(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Dialect) 
 }
 
 /// Saves the editor's history as `dialect`'s.
-pub fn save(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Dialect) {
+pub(super) fn save(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Dialect) {
     let Some(path) = path(dialect) else { return };
     if let Some(dir) = path.parent() {
         let _ = std::fs::create_dir_all(dir);

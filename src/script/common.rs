@@ -11,7 +11,7 @@ use super::waiting;
 
 /// Registers the shared functions. `log` lines go to `log_sink`; `source` is the script's text,
 /// which names the condition of a `wait_until` in its messages.
-pub fn register(engine: &mut Engine, source: Rc<str>, log_sink: impl Fn(&str) + 'static) {
+pub(crate) fn register(engine: &mut Engine, source: Rc<str>, log_sink: impl Fn(&str) + 'static) {
     volatile!(engine, "sleep", |ms: INT| waiting::sleep(duration(ms)?));
     volatile!(
         engine,
@@ -132,7 +132,7 @@ fn check(cond: bool, message: impl FnOnce() -> String) -> Fallible<()> {
 }
 
 /// A non-negative millisecond count as a duration.
-pub fn duration(ms: INT) -> Fallible<Duration> {
+pub(crate) fn duration(ms: INT) -> Fallible<Duration> {
     u64::try_from(ms).map(Duration::from_millis).map_err(|_| {
         refused(format!(
             "a time in milliseconds must not be negative, got {ms}"

@@ -10,10 +10,10 @@ use crate::session::interrupt;
 use super::failure::{Fallible, thrown};
 
 /// How often a wait re-checks its condition.
-pub const POLL: Duration = Duration::from_millis(10);
+pub(crate) const POLL: Duration = Duration::from_millis(10);
 
 /// Sleeps for `duration`, waking every slice to notice Ctrl-C.
-pub fn sleep(duration: Duration) -> Fallible<()> {
+pub(crate) fn sleep(duration: Duration) -> Fallible<()> {
     let end = Instant::now() + duration;
     loop {
         if interrupt::pending() {
@@ -29,7 +29,7 @@ pub fn sleep(duration: Duration) -> Fallible<()> {
 
 /// Calls `check` until it returns true or `timeout` passes; `what` names the awaited condition in
 /// the spinner and in the timeout error.
-pub fn until(
+pub(crate) fn until(
     what: &str,
     timeout: Duration,
     mut check: impl FnMut() -> Fallible<bool>,
@@ -39,7 +39,7 @@ pub fn until(
 
 /// [`until`] for a condition that also gives the value it saw, which a timeout reports (the
 /// last one).
-pub fn until_showing(
+pub(crate) fn until_showing(
     what: &str,
     timeout: Duration,
     mut check: impl FnMut() -> Fallible<(bool, String)>,

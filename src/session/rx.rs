@@ -22,16 +22,16 @@ pub(crate) struct Overflow;
 
 impl Rx {
     /// The bytes not yet consumed.
-    pub fn bytes(&self) -> &[u8] {
+    pub(crate) fn bytes(&self) -> &[u8] {
         &self.buf[self.head..]
     }
 
-    pub fn len(&self) -> usize {
+    pub(crate) fn len(&self) -> usize {
         self.buf.len() - self.head
     }
 
     /// Appends `bytes`, or refuses all of them when the buffer would hold more than [`RX_CAP`].
-    pub fn extend(&mut self, bytes: &[u8]) -> Result<(), Overflow> {
+    pub(crate) fn extend(&mut self, bytes: &[u8]) -> Result<(), Overflow> {
         if self.len() + bytes.len() > RX_CAP {
             return Err(Overflow);
         }
@@ -56,7 +56,7 @@ impl Rx {
     }
 
     /// Drops the first `n` bytes.
-    pub fn consume(&mut self, n: usize) {
+    pub(crate) fn consume(&mut self, n: usize) {
         self.head += n.min(self.len());
         if self.head == self.buf.len() {
             self.buf.clear();
@@ -66,7 +66,7 @@ impl Rx {
     }
 
     /// Removes and returns the first `n` bytes.
-    pub fn take(&mut self, n: usize) -> Vec<u8> {
+    pub(crate) fn take(&mut self, n: usize) -> Vec<u8> {
         let n = n.min(self.len());
         let taken = self.bytes()[..n].to_vec();
         self.consume(n);
@@ -74,14 +74,14 @@ impl Rx {
     }
 
     /// Removes and returns everything.
-    pub fn clear(&mut self) -> Vec<u8> {
+    pub(crate) fn clear(&mut self) -> Vec<u8> {
         self.take(self.len())
     }
 
     /// The offset of the first CR or LF at or after offset `from`. A search that finds none
     /// remembers so, and the next search starts where it stopped: a partial line that grows a
     /// byte at a time is not searched again from its start.
-    pub fn line_end(&mut self, from: usize) -> Option<usize> {
+    pub(crate) fn line_end(&mut self, from: usize) -> Option<usize> {
         let start = self.head + from.min(self.len());
         let (known_from, known_to) = self.no_end;
         let resume = if (known_from..=known_to).contains(&start) {

@@ -69,7 +69,7 @@ pub(crate) struct Wire {
 }
 
 impl Wire {
-    pub fn new(link: Box<dyn Link>, transcript: Option<Transcript>) -> Self {
+    pub(crate) fn new(link: Box<dyn Link>, transcript: Option<Transcript>) -> Self {
         precise_timers();
         Wire {
             link,
@@ -88,7 +88,7 @@ impl Wire {
     /// Starts an exchange with `peer`: takes what arrived since the last one (anything but line
     /// ends and `benign` data makes the line suspect), and unless `urgent` (a stop that must go
     /// out now) resynchronises first when the peer is suspect.
-    pub fn begin(
+    pub(crate) fn begin(
         &mut self,
         peer: Peer,
         urgent: bool,
@@ -107,7 +107,7 @@ impl Wire {
 
     /// Ends the exchange started by [`Wire::begin`]: a failed one leaves its peer suspect; what
     /// was discarded becomes one notice per kind.
-    pub fn finish(&mut self, ok: bool) {
+    pub(crate) fn finish(&mut self, ok: bool) {
         if let (Some(peer), false) = (self.in_flight.take(), ok) {
             self.suspect.add(peer);
         }
@@ -119,7 +119,7 @@ impl Wire {
 
     /// Writes bytes to the link and the transcript. The meaning is formatted only when a
     /// transcript is being written (pass `format_args!`), so it costs nothing otherwise.
-    pub fn send(&mut self, bytes: &[u8], meaning: impl Display) -> Result<(), SessionError> {
+    pub(crate) fn send(&mut self, bytes: &[u8], meaning: impl Display) -> Result<(), SessionError> {
         self.log(Entry::Sent, bytes, meaning);
         self.link.send(bytes).map_err(SessionError::from)?;
         self.last_sent = Some(Instant::now());
@@ -130,7 +130,7 @@ impl Wire {
     /// a bus find the start of a frame only after such a pause (a UART time-out), so this is
     /// needed before the first binary frame to a module that has seen other traffic; it is a
     /// rule of the line, not a guessed reply delay. Ctrl-C interrupts it.
-    pub fn idle_for(&mut self, gap: Duration) -> Result<(), SessionError> {
+    pub(crate) fn idle_for(&mut self, gap: Duration) -> Result<(), SessionError> {
         let Some(last) = self.last_sent else {
             return Ok(());
         };
@@ -151,7 +151,7 @@ impl Wire {
     /// passed with nothing new (an `until` already past still takes what has arrived);
     /// `Err(Interrupted)` on Ctrl-C. Callers bound their loops with their own deadline, so a
     /// line that never stops talking cannot keep them.
-    pub fn fill(&mut self, until: Instant) -> Result<bool, SessionError> {
+    pub(crate) fn fill(&mut self, until: Instant) -> Result<bool, SessionError> {
         let mut buf = [0u8; 4096];
         loop {
             if interrupt::pending() {
@@ -186,7 +186,7 @@ impl Wire {
     }
 
     /// Records the first `n` bytes of the receive buffer as received and removes them.
-    pub fn log_received(&mut self, n: usize, meaning: impl Display) {
+    pub(crate) fn log_received(&mut self, n: usize, meaning: impl Display) {
         self.flush_discarded();
         if let Some(t) = &mut self.transcript {
             let n = n.min(self.rx.len());
@@ -198,12 +198,12 @@ impl Wire {
     }
 
     /// A remark in the transcript.
-    pub fn note(&mut self, text: &str) {
+    pub(crate) fn note(&mut self, text: &str) {
         self.log(Entry::Note, b"", text);
     }
 
     /// Records bytes or a note; a transcript that cannot be written is closed with a notice.
-    pub fn log(&mut self, entry: Entry, bytes: &[u8], meaning: impl Display) {
+    pub(crate) fn log(&mut self, entry: Entry, bytes: &[u8], meaning: impl Display) {
         self.flush_discarded();
         if let Some(t) = &mut self.transcript {
             if let Err(e) = t.record(entry, bytes, meaning) {
@@ -225,7 +225,7 @@ impl Wire {
 
     /// Forgets what was received (a link opened anew). Suspicion stays: a device behind a
     /// reopened port may still answer what it was asked before.
-    pub fn reset(&mut self) {
+    pub(crate) fn reset(&mut self) {
         self.rx.clear();
         self.discarded.clear();
     }

@@ -12,7 +12,7 @@ const TIMES: &str = "Times (:scan, :watch, :record, run --max-time, the simulato
 (250ms, 2s, 1.5s, 1m) or a bare number of milliseconds (250 is 250ms), at most 7 days.";
 
 /// Writes the help on `topic` (empty: the overview).
-pub fn write_help(
+pub(super) fn write_help(
     topic: &str,
     session: &dyn DialectSession,
     out: &mut dyn Write,

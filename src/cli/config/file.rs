@@ -33,7 +33,7 @@ impl Scope {
 
 /// One value read from a file, checked, in the form the option takes it.
 #[derive(Debug, Clone)]
-pub struct Entry {
+pub(super) struct Entry {
     /// The key.
     pub key: &'static Key,
     /// The option's value (paths resolved against the file's directory).
@@ -47,7 +47,7 @@ pub struct Entry {
 }
 
 /// The user's configuration file, whether or not it exists.
-pub fn user_file() -> Option<PathBuf> {
+pub(super) fn user_file() -> Option<PathBuf> {
     let base = std::env::var_os("XDG_CONFIG_HOME")
         .map(PathBuf::from)
         .filter(|p| p.is_absolute())
@@ -56,14 +56,14 @@ pub fn user_file() -> Option<PathBuf> {
 }
 
 /// The project's configuration file: `tmclsh.toml` in `from` or the nearest directory above it.
-pub fn project_file(from: &Path) -> Option<PathBuf> {
+pub(super) fn project_file(from: &Path) -> Option<PathBuf> {
     from.ancestors()
         .map(|dir| dir.join("tmclsh.toml"))
         .find(|file| file.is_file())
 }
 
 /// Reads and checks one file against the options of `cmd`.
-pub fn read(path: &Path, scope: Scope, cmd: &Command) -> Result<Vec<Entry>, String> {
+pub(super) fn read(path: &Path, scope: Scope, cmd: &Command) -> Result<Vec<Entry>, String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let at = |offset: usize| format!("{}:{}", path.display(), line_at(&text, offset));
     let root = DeTable::parse(&text).map_err(|e| {

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 /// A serial port.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Port {
+pub(super) struct Port {
     /// The device file (`/dev/ttyUSB0`).
     pub path: PathBuf,
     /// What kind of port it is.
@@ -16,7 +16,7 @@ pub struct Port {
 
 /// What kind of port.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Kind {
+pub(super) enum Kind {
     /// A USB adapter.
     Usb(Usb),
     /// On a PCI card.
@@ -29,7 +29,7 @@ pub enum Kind {
 
 /// What a USB adapter says about itself.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Usb {
+pub(super) struct Usb {
     /// Vendor id.
     pub vid: u16,
     /// Product id.
@@ -43,7 +43,7 @@ pub struct Usb {
 }
 
 /// The serial ports, sorted by path.
-pub fn ports() -> std::io::Result<Vec<Port>> {
+pub(super) fn ports() -> std::io::Result<Vec<Port>> {
     let mut ports = platform()?;
     ports.sort_by(|a, b| a.path.cmp(&b.path));
     Ok(ports)
@@ -86,7 +86,7 @@ mod sysfs {
 
     /// Where `sys/` and `dev/` are: `/`, or in debug builds the directory in `TMCLSH_TEST_SYSFS`
     /// (a made-up tree for the tests, as real adapters cannot be plugged in on demand).
-    pub fn root() -> PathBuf {
+    pub(super) fn root() -> PathBuf {
         #[cfg(debug_assertions)]
         if let Some(root) = std::env::var_os("TMCLSH_TEST_SYSFS") {
             return PathBuf::from(root);
@@ -96,7 +96,7 @@ mod sysfs {
 
     /// The ports under `root`: every entry of `sys/class/tty` backed by a device whose file
     /// exists in `dev/`.
-    pub fn ports(root: &Path) -> Vec<Port> {
+    pub(super) fn ports(root: &Path) -> Vec<Port> {
         let Ok(entries) = root.join("sys/class/tty").read_dir() else {
             return Vec::new();
         };

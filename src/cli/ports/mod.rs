@@ -4,7 +4,7 @@
 
 mod list;
 mod probe;
-pub mod usb;
+pub(super) mod usb;
 
 use std::io::{self, Write};
 use std::path::Path;
@@ -15,7 +15,7 @@ use list::{Kind, ports};
 
 /// Arguments of `ports`.
 #[derive(Debug, Clone, clap::Args)]
-pub struct PortsArgs {
+pub(super) struct PortsArgs {
     /// Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each
     /// reply awaited 100 ms (a port in use by another program is reported, not waited for).
     #[arg(long)]
@@ -24,7 +24,7 @@ pub struct PortsArgs {
 
 /// Prints one row per port: device file, kind, VID:PID, serial number, product (manufacturer);
 /// with `--probe`, then what answers on each.
-pub fn run(args: &PortsArgs, configs: &Configured, out: &mut dyn Write) -> io::Result<()> {
+pub(super) fn run(args: &PortsArgs, configs: &Configured, out: &mut dyn Write) -> io::Result<()> {
     list_ports(out)?;
     if args.probe {
         let paths: Vec<String> = ports()?
@@ -114,7 +114,7 @@ fn list_ports(out: &mut dyn Write) -> io::Result<()> {
 /// Whether the port `--port` names is there now: a device file that exists, or a `usb:` name
 /// that resolves to exactly one adapter. `Err` for a `usb:` name that is malformed or matches
 /// several adapters (those do not get better by waiting).
-pub fn present(port: &str) -> Result<bool, String> {
+pub(super) fn present(port: &str) -> Result<bool, String> {
     match usb::UsbSpec::parse(port) {
         None => Ok(Path::new(port).exists()),
         Some(spec) => match usb::find(&spec?) {

@@ -16,7 +16,11 @@ const BAUD: u32 = 9600;
 const ADDRESS: u8 = 1;
 
 /// Probes every port in `paths`, printing what answers on each.
-pub fn probe_all(paths: &[String], configs: &Configured, out: &mut dyn Write) -> io::Result<()> {
+pub(super) fn probe_all(
+    paths: &[String],
+    configs: &Configured,
+    out: &mut dyn Write,
+) -> io::Result<()> {
     if paths.is_empty() {
         return Ok(());
     }

@@ -8,11 +8,11 @@ use crate::exit::Exit;
 use super::list::{Kind, Port, Usb, ports};
 
 /// The prefix of a port named by USB ids.
-pub const PREFIX: &str = "usb:";
+pub(crate) const PREFIX: &str = "usb:";
 
 /// An adapter named by USB ids.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct UsbSpec {
+pub(crate) struct UsbSpec {
     vid: u16,
     pid: u16,
     serial: Option<String>,
@@ -20,7 +20,7 @@ pub struct UsbSpec {
 
 impl UsbSpec {
     /// `usb:VID:PID[:SERIAL]`, ids in hex; `None` when `port` is a path.
-    pub fn parse(port: &str) -> Option<Result<UsbSpec, String>> {
+    pub(crate) fn parse(port: &str) -> Option<Result<UsbSpec, String>> {
         let rest = port.strip_prefix(PREFIX)?;
         let bad = || {
             format!(
@@ -67,7 +67,7 @@ impl std::fmt::Display for UsbSpec {
 
 /// Where a port named by USB ids is now.
 #[derive(Debug)]
-pub enum Found {
+pub(crate) enum Found {
     /// One adapter matches: its device file.
     One(PathBuf),
     /// None is plugged in (exit 3 when it is opened: the link is not there).
@@ -78,7 +78,7 @@ pub enum Found {
 
 impl Found {
     /// The device file, or the failure with its exit code.
-    pub fn path(self) -> Result<PathBuf, (Exit, String)> {
+    pub(crate) fn path(self) -> Result<PathBuf, (Exit, String)> {
         match self {
             Found::One(path) => Ok(path),
             Found::None(why) => Err((Exit::Link, why)),
@@ -88,7 +88,7 @@ impl Found {
 }
 
 /// Looks the adapter up among the ports of this machine.
-pub fn find(spec: &UsbSpec) -> Found {
+pub(crate) fn find(spec: &UsbSpec) -> Found {
     let ports = ports().unwrap_or_default();
     let found: Vec<&Port> = ports.iter().filter(|p| spec.matches(p)).collect();
     match found.as_slice() {

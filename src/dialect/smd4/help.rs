@@ -7,7 +7,7 @@ use crate::dialect::UNCERTAIN;
 use crate::wrap::{fit, terminal_width};
 
 /// How SMD4 requests are typed: the first lines of `:help`.
-pub fn intro(out: &mut dyn Write) -> io::Result<()> {
+pub(super) fn intro(out: &mut dyn Write) -> io::Result<()> {
     writeln!(
         out,
         "{}",
@@ -29,10 +29,11 @@ pub fn intro(out: &mut dyn Write) -> io::Result<()> {
 }
 
 /// The topics named at the end of `:help`.
-pub const MORE: &str = ":help MNEMONIC, :help params, :help addressing, :help exit, :help time";
+pub(super) const MORE: &str =
+    ":help MNEMONIC, :help params, :help addressing, :help exit, :help time";
 
 /// `:help addressing` and `:help params`; false for other topics.
-pub fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
+pub(super) fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
     match topic {
         "addressing" => writeln!(out, "{ADDRESSING_HELP}")?,
         "params" => {
@@ -52,7 +53,7 @@ pub fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
 
 /// `:help MOTOR:VMAX`: the request's usage, what its argument accepts, and any doubt about it;
 /// false when `word` is no mnemonic of the table.
-pub fn command(spec: &Smd4Spec, word: &str, out: &mut dyn Write) -> io::Result<bool> {
+pub(super) fn command(spec: &Smd4Spec, word: &str, out: &mut dyn Write) -> io::Result<bool> {
     let Some(spec) = spec.commands.get(word) else {
         return Ok(false);
     };

@@ -8,7 +8,7 @@ use crate::dialect::UNCERTAIN;
 use crate::wrap::{fit, terminal_width};
 
 /// How TMCL lines are typed: the first lines of `:help`.
-pub fn intro(out: &mut dyn Write) -> io::Result<()> {
+pub(super) fn intro(out: &mut dyn Write) -> io::Result<()> {
     writeln!(
         out,
         "{}",
@@ -39,11 +39,11 @@ pub fn intro(out: &mut dyn Write) -> io::Result<()> {
 }
 
 /// The topics named at the end of `:help`.
-pub const MORE: &str = ":help COMMAND, :help params, :help exit, :help time, :help ascii";
+pub(super) const MORE: &str = ":help COMMAND, :help params, :help exit, :help time, :help ascii";
 
 /// `:help params` and `:help ascii` (the ASCII commands of `profile`'s module); false for other
 /// topics.
-pub fn topic(profile: &Profile, topic: &str, out: &mut dyn Write) -> io::Result<bool> {
+pub(super) fn topic(profile: &Profile, topic: &str, out: &mut dyn Write) -> io::Result<bool> {
     match topic {
         "params" => {
             writeln!(
@@ -95,7 +95,7 @@ pub fn topic(profile: &Profile, topic: &str, out: &mut dyn Write) -> io::Result<
 
 /// `:help GAP` (or `:help 6`): the command's usage, keywords and where it may be used; false
 /// when `word` names no command of the profile.
-pub fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io::Result<bool> {
+pub(super) fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io::Result<bool> {
     let spec = profile.commands.by_mnemonic(word).or_else(|| {
         word.parse::<u8>()
             .ok()

@@ -12,7 +12,7 @@ const DISCARD_RECORD: usize = 4096;
 impl Wire {
     /// Consumes the first `n` buffered bytes as discarded data of `kind`, counted for the
     /// exchange's summary (the first occurrence is shown).
-    pub fn discard(&mut self, n: usize, kind: &str) {
+    pub(crate) fn discard(&mut self, n: usize, kind: &str) {
         let n = n.min(self.rx.len());
         let bytes = &self.rx.bytes()[..n];
         self.discards.count(kind, bytes);
@@ -21,14 +21,14 @@ impl Wire {
 
     /// Consumes the first `n` buffered bytes as the rest of data already counted as discarded
     /// (an overlong line whose end arrives later).
-    pub fn discard_more(&mut self, n: usize) {
+    pub(crate) fn discard_more(&mut self, n: usize) {
         let n = n.min(self.rx.len());
         self.keep_discarded_from_rx(n);
     }
 
     /// Consumes the first `n` buffered bytes into the transcript only: expected leftovers such
     /// as line ends, or the late answer of a request already given up.
-    pub fn discard_quietly(&mut self, n: usize, meaning: impl Display) {
+    pub(crate) fn discard_quietly(&mut self, n: usize, meaning: impl Display) {
         let n = n.min(self.rx.len());
         if n == 0 {
             return;

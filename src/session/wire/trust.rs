@@ -54,7 +54,7 @@ impl Wire {
     /// Waits, no later than `deadline`, for more bytes of the transmission that just delivered a
     /// complete reply: as long as the next byte would take at the pace this exchange's bytes came
     /// in, or just a poll when they came in one burst. True when bytes arrived.
-    pub fn await_more(&mut self, deadline: Instant) -> Result<bool, SessionError> {
+    pub(crate) fn await_more(&mut self, deadline: Instant) -> Result<bool, SessionError> {
         let wait = self.settle_time();
         self.fill((Instant::now() + wait).min(deadline))
     }
@@ -66,7 +66,7 @@ impl Wire {
     /// and lines `benign` accepts may follow; anything else — the rest of a value a corrupted
     /// byte cut short, even a line end more (`-5227` CR CR was `-52270` CR), a second reply, a
     /// fragment — is noise. Consumes nothing.
-    pub fn settle(
+    pub(crate) fn settle(
         &mut self,
         from: usize,
         deadline: Instant,
@@ -122,7 +122,7 @@ impl Wire {
     }
 
     /// How long after a reply's last byte the next one of the same transmission would arrive.
-    pub fn settle_time(&self) -> Duration {
+    pub(crate) fn settle_time(&self) -> Duration {
         let pace = self.pace.per_byte();
         if pace < BURST_PACE {
             return Duration::ZERO;
@@ -138,7 +138,7 @@ impl Wire {
     /// How long the line must be quiet before a suspect peer is trusted again: as long as the
     /// timeout (a reply that missed it gets as long again to turn up) up to [`RESYNC_MAX`], and
     /// at least [`RESYNC_BYTES`] byte times (a slow line still delivering).
-    pub fn resync_window(&self, timeout: Duration) -> Duration {
+    pub(crate) fn resync_window(&self, timeout: Duration) -> Duration {
         let bytes = self
             .link
             .byte_time()
@@ -147,7 +147,7 @@ impl Wire {
     }
 
     /// Trusts `peer` again without waiting: its late answers have all been seen.
-    pub fn trust(&mut self, peer: Peer) {
+    pub(crate) fn trust(&mut self, peer: Peer) {
         self.suspect.peers.retain(|&p| p != peer);
     }
 
@@ -189,7 +189,7 @@ impl Wire {
 
     /// Takes what arrived outside any exchange (late replies, line noise, events), logging it;
     /// anything but line ends and benign data makes the line suspect.
-    pub fn drain(&mut self, benign: Benign) -> Result<(), SessionError> {
+    pub(crate) fn drain(&mut self, benign: Benign) -> Result<(), SessionError> {
         let mut buf = [0u8; 4096];
         let mut read = 0;
         while read < DRAIN_BUDGET {

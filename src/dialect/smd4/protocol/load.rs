@@ -72,7 +72,7 @@ pub(crate) enum Scalar {
 }
 
 impl Scalar {
-    pub fn as_f64(&self) -> Option<f64> {
+    pub(crate) fn as_f64(&self) -> Option<f64> {
         match self {
             Scalar::Int(i) => Some(*i as f64),
             Scalar::Float(f) => Some(*f),
@@ -80,7 +80,7 @@ impl Scalar {
         }
     }
 
-    pub fn text(&self) -> String {
+    pub(crate) fn text(&self) -> String {
         match self {
             Scalar::Int(i) => i.to_string(),
             Scalar::Float(f) => f.to_string(),
@@ -167,7 +167,7 @@ fn yes() -> bool {
 }
 
 impl Smd4File {
-    pub fn parse(text: &str) -> Result<Self, toml::de::Error> {
+    pub(crate) fn parse(text: &str) -> Result<Self, toml::de::Error> {
         toml::from_str(text)
     }
 }

@@ -58,7 +58,7 @@ pub fn is_program_file(bytes: &[u8]) -> bool {
 }
 
 /// The file contents for `instructions`.
-pub fn write(instructions: &[Instruction]) -> Result<Vec<u8>, BinaryError> {
+pub(super) fn write(instructions: &[Instruction]) -> Result<Vec<u8>, BinaryError> {
     let count =
         u16::try_from(instructions.len()).map_err(|_| BinaryError::TooMany(instructions.len()))?;
     let mut out = Vec::with_capacity(HEADER_LEN + 7 * instructions.len());
@@ -72,7 +72,7 @@ pub fn write(instructions: &[Instruction]) -> Result<Vec<u8>, BinaryError> {
 }
 
 /// The instructions of a program file.
-pub fn read(bytes: &[u8]) -> Result<Vec<Instruction>, BinaryError> {
+pub(super) fn read(bytes: &[u8]) -> Result<Vec<Instruction>, BinaryError> {
     if !is_program_file(bytes) {
         return Err(BinaryError::NotAProgram);
     }

@@ -223,7 +223,7 @@ pub(crate) struct SimulationRow {
 }
 
 impl ProfileFile {
-    pub fn parse(text: &str) -> Result<Self, toml::de::Error> {
+    pub(crate) fn parse(text: &str) -> Result<Self, toml::de::Error> {
         toml::from_str(text)
     }
 }

@@ -233,7 +233,7 @@ impl TmclSession {
 
 /// A binary reply in the ASCII reply format (`BA 100 -5000`), so one-shot output looks the same in
 /// both modes; addresses without a letter are shown as numbers.
-pub fn binary_reply_text(reply: &ReplyFrame) -> String {
+pub(super) fn binary_reply_text(reply: &ReplyFrame) -> String {
     let name = |a: u8| {
         address_char(a)
             .map(String::from)

@@ -31,7 +31,7 @@ struct Entry {
 
 impl Unanswered {
     /// Remembers a request whose exchange failed, and whether its echo had come.
-    pub fn remember(&mut self, line: Vec<u8>, echoed: bool) {
+    pub(super) fn remember(&mut self, line: Vec<u8>, echoed: bool) {
         self.entries.retain(|e| e.line != line);
         self.entries.push_back(Entry { line, echoed });
         while self.entries.len() > KEPT {
@@ -40,13 +40,13 @@ impl Unanswered {
     }
 
     /// Whether `line` is an unanswered request as sent.
-    pub fn contains(&self, line: &[u8]) -> bool {
+    pub(super) fn contains(&self, line: &[u8]) -> bool {
         self.entries.iter().any(|e| e.line == line)
     }
 
     /// A line arrived outside its exchange: whether it is the late echo of an unanswered
     /// request (which then waits only for its reply).
-    pub fn echo_arrived(&mut self, line: &[u8]) -> bool {
+    pub(super) fn echo_arrived(&mut self, line: &[u8]) -> bool {
         match self
             .entries
             .iter_mut()
@@ -62,7 +62,7 @@ impl Unanswered {
 
     /// A reply of module character `module` arrived outside its exchange: whether it is the late
     /// reply of an unanswered request already echoed (which is then answered and forgotten).
-    pub fn reply_arrived(&mut self, module: char) -> bool {
+    pub(super) fn reply_arrived(&mut self, module: char) -> bool {
         let position = self
             .entries
             .iter()
@@ -71,7 +71,7 @@ impl Unanswered {
     }
 
     /// Whether requests to module character `module` still wait for late answers.
-    pub fn pending(&self, module: char) -> bool {
+    pub(super) fn pending(&self, module: char) -> bool {
         self.entries
             .iter()
             .any(|e| e.line.first() == Some(&(module as u8)))

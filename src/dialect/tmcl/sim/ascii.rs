@@ -23,7 +23,7 @@ pub(crate) enum Echo {
 
 impl Echo {
     /// The echo mode of a GP 67 value.
-    pub fn from_config(gp67: i32) -> Echo {
+    pub(super) fn from_config(gp67: i32) -> Echo {
         match (gp67 >> 4) & 3 {
             0 => Echo::Characters,
             1 => Echo::Line,
@@ -59,7 +59,7 @@ pub(crate) struct Context<'a> {
 }
 
 impl LineInput {
-    pub fn new() -> LineInput {
+    pub(super) fn new() -> LineInput {
         LineInput {
             state: State::Idle,
             buf: Vec::with_capacity(64),
@@ -67,14 +67,14 @@ impl LineInput {
     }
 
     /// Forgets a partial line.
-    pub fn clear(&mut self) {
+    pub(super) fn clear(&mut self) {
         self.state = State::Idle;
         self.buf.clear();
     }
 
     /// Takes one byte, appending any echo to `out`; true when a complete line for this module
     /// is ready in [`LineInput::line`].
-    pub fn feed(&mut self, byte: u8, cx: &Context, out: &mut Vec<u8>) -> bool {
+    pub(super) fn feed(&mut self, byte: u8, cx: &Context, out: &mut Vec<u8>) -> bool {
         match (byte, self.state) {
             (b'\r' | b'\n', State::Mine) => {
                 match cx.echo {
@@ -129,7 +129,7 @@ impl LineInput {
     }
 
     /// The completed line after its address character (invalid UTF-8 gives `None`).
-    pub fn line(&self) -> Option<&str> {
+    pub(super) fn line(&self) -> Option<&str> {
         std::str::from_utf8(self.buf.get(1..)?).ok()
     }
 }

@@ -42,18 +42,18 @@ pub(crate) struct Outcome {
 }
 
 impl Outcome {
-    pub fn ok(value: i32) -> Outcome {
+    pub(super) fn ok(value: i32) -> Outcome {
         Outcome::status(Status::Ok, value)
     }
 
-    pub fn status(status: Status, value: i32) -> Outcome {
+    pub(super) fn status(status: Status, value: i32) -> Outcome {
         Outcome {
             reply: Reply::Normal(status, value),
             effect: Effect::None,
         }
     }
 
-    pub fn error(status: Status, instruction: &Instruction) -> Outcome {
+    pub(super) fn error(status: Status, instruction: &Instruction) -> Outcome {
         Outcome::status(status, instruction.value)
     }
 }
@@ -74,7 +74,7 @@ const UNLOCK: i32 = 4321;
 impl Machine {
     /// Executes `instruction` at `t` (the machine must have been advanced to `t`). In download
     /// mode, instructions other than control functions are stored instead.
-    pub fn execute(&mut self, t: f64, instruction: &Instruction, source: Source) -> Outcome {
+    pub(super) fn execute(&mut self, t: f64, instruction: &Instruction, source: Source) -> Outcome {
         if source == Source::Direct
             && self.program.downloading()
             && !instruction.command.is_control()

@@ -29,7 +29,7 @@ fn find_mut<T>(ports: &mut [(u8, T)], port: u8) -> Option<&mut T> {
 
 impl Io {
     /// All inputs low, analog inputs at 0, outputs off.
-    pub fn new(sim: &SimConstants) -> Io {
+    pub(super) fn new(sim: &SimConstants) -> Io {
         Io {
             digital: sim.digital_inputs.iter().map(|&p| (p, false)).collect(),
             analog: sim.analog_inputs.iter().map(|&p| (p, 0)).collect(),
@@ -40,7 +40,7 @@ impl Io {
 
     /// GIO: a digital input, an analog input or an output state. Unknown ports answer wrong
     /// type (the port is the type byte), unknown banks invalid value.
-    pub fn read(&self, port: u8, bank: u8) -> Result<i32, Status> {
+    pub(super) fn read(&self, port: u8, bank: u8) -> Result<i32, Status> {
         let value = match bank {
             DIGITAL => find(&self.digital, port).map(i32::from),
             ANALOG => find(&self.analog, port),
@@ -51,7 +51,7 @@ impl Io {
     }
 
     /// SIO: sets an output (bank 2 only).
-    pub fn write(&mut self, port: u8, bank: u8, on: bool) -> Result<(), Status> {
+    pub(super) fn write(&mut self, port: u8, bank: u8, on: bool) -> Result<(), Status> {
         if bank != OUTPUTS {
             return Err(Status::InvalidValue);
         }
@@ -60,7 +60,7 @@ impl Io {
     }
 
     /// Sets a digital input.
-    pub fn set_input(&mut self, port: u8, high: bool) -> Result<(), String> {
+    pub(super) fn set_input(&mut self, port: u8, high: bool) -> Result<(), String> {
         let ports = self
             .digital
             .iter()
@@ -73,7 +73,7 @@ impl Io {
     }
 
     /// Sets an analog input (0..adc_max).
-    pub fn set_analog(&mut self, port: u8, value: i32) -> Result<(), String> {
+    pub(super) fn set_analog(&mut self, port: u8, value: i32) -> Result<(), String> {
         if !(0..=self.adc_max).contains(&value) {
             return Err(format!(
                 "analog value {value} is out of range 0..{}",
@@ -92,12 +92,12 @@ impl Io {
     }
 
     /// An output's state.
-    pub fn output(&self, port: u8) -> Option<bool> {
+    pub(super) fn output(&self, port: u8) -> Option<bool> {
         find(&self.outputs, port)
     }
 
     /// Switches every output off (power-up).
-    pub fn reset_outputs(&mut self) {
+    pub(super) fn reset_outputs(&mut self) {
         for (_, on) in &mut self.outputs {
             *on = false;
         }

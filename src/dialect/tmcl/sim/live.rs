@@ -8,12 +8,12 @@ use super::params::Slot;
 
 impl Machine {
     /// The RAM value of a motor's parameter in `role` (0 where the module has no such role).
-    pub fn role(&self, motor: u8, role: Option<u8>) -> i32 {
+    pub(super) fn role(&self, motor: u8, role: Option<u8>) -> i32 {
         role.map_or(0, |n| self.params.get(Slot::Axis(motor, n)))
     }
 
     /// Sets the RAM value of a motor's parameter in `role`, if the module has it.
-    pub fn set_role(&mut self, motor: u8, role: Option<u8>, value: i32) {
+    pub(super) fn set_role(&mut self, motor: u8, role: Option<u8>, value: i32) {
         if let Some(n) = role {
             self.params.set(Slot::Axis(motor, n), value);
         }
@@ -34,7 +34,7 @@ impl Machine {
 
     /// Microsteps per second per velocity unit of `motor`: 1 in unit mode, else the profile's
     /// constant, halved for each step the pulse divisor is above its default (TMC429).
-    pub fn velocity_factor(&self, motor: u8) -> f64 {
+    pub(super) fn velocity_factor(&self, motor: u8) -> f64 {
         if self.pps_mode(motor) {
             return 1.0;
         }
@@ -54,12 +54,12 @@ impl Machine {
     }
 
     /// A velocity of `motor` in the user's unit as microsteps per second.
-    pub fn pps(&self, motor: u8, value: i32) -> f64 {
+    pub(super) fn pps(&self, motor: u8, value: i32) -> f64 {
         f64::from(value) * self.velocity_factor(motor)
     }
 
     /// An acceleration of `motor` in the user's unit as microsteps per second².
-    pub fn pps2(&self, motor: u8, value: i32) -> f64 {
+    pub(super) fn pps2(&self, motor: u8, value: i32) -> f64 {
         f64::from(value) * self.acceleration_factor(motor)
     }
 
@@ -69,7 +69,7 @@ impl Machine {
     }
 
     /// Maximum positioning speed (AP 4) and acceleration (AP 5) of `motor` in pps, pps².
-    pub fn move_limits(&self, motor: u8) -> (f64, f64) {
+    pub(super) fn move_limits(&self, motor: u8) -> (f64, f64) {
         (
             self.pps(motor, self.role(motor, self.roles.max_speed)),
             self.pps2(motor, self.role(motor, self.roles.max_acceleration)),
@@ -78,7 +78,7 @@ impl Machine {
 
     /// The value GAP reads for `motor` at `t` (parameters with live values computed, others
     /// from RAM).
-    pub fn axis_value(&self, motor: u8, number: u8, t: f64) -> i32 {
+    pub(super) fn axis_value(&self, motor: u8, number: u8, t: f64) -> i32 {
         let Some(axis) = self.axes.get(usize::from(motor)) else {
             return 0;
         };
@@ -116,7 +116,7 @@ impl Machine {
     }
 
     /// Whether `motor` stands at its target position.
-    pub fn target_reached(&self, motor: u8, t: f64) -> bool {
+    pub(super) fn target_reached(&self, motor: u8, t: f64) -> bool {
         let axis = &self.axes[usize::from(motor)];
         axis.state(t).v == 0.0 && axis.counter(t) == self.role(motor, self.roles.target_position)
     }

@@ -66,7 +66,7 @@ pub(crate) struct Machine {
 impl Machine {
     /// A factory-fresh module at `slot`, powered up at time 0; `switches` gives each motor's
     /// switches (a motor past its end has none).
-    pub fn new(profile: Arc<Profile>, slot: u8, switches: &[Switches]) -> Machine {
+    pub(super) fn new(profile: Arc<Profile>, slot: u8, switches: &[Switches]) -> Machine {
         let axes = (0..profile.axes.max(1))
             .map(|m| Axis::new(switches.get(usize::from(m)).copied().unwrap_or_default()))
             .collect();
@@ -94,7 +94,7 @@ impl Machine {
 
     /// Power-up at `t`: RAM from EEPROM (factory settings first if GP 64 lost its magic), motor
     /// standing at 0, outputs off, program stopped at 0 (or started, with GP 77).
-    pub fn boot(&mut self, t: f64) {
+    pub(super) fn boot(&mut self, t: f64) {
         if self.params.stored(Slot::Global(0, 64)) != EEPROM_MAGIC {
             self.params.factory();
             self.eeprom_changed = true;
@@ -120,7 +120,7 @@ impl Machine {
     }
 
     /// Loads the EEPROM from a state-file image and powers up.
-    pub fn load(&mut self, image: &ModuleImage) {
+    pub(super) fn load(&mut self, image: &ModuleImage) {
         for &(number, value) in &image.axis {
             self.params.set_stored(Slot::Axis(0, number), value);
         }
@@ -150,7 +150,7 @@ impl Machine {
     }
 
     /// The EEPROM as a state-file image.
-    pub fn image(&self) -> ModuleImage {
+    pub(super) fn image(&self) -> ModuleImage {
         let mut axis = Vec::new();
         let mut motors = Vec::new();
         let mut global = Vec::new();
@@ -186,17 +186,17 @@ impl Machine {
     }
 
     /// The serial address the module answers to (GP 66).
-    pub fn address(&self) -> u8 {
+    pub(super) fn address(&self) -> u8 {
         self.params.get(Slot::Global(0, 66)) as u8
     }
 
     /// The host address put into replies (GP 76).
-    pub fn host(&self) -> u8 {
+    pub(super) fn host(&self) -> u8 {
         self.params.get(Slot::Global(0, 76)) as u8
     }
 
     /// GP 67: ASCII start-up (bit 0) and echo mode (bits 4, 5).
-    pub fn ascii_config(&self) -> i32 {
+    pub(super) fn ascii_config(&self) -> i32 {
         self.params.get(Slot::Global(0, 67))
     }
 
@@ -215,7 +215,7 @@ impl Machine {
     }
 
     /// Runs motor events and the program up to `t`, in time order.
-    pub fn advance(&mut self, t: f64) {
+    pub(super) fn advance(&mut self, t: f64) {
         loop {
             let axis_next = self.next_axis_event();
             let vm_next = self.program_due();
@@ -281,12 +281,12 @@ impl Machine {
     }
 
     /// Requests the second reply of 138 for the next move's arrival (or every move's).
-    pub fn request_event(&mut self, mask: i32, every_move: bool) {
+    pub(super) fn request_event(&mut self, mask: i32, every_move: bool) {
         self.event = Some(EventRequest { mask, every_move });
     }
 
     /// When output (a 138 second reply) may next be due, as seconds.
-    pub fn next_output(&self) -> Option<f64> {
+    pub(super) fn next_output(&self) -> Option<f64> {
         let request = self.event?;
         let arrival = self
             .event_motors(request.mask)
@@ -300,7 +300,7 @@ impl Machine {
     }
 
     /// The value GGP reads at `t`.
-    pub fn global_value(&mut self, bank: u8, number: u8, t: f64) -> i32 {
+    pub(super) fn global_value(&mut self, bank: u8, number: u8, t: f64) -> i32 {
         match (bank, number) {
             (0, 128) => self.vm.status_code(),
             (0, 129) => i32::from(self.program.downloading()),
@@ -312,13 +312,13 @@ impl Machine {
     }
 
     /// The 1 ms tick timer (GP 132).
-    pub fn ticks(&self, t: f64) -> i32 {
+    pub(super) fn ticks(&self, t: f64) -> i32 {
         let ms = ((t - self.booted_at) * 1000.0).floor() as i64;
         ms.wrapping_add(self.tick_offset) as i32
     }
 
     /// Sets the tick timer (SGP 132).
-    pub fn set_ticks(&mut self, t: f64, value: i32) {
+    pub(super) fn set_ticks(&mut self, t: f64, value: i32) {
         let ms = ((t - self.booted_at) * 1000.0).floor() as i64;
         self.tick_offset = i64::from(value) - ms;
     }

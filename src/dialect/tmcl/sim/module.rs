@@ -45,7 +45,7 @@ pub(crate) struct Module {
 }
 
 impl Module {
-    pub fn new(machine: Machine) -> Module {
+    pub(super) fn new(machine: Machine) -> Module {
         let mut module = Module {
             machine,
             boot_loader: false,
@@ -66,12 +66,12 @@ impl Module {
     }
 
     /// Whether the module is in ASCII mode.
-    pub fn is_ascii(&self) -> bool {
+    pub(super) fn is_ascii(&self) -> bool {
         self.ascii
     }
 
     /// Bytes from the line at `t` (the machine has been advanced to `t`).
-    pub fn receive(&mut self, t: f64, bytes: &[u8], sink: &mut Sink) {
+    pub(super) fn receive(&mut self, t: f64, bytes: &[u8], sink: &mut Sink) {
         let timeout = f64::from(self.machine.profile.sim.frame_timeout_ms) / 1000.0;
         if self.decoder.pending() > 0 && t - self.last_byte > timeout {
             self.decoder.clear();
@@ -279,7 +279,7 @@ impl Module {
     }
 
     /// Sends the second replies of 138 that have come due.
-    pub fn send_events(&mut self, sink: &mut Sink) {
+    pub(super) fn send_events(&mut self, sink: &mut Sink) {
         let events = std::mem::take(&mut self.machine.due_events);
         for (_, mask) in events {
             if self.ascii {

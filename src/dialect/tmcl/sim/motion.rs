@@ -148,7 +148,7 @@ const EPS: f64 = 1e-9;
 
 impl Axis {
     /// A motor standing at 0.
-    pub fn new(switches: Switches) -> Axis {
+    pub(super) fn new(switches: Switches) -> Axis {
         Axis {
             plan: Plan::hold(0.0, 0.0),
             mode: Mode::Velocity {
@@ -164,7 +164,7 @@ impl Axis {
 
     /// Power-up at `t`: the motor stops where it is (the switches stay where they are) and the
     /// counter starts at 0.
-    pub fn power_up(&mut self, t: f64) {
+    pub(super) fn power_up(&mut self, t: f64) {
         let x = self.state(t).x.round();
         self.replace(t, Plan::hold(t, x), stopped());
         self.offset = -(x as i64);
@@ -172,17 +172,17 @@ impl Axis {
     }
 
     /// Declares every event before `t` handled.
-    pub fn settle(&mut self, t: f64) {
+    pub(super) fn settle(&mut self, t: f64) {
         self.since = self.since.max(t);
     }
 
     /// Position, velocity and acceleration at `t`.
-    pub fn state(&self, t: f64) -> State {
+    pub(super) fn state(&self, t: f64) -> State {
         self.plan.at(t)
     }
 
     /// The position counter (AP1) at `t`, wrapping like the 32-bit register.
-    pub fn counter(&self, t: f64) -> i32 {
+    pub(super) fn counter(&self, t: f64) -> i32 {
         (self.state(t).x.round() as i64).wrapping_add(self.offset) as i32
     }
 
@@ -192,7 +192,7 @@ impl Axis {
     }
 
     /// Redefines the position counter without moving (SAP 1).
-    pub fn set_counter(&mut self, t: f64, value: i32) {
+    pub(super) fn set_counter(&mut self, t: f64, value: i32) {
         let here = self.state(t).x.round() as i64;
         self.offset = i64::from(value) - here;
         if let Mode::Position {
@@ -213,14 +213,14 @@ impl Axis {
     }
 
     /// Velocity mode: ramp to `v` pps with `accel` (ROR, ROL, MST, SAP 2).
-    pub fn rotate(&mut self, t: f64, v: f64, accel: f64) {
+    pub(super) fn rotate(&mut self, t: f64, v: f64, accel: f64) {
         let now = self.state(t);
         let plan = Plan::velocity(t, now.x, now.v, v, accel);
         self.replace(t, plan, Mode::Velocity { target: v, accel });
     }
 
     /// Sets the actual velocity at once (SAP 3), keeping the current goal.
-    pub fn set_velocity(&mut self, t: f64, v: f64) {
+    pub(super) fn set_velocity(&mut self, t: f64, v: f64) {
         let x = self.state(t).x;
         self.plan = Plan::velocity(t, x, v, v, 0.0);
         self.since = t;
@@ -228,7 +228,7 @@ impl Axis {
     }
 
     /// Positioning to counter value `target` (MVP, SAP 0), the shorter way round.
-    pub fn move_to(&mut self, t: f64, target: i32, vmax: f64, accel: f64) {
+    pub(super) fn move_to(&mut self, t: f64, target: i32, vmax: f64, accel: f64) {
         let now = self.state(t);
         let goal = self.physical(target, t);
         let plan = Plan::position(t, now.x, now.v, goal, vmax, accel);
@@ -243,7 +243,7 @@ impl Axis {
 
     /// Plans the current goal again from the present state (after the counter, speed or
     /// acceleration changed).
-    pub fn replan(&mut self, t: f64) {
+    pub(super) fn replan(&mut self, t: f64) {
         match self.mode {
             Mode::Velocity { target, accel } => self.rotate(t, target, accel),
             Mode::Position {
@@ -257,7 +257,7 @@ impl Axis {
     }
 
     /// Changes maximum speed and acceleration of a move in progress (SAP 4, SAP 5).
-    pub fn retune(&mut self, t: f64, vmax: f64, accel: f64) {
+    pub(super) fn retune(&mut self, t: f64, vmax: f64, accel: f64) {
         match &mut self.mode {
             Mode::Position {
                 vmax: v,
@@ -278,7 +278,7 @@ impl Axis {
 
     /// Scales the speed a rotation turns at by `factor` (the unit of the speed it was given in
     /// changed); a move, a search and a motor stopping are left alone.
-    pub fn rescale_rotation(&mut self, t: f64, factor: f64) {
+    pub(super) fn rescale_rotation(&mut self, t: f64, factor: f64) {
         if let Mode::Velocity { target, accel } = self.mode {
             if target != 0.0 && factor != 1.0 {
                 self.rotate(t, target * factor, accel);
@@ -288,7 +288,7 @@ impl Axis {
 
     /// Starts a reference search (RFS START) in `mode` (AP193) with the search and switch
     /// speeds.
-    pub fn start_search(&mut self, t: f64, mode: u8, fast: f64, slow: f64, accel: f64) {
+    pub(super) fn start_search(&mut self, t: f64, mode: u8, fast: f64, slow: f64, accel: f64) {
         let search = Search {
             mode,
             leg: 0,
@@ -310,14 +310,14 @@ impl Axis {
     }
 
     /// Aborts a reference search (RFS STOP): the motor brakes.
-    pub fn stop_search(&mut self, t: f64) {
+    pub(super) fn stop_search(&mut self, t: f64) {
         if let Mode::Search(search) = self.mode {
             self.rotate(t, 0.0, search.accel);
         }
     }
 
     /// RFS STATUS: 0 when no search runs, else the number of the leg in progress.
-    pub fn search_status(&self) -> i32 {
+    pub(super) fn search_status(&self) -> i32 {
         match self.mode {
             Mode::Search(s) => s.leg as i32 + 1,
             _ => 0,
@@ -325,12 +325,12 @@ impl Axis {
     }
 
     /// Distance between the switches found by the last mode 2 or 3 search (AP196).
-    pub fn end_distance(&self) -> i32 {
+    pub(super) fn end_distance(&self) -> i32 {
         self.end_distance
     }
 
     /// Whether a switch is active at `t`.
-    pub fn switch_active(&self, t: f64, which: Switch) -> bool {
+    pub(super) fn switch_active(&self, t: f64, which: Switch) -> bool {
         let x = self.state(t).x;
         match (which, self.switches.get(which)) {
             (_, None) => false,
@@ -340,12 +340,12 @@ impl Axis {
     }
 
     /// Whether a positioning move is on its way.
-    pub fn is_positioning(&self) -> bool {
+    pub(super) fn is_positioning(&self) -> bool {
         matches!(self.mode, Mode::Position { arrived: false, .. })
     }
 
     /// When the move in progress arrives, if nothing interferes.
-    pub fn arrival(&self) -> Option<f64> {
+    pub(super) fn arrival(&self) -> Option<f64> {
         self.is_positioning().then(|| self.plan.settles_at())
     }
 
@@ -354,7 +354,7 @@ impl Axis {
     }
 
     /// The next event (switch reached, move arrived, search leg over) at or after the last one.
-    pub fn next_event(&self, limits: Limits) -> Option<f64> {
+    pub(super) fn next_event(&self, limits: Limits) -> Option<f64> {
         self.next(limits).map(|(t, _)| t)
     }
 
@@ -389,7 +389,7 @@ impl Axis {
     }
 
     /// Handles the next event if it is due by `t`.
-    pub fn handle_event(&mut self, t: f64, limits: Limits) -> Option<Happened> {
+    pub(super) fn handle_event(&mut self, t: f64, limits: Limits) -> Option<Happened> {
         let (at, event) = self.next(limits)?;
         if at > t + EPS {
             return None;

@@ -94,7 +94,7 @@ pub(crate) struct Params {
 
 impl Params {
     /// Factory state of a module whose serial address is `address`.
-    pub fn new(profile: Arc<Profile>, address: u8) -> Params {
+    pub(super) fn new(profile: Arc<Profile>, address: u8) -> Params {
         let profile = with_interface_settings(profile);
         let mut axis_index = Box::new([None; 256]);
         for (i, p) in profile.axis.iter().enumerate() {
@@ -122,7 +122,7 @@ impl Params {
     }
 
     /// The profile row of a parameter, if the module has it.
-    pub fn spec(&self, slot: Slot) -> Option<&Param> {
+    pub(super) fn spec(&self, slot: Slot) -> Option<&Param> {
         let index = match slot {
             Slot::Axis(_, n) => self.axis_index[n as usize],
             Slot::Global(bank, n) => self.global_index.get(bank as usize)?[n as usize],
@@ -134,7 +134,7 @@ impl Params {
     }
 
     /// Checks that GAP/GGP may read the parameter: unknown or unreadable answers wrong type.
-    pub fn check_read(&self, slot: Slot) -> Result<(), Status> {
+    pub(super) fn check_read(&self, slot: Slot) -> Result<(), Status> {
         match self.spec(slot) {
             Some(p) if p.access.read => Ok(()),
             _ => Err(Status::WrongType),
@@ -143,7 +143,7 @@ impl Params {
 
     /// Checks that SAP/SGP may write `value`: unknown or read-only answers wrong type (as
     /// Trinamic's firmware does), a value outside the range answers invalid value.
-    pub fn check_write(&self, slot: Slot, value: i32) -> Result<(), Status> {
+    pub(super) fn check_write(&self, slot: Slot, value: i32) -> Result<(), Status> {
         match self.spec(slot) {
             Some(p) if p.access.write => {
                 if p.accepts(value.into()) {
@@ -157,7 +157,7 @@ impl Params {
     }
 
     /// Checks that STAP/RSAP/STGP/RSGP apply: the parameter must be EEPROM backed.
-    pub fn check_store(&self, slot: Slot) -> Result<(), Status> {
+    pub(super) fn check_store(&self, slot: Slot) -> Result<(), Status> {
         match self.spec(slot) {
             Some(p) if p.access.store => Ok(()),
             _ => Err(Status::WrongType),
@@ -165,40 +165,40 @@ impl Params {
     }
 
     /// The RAM value.
-    pub fn get(&self, slot: Slot) -> i32 {
+    pub(super) fn get(&self, slot: Slot) -> i32 {
         self.ram.get(slot)
     }
 
     /// Sets the RAM value (no checks).
-    pub fn set(&mut self, slot: Slot, value: i32) {
+    pub(super) fn set(&mut self, slot: Slot, value: i32) {
         self.ram.set(slot, value);
     }
 
     /// The EEPROM value.
-    pub fn stored(&self, slot: Slot) -> i32 {
+    pub(super) fn stored(&self, slot: Slot) -> i32 {
         self.rom.get(slot)
     }
 
     /// Copies RAM to EEPROM; whether the EEPROM changed.
-    pub fn store(&mut self, slot: Slot) -> bool {
+    pub(super) fn store(&mut self, slot: Slot) -> bool {
         let value = self.ram.get(slot);
         self.set_stored(slot, value)
     }
 
     /// Writes an EEPROM value; whether it changed.
-    pub fn set_stored(&mut self, slot: Slot, value: i32) -> bool {
+    pub(super) fn set_stored(&mut self, slot: Slot, value: i32) -> bool {
         let changed = self.rom.get(slot) != value;
         self.rom.set(slot, value);
         changed
     }
 
     /// Copies EEPROM to RAM.
-    pub fn restore(&mut self, slot: Slot) {
+    pub(super) fn restore(&mut self, slot: Slot) {
         self.ram.set(slot, self.rom.get(slot));
     }
 
     /// Power-up: EEPROM-backed parameters from EEPROM, the others from their defaults.
-    pub fn power_up(&mut self) {
+    pub(super) fn power_up(&mut self) {
         for slot in self.slots() {
             let value = match self.spec(slot) {
                 Some(p) if p.access.store => self.rom.get(slot),
@@ -209,7 +209,7 @@ impl Params {
     }
 
     /// Resets the EEPROM to factory values (RAM is untouched until the next power-up).
-    pub fn factory(&mut self) {
+    pub(super) fn factory(&mut self) {
         for slot in self.slots() {
             let value = self.factory_value(slot);
             self.rom.set(slot, value);
@@ -217,7 +217,7 @@ impl Params {
     }
 
     /// The factory value: the profile default, the module's own address for GP 66.
-    pub fn factory_value(&self, slot: Slot) -> i32 {
+    pub(super) fn factory_value(&self, slot: Slot) -> i32 {
         if slot == Slot::Global(0, 66) {
             return self.factory_address.into();
         }
@@ -228,7 +228,7 @@ impl Params {
     }
 
     /// Every parameter the profile defines, of every motor (in the banks the module has).
-    pub fn slots(&self) -> Vec<Slot> {
+    pub(super) fn slots(&self) -> Vec<Slot> {
         let motors = 0..self.profile.axes.max(1);
         motors
             .flat_map(|m| {
@@ -248,7 +248,7 @@ impl Params {
     }
 
     /// EEPROM-backed parameters with their stored values, for the state file.
-    pub fn stored_values(&self) -> Vec<(Slot, i32)> {
+    pub(super) fn stored_values(&self) -> Vec<(Slot, i32)> {
         self.slots()
             .into_iter()
             .filter(|&s| self.spec(s).is_some_and(|p| p.access.store))

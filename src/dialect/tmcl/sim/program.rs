@@ -17,7 +17,7 @@ pub(crate) struct Program {
 
 impl Program {
     /// Empty memory of `size` instructions (all zero: command 0 is no valid instruction).
-    pub fn new(size: u16) -> Program {
+    pub(super) fn new(size: u16) -> Program {
         Program {
             memory: vec![Instruction::default(); size.into()],
             used: 0,
@@ -27,12 +27,12 @@ impl Program {
     }
 
     /// Number of instructions the memory holds.
-    pub fn size(&self) -> usize {
+    pub(super) fn size(&self) -> usize {
         self.memory.len()
     }
 
     /// 132: stores the following instructions from `address` on.
-    pub fn start_download(&mut self, address: i32) -> Result<(), Status> {
+    pub(super) fn start_download(&mut self, address: i32) -> Result<(), Status> {
         let address = usize::try_from(address)
             .ok()
             .filter(|a| *a < self.memory.len())
@@ -42,23 +42,23 @@ impl Program {
     }
 
     /// 133: back to executing; returns whether memory changed and should be saved.
-    pub fn quit_download(&mut self) -> bool {
+    pub(super) fn quit_download(&mut self) -> bool {
         self.download = None;
         std::mem::take(&mut self.changed)
     }
 
     /// Whether no instruction was ever stored.
-    pub fn is_empty(&self) -> bool {
+    pub(super) fn is_empty(&self) -> bool {
         self.used == 0
     }
 
     /// Whether download mode is on (GP 129).
-    pub fn downloading(&self) -> bool {
+    pub(super) fn downloading(&self) -> bool {
         self.download.is_some()
     }
 
     /// Stores one instruction in download mode; memory full answers invalid value.
-    pub fn store(&mut self, instruction: Instruction) -> Result<(), Status> {
+    pub(super) fn store(&mut self, instruction: Instruction) -> Result<(), Status> {
         let address = self.download.ok_or(Status::InvalidCommand)?;
         let slot = self.memory.get_mut(address).ok_or(Status::InvalidValue)?;
         if *slot != instruction {
@@ -71,7 +71,7 @@ impl Program {
     }
 
     /// The instruction at `address`, if the address exists.
-    pub fn get(&self, address: i32) -> Option<Instruction> {
+    pub(super) fn get(&self, address: i32) -> Option<Instruction> {
         usize::try_from(address)
             .ok()
             .and_then(|a| self.memory.get(a))
@@ -79,7 +79,7 @@ impl Program {
     }
 
     /// The used part of memory, for the state file.
-    pub fn image(&self) -> Vec<(u8, u8, u8, i32)> {
+    pub(super) fn image(&self) -> Vec<(u8, u8, u8, i32)> {
         self.memory[..self.used]
             .iter()
             .map(|i| (i.command.number(), i.type_, i.motor, i.value))
@@ -87,7 +87,7 @@ impl Program {
     }
 
     /// Loads memory from the state file (excess instructions are dropped).
-    pub fn load(&mut self, image: &[(u8, u8, u8, i32)]) {
+    pub(super) fn load(&mut self, image: &[(u8, u8, u8, i32)]) {
         self.erase();
         for (slot, &(c, t, m, v)) in self.memory.iter_mut().zip(image) {
             *slot = Instruction::new(c, t, m, v);
@@ -96,7 +96,7 @@ impl Program {
     }
 
     /// Clears memory; returns whether anything was there.
-    pub fn erase(&mut self) -> bool {
+    pub(super) fn erase(&mut self) -> bool {
         let had = self.used > 0;
         self.memory.fill(Instruction::default());
         self.used = 0;

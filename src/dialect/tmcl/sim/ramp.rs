@@ -111,13 +111,13 @@ impl Builder {
 
 impl Plan {
     /// Standing still at `x` from `t` on.
-    pub fn hold(t: f64, x: f64) -> Plan {
+    pub(super) fn hold(t: f64, x: f64) -> Plan {
         Builder::new(t, x, 0.0).finish(x, 0.0)
     }
 
     /// Ramps from velocity `v0` to `target` with acceleration magnitude `accel`, then turns at
     /// `target` forever (velocity mode, and stopping when `target` is 0).
-    pub fn velocity(t: f64, x: f64, v0: f64, target: f64, accel: f64) -> Plan {
+    pub(super) fn velocity(t: f64, x: f64, v0: f64, target: f64, accel: f64) -> Plan {
         let mut b = Builder::new(t, x, v0);
         let dv = target - v0;
         if accel.is_finite() && accel > 0.0 {
@@ -131,7 +131,7 @@ impl Plan {
     /// or a triangle when the distance is too short to reach `vmax`. A motor moving away from the
     /// target, or too fast to stop in time, first brakes to a stop. Without speed the motor only
     /// brakes and then stays where it is.
-    pub fn position(t: f64, x0: f64, v0: f64, target: f64, vmax: f64, accel: f64) -> Plan {
+    pub(super) fn position(t: f64, x0: f64, v0: f64, target: f64, vmax: f64, accel: f64) -> Plan {
         let accel = if accel.is_finite() && accel > 0.0 {
             accel
         } else {
@@ -169,19 +169,19 @@ impl Plan {
     }
 
     /// Every phase in order.
-    pub fn phases(&self) -> &[Phase] {
+    pub(super) fn phases(&self) -> &[Phase] {
         &self.phases[..self.len]
     }
 
     /// When the plan's last (unbounded) phase begins: the end of the move or ramp.
-    pub fn settles_at(&self) -> f64 {
+    pub(super) fn settles_at(&self) -> f64 {
         self.phases()[self.len - 1].start
     }
 
     /// The state at `t` (times before the plan count as its start). A phase is over a
     /// nanosecond (the clock's resolution) before its computed end, so that an end time rounded
     /// to the clock finds the motor where the plan says it arrives.
-    pub fn at(&self, t: f64) -> State {
+    pub(super) fn at(&self, t: f64) -> State {
         let phase = self
             .phases()
             .iter()
@@ -194,7 +194,7 @@ impl Plan {
     /// The earliest time at or after `from` at which the motor is at or beyond `level` in
     /// direction `dir` (+1 right, -1 left) while moving that way (or starting to). This is when
     /// a switch at `level` stops a motor driving into it.
-    pub fn reaches(&self, from: f64, level: f64, dir: f64) -> Option<f64> {
+    pub(super) fn reaches(&self, from: f64, level: f64, dir: f64) -> Option<f64> {
         self.phases()
             .iter()
             .filter(|p| p.end > from)

@@ -24,12 +24,12 @@ pub(super) struct Sim {
 }
 
 impl Sim {
-    pub fn new() -> Sim {
+    pub(super) fn new() -> Sim {
         Sim::with(BusOptions::default())
     }
 
     /// One module of the built-in profile `name` at address 1.
-    pub fn of(name: &str) -> Sim {
+    pub(super) fn of(name: &str) -> Sim {
         let profile = crate::dialect::tmcl::profile::catalogue::by_name(name).expect("built in");
         Sim {
             bus: Bus::new(profile, BusOptions::default()),
@@ -37,7 +37,7 @@ impl Sim {
         }
     }
 
-    pub fn with(options: BusOptions) -> Sim {
+    pub(super) fn with(options: BusOptions) -> Sim {
         Sim {
             bus: Bus::new(Profile::builtin(), options),
             now: Duration::ZERO,
@@ -45,32 +45,32 @@ impl Sim {
     }
 
     /// Lets simulated time pass.
-    pub fn wait(&mut self, seconds: f64) {
+    pub(super) fn wait(&mut self, seconds: f64) {
         self.now += Duration::from_secs_f64(seconds);
     }
 
     /// Sets the time (seconds since start).
-    pub fn at(&mut self, seconds: f64) {
+    pub(super) fn at(&mut self, seconds: f64) {
         let t = Duration::from_secs_f64(seconds);
         assert!(t >= self.now, "time goes forward");
         self.now = t;
     }
 
     /// Sends bytes and returns what the bus answers at once.
-    pub fn send(&mut self, bytes: &[u8]) -> Vec<u8> {
+    pub(super) fn send(&mut self, bytes: &[u8]) -> Vec<u8> {
         self.bus.receive(self.now, bytes);
         self.output()
     }
 
     /// What the bus has sent by now.
-    pub fn output(&mut self) -> Vec<u8> {
+    pub(super) fn output(&mut self) -> Vec<u8> {
         let mut out = Vec::new();
         self.bus.poll_output(self.now, &mut out);
         out
     }
 
     /// Sends one command frame to `address` and decodes the single reply.
-    pub fn frame(
+    pub(super) fn frame(
         &mut self,
         address: u8,
         command: u8,
@@ -91,7 +91,7 @@ impl Sim {
     }
 
     /// A command to module 1 that must succeed; returns the reply value.
-    pub fn ok(&mut self, command: u8, type_: u8, motor: u8, value: i32) -> i32 {
+    pub(super) fn ok(&mut self, command: u8, type_: u8, motor: u8, value: i32) -> i32 {
         let reply = self.frame(1, command, type_, motor, value);
         assert_eq!(
             reply.status,
@@ -102,22 +102,22 @@ impl Sim {
     }
 
     /// The status module 1 answers.
-    pub fn status(&mut self, command: u8, type_: u8, motor: u8, value: i32) -> Status {
+    pub(super) fn status(&mut self, command: u8, type_: u8, motor: u8, value: i32) -> Status {
         self.frame(1, command, type_, motor, value).status
     }
 
     /// GAP of module 1.
-    pub fn gap(&mut self, number: u8) -> i32 {
+    pub(super) fn gap(&mut self, number: u8) -> i32 {
         self.ok(6, number, 0, 0)
     }
 
     /// SAP of module 1.
-    pub fn sap(&mut self, number: u8, value: i32) {
+    pub(super) fn sap(&mut self, number: u8, value: i32) {
         self.ok(5, number, 0, value);
     }
 
     /// Stores `program` from address 0 (download mode 132 … 133).
-    pub fn download(&mut self, program: &[(u8, u8, u8, i32)]) {
+    pub(super) fn download(&mut self, program: &[(u8, u8, u8, i32)]) {
         self.ok(132, 0, 0, 0);
         for &(c, t, m, v) in program {
             assert_eq!(self.frame(1, c, t, m, v).status, Status::Stored);
@@ -126,7 +126,7 @@ impl Sim {
     }
 
     /// Sends an ASCII line (CR appended) and returns all output as text.
-    pub fn line(&mut self, text: &str) -> String {
+    pub(super) fn line(&mut self, text: &str) -> String {
         let mut bytes = text.as_bytes().to_vec();
         bytes.push(b'\r');
         String::from_utf8(self.send(&bytes)).expect("ASCII output")

@@ -91,7 +91,7 @@ pub(crate) struct Vm {
 
 impl Vm {
     /// Stopped at address 0.
-    pub fn new() -> Vm {
+    pub(super) fn new() -> Vm {
         Vm {
             acc: 0,
             x: 0,
@@ -108,12 +108,12 @@ impl Vm {
     }
 
     /// Whether instructions are due to run.
-    pub fn running(&self) -> bool {
+    pub(super) fn running(&self) -> bool {
         self.status == AppStatus::Run || (self.status == AppStatus::Step && self.step_pending)
     }
 
     /// 129 type 0: run (or continue) from the current address.
-    pub fn resume(&mut self, t: f64, _program: &Program) -> Result<(), Status> {
+    pub(super) fn resume(&mut self, t: f64, _program: &Program) -> Result<(), Status> {
         self.status = AppStatus::Run;
         self.error = ProgramError::None;
         self.next_at = t;
@@ -121,7 +121,12 @@ impl Vm {
     }
 
     /// 129 type 1: run from `address`.
-    pub fn run_from(&mut self, t: f64, program: &Program, address: i32) -> Result<(), Status> {
+    pub(super) fn run_from(
+        &mut self,
+        t: f64,
+        program: &Program,
+        address: i32,
+    ) -> Result<(), Status> {
         if !(0..program.size() as i64).contains(&i64::from(address)) {
             return Err(Status::InvalidValue);
         }
@@ -132,14 +137,14 @@ impl Vm {
     }
 
     /// Auto-start (GP 77) at power-up.
-    pub fn start(&mut self, t: f64, address: i32) {
+    pub(super) fn start(&mut self, t: f64, address: i32) {
         self.pc = address;
         self.status = AppStatus::Run;
         self.next_at = t;
     }
 
     /// 130: run the next instruction, then pause in step mode.
-    pub fn step(&mut self, t: f64, _program: &Program) -> Result<(), Status> {
+    pub(super) fn step(&mut self, t: f64, _program: &Program) -> Result<(), Status> {
         self.status = AppStatus::Step;
         self.step_pending = true;
         self.error = ProgramError::None;
@@ -148,30 +153,30 @@ impl Vm {
     }
 
     /// 128: stop where the program is.
-    pub fn stop(&mut self) {
+    pub(super) fn stop(&mut self) {
         self.status = AppStatus::Stop;
         self.wait = None;
         self.step_pending = false;
     }
 
     /// 131: program counter to 0, registers and stack cleared, stopped.
-    pub fn reset(&mut self) {
+    pub(super) fn reset(&mut self) {
         *self = Vm::new();
         self.status = AppStatus::Reset;
     }
 
     /// 135 / GP 128.
-    pub fn status_code(&self) -> i32 {
+    pub(super) fn status_code(&self) -> i32 {
         self.status as i32
     }
 
     /// 135 type 1: the error that stopped the program last (0 none).
-    pub fn error_code(&self) -> i32 {
+    pub(super) fn error_code(&self) -> i32 {
         self.error as i32
     }
 
     /// GP 130.
-    pub fn pc(&self) -> i32 {
+    pub(super) fn pc(&self) -> i32 {
         self.pc
     }
 

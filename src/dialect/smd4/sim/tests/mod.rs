@@ -20,17 +20,17 @@ use crate::sim::Device;
 use super::{Smd4Sim, Smd4SimOptions};
 
 /// A simulator and the time the next bytes arrive at.
-pub struct Bench {
+pub(super) struct Bench {
     pub sim: Smd4Sim,
     pub now: Duration,
 }
 
 impl Bench {
-    pub fn new() -> Bench {
+    pub(super) fn new() -> Bench {
         Bench::with(Smd4SimOptions::default())
     }
 
-    pub fn with(options: Smd4SimOptions) -> Bench {
+    pub(super) fn with(options: Smd4SimOptions) -> Bench {
         Bench {
             sim: Smd4Sim::new(options),
             now: Duration::ZERO,
@@ -38,7 +38,7 @@ impl Bench {
     }
 
     /// Moves time to `seconds` since power-up.
-    pub fn at(&mut self, seconds: f64) -> &mut Bench {
+    pub(super) fn at(&mut self, seconds: f64) -> &mut Bench {
         let target = Duration::from_secs_f64(seconds);
         assert!(target >= self.now, "time goes forward");
         self.now = target;
@@ -46,7 +46,7 @@ impl Bench {
     }
 
     /// Sends raw bytes and returns everything the drive answered.
-    pub fn raw(&mut self, bytes: &[u8]) -> String {
+    pub(super) fn raw(&mut self, bytes: &[u8]) -> String {
         self.sim.receive(self.now, bytes);
         let mut out = Vec::new();
         self.sim.poll_output(self.now, &mut out);
@@ -54,14 +54,14 @@ impl Bench {
     }
 
     /// Sends `line` with CR LF and returns the reply text without its final CR LF.
-    pub fn send(&mut self, line: &str) -> String {
+    pub(super) fn send(&mut self, line: &str) -> String {
         let text = self.raw(format!("{line}\r\n").as_bytes());
         text.strip_suffix("\r\n").unwrap_or(&text).to_string()
     }
 
     /// Sends `line` and parses and checks the reply as a client would, multi-line replies
     /// included.
-    pub fn reply(&mut self, line: &str) -> Smd4Reply {
+    pub(super) fn reply(&mut self, line: &str) -> Smd4Reply {
         let request = Request::parse(line).unwrap();
         let expect = Expectation::for_request(&Smd4Spec::builtin().commands, &request);
         let reply = self.collect(line, expect.clone());
@@ -97,14 +97,14 @@ impl Bench {
     }
 
     /// The data items of a successful reply.
-    pub fn data(&mut self, line: &str) -> Vec<String> {
+    pub(super) fn data(&mut self, line: &str) -> Vec<String> {
         let reply = self.reply(line);
         assert!(reply.is_ok(), "{line} -> {}", reply.raw);
         reply.data_strings()
     }
 
     /// The error code of a failed command.
-    pub fn error(&mut self, line: &str) -> i32 {
+    pub(super) fn error(&mut self, line: &str) -> i32 {
         let reply = self.reply(line);
         reply
             .error
@@ -114,13 +114,13 @@ impl Bench {
     }
 
     /// A number read back.
-    pub fn number(&mut self, line: &str) -> f64 {
+    pub(super) fn number(&mut self, line: &str) -> f64 {
         let reply = parse_reply(&self.send(line), &Expectation::unknown()).unwrap();
         reply.data[0].value.as_f64().unwrap()
     }
 
     /// Whether the standby flag is set at the current time.
-    pub fn standby(&mut self) -> bool {
+    pub(super) fn standby(&mut self) -> bool {
         self.sim.sflags(self.now).standby()
     }
 }
