@@ -4,13 +4,11 @@
 //! binary one, with 129/128 for `:run`/`:stop`; a module that refuses 139 is talked to in binary.
 
 use std::path::Path;
-use std::process::Command;
 
 use rexpect::process::WaitStatus;
-use rexpect::session::{PtySession, spawn_command};
 
 use crate::sim::Sim;
-use crate::util::{bin, code, run, stderr, stdout, tempdir};
+use crate::util::{code, run, stderr, stdout, tempdir, terminal};
 
 /// `tmclsh --port PTY --log LOG ARGS`.
 fn on(sim: &Sim, log: &Path, args: &[&str]) -> std::process::Output {
@@ -37,23 +35,6 @@ fn all_binary(log: &Path) {
         assert!(line.contains("(binary)"), "not a binary frame: {line}");
         assert!(!line.contains("(139)"), "139 sent: {line}");
     }
-}
-
-/// `tmclsh ARGS` in a pseudo-terminal, with extra environment variables.
-fn terminal(args: &[&str], env: &[(&str, &str)]) -> PtySession {
-    let data = tempdir();
-    let mut command = Command::new(bin());
-    command
-        .args(args)
-        .env("NO_COLOR", "1")
-        .env("TERM", "xterm")
-        .env("RUST_BACKTRACE", "0")
-        .env("XDG_DATA_HOME", &data)
-        .env("HOME", &data);
-    for (name, value) in env {
-        command.env(name, value);
-    }
-    spawn_command(command, Some(crate::util::EXPECT_MS)).expect("tmclsh starts in a pty")
 }
 
 /// The simulated motor's velocity after `time` more simulated time.

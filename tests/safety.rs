@@ -10,12 +10,12 @@
 use std::process::Command;
 
 use rexpect::process::WaitStatus;
-use rexpect::session::{PtySession, spawn_command};
+use rexpect::session::PtySession;
 use tmclsh::dialect::tmcl::protocol::Status;
 
 use crate::sim::Sim;
 use crate::smd4::{Drive, Via};
-use crate::util::{bin, code, repo, run, stderr, tempdir};
+use crate::util::{bin, code, repo, run, stderr, tempdir, terminal};
 
 /// The TMCL simulator on a pty with a manual clock.
 fn tmcl_sim() -> Sim {
@@ -37,23 +37,6 @@ fn executes_binary_commands(sim: &Sim) {
     let mut port = sim.pty();
     let reply = port.transact(1, 6, 4, 0, 0);
     assert_eq!(reply.status, Status::Ok, "{reply:?}");
-}
-
-/// `tmclsh ARGS` in a pseudo-terminal, with extra environment variables.
-fn terminal(args: &[&str], env: &[(&str, &str)]) -> PtySession {
-    let data = tempdir();
-    let mut command = Command::new(bin());
-    command
-        .args(args)
-        .env("NO_COLOR", "1")
-        .env("TERM", "xterm")
-        .env("RUST_BACKTRACE", "0")
-        .env("XDG_DATA_HOME", &data)
-        .env("HOME", &data);
-    for (name, value) in env {
-        command.env(name, value);
-    }
-    spawn_command(command, Some(crate::util::EXPECT_MS)).expect("tmclsh starts in a pty")
 }
 
 fn exit_code(p: &PtySession) -> i32 {

@@ -71,3 +71,20 @@ pub fn tempdir() -> std::path::PathBuf {
     std::fs::create_dir_all(&dir).unwrap();
     dir
 }
+
+/// `tmclsh ARGS` in a pseudo-terminal, with extra environment variables.
+pub fn terminal(args: &[&str], env: &[(&str, &str)]) -> rexpect::session::PtySession {
+    let data = tempdir();
+    let mut command = Command::new(bin());
+    command
+        .args(args)
+        .env("NO_COLOR", "1")
+        .env("TERM", "xterm")
+        .env("RUST_BACKTRACE", "0")
+        .env("XDG_DATA_HOME", &data)
+        .env("HOME", &data);
+    for (name, value) in env {
+        command.env(name, value);
+    }
+    rexpect::session::spawn_command(command, Some(EXPECT_MS)).expect("tmclsh starts in a pty")
+}
