@@ -141,18 +141,35 @@ impl TmclSession {
                 Err(e) => return Err(e),
             }
         } else {
-            self.modules.insert(
-                module,
-                ModuleState {
-                    mode: WireMode::Ascii,
-                    found_in: WireMode::Ascii,
-                    echo: Echo::None,
-                    echo_known: false,
-                },
-            );
-            self.learn_echo(module, Some(WireMode::Ascii))?;
+            self.assume_ascii(module)?;
         }
         Ok(WireMode::Ascii)
+    }
+
+    /// Takes `module` to be in ASCII mode without asking it into it (`--no-enter`, a module
+    /// probed in ASCII), and learns its echo setting.
+    pub(super) fn assume_ascii(&mut self, module: u8) -> Result<(), SessionError> {
+        self.modules.insert(
+            module,
+            ModuleState {
+                mode: WireMode::Ascii,
+                found_in: WireMode::Ascii,
+                echo: Echo::None,
+                echo_known: false,
+            },
+        );
+        self.learn_echo(module, Some(WireMode::Ascii))
+    }
+
+    /// Makes the next frame start where binary-mode receivers look for one (see
+    /// [`TmclSession::align_frames`]), and drains what arrived meanwhile.
+    fn align_and_drain(&mut self) -> Result<(), SessionError> {
+        self.align_frames()?;
+        let unanswered = &mut self.unanswered;
+        self.core
+            .wire
+            .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))?;
+        Ok(())
     }
 
     /// Whether `module` has answered a binary frame in this session (the identification).
@@ -166,13 +183,7 @@ impl TmclSession {
     /// line is first left quiet for the module's frame time-out, so whatever an attempt at ASCII
     /// mode left in its receiver is dropped.
     fn start_binary(&mut self, module: u8, why: &str) -> Result<(), SessionError> {
-        if !std::mem::take(&mut self.frames_aligned) {
-            self.core.wire.idle_for(self.resync_gap())?;
-        }
-        let unanswered = &mut self.unanswered;
-        self.core
-            .wire
-            .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))?;
+        self.align_and_drain()?;
         self.modules.insert(
             module,
             ModuleState {
@@ -219,13 +230,7 @@ impl TmclSession {
         }
         // A module still in binary mode has seen our ASCII traffic to others as frame bytes; it
         // finds the start of our frame only after the line was idle for its receive time-out.
-        if !std::mem::take(&mut self.frames_aligned) {
-            self.core.wire.idle_for(self.resync_gap())?;
-        }
-        let unanswered = &mut self.unanswered;
-        self.core
-            .wire
-            .drain(&mut |bytes| super::unanswered::harmless(bytes, unanswered))?;
+        self.align_and_drain()?;
         let frame = CommandFrame {
             address: module,
             instruction: Instruction::new(Opcode::EnterAscii, 0, 0, 0),

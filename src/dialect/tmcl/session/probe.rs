@@ -5,7 +5,6 @@ use std::time::{Duration, Instant};
 
 use crate::dialect::tmcl::protocol::Instruction;
 
-use super::mode::{Echo, ModuleState};
 use super::{TmclExchange, TmclSession, WireMode};
 use crate::session::SessionError;
 
@@ -62,16 +61,7 @@ impl TmclSession {
         if self.modules.contains_key(&module) {
             return self.set_target(module);
         }
-        self.modules.insert(
-            module,
-            ModuleState {
-                mode: WireMode::Ascii,
-                found_in: WireMode::Ascii,
-                echo: Echo::None,
-                echo_known: false,
-            },
-        );
-        self.learn_echo(module, Some(WireMode::Ascii))?;
+        self.assume_ascii(module)?;
         self.target = module;
         Ok(())
     }
