@@ -17,7 +17,10 @@ impl Display for TerminalProgress {
         if !std::io::stderr().is_terminal() {
             return None;
         }
-        let style = ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} {msg}").ok()?;
+        let style = ProgressStyle::with_template(
+            "{prefix} [{bar:30}] {pos}/{len} {msg} (about {eta} left)",
+        )
+        .ok()?;
         let bar = ProgressBar::new(len);
         bar.set_style(style.progress_chars("=> "));
         bar.set_prefix(label.to_string());

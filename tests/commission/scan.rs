@@ -233,3 +233,14 @@ fn first_stops_at_the_first_module_and_asks_no_further_address() {
         stderr(&out)
     );
 }
+
+#[test]
+fn on_a_terminal_a_scan_shows_a_labelled_bar_with_the_time_left() {
+    let sim = Sim::start(&["--pty", "--modules", "2"]);
+    let mut p = crate::util::terminal(&["scan", "--port", &sim.first, "--addresses", "1-8"], &[]);
+    // The bar is drawn on stderr, here the terminal: its label, its count and the time left.
+    p.exp_string("/8").unwrap();
+    p.exp_string("left)").unwrap();
+    let rest = p.exp_eof().unwrap();
+    assert!(rest.contains("1 module answered at 1-8"), "{rest}");
+}
