@@ -224,12 +224,7 @@ fn detail(p: &Profile, out: &mut dyn Write) -> io::Result<()> {
         .map(|c| format!("{} {}", c.number, c.display_name()))
         .collect();
     field(out, "commands added", &extra.join(", "))?;
-    let ascii: Vec<&str> = p
-        .commands
-        .iter()
-        .filter(|c| c.ascii_allowed)
-        .map(|c| c.mnemonic.as_str())
-        .collect();
+    let ascii: Vec<&str> = p.commands.ascii_mnemonics();
     field(out, "ASCII commands", &ascii.join(" "))?;
     let ports: Vec<String> = p
         .io_ports

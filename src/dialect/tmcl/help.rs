@@ -67,12 +67,7 @@ pub(super) fn topic(profile: &Profile, topic: &str, out: &mut dyn Write) -> io::
                 out,
                 "ASCII mode (manual 6.6): lines are <address char><command>, replies <host char><module char> <status> <value>."
             )?;
-            let allowed: Vec<&str> = profile
-                .commands
-                .iter()
-                .filter(|c| c.ascii_allowed)
-                .map(|c| c.mnemonic.as_str())
-                .collect();
+            let allowed: Vec<&str> = profile.commands.ascii_mnemonics();
             if allowed.is_empty() {
                 writeln!(out, "The {} has no ASCII interface.", profile.module)?;
             } else {

@@ -398,6 +398,15 @@ impl CommandTable {
         self.ascii_words = words.iter().map(|w| w.to_ascii_uppercase()).collect();
     }
 
+    /// The mnemonics of the commands accepted in ASCII mode, in table order.
+    pub fn ascii_mnemonics(&self) -> Vec<&str> {
+        self.commands
+            .iter()
+            .filter(|c| c.ascii_allowed)
+            .map(|c| c.mnemonic.as_str())
+            .collect()
+    }
+
     /// Makes `mnemonics` (case-insensitive) the commands accepted in ASCII mode, and no others.
     pub(crate) fn set_ascii_allowed(&mut self, mnemonics: &[String]) {
         for command in &mut self.commands {
@@ -439,12 +448,7 @@ mod tests {
     #[test]
     fn the_ascii_list_is_exactly_the_manual_list() {
         let profile = Profile::builtin();
-        let mut ascii: Vec<&str> = profile
-            .commands
-            .iter()
-            .filter(|c| c.ascii_allowed)
-            .map(|c| c.mnemonic.as_str())
-            .collect();
+        let mut ascii: Vec<&str> = profile.commands.ascii_mnemonics();
         ascii.sort();
         let mut manual = vec![
             "ROL", "ROR", "MST", "MVP", "SAP", "GAP", "STAP", "RSAP", "SGP", "GGP", "STGP", "RSGP",

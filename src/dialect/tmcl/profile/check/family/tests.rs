@@ -112,12 +112,7 @@ fn a_profile_with_every_family_field_loads_them() {
     assert_eq!((sac.number, reason), (29, "not in its manual"));
     assert_eq!(p.commands.by_number(25).unwrap().mnemonic, "EI");
     // [ascii] allowed_commands replaces the flags of the built-in table
-    let ascii: Vec<&str> = p
-        .commands
-        .iter()
-        .filter(|c| c.ascii_allowed)
-        .map(|c| c.mnemonic.as_str())
-        .collect();
+    let ascii: Vec<&str> = p.commands.ascii_mnemonics();
     assert_eq!(ascii, ["SAP", "GAP", "SIO"]);
     // range_when of a parameter; the built-in table's own on ROR names AP255, defined here
     let speed = p.axis_param(4).unwrap();
