@@ -155,17 +155,8 @@ impl Symbols {
     /// The value of `expr` (after [`evaluate_constants`](Self::evaluate_constants)).
     pub(super) fn eval(&self, expr: &Expr, expect: Expect) -> Result<i64, EvalError> {
         evaluate(expr, &mut |name, column| {
-            let key = name.to_ascii_lowercase();
-            match self.definitions.get(&key).map(|d| &d.kind) {
-                Some(Kind::Label(address)) => Ok(*address),
-                Some(Kind::Constant(_)) => self
-                    .values
-                    .get(&key)
-                    .copied()
-                    .flatten()
-                    .ok_or(EvalError::Reported),
-                None => Err(EvalError::At(column, self.unknown(name, expect))),
-            }
+            known(&self.definitions, &self.values, name)
+                .unwrap_or_else(|| Err(EvalError::At(column, self.unknown(name, expect))))
         })
     }
 
@@ -268,15 +259,8 @@ impl<'a> Resolver<'a> {
 
     /// A name's value once every constant it needs has one.
     fn lookup(&self, name: &str, column: usize) -> Result<i64, EvalError> {
-        let key = name.to_ascii_lowercase();
-        match self.definitions.get(&key).map(|d| &d.kind) {
-            Some(Kind::Label(address)) => Ok(*address),
-            Some(Kind::Constant(_)) => self
-                .values
-                .get(&key)
-                .copied()
-                .flatten()
-                .ok_or(EvalError::Reported),
+        match known(self.definitions, self.values, name) {
+            Some(value) => value,
             None => {
                 let suggestion = self.suggestions.nearest(name, self.definitions.values());
                 Err(EvalError::At(
@@ -288,6 +272,26 @@ impl<'a> Resolver<'a> {
                 ))
             }
         }
+    }
+}
+
+/// The value of a defined name: a label's address, or a constant's value (an error already
+/// reported when it has none); `None` for a name nothing defines.
+fn known(
+    definitions: &HashMap<String, Definition>,
+    values: &HashMap<String, Option<i64>>,
+    name: &str,
+) -> Option<Result<i64, EvalError>> {
+    let key = name.to_ascii_lowercase();
+    match &definitions.get(&key)?.kind {
+        Kind::Label(address) => Some(Ok(*address)),
+        Kind::Constant(_) => Some(
+            values
+                .get(&key)
+                .copied()
+                .flatten()
+                .ok_or(EvalError::Reported),
+        ),
     }
 }
 
