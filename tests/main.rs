@@ -28,3 +28,4 @@ mod shell;
 mod sim;
 mod smd4;
 mod soak;
+mod typeahead;
