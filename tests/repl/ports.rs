@@ -109,3 +109,36 @@ fn a_profile_without_a_port_map_says_so() {
     p.send_control('d').unwrap();
     p.exp_eof().unwrap();
 }
+
+#[test]
+fn on_a_bus_each_module_s_ports_are_its_own() {
+    let sim = crate::sim::Sim::start(&["--pty", "--modules", "1:tmcm-142,2:tmcm-6110"]);
+    let mut p = crate::util::terminal(&["--port", &sim.first], &[]);
+    p.exp_string("A> ").unwrap();
+    // A line addressed to module 2 is read back under module 2's port names.
+    p.send_line("BGIO 8, 1").unwrap();
+    p.exp_regex("VIN = [0-9]+\r\n").unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_line(":target 2").unwrap();
+    p.exp_string("TMCM-6110").unwrap();
+    p.exp_string("B> ").unwrap();
+    p.send_line(":help io").unwrap();
+    p.exp_string("I/O ports of the TMCM-6110").unwrap();
+    p.exp_string("1/8       *  VIN   input      analog input, 0..4095")
+        .unwrap();
+    p.exp_string("B> ").unwrap();
+    type_in(&mut p, "GIO 8, 1");
+    p.exp_string("VIN, analog input, 0..4095").unwrap();
+    type_in(&mut p, "\r");
+    p.exp_regex("VIN = [0-9]+\r\n").unwrap();
+    p.exp_string("B> ").unwrap();
+    p.send_line(":target 1").unwrap();
+    p.exp_string("TMCM-142").unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_line(":help GIO").unwrap();
+    p.exp_string("Ports on this TMCM-142: bank 0 ports 3..8")
+        .unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
