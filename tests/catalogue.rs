@@ -115,6 +115,7 @@ fn profiles_shows_one_in_full_by_name_alias_or_file() {
         by_alias.lines().skip(1).collect::<Vec<_>>()
     );
     assert!(ok(&["profiles", "6214"]).contains("ASCII interface no"));
+    assert!(ok(&["profiles", "generic"]).contains("I/O (bank/port) none: no port map"));
     let said = refused(&["profiles", "tmcm-611"]);
     assert!(said.contains("did you mean tmcm-6110?"), "{said}");
     let said = refused(&["profiles", "--profile", "tmcm-6110"]);

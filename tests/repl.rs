@@ -7,6 +7,8 @@ use rexpect::session::{PtySession, spawn_command};
 
 use crate::util::{bin, tempdir};
 
+mod ports;
+
 /// The REPL on the built-in simulator, with its own history directory.
 pub(crate) fn repl(extra: &[&str]) -> (PtySession, std::path::PathBuf) {
     let data = tempdir();

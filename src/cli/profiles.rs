@@ -231,7 +231,12 @@ fn detail(p: &Profile, out: &mut dyn Write) -> io::Result<()> {
         .iter()
         .map(|port| format!("{}/{} {}", port.bank, port.port, port.name))
         .collect();
-    field(out, "I/O (bank/port)", &ports.join(", "))?;
+    let ports = if ports.is_empty() {
+        "none: no port map, GIO and SIO send any port and bank".to_string()
+    } else {
+        ports.join(", ")
+    };
+    field(out, "I/O (bank/port)", &ports)?;
     for (fact, source) in &id.fact_sources {
         field(out, "source of", &format!("{fact}: {source}"))?;
     }

@@ -225,6 +225,8 @@ fn tables_and_help_fit_a_narrow_terminal() {
         (":help\r", "More:"),
         (":help MVP\r", "usable in"),
         (":help ascii_mode\r", "echo:"),
+        (":help io\r", "sources."),
+        (":help GIO\r", "table."),
     ] {
         term.send(command);
         let shown = term.until(last) + term.until("A> ").as_str();

@@ -116,7 +116,7 @@ impl Grammar for TmclGrammar {
     }
 
     fn topics(&self) -> &'static [&'static str] {
-        &["params", "exit", "ascii"]
+        &["params", "io", "exit", "ascii"]
     }
 
     /// Command mnemonics and, once a lower-case word is typed, parameter names (`:help max_c`).

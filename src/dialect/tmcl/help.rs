@@ -3,6 +3,8 @@
 use std::io::{self, Write};
 
 use super::params::uncertain_mark;
+use super::ports;
+use super::profile::commands::{Field, OperandKind};
 use super::profile::{Param, ParamKind, Profile};
 use crate::dialect::UNCERTAIN;
 use crate::wrap::{fit, terminal_width};
@@ -39,10 +41,11 @@ pub(super) fn intro(out: &mut dyn Write) -> io::Result<()> {
 }
 
 /// The topics named at the end of `:help`.
-pub(super) const MORE: &str = ":help COMMAND, :help params, :help exit, :help time, :help ascii";
+pub(super) const MORE: &str =
+    ":help COMMAND, :help params, :help io, :help exit, :help time, :help ascii";
 
-/// `:help params` and `:help ascii` (the ASCII commands of `profile`'s module); false for other
-/// topics.
+/// `:help params`, `:help io` (or `ports`: the module's I/O ports) and `:help ascii` (the ASCII
+/// commands of `profile`'s module); false for other topics.
 pub(super) fn topic(profile: &Profile, topic: &str, out: &mut dyn Write) -> io::Result<bool> {
     match topic {
         "params" => {
@@ -62,6 +65,7 @@ pub(super) fn topic(profile: &Profile, topic: &str, out: &mut dyn Write) -> io::
                 profile.name
             )?
         }
+        "io" | "ports" => ports::write_table(profile, out)?,
         "ascii" => {
             writeln!(
                 out,
@@ -114,6 +118,14 @@ pub(super) fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io:
         (false, false) => "stand-alone programs only",
     };
     writeln!(out, "  usable in: {place}")?;
+    if spec
+        .operand_for(Field::Type)
+        .is_some_and(|o| o.kind == OperandKind::Port)
+    {
+        let writes = spec.operand_for(Field::Value).is_some();
+        let line = format!("  {}", ports::help_line(profile, writes));
+        writeln!(out, "{}", fit(&line, 2, terminal_width()))?;
+    }
     Ok(true)
 }
 

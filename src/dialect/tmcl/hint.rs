@@ -1,7 +1,9 @@
 //! Hints while typing: the usage of the command, or — once a parameter is named — its number,
-//! unit, range, access and one-line description.
+//! unit, range, access and one-line description; once an I/O port is named, its name, kind and
+//! pin from the profile's port map.
 
-use crate::dialect::tmcl::profile::commands::{Field, OperandKind};
+use crate::dialect::tmcl::ports;
+use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
 use crate::dialect::tmcl::profile::{Param, Profile};
 
 use super::complete::spec_of;
@@ -31,6 +33,12 @@ pub fn hint(line: &str, profile: &Profile) -> Option<String> {
     let Some(first) = args.first() else {
         return line.ends_with(' ').then(|| format!("  {}", spec.usage()));
     };
+    if spec
+        .operand_for(Field::Type)
+        .is_some_and(|o| o.kind == OperandKind::Port)
+    {
+        return port(spec, args, profile).map(|text| format!("  ← {text}"));
+    }
     let param = match spec.operand_for(Field::Type).map(|o| o.kind) {
         Some(OperandKind::AxisParam) => lookup(
             first,
@@ -48,6 +56,22 @@ pub fn hint(line: &str, profile: &Profile) -> Option<String> {
         _ => None,
     }?;
     Some(format!("  ← {}", describe(param)))
+}
+
+/// The port a GIO/SIO line names, from the profile's port map: the port of the typed bank, or
+/// before the bank every port of that number. Nothing for a port the map lacks: such a line is
+/// invalid, and its hint is why.
+fn port(spec: &CommandSpec, args: &[&str], profile: &Profile) -> Option<String> {
+    let typed = |kind| {
+        let at = spec.operands.iter().position(|o| o.kind == kind)?;
+        args.get(at)?.parse::<u8>().ok()
+    };
+    let port = typed(OperandKind::Port)?;
+    let writes = spec.operand_for(Field::Value).is_some();
+    match typed(OperandKind::IoBank) {
+        Some(bank) => profile.io_port(bank, port).map(ports::describe),
+        None => ports::describe_any_bank(profile, port, writes),
+    }
 }
 
 fn lookup<'a>(
@@ -123,6 +147,38 @@ mod tests {
         assert!(h("AGAP actual_po").unwrap().contains("#1 actual_position"));
         assert!(h("GGP 76, 0").unwrap().contains("#76 serial_host_address"));
         assert!(h("GGP 5, 2").unwrap().contains("user_variable_5"));
+    }
+
+    #[test]
+    fn a_port_is_described_from_the_port_map() {
+        assert_eq!(
+            h("GIO 7,0").as_deref(),
+            Some("  ← IN7, digital input, opto-isolated, active low (needs +5V on pin 15), pin 11")
+        );
+        assert_eq!(
+            h("A SIO 1, 2, ").as_deref(),
+            Some("  ← OUT_1, user output, pin 9")
+        );
+        assert_eq!(
+            h("GIO 0").as_deref(),
+            Some("  ← bank 1: IN0_A/D; bank 2: OUT_0")
+        );
+        // SIO sets outputs: before the bank, only the output of that number.
+        assert_eq!(
+            h("SIO 0, ").as_deref(),
+            Some("  ← bank 2: OUT_0, user output, pin 17")
+        );
+        let other = crate::dialect::tmcl::profile::catalogue::by_name("tmcm-1141").unwrap();
+        assert_eq!(
+            hint("GIO 0, 1", &other).as_deref(),
+            Some("  ← ADC0, analog input, 0..4095")
+        );
+        // A port the map lacks has no description (the line is invalid; its hint is why).
+        assert_eq!(h("GIO 0, 0"), None);
+        assert_eq!(h("GIO 9"), None);
+        // Without a map, nothing is known of any port.
+        let generic = crate::dialect::tmcl::profile::catalogue::generic();
+        assert_eq!(hint("GIO 0, 0", &generic), None);
     }
 
     #[test]

@@ -12,6 +12,7 @@ pub mod helpers;
 pub mod hint;
 mod output;
 pub mod params;
+pub mod ports;
 pub mod profile;
 pub mod program;
 pub mod protocol;

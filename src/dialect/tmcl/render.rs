@@ -1,6 +1,7 @@
 //! TMCL replies decoded for people: status meaning, value, parameter name and unit.
 
 use crate::dialect::session::Decoded;
+use crate::dialect::tmcl::ports;
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::commands::{Field, OperandKind, ParamUse};
 use crate::dialect::tmcl::protocol::Opcode;
@@ -58,7 +59,12 @@ pub fn decode(exchange: &TmclExchange, profile: &Profile) -> Decoded {
                 (_, _, Opcode::ApplicationStatus) => {
                     format!("application {}", application_status(value))
                 }
-                (_, _, Opcode::Gio) => format!("input {} of bank {} = {value}", i.type_, i.motor),
+                (_, _, Opcode::Gio) => ports::reading(profile, i.motor, i.type_, value)
+                    .unwrap_or_else(|| format!("port {} of bank {} = {value}", i.type_, i.motor)),
+                (_, _, Opcode::Sio) => match profile.io_port(i.motor, i.type_) {
+                    Some(port) => format!("{} set to {}", port.name, i.value),
+                    None => "ok".into(),
+                },
                 (_, _, Opcode::Gco) => format!("coordinate {} = {value}", i.type_),
                 _ if value != 0 => format!("ok, value {value}"),
                 _ => "ok".into(),
@@ -182,6 +188,40 @@ mod tests {
         assert_eq!(
             decode(&exchange(Instruction::new(135, 0, 0, 0), Status::Ok, 1), &p).text,
             "application running"
+        );
+        // I/O ports under the names of the profile's port map, by number without one.
+        assert_eq!(
+            decode(&exchange(Instruction::new(15, 7, 0, 0), Status::Ok, 1), &p).text,
+            "IN7 = 1"
+        );
+        assert_eq!(
+            decode(
+                &exchange(Instruction::new(15, 2, 1, 0), Status::Ok, 512),
+                &p
+            )
+            .text,
+            "IN2_A/D = 512"
+        );
+        assert_eq!(
+            decode(&exchange(Instruction::new(14, 1, 2, 1), Status::Ok, 1), &p).text,
+            "OUT_1 set to 1"
+        );
+        let generic = crate::dialect::tmcl::profile::catalogue::generic();
+        assert_eq!(
+            decode(
+                &exchange(Instruction::new(15, 7, 0, 0), Status::Ok, 1),
+                &generic
+            )
+            .text,
+            "port 7 of bank 0 = 1"
+        );
+        assert_eq!(
+            decode(
+                &exchange(Instruction::new(14, 7, 2, 1), Status::Ok, 1),
+                &generic
+            )
+            .text,
+            "ok"
         );
         let version = TmclExchange {
             reply: TmclReply::Version("142V1.06".into()),

@@ -182,10 +182,42 @@ pub struct IoPort {
     pub range: Option<(i64, i64)>,
     /// Their unit.
     pub unit: String,
+    /// The connector pin, as the manual prints it.
+    pub pin: Option<String>,
+    /// Whether the row is best knowledge rather than confirmed by the module's manual.
+    pub uncertain: bool,
 }
 
 /// The bank SIO writes: the output states.
 pub const OUTPUT_BANK: u8 = 2;
+
+impl IoPort {
+    /// Whether SIO sets it (GIO reads every port).
+    pub fn is_output(&self) -> bool {
+        self.bank == OUTPUT_BANK
+    }
+}
+
+/// "0..2, 4, 8" from sorted port numbers.
+pub fn spans(ports: &[u8]) -> String {
+    let mut out: Vec<String> = Vec::new();
+    let mut i = 0;
+    while i < ports.len() {
+        let mut j = i;
+        while j + 1 < ports.len() && ports[j].checked_add(1) == Some(ports[j + 1]) {
+            j += 1;
+        }
+        out.push(if j > i + 1 {
+            format!("{}..{}", ports[i], ports[j])
+        } else if j == i + 1 {
+            format!("{}, {}", ports[i], ports[j])
+        } else {
+            ports[i].to_string()
+        });
+        i = j + 1;
+    }
+    out.join(", ")
+}
 
 /// The I/O map of a file: the rows with a bank and a port (the others document signals only).
 pub(crate) fn io_ports(file: &ProfileFile) -> Vec<IoPort> {
@@ -204,6 +236,8 @@ pub(crate) fn io_ports(file: &ProfileFile) -> Vec<IoPort> {
                 kind: row.kind.clone(),
                 range: row.range.map(|[lo, hi]| (lo, hi)),
                 unit: row.unit.clone(),
+                pin: row.pin.as_ref().map(|pin| pin.text()),
+                uncertain: row.uncertain,
             })
         })
         .collect();

@@ -188,6 +188,30 @@ pub(crate) struct IoPortRow {
     pub range: Option<[i64; 2]>,
     #[serde(default)]
     pub unit: String,
+    /// The connector pin, as a number or as printed (`"X3.4"`).
+    pub pin: Option<PinRow>,
+    #[serde(default)]
+    pub uncertain: bool,
+}
+
+/// A connector pin: manuals number some and name others.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub(crate) enum PinRow {
+    /// `pin = 11`.
+    Number(i64),
+    /// `pin = "X3.4"`.
+    Text(String),
+}
+
+impl PinRow {
+    /// The pin as printed.
+    pub(crate) fn text(&self) -> String {
+        match self {
+            PinRow::Number(n) => n.to_string(),
+            PinRow::Text(t) => t.clone(),
+        }
+    }
 }
 
 #[derive(Debug, Deserialize)]

@@ -195,6 +195,16 @@ pub enum InputError {
         /// The ports it has, by bank.
         known: String,
     },
+    /// A port number no bank of the module's map has.
+    #[error("the {module} has no I/O port {port} in any bank; it has {known}")]
+    NoSuchPort {
+        /// Port typed.
+        port: u8,
+        /// Module name.
+        module: String,
+        /// The ports it has, by bank.
+        known: String,
+    },
     /// A write to an I/O port that is not an output.
     #[error("{mnemonic} sets outputs ({outputs}); port {port} of bank {bank} is {name}, an input")]
     NotAnOutput {

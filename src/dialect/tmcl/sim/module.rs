@@ -315,7 +315,9 @@ fn ascii_status(error: &InputError) -> Status {
         | InputError::NotInMode { .. }
         | InputError::AbsentCommand { .. } => Status::InvalidCommand,
         // As in binary: an unknown parameter or port is the type byte's fault.
-        InputError::Param(_) | InputError::BadPort { .. } => Status::WrongType,
+        InputError::Param(_) | InputError::BadPort { .. } | InputError::NoSuchPort { .. } => {
+            Status::WrongType
+        }
         _ => Status::InvalidValue,
     }
 }

@@ -537,6 +537,20 @@ fn check_io(file: &ProfileFile, problems: &mut Vec<Problem>) {
                 format!("I/O port {port} of bank {bank} needs a name"),
             ));
         }
+        // Help, hints and replies print these: a control character would be obeyed.
+        let pin = row.pin.as_ref().map(|p| p.text()).unwrap_or_default();
+        for (key, text) in [
+            ("kind", row.kind.as_str()),
+            ("unit", &row.unit),
+            ("pin", &pin),
+        ] {
+            if text.chars().any(char::is_control) {
+                problems.push(Problem::at(
+                    at(key),
+                    format!("the {key} of I/O port {port} of bank {bank} has a control character"),
+                ));
+            }
+        }
         check_range(row.range, at("range"), "range", problems);
         if let (Some([_, hi]), Some(max), 1) = (row.range, adc_max, bank) {
             if hi > i64::from(max) {

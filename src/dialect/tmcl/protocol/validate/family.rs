@@ -9,7 +9,7 @@
 
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
-use crate::dialect::tmcl::profile::family::{OUTPUT_BANK, RangeWhen};
+use crate::dialect::tmcl::profile::family::{OUTPUT_BANK, RangeWhen, spans};
 use crate::dialect::tmcl::protocol::Instruction;
 
 use super::super::error::{ConditionalRange, InputError, Warning};
@@ -53,18 +53,19 @@ pub(super) fn check_port(
     }
     let (port, bank) = (instruction.type_, instruction.motor);
     let writes = spec.operand_for(Field::Value).is_some();
+    let known = || ports_of(profile, writes.then_some(OUTPUT_BANK));
     match profile.io_port(bank, port) {
-        None if writes => Err(InputError::BadPort {
+        // No bank has it: wrong whatever the bank, so said without one.
+        None if !profile.io_ports.iter().any(|p| p.port == port) => Err(InputError::NoSuchPort {
             port,
-            bank,
             module: profile.module.clone(),
-            known: ports_of(profile, Some(OUTPUT_BANK)),
+            known: known(),
         }),
         None => Err(InputError::BadPort {
             port,
             bank,
             module: profile.module.clone(),
-            known: ports_of(profile, None),
+            known: known(),
         }),
         Some(found) if writes && bank != OUTPUT_BANK => Err(InputError::NotAnOutput {
             mnemonic: spec.display_name(),
@@ -98,27 +99,6 @@ fn ports_of(profile: &Profile, only: Option<u8>) -> String {
         [one] => one.clone(),
         [first @ .., last] => format!("{} and {last}", first.join(", ")),
     }
-}
-
-/// "0..2, 4, 8" from sorted port numbers.
-fn spans(ports: &[u8]) -> String {
-    let mut out: Vec<String> = Vec::new();
-    let mut i = 0;
-    while i < ports.len() {
-        let mut j = i;
-        while j + 1 < ports.len() && ports[j + 1] == ports[j] + 1 {
-            j += 1;
-        }
-        out.push(if j > i + 1 {
-            format!("{}..{}", ports[i], ports[j])
-        } else if j == i + 1 {
-            format!("{}, {}", ports[i], ports[j])
-        } else {
-            ports[i].to_string()
-        });
-        i = j + 1;
-    }
-    out.join(", ")
 }
 
 /// A value against its usual range and its conditional ones (see the module docs).

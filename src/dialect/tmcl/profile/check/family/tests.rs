@@ -43,6 +43,8 @@ allowed_commands = ["GAP", "SAP", "SIO"]
 bank = 0
 port = 0
 name = "IN0"
+kind = "digital input"
+pin = 7
 [[io_port]]
 bank = 1
 port = 0
@@ -52,6 +54,8 @@ range = [0, 4095]
 bank = 2
 port = 0
 name = "OUT0"
+pin = "X3.4"
+uncertain = true
 [[io_port]]
 signal = "fault output"
 kind = "hardware only"
@@ -135,6 +139,11 @@ fn a_profile_with_every_family_field_loads_them() {
         .collect();
     assert_eq!(ports, [(0, 0, "IN0"), (1, 0, "AIN0"), (2, 0, "OUT0")]);
     assert_eq!(p.io_port(1, 0).unwrap().range, Some((0, 4095)));
+    // pins as numbers or as printed; uncertain rows are marked
+    assert_eq!(p.io_port(0, 0).unwrap().pin.as_deref(), Some("7"));
+    assert_eq!(p.io_port(2, 0).unwrap().pin.as_deref(), Some("X3.4"));
+    assert!(p.io_port(2, 0).unwrap().uncertain && !p.io_port(0, 0).unwrap().uncertain);
+    assert!(p.io_port(2, 0).unwrap().is_output() && !p.io_port(1, 0).unwrap().is_output());
 }
 
 #[test]
@@ -304,6 +313,17 @@ fn the_io_map_is_checked_and_the_simulator_follows_it() {
         "name = \"OUT0\"",
         "name = \"\"",
         "I/O port 0 of bank 2 needs a name",
+    );
+    // Text that help and hints print may not carry control characters.
+    refused_on_its_line(
+        "kind = \"digital input\"",
+        "kind = \"digital\\u001b[2J input\"",
+        "the kind of I/O port 0 of bank 0 has a control character",
+    );
+    refused_on_its_line(
+        "pin = \"X3.4\"",
+        "pin = \"X3\\u0007\"",
+        "the pin of I/O port 0 of bank 2 has a control character",
     );
     refused_on_its_line(
         "range = [0, 4095]",

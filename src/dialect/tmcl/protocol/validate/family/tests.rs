@@ -90,6 +90,18 @@ fn io_ports_and_banks_come_from_the_io_map() {
         "SIO sets outputs (bank 2 ports 0..2); port 3 of bank 0 is IN3, an input"
     );
     assert!(refused(&p, "GIO 0, 5", Mode::Program).contains("no I/O port 0 in bank 5"));
+    // A port no bank has is wrong whatever the bank: the refusal does not name one.
+    for bank in [0, 1, 2, 7] {
+        assert_eq!(
+            refused(&p, &format!("GIO 9, {bank}"), Mode::Ascii),
+            "the TMCM-142 has no I/O port 9 in any bank; it has bank 0 ports 3..8, bank 1 ports \
+             0..2 and bank 2 ports 0..2"
+        );
+        assert_eq!(
+            refused(&p, &format!("SIO 200, {bank}, 1"), Mode::Ascii),
+            "the TMCM-142 has no I/O port 200 in any bank; it has bank 2 ports 0..2"
+        );
+    }
     let six = named("tmcm-6110");
     assert!(check(&six, "SIO 7, 2, 1", Mode::Ascii).is_ok());
     assert!(check(&six, "GIO 8, 1", Mode::Ascii).is_ok());
