@@ -152,3 +152,33 @@ fn a_tmcm_1140_reply_names_its_code_and_a_changed_code_reads_anew() {
     p.send_control('d').unwrap();
     p.exp_eof().unwrap();
 }
+
+#[test]
+fn an_smd4_shows_labels_and_its_flag_words_bit_by_bit() {
+    let mut p = terminal(&["--protocol", "smd4"], &[]);
+    p.exp_string("simulated SMD4").unwrap();
+    p.send_line(":params --values SYS:FLAGS").unwrap();
+    p.exp_regex(r"SYS:FLAGS +0x0888 0x0000 \(status: External Enable, Standby, Boost Operational; errors: none\)")
+        .unwrap();
+    // An error flag set by the drive is read back by name, then gone once cleared.
+    p.send_line("MOTOR:ESTOP").unwrap();
+    p.exp_string("errors: Emergency Stop").unwrap();
+    p.send_line(":params --values SYS:FLAGS").unwrap();
+    p.exp_regex(r"SYS:FLAGS +0x0888 0x0020 \(status: [^;]*; errors: Emergency Stop\)")
+        .unwrap();
+    p.send_line("SYS:CLR").unwrap();
+    p.exp_string("ok [External Enable").unwrap();
+    p.send_line(":params --values SYS:FLAGS").unwrap();
+    p.exp_regex(r"SYS:FLAGS +0x0888 0x0000 \([^)]*errors: none\)")
+        .unwrap();
+    // An enumerated setting: its label in the table and in the reply to a single read.
+    p.send_line(":params --values MOTOR:F").unwrap();
+    p.exp_regex(r"MOTOR:F +2 \(Phases shorted to GND\)")
+        .unwrap();
+    p.send_line("MOTOR:F,1").unwrap();
+    p.exp_string("1 (Freewheel) [").unwrap();
+    p.send_line("MOTOR:F").unwrap();
+    p.exp_string("1 (Freewheel) [").unwrap();
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
