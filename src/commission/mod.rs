@@ -11,6 +11,7 @@
 //! lists — are functions tested without any I/O.
 
 pub mod actions;
+pub mod decoding;
 pub mod device;
 pub mod diff;
 pub mod plot;

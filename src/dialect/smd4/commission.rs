@@ -24,6 +24,12 @@ use crate::commission::device::{ParamDevice, ParamRef, Scope, StoreStep};
 use crate::commission::value::{ParamValue, Reading, Tolerance};
 
 impl ParamDevice for Smd4Session {
+    /// From the table: an enumerated value's label, the flags of SYS:FLAGS.
+    fn explain(&self, param: &ParamRef, value: &ParamValue) -> Option<String> {
+        let spec = self.spec();
+        crate::dialect::smd4::values::explain(spec, spec.commands.get(&param.name)?, value)
+    }
+
     fn module_name(&self) -> String {
         "SMD4".into()
     }

@@ -17,6 +17,7 @@ pub mod scan;
 pub mod script;
 pub mod session;
 pub mod sim;
+pub mod values;
 
 pub use grammar::Smd4Grammar;
 

@@ -245,6 +245,18 @@ impl Smd4Command {
                 label: e.label.clone(),
             })
             .collect();
+        // One label per value: a reply's value must read one way.
+        for (i, choice) in labels.iter().enumerate() {
+            if choice.label.trim().is_empty() {
+                return Err(format!("{name}: enum value {} has no label", choice.value));
+            }
+            if labels[..i].iter().any(|c| c.value == choice.value) {
+                return Err(format!(
+                    "{name}: enum value {} is given twice",
+                    choice.value
+                ));
+            }
+        }
         let arg = match row.arg_type.as_str() {
             "none" => None,
             ty => Some(ArgSpec {

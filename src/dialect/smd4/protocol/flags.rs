@@ -25,10 +25,26 @@ pub struct FlagTable {
 }
 
 impl FlagTable {
-    pub(crate) fn from_rows(rows: &[FlagRow]) -> FlagTable {
+    /// The table of `rows` (`word` names them in messages); a bit beyond 15, given twice or
+    /// without a name is refused, since a reply's flags would then read wrongly.
+    pub(crate) fn from_rows(word: &str, rows: &[FlagRow]) -> Result<FlagTable, String> {
+        let mut seen = [false; 16];
+        for row in rows {
+            let Some(slot) = seen.get_mut(usize::from(row.bit)) else {
+                return Err(format!(
+                    "{word} bit {} is beyond bit 15 of a flag word",
+                    row.bit
+                ));
+            };
+            if std::mem::replace(slot, true) {
+                return Err(format!("{word} bit {} is given twice", row.bit));
+            }
+            if row.name.trim().is_empty() {
+                return Err(format!("{word} bit {} has no name", row.bit));
+            }
+        }
         let mut bits: Vec<FlagBit> = rows
             .iter()
-            .filter(|r| r.bit < 16)
             .map(|r| FlagBit {
                 bit: r.bit,
                 name: r.name.clone(),
@@ -38,7 +54,7 @@ impl FlagTable {
             })
             .collect();
         bits.sort_by_key(|b| b.bit);
-        FlagTable { bits }
+        Ok(FlagTable { bits })
     }
 
     /// All bits, lowest first.

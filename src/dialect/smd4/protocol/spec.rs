@@ -87,8 +87,8 @@ impl Smd4Spec {
                 float_digits: file.snapshot.float_digits.unwrap_or(5),
             },
             commands,
-            sflags: FlagTable::from_rows(&file.sflag),
-            eflags: FlagTable::from_rows(&file.eflag),
+            sflags: FlagTable::from_rows("sflag", &file.sflag)?,
+            eflags: FlagTable::from_rows("eflag", &file.eflag)?,
             errors: file
                 .error_code
                 .iter()
@@ -186,5 +186,39 @@ mod tests {
                 .unwrap_err()
                 .contains("[snapshot] first names 'MOTOR:NOPE'")
         );
+    }
+
+    #[test]
+    fn a_flag_or_enumerated_value_that_would_read_two_ways_is_refused() {
+        let refused = |text: &str| Smd4Spec::from_toml(text).unwrap_err();
+        let flags = "[[sflag]]\nbit = 3\nname = \"A\"\n[[sflag]]\nbit = 3\nname = \"B\"\n";
+        assert_eq!(refused(flags), "sflag bit 3 is given twice");
+        let flags = "[[eflag]]\nbit = 16\nname = \"A\"\n";
+        assert_eq!(
+            refused(flags),
+            "eflag bit 16 is beyond bit 15 of a flag word"
+        );
+        let flags = "[[eflag]]\nbit = 2\nname = \" \"\n";
+        assert_eq!(refused(flags), "eflag bit 2 has no name");
+        let command = |labels: &str| {
+            format!(
+                "[[command]]\nmnemonic = \"X:Y\"\nkind = \"setting\"\nreply = \"value\"\n\
+                 arg_type = \"UINT\"\nenum = [{labels}]\n"
+            )
+        };
+        assert_eq!(
+            refused(&command(
+                r#"{ value = 0, label = "Off" }, { value = 0, label = "On" }"#
+            )),
+            "X:Y: enum value 0 is given twice"
+        );
+        assert_eq!(
+            refused(&command(r#"{ value = 1, label = "" }"#)),
+            "X:Y: enum value 1 has no label"
+        );
+        Smd4Spec::from_toml(&command(
+            r#"{ value = 0, label = "Off" }, { value = 1, label = "On" }"#,
+        ))
+        .unwrap();
     }
 }

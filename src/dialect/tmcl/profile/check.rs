@@ -15,6 +15,7 @@ use toml::de::{DeTable, DeValue};
 use super::commands::CommandTable;
 use super::load::{CommandRow, ParamRow, ProfileFile};
 
+mod decoding;
 mod family;
 
 /// One step of a place in the file: a key of a table, or a row of an array.
@@ -165,6 +166,7 @@ fn check_params(rows: &[ParamRow], table: &'static str, problems: &mut Vec<Probl
                 _ => {}
             }
         }
+        decoding::check(table, i, row, problems);
         if problems.len() > before {
             continue; // duplicates of a broken row would only repeat its problem
         }

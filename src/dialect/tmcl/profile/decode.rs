@@ -5,6 +5,8 @@
 
 use serde::Deserialize;
 
+pub use crate::commission::decoding::{Bit, BitField, Decoding};
+
 /// The decoding tables of one parameter row, as written in the profile.
 #[derive(Debug, Clone, Default, Deserialize)]
 pub(crate) struct DecodeRows {
@@ -39,49 +41,6 @@ pub(crate) struct FieldRow {
     pub values: Vec<(i64, String)>,
 }
 
-/// What a parameter's values mean; empty when the profile says nothing.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
-pub struct Decoding {
-    /// Whole values and their meaning.
-    pub values: Vec<(i64, String)>,
-    /// Bit number, short name and meaning of each documented bit.
-    pub bits: Vec<Bit>,
-    /// Fields of several bits.
-    pub fields: Vec<BitField>,
-}
-
-/// One documented bit.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Bit {
-    /// Its number, 0 the lowest.
-    pub bit: u8,
-    /// What a decoded value calls it when set.
-    pub name: String,
-    /// What it means, for `:help PARAM`.
-    pub meaning: String,
-}
-
-/// Bits read as one number, with what its values mean.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct BitField {
-    /// What the field is (`echo`).
-    pub name: String,
-    /// Lowest and highest bit.
-    pub low: u8,
-    /// Highest bit.
-    pub high: u8,
-    /// Its values and their meaning.
-    pub values: Vec<(i64, String)>,
-}
-
-impl BitField {
-    /// The field's number in `value`.
-    fn of(&self, value: i64) -> i64 {
-        let width = u32::from(self.high.saturating_sub(self.low)) + 1;
-        (value >> self.low) & ((1i64 << width.min(62)) - 1)
-    }
-}
-
 impl Decoding {
     /// The tables of a profile row (bits above 31 are not read).
     pub(crate) fn from_rows(rows: &DecodeRows) -> Decoding {
@@ -109,46 +68,6 @@ impl Decoding {
                 })
                 .collect(),
         }
-    }
-
-    /// Whether there is nothing to decode.
-    pub fn is_empty(&self) -> bool {
-        self.values.is_empty() && self.bits.is_empty() && self.fields.is_empty()
-    }
-
-    /// What `value` means (`9600 baud`; `target position reached, motor standing`; `start-up:
-    /// ASCII, echo: line after CR`), if the tables say.
-    pub fn explain(&self, value: i64) -> Option<String> {
-        if let Some((_, meaning)) = self.values.iter().find(|(v, _)| *v == value) {
-            return Some(meaning.clone());
-        }
-        let mut parts: Vec<String> = self
-            .fields
-            .iter()
-            .map(|f| {
-                let number = f.of(value);
-                match f.values.iter().find(|(v, _)| *v == number) {
-                    Some((_, meaning)) => format!("{}: {meaning}", f.name),
-                    None => format!("{}: {number}", f.name),
-                }
-            })
-            .collect();
-        if !self.bits.is_empty() {
-            let in_fields = |bit: u8| self.fields.iter().any(|f| (f.low..=f.high).contains(&bit));
-            let set: Vec<String> = (0..32u8)
-                .filter(|bit| value >> bit & 1 == 1 && !in_fields(*bit))
-                .map(|bit| match self.bits.iter().find(|b| b.bit == bit) {
-                    Some(b) => b.name.clone(),
-                    None => format!("bit {bit}"),
-                })
-                .collect();
-            parts.push(if set.is_empty() {
-                "no bit set".to_string()
-            } else {
-                set.join(", ")
-            });
-        }
-        (!parts.is_empty()).then(|| parts.join("; "))
     }
 }
 

@@ -190,3 +190,72 @@ fn simulation_constants_must_be_usable() {
         "{error}"
     );
 }
+
+#[test]
+fn decoding_tables_must_decode_each_value_one_way() {
+    let row =
+        |tables: &str| format!("number = 6\nname = \"a\"\nident = \"a\"\nrange = [0, 3]\n{tables}");
+    let cases = [
+        (
+            "values = [\n  [0, \"off\"],\n  [4, \"beyond\"],\n]\n",
+            21,
+            "values: code 4 lies outside the range 0..3",
+        ),
+        (
+            "values = [\n  [1, \"on\"],\n  [1, \"again\"],\n]\n",
+            21,
+            "values: code 1 is given twice (first on line 20)",
+        ),
+        (
+            "values = [[2, \" \"]]\n",
+            19,
+            "values: code 2 has no meaning",
+        ),
+        (
+            "bits = [{ bit = 32, name = \"x\" }]\n",
+            19,
+            "bit 32 is beyond bit 31",
+        ),
+        (
+            "bits = [\n  { bit = 3, name = \"x\" },\n  { bit = 3, meaning = \"y\" },\n]\n",
+            21,
+            "bits: bit 3 is given twice (first on line 20)",
+        ),
+        (
+            "bits = [{ bit = 1 }]\n",
+            19,
+            "bit 1 has neither a name nor a meaning",
+        ),
+        (
+            "fields = [{ name = \"echo\", bits = [5, 4] }]\n",
+            19,
+            "'echo' has bits [5, 4]",
+        ),
+        (
+            "fields = [{ name = \"echo\", bits = [4, 5], values = [[4, \"x\"]] }]\n",
+            19,
+            "fields: 'echo': code 4 lies outside the range 0..3",
+        ),
+        (
+            "fields = [\n  { name = \"a\", bits = [0, 2] },\n  { name = \"b\", bits = [2, 3] },\n]\n",
+            21,
+            "'b' and 'a' both hold bit 2",
+        ),
+        (
+            "bits = [{ bit = 4, name = \"x\" }]\nfields = [{ name = \"f\", bits = [4, 5] }]\n",
+            20,
+            "bit 4 is in 'f' and in `bits`",
+        ),
+    ];
+    for (tables, line, message) in cases {
+        let error = refused(&with_row(&row(tables)));
+        assert!(
+            error.starts_with(&format!("line {line}: ")) && error.contains(message),
+            "{tables}: {error}"
+        );
+    }
+    // Without a range any 32-bit code may be named; a negative one too.
+    let fine = "number = 6\nname = \"a\"\nident = \"a\"\nvalues = [[-1, \"permanent\"], [2048, \"off\"]]\n";
+    let builtin = Profile::builtin();
+    Profile::from_toml(&with_row(fine), Some(&builtin.commands)).unwrap();
+}
