@@ -309,3 +309,76 @@ fn frames_and_lines_interleave_line_by_line_without_losing_a_reply() {
     let shown: Vec<String> = stdout(&out).lines().map(str::to_string).collect();
     assert_eq!(shown, expected, "{}", stderr(&out));
 }
+
+/// The header line of a transcript and its identification notes, in order.
+fn header_and_identifications(log: &str) -> (String, Vec<String>) {
+    let header = log
+        .lines()
+        .find(|l| l.contains(" ## tmclsh transcript: "))
+        .unwrap_or_else(|| panic!("no header: {log}"))
+        .to_string();
+    let notes = log
+        .lines()
+        .filter_map(|l| l.split_once(" -- identified: ").map(|(_, n)| n.to_string()))
+        .collect();
+    (header, notes)
+}
+
+#[test]
+fn a_transcript_of_a_mixed_bus_names_each_modules_profile() {
+    let sim = Sim::start(&["--pty", "--modules", "1:tmcm-142,2:tmcm-6110"]);
+    let dir = tempdir();
+    let log = dir.join("bus.log");
+    let later = dir.join("later.log");
+    // The second transcript starts once both modules are known, and sends to neither again.
+    let input = format!("GAP 1, 0\n:target 2\nGAP 1, 5\n:log {}\n", later.display());
+    let out = piped(&sim, &["--log", log.to_str().unwrap()], &input);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let both = [
+        "module 1 (A), TMCM-142, firmware 142V1.06, profile tmcm-142 (built in)",
+        "module 2 (B), TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)",
+    ];
+    for file in [&log, &later] {
+        let text = std::fs::read_to_string(file).unwrap();
+        let (header, notes) = header_and_identifications(&text);
+        assert!(
+            header.contains(
+                "profile \"built-in\", profiles \"per module, see the identification notes\""
+            ),
+            "{header}"
+        );
+        assert_eq!(notes, both, "{text}");
+    }
+    // The notes of the transcript begun mid-session come before anything else it records.
+    let later_text = std::fs::read_to_string(&later).unwrap();
+    assert!(
+        later_text
+            .lines()
+            .nth(1)
+            .is_some_and(|l| l.contains(" -- identified: module 1 (A)")),
+        "{later_text}"
+    );
+    // Its replay sees the bus as the first transcript's does.
+    let out = run(&["transcript", "to-rhai", later.to_str().unwrap()]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("a bus of different modules"),
+        "{}",
+        stderr(&out)
+    );
+    // A given profile is every module's: the header says so by naming no other way.
+    let given = dir.join("given.log");
+    let out = piped(
+        &sim,
+        &["--profile", "tmcm-6110", "--log", given.to_str().unwrap()],
+        "GAP 1, 0\n:target 2\nGAP 1, 5\n",
+    );
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = std::fs::read_to_string(&given).unwrap();
+    let (header, notes) = header_and_identifications(&text);
+    assert!(
+        header.contains("module \"TMCM-6110\", profile \"built-in\", version"),
+        "{header}"
+    );
+    assert_eq!(notes.len(), 2, "{text}");
+}

@@ -100,13 +100,24 @@ impl TmclSession {
             self.core.wire.notices.push(GENERIC_NOTICE.to_string());
         }
         let known = Known { profile, identity };
-        if matches!(known.identity, Identity::Answered { .. }) {
-            let c = address_char(module).unwrap_or('?');
-            let line = format!("identified: module {module} ({c}), {}", describe(&known));
+        if let Some(line) = identified_note(module, &known) {
             self.core.wire.note(&line);
         }
         self.known.insert(module, known);
         Ok(())
+    }
+
+    /// Repeats the identification note of every module identified so far: a transcript started
+    /// mid-session (`:log FILE`) names each module's profile as one opened on connect does.
+    pub(super) fn note_identifications(&mut self) {
+        let notes: Vec<String> = self
+            .known
+            .iter()
+            .filter_map(|(module, known)| identified_note(*module, known))
+            .collect();
+        for note in notes {
+            self.core.wire.note(&note);
+        }
     }
 
     /// One 136 exchange with `module`; what it said (the profile it names in `self.identified`).
@@ -233,6 +244,19 @@ impl TmclSession {
     pub fn identity(&self) -> &Identity {
         &self.identity
     }
+}
+
+/// The transcript note of a module that named itself: `identified: module 2 (B), TMCM-6110,
+/// firmware 6110V131, profile tmcm-6110 (built in)`.
+fn identified_note(module: u8, known: &Known) -> Option<String> {
+    if !matches!(known.identity, Identity::Answered { .. }) {
+        return None;
+    }
+    let c = address_char(module).unwrap_or('?');
+    Some(format!(
+        "identified: module {module} ({c}), {}",
+        describe(known)
+    ))
 }
 
 /// `TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`.
