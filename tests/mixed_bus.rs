@@ -382,3 +382,115 @@ fn a_transcript_of_a_mixed_bus_names_each_modules_profile() {
     );
     assert_eq!(notes.len(), 2, "{text}");
 }
+
+/// The lines of the simulator's `--verbose` traffic that module `n` received.
+fn received_by(traffic: &str, n: u8) -> Vec<&str> {
+    let to = format!("module {n} <- ");
+    traffic.lines().filter(|l| l.contains(&to)).collect()
+}
+
+#[test]
+fn switching_to_a_module_in_its_boot_loader_reports_it_and_sends_it_nothing_more() {
+    let sim = Sim::start_capturing_stderr(&[
+        "--pty",
+        "--verbose",
+        "--modules",
+        "1:tmcm-142,2:tmcm-6110",
+        "--boot-loader=2",
+    ]);
+    let dir = tempdir();
+    let log = dir.join("bus.log");
+    // Every way of turning to module 2 after the first: the target, its address character, the
+    // target again; module 1 in between and after.
+    let input = "GAP 1, 0\n:target 2\nGAP 1, 0\nBGAP 1, 0\n:target 2\nBSAP 4, 0, 9\n\
+                 ASAP 4, 0, 77\nAGAP 4, 0\n";
+    let out = piped(
+        &sim,
+        &["--keep-going", "--log", log.to_str().unwrap()],
+        input,
+    );
+    assert_eq!(code(&out), 3, "{}", stderr(&out));
+    let err = stderr(&out);
+    let report = "module B: TMCM-6110 in its boot loader (6110B131): no firmware is running";
+    for line in [
+        "line 2 (:target 2)",
+        "line 4 (BGAP 1, 0)",
+        "line 5 (:target 2)",
+        "line 6 (BSAP 4, 0, 9)",
+    ] {
+        assert!(err.contains(&format!("{line}: {report}")), "{line}: {err}");
+    }
+    // Module 1 stayed the target and answered every line meant for it.
+    assert_eq!(
+        stdout(&out).lines().collect::<Vec<_>>(),
+        ["BA 100 0", "BA 100 0", "BA 100 77", "BA 100 77"],
+        "{err}"
+    );
+    let transcript = std::fs::read_to_string(&log).unwrap();
+    let to_b: Vec<&str> = sent(&transcript)
+        .into_iter()
+        .filter(|l| l.contains("to module 2") || l.contains("to module B"))
+        .collect();
+    assert_eq!(to_b.len(), 1, "{transcript}");
+    assert!(to_b[0].contains("136 to module 2"), "{transcript}");
+    // What the boot loader itself received: the one 136 frame.
+    let traffic = sim.quit();
+    let received = received_by(&traffic, 2);
+    assert_eq!(received.len(), 1, "{traffic}");
+    assert!(received[0].contains(" 136"), "{traffic}");
+    assert!(received_by(&traffic, 1).len() > 4, "{traffic}");
+}
+
+#[test]
+fn switching_to_an_unknown_module_gives_it_the_generic_profile_with_one_notice() {
+    let dir = tempdir();
+    let unknown = crate::identify::module_answering(&dir, "9999V100");
+    let bus = format!("1:tmcm-142,2:{}", unknown.display());
+    let sim = Sim::start(&["--pty", "--modules", &bus]);
+    let input = "GAP actual_position, 0\n:target 2\nGAP 1, 0\nGAP actual_position, 0\n\
+                 :target 1\nGAP actual_position, 0\nBGAP 1, 0\n";
+    let out = piped(&sim, &["--keep-going"], input);
+    let err = stderr(&out);
+    // The one refused line: a parameter name, which the generic profile has none of.
+    assert_eq!(code(&out), 2, "{err}");
+    assert!(
+        err.contains("line 4 (GAP actual_position, 0): the generic TMCL module profile has no parameter names"),
+        "{err}"
+    );
+    assert_eq!(
+        err.matches("generic TMCL profile:").count(),
+        1,
+        "one notice: {err}"
+    );
+    assert_eq!(err.lines().count(), 2, "nothing else went wrong: {err}");
+    assert_eq!(
+        stdout(&out).lines().collect::<Vec<_>>(),
+        [
+            "BA 100 0",
+            "target: module 2 (B), TMCM-9999, firmware 9999V100, profile generic (built in)",
+            "BB 100 0",
+            "target: module 1 (A), TMCM-142, firmware 142V1.06, profile tmcm-142 (built in)",
+            "BA 100 0",
+            "BB 100 0",
+        ],
+        "{err}"
+    );
+}
+
+#[test]
+fn the_simulator_refuses_a_boot_loader_at_an_address_not_on_the_bus() {
+    let out = run(&["sim", "--modules", "1,2", "--boot-loader=3"]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("--boot-loader names module 3, which is not on the bus"),
+        "{}",
+        stderr(&out)
+    );
+    let out = run(&["sim", "--boot-loader=B"]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("'B' is not a module address (1..255)"),
+        "{}",
+        stderr(&out)
+    );
+}

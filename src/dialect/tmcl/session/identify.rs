@@ -36,6 +36,9 @@ pub enum Identity {
     },
     /// Asked; no usable answer (why, in a few words).
     NoAnswer(String),
+    /// Asked; the module runs its boot loader (the report, `module B: TMCM-142 in its boot
+    /// loader (142B1.06): …`). Nothing else is ever sent to it.
+    BootLoader(String),
 }
 
 /// The way a profile is named in the banner: `tmcm-6110 (built in)` or `FILE (file)`.
@@ -75,6 +78,13 @@ impl TmclSession {
     /// modules at all (a session the command line opened, `--no-enter` off): on a bus of
     /// different modules each one is checked, decoded and talked to with its own profile.
     pub(super) fn identify_if_new(&mut self, module: u8) -> Result<(), SessionError> {
+        if let Some(Known {
+            identity: Identity::BootLoader(report),
+            ..
+        }) = self.known.get(&module)
+        {
+            return Err(Failure::new(Exit::Link, report.clone()).into());
+        }
         let new = !self.known.contains_key(&module) && !self.modules.contains_key(&module);
         if self.identify_each && new {
             self.identify_module(module)?;
@@ -170,6 +180,10 @@ impl TmclSession {
             Identified::BootLoader { .. } => {
                 let message = format!("module {c}: {}", identified.banner());
                 self.core.wire.note(&message);
+                // Every later line to it is refused with the same report, unsent.
+                let identity = Identity::BootLoader(message.clone());
+                let profile = self.fallback.clone();
+                self.known.insert(module, Known { profile, identity });
                 return Err(Failure::new(Exit::Link, message).into());
             }
             Identified::Known { version, .. } | Identified::Unknown { version, .. } => version,
@@ -269,5 +283,6 @@ fn describe(known: &Known) -> String {
         }
         Identity::NotAsked => format!("{module}, profile {label}"),
         Identity::NoAnswer(why) => format!("{module} (not identified: {why}), profile {label}"),
+        Identity::BootLoader(report) => report.clone(),
     }
 }
