@@ -494,3 +494,20 @@ fn the_simulator_refuses_a_boot_loader_at_an_address_not_on_the_bus() {
         stderr(&out)
     );
 }
+
+// Returning two modules to binary mode, the session sends module 2 its BIN after module 1 has
+// left ASCII mode: module 1 takes those bytes for the start of a frame until its frame time-out.
+// A session opened right after must still get its first frame answered.
+#[test]
+fn a_session_right_after_another_finds_every_module_answering_frames() {
+    let sim = Sim::start(&["--pty", "--modules", "1:tmcm-142,2:tmcm-6110"]);
+    for run in 0..4 {
+        let out = piped(&sim, &["-v"], "GAP 1, 0\n:target 2\nGAP 1, 5\n");
+        assert_eq!(code(&out), 0, "run {run}: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains("tmclsh: TMCM-142, firmware 142V1.06, profile tmcm-142"),
+            "run {run}: {}",
+            stderr(&out)
+        );
+    }
+}
