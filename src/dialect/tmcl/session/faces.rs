@@ -76,8 +76,10 @@ impl DialectSession for TmclSession {
         }
     }
 
+    /// As at the start: the profile of a module that does not name itself (the given one, or
+    /// the default); the identification notes name the others'.
     fn header(&self) -> Header {
-        config::session_header(&self.profile, self.profile_given)
+        config::session_header(&self.fallback, self.profile_given)
     }
 
     /// A transcript started mid-session begins with what the session knows of each module.
