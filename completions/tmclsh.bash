@@ -935,6 +935,10 @@ _tmclsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --boot-loader)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --baud)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -1420,7 +1424,7 @@ _tmclsh_with_files() {
         esac
     done
     case "$prev" in
-        --address|--addresses|--allow-dir|--backspace-echo|--baud|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--left-switch|--listen|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reply-end|--right-switch|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--left-switch|--listen|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reply-end|--right-switch|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
     esac
     if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
         compopt -o filenames 2>/dev/null

@@ -248,6 +248,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l protocol -d 'The p
 smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l listen -d 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l modules -d 'Modules on the simulated RS-485 bus: addresses, each optionally with its own profile (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l boot-loader -d 'The modules run their boot loader: 136 answers with B for V (`6110B131`), every other command with invalid command; `--boot-loader=2,3` for the modules at those addresses only' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l baud -d 'Pace bytes like a serial line at N baud (10 bits per byte, both directions)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l state -d 'Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l left-switch -d 'Position of the left limit switch (microsteps) of every motor, or MOTOR:POS for one motor (repeatable); not connected by default' -r
@@ -274,7 +275,6 @@ comma\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l real-value-grid -d 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l pty -d 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l boot-loader -d 'The modules run their boot loader: 136 answers with B for V (`6110B131`), every other command with invalid command'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s v -l verbose -d 'Log every frame and line received and sent, decoded, to stderr'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l manual-clock -d 'Let simulation time pass only on the console command `advance` (deterministic tests)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-139 -d 'Switch to ASCII mode on command 139 without a binary reply'

@@ -45,7 +45,7 @@ fn built_in() -> Vec<(String, String)> {
 }
 
 /// A TMCM-142 profile file whose simulated module answers 136 with `version`.
-fn module_answering(dir: &Path, version: &str) -> PathBuf {
+pub(crate) fn module_answering(dir: &Path, version: &str) -> PathBuf {
     let text = std::fs::read_to_string(repo().join("data/profiles/tmcm-142.toml")).unwrap();
     let text: String = text
         .lines()

@@ -309,3 +309,208 @@ fn frames_and_lines_interleave_line_by_line_without_losing_a_reply() {
     let shown: Vec<String> = stdout(&out).lines().map(str::to_string).collect();
     assert_eq!(shown, expected, "{}", stderr(&out));
 }
+
+/// The header line of a transcript and its identification notes, in order.
+fn header_and_identifications(log: &str) -> (String, Vec<String>) {
+    let header = log
+        .lines()
+        .find(|l| l.contains(" ## tmclsh transcript: "))
+        .unwrap_or_else(|| panic!("no header: {log}"))
+        .to_string();
+    let notes = log
+        .lines()
+        .filter_map(|l| l.split_once(" -- identified: ").map(|(_, n)| n.to_string()))
+        .collect();
+    (header, notes)
+}
+
+#[test]
+fn a_transcript_of_a_mixed_bus_names_each_modules_profile() {
+    let sim = Sim::start(&["--pty", "--modules", "1:tmcm-142,2:tmcm-6110"]);
+    let dir = tempdir();
+    let log = dir.join("bus.log");
+    let later = dir.join("later.log");
+    // The second transcript starts once both modules are known, and sends to neither again.
+    let input = format!("GAP 1, 0\n:target 2\nGAP 1, 5\n:log {}\n", later.display());
+    let out = piped(&sim, &["--log", log.to_str().unwrap()], &input);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let both = [
+        "module 1 (A), TMCM-142, firmware 142V1.06, profile tmcm-142 (built in)",
+        "module 2 (B), TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)",
+    ];
+    for file in [&log, &later] {
+        let text = std::fs::read_to_string(file).unwrap();
+        let (header, notes) = header_and_identifications(&text);
+        // As the first transcript's, the second's header (begun while module 2 is the target)
+        // names the profile of a module that does not name itself.
+        assert!(
+            header.contains(
+                "module \"TMCM-142\", profile \"built-in\", profiles \"per module, see the \
+                 identification notes\""
+            ),
+            "{header}"
+        );
+        assert_eq!(notes, both, "{text}");
+    }
+    // The notes of the transcript begun mid-session come before anything else it records.
+    let later_text = std::fs::read_to_string(&later).unwrap();
+    assert!(
+        later_text
+            .lines()
+            .nth(1)
+            .is_some_and(|l| l.contains(" -- identified: module 1 (A)")),
+        "{later_text}"
+    );
+    // Its replay sees the bus as the first transcript's does.
+    let out = run(&["transcript", "to-rhai", later.to_str().unwrap()]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("a bus of different modules"),
+        "{}",
+        stderr(&out)
+    );
+    // A given profile is every module's: the header says so by naming no other way.
+    let given = dir.join("given.log");
+    let out = piped(
+        &sim,
+        &["--profile", "tmcm-6110", "--log", given.to_str().unwrap()],
+        "GAP 1, 0\n:target 2\nGAP 1, 5\n",
+    );
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = std::fs::read_to_string(&given).unwrap();
+    let (header, notes) = header_and_identifications(&text);
+    assert!(
+        header.contains("module \"TMCM-6110\", profile \"built-in\", version"),
+        "{header}"
+    );
+    assert_eq!(notes.len(), 2, "{text}");
+}
+
+/// The lines of the simulator's `--verbose` traffic that module `n` received.
+fn received_by(traffic: &str, n: u8) -> Vec<&str> {
+    let to = format!("module {n} <- ");
+    traffic.lines().filter(|l| l.contains(&to)).collect()
+}
+
+#[test]
+fn switching_to_a_module_in_its_boot_loader_reports_it_and_sends_it_nothing_more() {
+    let sim = Sim::start_capturing_stderr(&[
+        "--pty",
+        "--verbose",
+        "--modules",
+        "1:tmcm-142,2:tmcm-6110",
+        "--boot-loader=2",
+    ]);
+    let dir = tempdir();
+    let log = dir.join("bus.log");
+    // Every way of turning to module 2 after the first: the target, its address character, the
+    // target again; module 1 in between and after.
+    let input = "GAP 1, 0\n:target 2\nGAP 1, 0\nBGAP 1, 0\n:target 2\nBSAP 4, 0, 9\n\
+                 ASAP 4, 0, 77\nAGAP 4, 0\n";
+    let out = piped(
+        &sim,
+        &["--keep-going", "--log", log.to_str().unwrap()],
+        input,
+    );
+    assert_eq!(code(&out), 3, "{}", stderr(&out));
+    let err = stderr(&out);
+    let report = "module B: TMCM-6110 in its boot loader (6110B131): no firmware is running";
+    for line in [
+        "line 2 (:target 2)",
+        "line 4 (BGAP 1, 0)",
+        "line 5 (:target 2)",
+        "line 6 (BSAP 4, 0, 9)",
+    ] {
+        assert!(err.contains(&format!("{line}: {report}")), "{line}: {err}");
+    }
+    // Module 1 stayed the target and answered every line meant for it.
+    assert_eq!(
+        stdout(&out).lines().collect::<Vec<_>>(),
+        ["BA 100 0", "BA 100 0", "BA 100 77", "BA 100 77"],
+        "{err}"
+    );
+    let transcript = std::fs::read_to_string(&log).unwrap();
+    let to_b: Vec<&str> = sent(&transcript)
+        .into_iter()
+        .filter(|l| l.contains("to module 2") || l.contains("to module B"))
+        .collect();
+    assert_eq!(to_b.len(), 1, "{transcript}");
+    assert!(to_b[0].contains("136 to module 2"), "{transcript}");
+    // What the boot loader itself received: the one 136 frame.
+    let traffic = sim.quit();
+    let received = received_by(&traffic, 2);
+    assert_eq!(received.len(), 1, "{traffic}");
+    assert!(received[0].contains(" 136"), "{traffic}");
+    assert!(received_by(&traffic, 1).len() > 4, "{traffic}");
+}
+
+#[test]
+fn switching_to_an_unknown_module_gives_it_the_generic_profile_with_one_notice() {
+    let dir = tempdir();
+    let unknown = crate::identify::module_answering(&dir, "9999V100");
+    let bus = format!("1:tmcm-142,2:{}", unknown.display());
+    let sim = Sim::start(&["--pty", "--modules", &bus]);
+    let input = "GAP actual_position, 0\n:target 2\nGAP 1, 0\nGAP actual_position, 0\n\
+                 :target 1\nGAP actual_position, 0\nBGAP 1, 0\n";
+    let out = piped(&sim, &["--keep-going"], input);
+    let err = stderr(&out);
+    // The one refused line: a parameter name, which the generic profile has none of.
+    assert_eq!(code(&out), 2, "{err}");
+    assert!(
+        err.contains("line 4 (GAP actual_position, 0): the generic TMCL module profile has no parameter names"),
+        "{err}"
+    );
+    assert_eq!(
+        err.matches("generic TMCL profile:").count(),
+        1,
+        "one notice: {err}"
+    );
+    assert_eq!(err.lines().count(), 2, "nothing else went wrong: {err}");
+    assert_eq!(
+        stdout(&out).lines().collect::<Vec<_>>(),
+        [
+            "BA 100 0",
+            "target: module 2 (B), TMCM-9999, firmware 9999V100, profile generic (built in)",
+            "BB 100 0",
+            "target: module 1 (A), TMCM-142, firmware 142V1.06, profile tmcm-142 (built in)",
+            "BA 100 0",
+            "BB 100 0",
+        ],
+        "{err}"
+    );
+}
+
+#[test]
+fn the_simulator_refuses_a_boot_loader_at_an_address_not_on_the_bus() {
+    let out = run(&["sim", "--modules", "1,2", "--boot-loader=3"]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("--boot-loader names module 3, which is not on the bus"),
+        "{}",
+        stderr(&out)
+    );
+    let out = run(&["sim", "--boot-loader=B"]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("'B' is not a module address (1..255)"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+// Returning two modules to binary mode, the session sends module 2 its BIN after module 1 has
+// left ASCII mode: module 1 takes those bytes for the start of a frame until its frame time-out.
+// A session opened right after must still get its first frame answered.
+#[test]
+fn a_session_right_after_another_finds_every_module_answering_frames() {
+    let sim = Sim::start(&["--pty", "--modules", "1:tmcm-142,2:tmcm-6110"]);
+    for run in 0..4 {
+        let out = piped(&sim, &["-v"], "GAP 1, 0\n:target 2\nGAP 1, 5\n");
+        assert_eq!(code(&out), 0, "run {run}: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains("tmclsh: TMCM-142, firmware 142V1.06, profile tmcm-142"),
+            "run {run}: {}",
+            stderr(&out)
+        );
+    }
+}

@@ -119,7 +119,10 @@ fn protocol() {
             }
             Serve => {
                 exit(out, 2)?;
-                says(out, "--modules applies to the simulated TMCM-142")
+                says(
+                    out,
+                    "--modules is a flag of the TMCL simulation (--protocol tmcl)",
+                )
             }
             SnapshotDiffFiles => expect(stdout(out) != stdout(&control), || {
                 "the same comparison as with the TMCL tables".into()

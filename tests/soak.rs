@@ -6,10 +6,13 @@
 
 mod harness;
 
-use harness::{Counts, Fault, Plan, Target, one_character_changed, one_digit_changed, run_cell};
+use harness::{
+    Counts, Fault, Plan, Target, one_character_changed, one_digit_changed, run_cell,
+    script_reading, tally_output,
+};
 
 use crate::sim::Sim;
-use crate::util::bin;
+use crate::util::{bin, run, stdout};
 
 /// Reads per cell: 20 cells, 6,000 reads in all.
 const READS: u64 = 300;
@@ -57,6 +60,16 @@ fn soak(target: Target) {
         total.silent_wrong, 0,
         "values returned without an error that are not the truth:\n{report}"
     );
+    // The module never refuses these reads (the set-up read every value back), so each device
+    // error would be line noise taken for a status the module did not send.
+    assert_eq!(
+        total.device, 0,
+        "damaged replies taken for a refusal by the module:\n{report}"
+    );
+    assert_eq!(
+        total.other, 0,
+        "failures with an exit code other than 3 (link) or 1 (device):\n{report}"
+    );
 }
 
 #[test]
@@ -87,6 +100,29 @@ fn soak_smd4() {
 #[test]
 fn soak_smd4_addressed() {
     soak(Target::Smd4Addressed);
+}
+
+// The soak's count of device errors can see one: the same loop, its reads replaced by a request
+// the module refuses (there is no parameter type 200: status 3), run on the built-in simulator.
+#[test]
+fn a_refusal_the_module_sends_is_counted_as_a_device_error() {
+    let dir = std::env::temp_dir().join(format!("tmclsh-soak-refusal-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("refused.rhai");
+    let reader = "let names = [];\nfn read(names, i) { send(\"GAP 200, 0\") }\n";
+    std::fs::write(&script, script_reading(reader, 1)).unwrap();
+    let out = run(&["run", script.to_str().unwrap(), "--", "7", "1"]);
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut counts = Counts::default();
+    let truth = ["0".to_string()];
+    tally_output(&mut counts, &stdout(&out), &truth, Target::TmclChar, false);
+    assert_eq!(
+        (counts.reads, counts.device, counts.failures()),
+        (7, 7, 7),
+        "{}\n{}",
+        counts.summary(),
+        stdout(&out)
+    );
 }
 
 #[test]

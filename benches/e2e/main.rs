@@ -3,7 +3,7 @@
 //!
 //! `cargo bench --bench e2e -- --quick` runs fewer transactions and repetitions and only prints:
 //! for trying a change, not for publishing. `-- --soak` runs only the fault soak (row 7) and
-//! rewrites only its row and section. Linux only: it uses ptys, wait4 and /proc.
+//! rewrites only its row and section; `-- --limit` likewise for the documented limit (row 8). Linux only: it uses ptys, wait4 and /proc.
 
 #[cfg(target_os = "linux")]
 #[path = "../pure/cases.rs"]
@@ -110,6 +110,25 @@ fn main() {
     let plan = if quick { Plan::quick() } else { Plan::full() };
     let soak_plan = soak::plan(plan.soak_reads);
     let date = || humantime::format_rfc3339_seconds(SystemTime::now()).to_string();
+    let limit_plan = soak::limit_plan(plan.soak_reads);
+    if std::env::args().any(|a| a == "--limit") {
+        eprintln!("e2e: the documented limit only");
+        let cells = soak::measure_faults(&limit_plan, &soak::LIMIT_FAULTS);
+        let row = soak::limit_row(&cells, &limit_plan);
+        println!("{}", report::text(std::slice::from_ref(&row)));
+        let section = soak::limit_section(&cells, &limit_plan, &date());
+        println!("{section}");
+        if quick {
+            eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
+            return;
+        }
+        let path = proc::repo_file("BENCHMARKS.md");
+        let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+        let new = soak::splice_limit(&old, &report::markdown_line(&row), &section);
+        std::fs::write(&path, new).expect("write BENCHMARKS.md");
+        eprintln!("e2e: wrote the documented limit into {}", path.display());
+        return;
+    }
     if std::env::args().any(|a| a == "--soak") {
         eprintln!("e2e: fault soak only");
         let cells = soak::measure(&soak_plan);
@@ -157,10 +176,17 @@ fn main() {
     step("fault soak (a few minutes at full size)");
     let soak_cells = soak::measure(&soak_plan);
     rows.push(soak::row(&soak_cells, &soak_plan));
+    step("the documented limit: replies later than the resync window (a few minutes)");
+    let limit_cells = soak::measure_faults(&limit_plan, &soak::LIMIT_FAULTS);
+    let limit_row = soak::limit_row(&limit_cells, &limit_plan);
     let load_after = machine::load();
     let date = date();
     let soak_section = soak::section(&soak_cells, &soak_plan, &date);
+    let limit_section = soak::limit_section(&limit_cells, &limit_plan, &date);
 
+    let soak_line = report::markdown_line(rows.last().expect("the soak row"));
+    let limit_line = report::markdown_line(&limit_row);
+    rows.push(limit_row);
     println!("{}", report::text(&rows));
     println!("{:<66} {:>12}", "pure part", "ns/op");
     for case in &pure {
@@ -180,8 +206,8 @@ fn main() {
         rows: &rows,
         pure: &pure,
     });
-    let soak_line = report::markdown_line(rows.last().expect("the soak row"));
     let markdown = soak::splice(&markdown, &soak_line, &soak_section);
+    let markdown = soak::splice_limit(&markdown, &limit_line, &limit_section);
     let path = proc::repo_file("BENCHMARKS.md");
     std::fs::write(&path, markdown).expect("write BENCHMARKS.md");
     eprintln!("e2e: wrote {}", path.display());

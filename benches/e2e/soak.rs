@@ -40,9 +40,35 @@ pub fn plan(reads: u64) -> Plan {
     }
 }
 
+/// The name the limit's row starts with.
+pub const LIMIT_ROW_PREFIX: &str = "8. The documented limit";
+
+/// The heading of the limit's section.
+pub const LIMIT_HEADING: &str = "## The documented limit";
+
+/// The fault cells of the limit: replies late past the resync window alone, and with drops and
+/// corruption beside them.
+pub const LIMIT_FAULTS: [Fault; 2] = [Fault::Delay, Fault::All];
+
+/// The plan of the limit's cells: as row 7's, but delayed replies come later than the resync
+/// window after the timeout. With `--timeout 100` the window is 100 ms, so the line is trusted
+/// again 200 ms after the request and the next request is sent; a reply held back 250 ms comes
+/// in the middle of the wait for the next one.
+pub fn limit_plan(reads: u64) -> Plan {
+    Plan {
+        delay_ms: 250,
+        ..plan(reads)
+    }
+}
+
 /// Runs the matrix: the configurations side by side (each waits on its timeouts most of the
 /// time), the fault kinds of one configuration one after the other.
 pub fn measure(plan: &Plan) -> Vec<Cell> {
+    measure_faults(plan, &Fault::ALL)
+}
+
+/// Runs the configurations with each of `faults`, as [`measure`] does.
+pub fn measure_faults(plan: &Plan, faults: &[Fault]) -> Vec<Cell> {
     let bin = tmclsh();
     let mut cells: Vec<Cell> = std::thread::scope(|scope| {
         let workers: Vec<_> = Target::ALL
@@ -50,9 +76,9 @@ pub fn measure(plan: &Plan) -> Vec<Cell> {
             .map(|target| {
                 let bin = &bin;
                 scope.spawn(move || {
-                    Fault::ALL
-                        .into_iter()
-                        .map(|fault| {
+                    faults
+                        .iter()
+                        .map(|&fault| {
                             let start = Instant::now();
                             let counts = run_cell(bin, target, fault, plan);
                             eprintln!(
@@ -192,12 +218,146 @@ pub fn section(cells: &[Cell], plan: &Plan, date: &str) -> String {
     md
 }
 
+/// Whether a configuration has no echo: TMCL with echo off and every SMD4 drive.
+fn without_echo(target: Target) -> bool {
+    !matches!(target, Target::TmclChar | Target::TmclLine)
+}
+
+/// Silent wrong values per 100 delayed replies, with one decimal.
+fn per_hundred_late(counts: &Counts) -> String {
+    match counts.injected.delayed {
+        0 => "—".into(),
+        late => format!("{:.1}", 100.0 * counts.silent_wrong as f64 / late as f64),
+    }
+}
+
+/// The limit's row of the results table: silent wrong values without an echo, per late reply,
+/// and with an echo, where there must be none.
+pub fn limit_row(cells: &[Cell], plan: &Plan) -> Row {
+    let mut no_echo = Counts::default();
+    let mut echo = Counts::default();
+    for cell in cells {
+        if without_echo(cell.target) {
+            no_echo.add(&cell.counts);
+        } else {
+            echo.add(&cell.counts);
+        }
+    }
+    Row {
+        name: format!(
+            "{LIMIT_ROW_PREFIX}: no echo, replies {} ms late (past the resync window), {} cells × \
+             {} reads",
+            plan.delay_ms,
+            cells.len(),
+            thousands(plan.reads as f64)
+        ),
+        measured: format!(
+            "{} silent wrong for {} late replies ({} per 100)",
+            thousands(no_echo.silent_wrong as f64),
+            thousands(no_echo.injected.delayed as f64),
+            per_hundred_late(&no_echo)
+        ),
+        reference: format!(
+            "with an echo: {} silent wrong for {} late replies",
+            thousands(echo.silent_wrong as f64),
+            thousands(echo.injected.delayed as f64)
+        ),
+        ratio: "—".into(),
+        target: "0 with an echo".into(),
+        met: Some(echo.silent_wrong == 0),
+    }
+}
+
+/// The limit's section: its method and every cell's counts.
+pub fn limit_section(cells: &[Cell], plan: &Plan, date: &str) -> String {
+    let mut md = format!("{LIMIT_HEADING}\n\n");
+    let _ = write!(
+        md,
+        "Row 8, measured on {date}: how often the limit named in README's \"The guarantee\" lets \
+         a wrong value through. The cells are row 7's, with `delay` and \"all three\" only, but a \
+         delayed reply is held back {delay} ms: past the client's timeout ({timeout} ms) and the \
+         resync window after it (as long as the timeout), so the line has been quiet long enough \
+         and the next request is on its way when the late reply comes. The simulator keeps its \
+         replies in order, so the answer to that next request follows the late one at once, as \
+         a module that answers late because it was busy would send it, unless that answer is \
+         itself dropped or delayed. Without an echo (TMCL with echo off, SMD4) nothing in a reply \
+         names its request; with an echo the reply must follow the echo of its own request. \
+         \"Silent wrong per 100 late\" divides the silent wrong values by the replies the \
+         simulator delayed.\n\n",
+        delay = plan.delay_ms,
+        timeout = plan.timeout_ms,
+    );
+    md.push_str(
+        "| configuration | faults | reads | ok | timeout | line noise | device error | other \
+         | silent wrong | silent wrong per 100 late | one digit changed | injected: dropped / \
+         corrupted / delayed | seed | time |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n",
+    );
+    for cell in cells {
+        let c = &cell.counts;
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | **{}** | {} | {} | {} / {} / {} | {} | {:.0} s |",
+            cell.target.name(),
+            cell.fault.name(),
+            c.reads,
+            c.ok,
+            c.timeout,
+            c.noise,
+            c.device,
+            c.other,
+            c.silent_wrong,
+            per_hundred_late(c),
+            c.undetectable,
+            c.injected.dropped,
+            c.injected.corrupted,
+            c.injected.delayed,
+            c.seed,
+            cell.took.as_secs_f64(),
+        );
+    }
+    let wrong: Vec<String> = cells
+        .iter()
+        .filter(|c| !c.counts.examples.is_empty())
+        .map(|c| {
+            format!(
+                "- {} / {}: {}",
+                c.target.name(),
+                c.fault.name(),
+                c.counts.examples.join("; ")
+            )
+        })
+        .collect();
+    if !wrong.is_empty() {
+        md.push_str("\nThe first silent wrong values of each cell (index, value, truth):\n\n");
+        md.push_str(&wrong.join("\n"));
+        md.push('\n');
+    }
+    md
+}
+
 /// `BENCHMARKS.md` with the soak's row and section replaced by `row_line` and `section` (or
 /// added: the row after the last row of the results table, the section before the pure parts),
 /// everything else kept as it was.
 pub fn splice(markdown: &str, row_line: &str, section: &str) -> String {
+    splice_part(markdown, ROW_PREFIX, HEADING, row_line, section)
+}
+
+/// [`splice`] for the limit's row and section.
+pub fn splice_limit(markdown: &str, row_line: &str, section: &str) -> String {
+    splice_part(markdown, LIMIT_ROW_PREFIX, LIMIT_HEADING, row_line, section)
+}
+
+/// The row starting with `prefix` and the section under `heading` replaced or added.
+fn splice_part(
+    markdown: &str,
+    prefix: &str,
+    heading: &str,
+    row_line: &str,
+    section: &str,
+) -> String {
     let mut lines: Vec<String> = markdown.lines().map(str::to_string).collect();
-    let row_start = format!("| {ROW_PREFIX}");
+    let row_start = format!("| {prefix}");
     match lines.iter().position(|l| l.starts_with(&row_start)) {
         Some(i) => lines[i] = row_line.trim_end().to_string(),
         None => {
@@ -213,7 +373,7 @@ pub fn splice(markdown: &str, row_line: &str, section: &str) -> String {
         }
     }
     let section_lines: Vec<String> = section.trim_end().lines().map(str::to_string).collect();
-    match lines.iter().position(|l| l == HEADING) {
+    match lines.iter().position(|l| l == heading) {
         Some(start) => {
             let end = lines[start + 1..]
                 .iter()

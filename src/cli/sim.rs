@@ -163,10 +163,7 @@ fn device(args: &SimArgs, configs: &Configured) -> Result<Box<dyn Device>, Failu
         if let Some(flag) = (other.sim_flag_given)(flags) {
             return Err(Failure::new(
                 Exit::Refused,
-                format!(
-                    "{flag} applies to the simulated {} (--protocol {}) only",
-                    other.simulated, other.name
-                ),
+                foreign_flag(flag, other, chosen),
             ));
         }
     }
@@ -174,6 +171,18 @@ fn device(args: &SimArgs, configs: &Configured) -> Result<Box<dyn Device>, Failu
         .of(chosen)
         .served_simulator(flags, args.state.as_deref(), args.verbose)
         .map_err(|message| Failure::new(Exit::Refused, message))
+}
+
+/// The refusal of a simulator flag of `owner` given to the simulation of `chosen`: `--no-ascii
+/// is a flag of the TMCL simulation (--protocol tmcl); the SMD4 simulation has no such flag`.
+fn foreign_flag(flag: &str, owner: &Dialect, chosen: &Dialect) -> String {
+    format!(
+        "{flag} is a flag of the {} simulation (--protocol {}); the {} simulation has no such \
+         flag",
+        owner.name.to_uppercase(),
+        owner.name,
+        chosen.name.to_uppercase()
+    )
 }
 
 /// Faults and line pacing around any simulated device (faults inside, so replies are judged

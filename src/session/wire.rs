@@ -58,6 +58,9 @@ pub(crate) struct Wire {
     pub notices: Vec<String>,
     /// When the last byte was sent, for [`Wire::idle_for`].
     last_sent: Option<Instant>,
+    /// When bytes last arrived, for [`Wire::idle_for`]: on a bus every module hears the
+    /// others' replies too.
+    last_heard: Option<Instant>,
     /// Peers whose answers may still be on the way.
     suspect: Suspicion,
     /// The peer of the exchange in progress.
@@ -77,6 +80,7 @@ impl Wire {
             transcript,
             notices: Vec::new(),
             last_sent: None,
+            last_heard: None,
             suspect: Suspicion::default(),
             in_flight: None,
             discards: Discards::default(),
@@ -126,12 +130,13 @@ impl Wire {
         Ok(())
     }
 
-    /// Keeps the line idle until `gap` has passed since the last byte sent. Binary receivers on
-    /// a bus find the start of a frame only after such a pause (a UART time-out), so this is
-    /// needed before the first binary frame to a module that has seen other traffic; it is a
-    /// rule of the line, not a guessed reply delay. Ctrl-C interrupts it.
+    /// Keeps the line idle until `gap` has passed since the last byte on it, sent or heard (a
+    /// module in binary mode hears the replies of the others on its bus as well as our lines).
+    /// Binary receivers on a bus find the start of a frame only after such a pause (a UART
+    /// time-out), so this is needed before the first binary frame to a module that has seen
+    /// other traffic; it is a rule of the line, not a guessed reply delay. Ctrl-C interrupts it.
     pub(crate) fn idle_for(&mut self, gap: Duration) -> Result<(), SessionError> {
-        let Some(last) = self.last_sent else {
+        let Some(last) = self.last_sent.max(self.last_heard) else {
             return Ok(());
         };
         let until = last + gap;
@@ -161,6 +166,7 @@ impl Wire {
             match self.link.recv(&mut buf, slice_end) {
                 Ok(n) => {
                     self.pace.record(n);
+                    self.last_heard = Some(Instant::now());
                     if self.rx.extend(&buf[..n]).is_err() {
                         let held = self.rx.clear();
                         self.log(Entry::Received, &held, "receive buffer full, discarded");

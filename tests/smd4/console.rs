@@ -117,15 +117,22 @@ fn flags_of_the_tmcl_bus_are_refused_for_the_smd4() {
         &["--modules", "1,2"][..],
         &["--left-switch", "-100"],
         &["--no-reply-to-139"],
+        &["--no-ascii"],
+        &["--boot-loader"],
     ] {
         let mut args = vec!["sim", "--protocol", "smd4"];
         args.extend(flag);
         let out = run(&args);
         assert_eq!(code(&out), 2, "{flag:?}");
+        let said = stderr(&out);
         assert!(
-            stderr(&out).contains(&format!("{} applies to the simulated TMCM-142", flag[0])),
-            "{}",
-            stderr(&out)
+            said.contains(&format!(
+                "{} is a flag of the TMCL simulation (--protocol tmcl); the SMD4 simulation has \
+                 no such flag",
+                flag[0]
+            )),
+            "{said}"
         );
+        assert!(!said.contains("TMCM-142"), "{said}");
     }
 }

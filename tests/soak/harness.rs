@@ -257,9 +257,13 @@ pub fn run_cell(bin: &Path, target: Target, fault: Fault, plan: &Plan) -> Counts
             .output()
             .expect("tmclsh runs");
         let before = counts.reads;
-        for line in String::from_utf8_lossy(&output.stdout).lines() {
-            tally(&mut counts, line, &truth, target, fault.corrupts());
-        }
+        tally_output(
+            &mut counts,
+            &String::from_utf8_lossy(&output.stdout),
+            &truth,
+            target,
+            fault.corrupts(),
+        );
         if !output.status.success() || counts.reads == before {
             counts.restarts += 1;
             assert!(
@@ -285,6 +289,19 @@ pub fn cell_seed(base: u64, target: Target, fault: Fault) -> u64 {
     let row = Target::ALL.iter().position(|t| *t == target).unwrap_or(0) as u64;
     let column = Fault::ALL.iter().position(|f| *f == fault).unwrap_or(0) as u64;
     base.wrapping_add(row * Fault::ALL.len() as u64 + column)
+}
+
+/// Counts every read the soak script printed in `stdout` (its `soak` lines; others are ignored).
+pub fn tally_output(
+    counts: &mut Counts,
+    stdout: &str,
+    truth: &[String],
+    target: Target,
+    corrupts: bool,
+) {
+    for line in stdout.lines() {
+        tally(counts, line, truth, target, corrupts);
+    }
 }
 
 /// Counts one line of the soak script's output.
@@ -548,7 +565,7 @@ fn setup_script(target: Target) -> String {
 /// The soak: `args[0]` reads in an order drawn from `args[1]`; each read prints
 /// `soak ok INDEX VALUE` or `soak err INDEX EXIT MESSAGE`.
 fn soak_script(target: Target, truth: &[String]) -> String {
-    let read = if target.smd4() {
+    let reader = if target.smd4() {
         let names: Vec<String> = SMD4_VALUES
             .iter()
             .map(|(m, _)| format!("\"{m}\""))
@@ -560,8 +577,14 @@ fn soak_script(target: Target, truth: &[String]) -> String {
     } else {
         "let names = [];\nfn read(names, i) { ggp(i, 2) }\n".to_string()
     };
+    script_reading(&reader, truth.len())
+}
+
+/// The soak's loop over `values` known values with the given `reader`: Rhai that defines
+/// `names` and `fn read(names, i)`, the read of value `i`.
+pub fn script_reading(reader: &str, values: usize) -> String {
     format!(
-        "{read}\
+        "{reader}\
          let n = parse_int(args[0]);\n\
          let x = parse_int(args[1]);\n\
          let k = {};\n\
@@ -575,7 +598,7 @@ fn soak_script(target: Target, truth: &[String]) -> String {
          \x20       print(`soak err ${{i}} ${{e.exit}} ${{e}}`);\n\
          \x20   }}\n\
          }}\n",
-        truth.len()
+        values
     )
 }
 

@@ -11,7 +11,8 @@ impl Header {
         let mut rest = text
             .strip_prefix(HEADER_TITLE)
             .ok_or_else(|| format!("a header that does not start with '{HEADER_TITLE}'"))?;
-        let (mut dialect, mut module, mut profile, mut version) = (None, None, None, None);
+        let (mut dialect, mut module, mut profile, mut profiles, mut version) =
+            (None, None, None, None, None);
         loop {
             rest = rest.trim_start_matches([' ', ',']);
             if rest.is_empty() {
@@ -29,6 +30,7 @@ impl Header {
                 "dialect" => dialect = Some(value),
                 "module" => module = Some(value),
                 "profile" => profile = Some(value),
+                "profiles" => profiles = Some(value),
                 "version" => version = Some(value),
                 _ => {}
             }
@@ -43,6 +45,7 @@ impl Header {
             dialect,
             module: module.ok_or("a header without a module")?,
             profile,
+            profiles,
             version: version.unwrap_or_default(),
         })
     }
@@ -54,7 +57,7 @@ mod tests {
 
     use super::*;
     use crate::dialect::smd4::config::header as smd4_header;
-    use crate::dialect::tmcl::config::header as tmcl_header;
+    use crate::dialect::tmcl::config::{PER_MODULE, header as tmcl_header, session_header};
     use crate::dialect::tmcl::profile::Profile;
 
     #[test]
@@ -62,7 +65,10 @@ mod tests {
         let mut profile = Profile::clone(&Profile::builtin());
         profile.module = "TMCM-\"odd\", name".into();
         profile.source = Some(PathBuf::from("dir with space/p.toml"));
-        for header in [tmcl_header(&profile), smd4_header()] {
+        let per_module = session_header(&profile, false);
+        assert_eq!(per_module.profiles.as_deref(), Some(PER_MODULE));
+        assert_eq!(session_header(&profile, true), tmcl_header(&profile));
+        for header in [tmcl_header(&profile), per_module, smd4_header()] {
             assert_eq!(Header::parse(&header.to_text()), Ok(header));
         }
         let later = "tmclsh transcript: dialect \"smd4\", firmware \"1.2\", module \"SMD4\"";

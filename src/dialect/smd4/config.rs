@@ -29,6 +29,7 @@ pub fn header() -> Header {
         dialect: super::DIALECT.name.to_string(),
         module: "SMD4".to_string(),
         profile: None,
+        profiles: None,
         version: env!("CARGO_PKG_VERSION").to_string(),
     }
 }

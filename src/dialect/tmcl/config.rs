@@ -51,7 +51,20 @@ pub fn header(profile: &Profile) -> Header {
         dialect: super::DIALECT.name.to_string(),
         module: profile.module.clone(),
         profile: Some(profile.origin()),
+        profiles: None,
         version: env!("CARGO_PKG_VERSION").to_string(),
+    }
+}
+
+/// What the header says of a session that takes each module's profile from its answer to 136.
+pub const PER_MODULE: &str = "per module, see the identification notes";
+
+/// The transcript header of a session that starts with `profile`: unless the profile was
+/// `given`, each module identified takes its own, which its identification note names.
+pub fn session_header(profile: &Profile, given: bool) -> Header {
+    Header {
+        profiles: (!given).then(|| PER_MODULE.to_string()),
+        ..header(profile)
     }
 }
 
@@ -100,7 +113,7 @@ impl DialectConfig for TmclConfig {
     }
 
     fn header(&self) -> Header {
-        header(&self.profile)
+        session_header(&self.profile, self.given)
     }
 
     fn simulated_module(&self) -> String {

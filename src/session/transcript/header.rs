@@ -11,6 +11,9 @@ pub const HEADER_TAG: &str = "##";
 pub const HEADER_TITLE: &str = "tmclsh transcript:";
 
 /// What a transcript is of: the dialect and the module type, with the profile of a TMCL module.
+/// A TMCL session that takes each module's profile from its answer says so in `profiles`: its
+/// `module` and `profile` are then those of a module that does not name itself, and the
+/// identification notes that follow name each module's own.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Header {
     /// The protocol of the session, by the name `--protocol` takes (`tmcl`).
@@ -19,6 +22,9 @@ pub struct Header {
     pub module: String,
     /// The profile of a TMCL session: "built-in" or the file given with `--profile`.
     pub profile: Option<String>,
+    /// How modules get their profile when it is not one for all ("per module, see the
+    /// identification notes").
+    pub profiles: Option<String>,
     /// The tmclsh version that wrote the transcript.
     pub version: String,
 }
@@ -31,6 +37,7 @@ impl Header {
             ("dialect", Some(self.dialect.as_str())),
             ("module", Some(self.module.as_str())),
             ("profile", self.profile.as_deref()),
+            ("profiles", self.profiles.as_deref()),
             ("version", Some(self.version.as_str())),
         ];
         for (i, (key, value)) in fields.iter().enumerate() {

@@ -330,3 +330,21 @@ fn the_resync_window_scales_with_the_byte_time() {
     assert_eq!(w.resync_window(TIMEOUT), TIMEOUT);
     assert_eq!(w.resync_window(Duration::from_secs(60)), RESYNC_MAX);
 }
+
+#[test]
+fn the_quiet_gap_before_a_frame_counts_from_the_last_byte_heard_too() {
+    // On a bus a module in binary mode hears the other modules' replies as well as our lines:
+    // the gap its frame receiver needs starts after the reply, not after our request.
+    let (mut wire, script) = wire();
+    let start = Instant::now();
+    wire.send(b"AGAP 1, 0\r", "").unwrap();
+    arrive(&script, Duration::from_millis(40), b"BA 100 0\r");
+    assert!(wire.fill(start + Duration::from_secs(5)).unwrap());
+    wire.idle_for(Duration::from_millis(60)).unwrap();
+    // The reply came 40 ms or more after `start`, so the line was quiet only 60 ms after that.
+    assert!(
+        start.elapsed() >= Duration::from_millis(100),
+        "idle only until {:?}",
+        start.elapsed()
+    );
+}

@@ -196,6 +196,7 @@ impl Wire {
             match self.link.recv(&mut buf, Instant::now()) {
                 Ok(n) => {
                     read += n;
+                    self.last_heard = Some(Instant::now());
                     if self.rx.extend(&buf[..n]).is_err() {
                         read = DRAIN_BUDGET;
                         self.discard_unexpected(Some(&buf[..n]));

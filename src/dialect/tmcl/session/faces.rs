@@ -14,7 +14,7 @@ use crate::exit::Failure;
 use crate::script::Script;
 use crate::session::SessionError;
 use crate::session::core::SessionCore;
-use crate::session::transcript::Header;
+use crate::session::transcript::{Header, Transcript};
 
 use super::{TmclSession, WireMode};
 
@@ -76,8 +76,16 @@ impl DialectSession for TmclSession {
         }
     }
 
+    /// As at the start: the profile of a module that does not name itself (the given one, or
+    /// the default); the identification notes name the others'.
     fn header(&self) -> Header {
-        config::header(&self.profile)
+        config::session_header(&self.fallback, self.profile_given)
+    }
+
+    /// A transcript started mid-session begins with what the session knows of each module.
+    fn set_transcript(&mut self, transcript: Option<Transcript>) {
+        self.core.wire.transcript = transcript;
+        self.note_identifications();
     }
 
     /// The profile, and the mode of the target module.

@@ -36,6 +36,9 @@ pub enum Identity {
     },
     /// Asked; no usable answer (why, in a few words).
     NoAnswer(String),
+    /// Asked; the module runs its boot loader (the report, `module B: TMCM-142 in its boot
+    /// loader (142B1.06): …`). Nothing else is ever sent to it.
+    BootLoader(String),
 }
 
 /// The way a profile is named in the banner: `tmcm-6110 (built in)` or `FILE (file)`.
@@ -75,6 +78,13 @@ impl TmclSession {
     /// modules at all (a session the command line opened, `--no-enter` off): on a bus of
     /// different modules each one is checked, decoded and talked to with its own profile.
     pub(super) fn identify_if_new(&mut self, module: u8) -> Result<(), SessionError> {
+        if let Some(Known {
+            identity: Identity::BootLoader(report),
+            ..
+        }) = self.known.get(&module)
+        {
+            return Err(Failure::new(Exit::Link, report.clone()).into());
+        }
         let new = !self.known.contains_key(&module) && !self.modules.contains_key(&module);
         if self.identify_each && new {
             self.identify_module(module)?;
@@ -100,13 +110,24 @@ impl TmclSession {
             self.core.wire.notices.push(GENERIC_NOTICE.to_string());
         }
         let known = Known { profile, identity };
-        if matches!(known.identity, Identity::Answered { .. }) {
-            let c = address_char(module).unwrap_or('?');
-            let line = format!("identified: module {module} ({c}), {}", describe(&known));
+        if let Some(line) = identified_note(module, &known) {
             self.core.wire.note(&line);
         }
         self.known.insert(module, known);
         Ok(())
+    }
+
+    /// Repeats the identification note of every module identified so far: a transcript started
+    /// mid-session (`:log FILE`) names each module's profile as one opened on connect does.
+    pub(super) fn note_identifications(&mut self) {
+        let notes: Vec<String> = self
+            .known
+            .iter()
+            .filter_map(|(module, known)| identified_note(*module, known))
+            .collect();
+        for note in notes {
+            self.core.wire.note(&note);
+        }
     }
 
     /// One 136 exchange with `module`; what it said (the profile it names in `self.identified`).
@@ -159,6 +180,10 @@ impl TmclSession {
             Identified::BootLoader { .. } => {
                 let message = format!("module {c}: {}", identified.banner());
                 self.core.wire.note(&message);
+                // Every later line to it is refused with the same report, unsent.
+                let identity = Identity::BootLoader(message.clone());
+                let profile = self.fallback.clone();
+                self.known.insert(module, Known { profile, identity });
                 return Err(Failure::new(Exit::Link, message).into());
             }
             Identified::Known { version, .. } | Identified::Unknown { version, .. } => version,
@@ -235,6 +260,19 @@ impl TmclSession {
     }
 }
 
+/// The transcript note of a module that named itself: `identified: module 2 (B), TMCM-6110,
+/// firmware 6110V131, profile tmcm-6110 (built in)`.
+fn identified_note(module: u8, known: &Known) -> Option<String> {
+    if !matches!(known.identity, Identity::Answered { .. }) {
+        return None;
+    }
+    let c = address_char(module).unwrap_or('?');
+    Some(format!(
+        "identified: module {module} ({c}), {}",
+        describe(known)
+    ))
+}
+
 /// `TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`.
 fn describe(known: &Known) -> String {
     let label = profile_label(&known.profile);
@@ -245,5 +283,6 @@ fn describe(known: &Known) -> String {
         }
         Identity::NotAsked => format!("{module}, profile {label}"),
         Identity::NoAnswer(why) => format!("{module} (not identified: {why}), profile {label}"),
+        Identity::BootLoader(report) => report.clone(),
     }
 }

@@ -435,7 +435,7 @@ impl TmclSession {
             .filter(|(_, m)| m.mode == WireMode::Ascii && m.found_in == WireMode::Binary)
             .map(|(&a, _)| a)
             .collect();
-        for module in to_restore {
+        for &module in &to_restore {
             if let Err(e) = self.leave_ascii(module) {
                 report.push(format!(
                     "could not return module {module} to binary mode: {e}"
@@ -455,8 +455,24 @@ impl TmclSession {
                 ));
             }
         }
+        self.let_frames_time_out(to_restore.last().copied());
         self.core.wire.note("session closed");
         report
+    }
+
+    /// Leaves the line quiet for the frame time-out when a module in binary mode took ASCII
+    /// bytes for the start of a frame — the BIN to the next module after its own (`last_bin`,
+    /// the last module returned, is the only one that did not) — so that whatever opens the
+    /// port next finds every receiver empty and its first frame answered.
+    fn let_frames_time_out(&mut self, last_bin: Option<u8>) {
+        let holding = self
+            .modules
+            .iter()
+            .any(|(&a, m)| m.mode == WireMode::Binary && Some(a) != last_bin);
+        if self.ascii_sent && holding {
+            let gap = self.resync_gap();
+            let _ = self.core.wire.idle_for(gap);
+        }
     }
 
     /// A human description of an instruction for the transcript.

@@ -29,8 +29,8 @@ pub struct BusOptions {
     pub motor_switches: Vec<(u8, Switch, i64)>,
     /// The EEPROM kept between runs; `None` starts from factory settings every time.
     pub eeprom: Option<Eeprom>,
-    /// Every module runs its boot loader instead of its firmware.
-    pub boot_loader: bool,
+    /// The modules, by factory address, that run their boot loader instead of their firmware.
+    pub boot_loader: Vec<u8>,
     /// Where to log decoded traffic; `None` logs nothing (and costs nothing).
     pub log: Option<LogSink>,
 }
@@ -44,7 +44,7 @@ impl Default for BusOptions {
             switches: Switches::default(),
             motor_switches: Vec::new(),
             eeprom: None,
-            boot_loader: false,
+            boot_loader: Vec::new(),
             log: None,
         }
     }
@@ -115,7 +115,7 @@ impl Bus {
                     machine.load(stored);
                 }
                 let mut module = Module::new(machine);
-                module.boot_loader = options.boot_loader;
+                module.boot_loader = options.boot_loader.contains(&slot);
                 module
             })
             .collect();

@@ -19,94 +19,139 @@ use super::motion::Switch;
 /// Runs `command` if it is a bus command (`None` when it is not one).
 pub(crate) fn run(bus: &mut Bus, now: Duration, command: &str) -> Option<Result<String, String>> {
     let mut words: Vec<&str> = command.split_whitespace().collect();
-    let slot = match words.first().and_then(|w| w.strip_prefix('@')) {
-        Some(n) => match n.parse::<u8>() {
-            Ok(n) => {
-                words.remove(0);
-                n
-            }
-            Err(_) => return Some(Err(format!("'@{n}' is not a module address"))),
-        },
-        None => *bus.slots().first()?,
+    let slot = match take_module(bus, &mut words)? {
+        Ok(slot) => slot,
+        Err(e) => return Some(Err(e)),
     };
-    // `switch M WHICH POS` and `motor M` name a motor; without it, motor 0.
-    let motor = match words.as_slice() {
-        ["switch", m, _, _] | ["motor", m] => match m.parse::<u8>() {
-            Ok(m) => {
-                words.remove(1);
-                m
-            }
-            Err(_) => return Some(Err(format!("'{m}' is not a motor number"))),
-        },
-        _ => 0,
+    let motor = match take_motor(&mut words) {
+        Ok(motor) => motor,
+        Err(e) => return Some(Err(e)),
     };
     let result = match words.as_slice() {
-        ["input", port, level] => number(port).and_then(|port| {
-            let high = match *level {
-                "0" | "low" | "off" => false,
-                "1" | "high" | "on" => true,
-                other => return Err(format!("'{other}' is not a level; use 0 or 1")),
-            };
-            bus.set_input(now, slot, port, high)
-                .map(|()| format!("input {port} = {}", u8::from(high)))
-        }),
-        ["analog", port, value] => number(port).and_then(|port| {
-            let value: i32 = value
-                .parse()
-                .map_err(|_| format!("'{value}' is not a number"))?;
-            bus.set_analog(now, slot, port, value)
-                .map(|()| format!("analog {port} = {value}"))
-        }),
-        ["switch", which, position] => {
-            let which = match *which {
-                "left" => Switch::Left,
-                "right" => Switch::Right,
-                "home" | "ref" | "reference" => Switch::Home,
-                other => {
-                    return Some(Err(format!(
-                        "'{other}' is not a switch; use left, right or home"
-                    )));
-                }
-            };
-            let position = match *position {
-                "off" | "none" => Ok(None),
-                p => p
-                    .parse::<i64>()
-                    .map(Some)
-                    .map_err(|_| format!("'{p}' is not a position (or 'off')")),
-            };
-            position.and_then(|position| {
-                bus.set_switch(now, slot, motor, which, position)
-                    .map(|()| {
-                        let at = position.map_or("off".to_string(), |p| p.to_string());
-                        format!("switch {which:?} at {at}").to_lowercase()
-                    })
-                    .map(|text| match motor {
-                        0 => text,
-                        m => format!("motor {m} {text}"),
-                    })
-            })
-        }
+        ["input", port, level] => set_input(bus, now, slot, port, level),
+        ["analog", port, value] => set_analog(bus, now, slot, port, value),
+        ["switch", which, position] => set_switch(bus, now, (slot, motor), which, position),
         ["output", port] => number(port).and_then(|port| {
             bus.output(now, slot, port)
                 .map(|on| format!("output {port} = {}", u8::from(on)))
                 .ok_or_else(|| format!("no output {port}"))
         }),
-        ["motor"] => bus
-            .motor_of(now, slot, motor)
-            .map(|m| {
-                format!(
-                    "position {} target {} velocity {:.3} pps reached {}",
-                    m.position,
-                    m.target,
-                    m.velocity,
-                    u8::from(m.target_reached)
-                )
-            })
-            .ok_or_else(|| format!("no module {slot} with a motor {motor}")),
+        ["motor"] => motor_state(bus, now, slot, motor),
         _ => return None,
     };
     Some(result)
+}
+
+/// The module a leading `@N` names, taken off `words`; without one, the first module (`None`
+/// on a bus without modules).
+fn take_module(bus: &Bus, words: &mut Vec<&str>) -> Option<Result<u8, String>> {
+    let first: Option<&str> = words.first().copied();
+    let Some(n) = first.and_then(|w| w.strip_prefix('@')) else {
+        return bus.slots().first().map(|slot| Ok(*slot));
+    };
+    let slot = n
+        .parse::<u8>()
+        .map_err(|_| format!("'@{n}' is not a module address"));
+    if slot.is_ok() {
+        words.remove(0);
+    }
+    Some(slot)
+}
+
+/// The motor `switch M WHICH POS` and `motor M` name, taken off `words`; without one, motor 0.
+fn take_motor(words: &mut Vec<&str>) -> Result<u8, String> {
+    let m = match words.as_slice() {
+        ["switch", m, _, _] | ["motor", m] => *m,
+        _ => return Ok(0),
+    };
+    let motor = m
+        .parse::<u8>()
+        .map_err(|_| format!("'{m}' is not a motor number"))?;
+    words.remove(1);
+    Ok(motor)
+}
+
+/// `input PORT 0|1`.
+fn set_input(
+    bus: &mut Bus,
+    now: Duration,
+    slot: u8,
+    port: &str,
+    level: &str,
+) -> Result<String, String> {
+    let port = number(port)?;
+    let high = match level {
+        "0" | "low" | "off" => false,
+        "1" | "high" | "on" => true,
+        other => return Err(format!("'{other}' is not a level; use 0 or 1")),
+    };
+    bus.set_input(now, slot, port, high)
+        .map(|()| format!("input {port} = {}", u8::from(high)))
+}
+
+/// `analog PORT VALUE`.
+fn set_analog(
+    bus: &mut Bus,
+    now: Duration,
+    slot: u8,
+    port: &str,
+    value: &str,
+) -> Result<String, String> {
+    let port = number(port)?;
+    let value: i32 = value
+        .parse()
+        .map_err(|_| format!("'{value}' is not a number"))?;
+    bus.set_analog(now, slot, port, value)
+        .map(|()| format!("analog {port} = {value}"))
+}
+
+/// `switch [M] left|right|home POS|off` for motor `motor` of the module at `slot`.
+fn set_switch(
+    bus: &mut Bus,
+    now: Duration,
+    (slot, motor): (u8, u8),
+    which: &str,
+    position: &str,
+) -> Result<String, String> {
+    let which = match which {
+        "left" => Switch::Left,
+        "right" => Switch::Right,
+        "home" | "ref" | "reference" => Switch::Home,
+        other => {
+            return Err(format!(
+                "'{other}' is not a switch; use left, right or home"
+            ));
+        }
+    };
+    let position = match position {
+        "off" | "none" => None,
+        p => Some(
+            p.parse::<i64>()
+                .map_err(|_| format!("'{p}' is not a position (or 'off')"))?,
+        ),
+    };
+    bus.set_switch(now, slot, motor, which, position)?;
+    let at = position.map_or("off".to_string(), |p| p.to_string());
+    let text = format!("switch {which:?} at {at}").to_lowercase();
+    Ok(match motor {
+        0 => text,
+        m => format!("motor {m} {text}"),
+    })
+}
+
+/// `motor [M]`: position, target, velocity and target reached.
+fn motor_state(bus: &mut Bus, now: Duration, slot: u8, motor: u8) -> Result<String, String> {
+    bus.motor_of(now, slot, motor)
+        .map(|m| {
+            format!(
+                "position {} target {} velocity {:.3} pps reached {}",
+                m.position,
+                m.target,
+                m.velocity,
+                u8::from(m.target_reached)
+            )
+        })
+        .ok_or_else(|| format!("no module {slot} with a motor {motor}"))
 }
 
 fn number(text: &str) -> Result<u8, String> {

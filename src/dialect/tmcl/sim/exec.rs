@@ -150,43 +150,13 @@ impl Machine {
         let value = i.value;
         // Axis commands name their motor in the motor byte (checked against the profile).
         let m = i.motor;
-        let axis_command = matches!(
-            i.command,
-            Opcode::Ror
-                | Opcode::Rol
-                | Opcode::Mst
-                | Opcode::Mvp
-                | Opcode::Sap
-                | Opcode::Aap
-                | Opcode::Gap
-                | Opcode::Stap
-                | Opcode::Rsap
-                | Opcode::Rfs
-                | Opcode::Sco
-                | Opcode::Gco
-                | Opcode::Cco
-                | Opcode::Aco
-        );
-        if axis_command && usize::from(m) >= self.axes.len() {
+        if names_a_motor(i.command) && usize::from(m) >= self.axes.len() {
             return Err(Status::InvalidValue);
         }
         match i.command {
-            Opcode::Ror | Opcode::Rol => {
-                let signed = if i.command == Opcode::Ror {
-                    value
-                } else {
-                    -value
-                };
-                self.set_role(m, self.roles.target_speed, signed);
-                let accel = self.move_limits(m).1;
-                let v = self.pps(m, signed);
-                self.axes[m as usize].rotate(t, v, accel);
-            }
-            Opcode::Mst => {
-                self.set_role(m, self.roles.target_speed, 0);
-                let accel = self.move_limits(m).1;
-                self.axes[m as usize].rotate(t, 0.0, accel);
-            }
+            Opcode::Ror => self.rotate(t, m, value),
+            Opcode::Rol => self.rotate(t, m, -value),
+            Opcode::Mst => self.stop_motor(t, m),
             Opcode::Mvp => return self.move_to(t, i),
             Opcode::Sap => self.write_axis(t, m, i.type_, value)?,
             Opcode::Aap => self.write_axis(t, m, i.type_, self.vm.acc)?,
@@ -194,23 +164,8 @@ impl Machine {
                 self.params.check_read(Slot::Axis(m, i.type_))?;
                 return Ok(self.axis_value(m, i.type_, t));
             }
-            Opcode::Stap | Opcode::Stgp => {
-                let slot = slot(i);
-                self.params.check_store(slot)?;
-                if self.locked() {
-                    return Err(Status::EepromLocked);
-                }
-                self.eeprom_changed |= self.params.store(slot);
-            }
-            Opcode::Rsap | Opcode::Rsgp => {
-                let slot = slot(i);
-                self.params.check_store(slot)?;
-                let before = self.velocity_factor(m);
-                self.params.restore(slot);
-                if let Slot::Axis(m, n) = slot {
-                    self.after_axis_write(t, m, n, before);
-                }
-            }
+            Opcode::Stap | Opcode::Stgp => self.store(slot(i))?,
+            Opcode::Rsap | Opcode::Rsgp => self.restore(t, slot(i))?,
             Opcode::Sgp => self.write_global(t, i.motor, i.type_, value)?,
             Opcode::Agp => self.write_global(t, i.motor, i.type_, self.vm.acc)?,
             Opcode::Ggp => {
@@ -232,6 +187,46 @@ impl Machine {
             _ => return Err(Status::InvalidCommand),
         }
         Ok(value)
+    }
+
+    /// ROR and ROL (`speed` negated): motor `m` turns at `speed` in the user's unit.
+    fn rotate(&mut self, t: f64, m: u8, speed: i32) {
+        self.set_role(m, self.roles.target_speed, speed);
+        let accel = self.move_limits(m).1;
+        let v = self.pps(m, speed);
+        self.axes[m as usize].rotate(t, v, accel);
+    }
+
+    /// MST: motor `m` ramps down to a stop.
+    fn stop_motor(&mut self, t: f64, m: u8) {
+        self.set_role(m, self.roles.target_speed, 0);
+        let accel = self.move_limits(m).1;
+        self.axes[m as usize].rotate(t, 0.0, accel);
+    }
+
+    /// STAP and STGP: the parameter's value into the EEPROM, unless the EEPROM is locked.
+    fn store(&mut self, slot: Slot) -> Result<(), Status> {
+        self.params.check_store(slot)?;
+        if self.locked() {
+            return Err(Status::EepromLocked);
+        }
+        self.eeprom_changed |= self.params.store(slot);
+        Ok(())
+    }
+
+    /// RSAP and RSGP: the parameter's value back from the EEPROM, with what an axis parameter's
+    /// change sets going (a new unit or divisor rescales a running motor).
+    fn restore(&mut self, t: f64, slot: Slot) -> Result<(), Status> {
+        self.params.check_store(slot)?;
+        match slot {
+            Slot::Axis(m, n) => {
+                let before = self.velocity_factor(m);
+                self.params.restore(slot);
+                self.after_axis_write(t, m, n, before);
+            }
+            Slot::Global(..) => self.params.restore(slot),
+        }
+        Ok(())
     }
 
     fn move_to(&mut self, t: f64, i: &Instruction) -> Result<i32, Status> {
@@ -370,6 +365,27 @@ impl Machine {
 }
 
 /// The parameter a STAP/RSAP/STGP/RSGP instruction names.
+/// Whether the command's motor byte names a motor, which the module must have.
+fn names_a_motor(command: Opcode) -> bool {
+    matches!(
+        command,
+        Opcode::Ror
+            | Opcode::Rol
+            | Opcode::Mst
+            | Opcode::Mvp
+            | Opcode::Sap
+            | Opcode::Aap
+            | Opcode::Gap
+            | Opcode::Stap
+            | Opcode::Rsap
+            | Opcode::Rfs
+            | Opcode::Sco
+            | Opcode::Gco
+            | Opcode::Cco
+            | Opcode::Aco
+    )
+}
+
 fn slot(i: &Instruction) -> Slot {
     match i.command {
         Opcode::Stap | Opcode::Rsap => Slot::Axis(i.motor, i.type_),

@@ -43,6 +43,32 @@ fn module_spec(text: &str) -> Result<ModuleSpec, String> {
     Ok(ModuleSpec { address, profile })
 }
 
+/// Which modules run their boot loader: `--boot-loader` alone, every one; `--boot-loader=2,3`,
+/// those addresses.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum BootLoaders {
+    /// Every module on the bus.
+    All,
+    /// The modules at these addresses.
+    At(Vec<u8>),
+}
+
+/// `all` (the value of a bare `--boot-loader`) or a list of module addresses.
+fn boot_loaders(text: &str) -> Result<BootLoaders, String> {
+    if text == "all" {
+        return Ok(BootLoaders::All);
+    }
+    text.split(',')
+        .map(|a| match a.trim().parse::<i64>() {
+            Ok(n @ 1..=255) => Ok(n as u8),
+            _ => Err(format!(
+                "'{a}' is not a module address (1..255) in --boot-loader={text}"
+            )),
+        })
+        .collect::<Result<_, _>>()
+        .map(BootLoaders::At)
+}
+
 /// A switch position for every motor (`POS`) or for one (`MOTOR:POS`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct SwitchSpec {
@@ -79,9 +105,16 @@ pub struct BusFlags {
     pub modules: Vec<ModuleSpec>,
 
     /// The modules run their boot loader: 136 answers with B for V (`6110B131`), every other
-    /// command with invalid command.
-    #[arg(long)]
-    pub boot_loader: bool,
+    /// command with invalid command; `--boot-loader=2,3` for the modules at those addresses only.
+    #[arg(
+        long,
+        value_name = "ADDRESSES",
+        num_args = 0..=1,
+        require_equals = true,
+        default_missing_value = "all",
+        value_parser = boot_loaders
+    )]
+    pub boot_loader: Option<BootLoaders>,
 }
 
 /// The simulated motors' switches and the choices the manual leaves open.
@@ -184,7 +217,7 @@ pub fn given(matches: &ArgMatches) -> Option<&'static str> {
     );
     [
         (!default_bus, "--modules"),
-        (bus.boot_loader, "--boot-loader"),
+        (bus.boot_loader.is_some(), "--boot-loader"),
         (!module.left_switch.is_empty(), "--left-switch"),
         (!module.right_switch.is_empty(), "--right-switch"),
         (!module.home_switch.is_empty(), "--home-switch"),
@@ -226,6 +259,18 @@ pub fn served(
             )
         })
         .collect();
+    let boot_loader = match bus.boot_loader {
+        None => Vec::new(),
+        Some(BootLoaders::All) => seen.clone(),
+        Some(BootLoaders::At(addresses)) => {
+            if let Some(a) = addresses.iter().find(|a| !seen.contains(a)) {
+                return Err(format!(
+                    "--boot-loader names module {a}, which is not on the bus (--modules)"
+                ));
+            }
+            addresses
+        }
+    };
     let (switches, motor_switches) = switch_layout(&module, &module_profiles)?;
     let eeprom = match state {
         Some(path) => {
@@ -248,7 +293,7 @@ pub fn served(
         switches,
         motor_switches,
         eeprom,
-        boot_loader: bus.boot_loader,
+        boot_loader,
         log,
     };
     Ok(Box::new(Bus::new(profile.clone(), options)))

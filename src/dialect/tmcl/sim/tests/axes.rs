@@ -317,7 +317,7 @@ fn a_role_naming_no_parameter_is_refused() {
 fn a_boot_loader_answers_136_with_b_and_nothing_else() {
     for (name, expected) in [("tmcm-142", "142B1.06"), ("tmcm-6110", "6110B131")] {
         let options = BusOptions {
-            boot_loader: true,
+            boot_loader: vec![1],
             ..BusOptions::default()
         };
         let mut sim = Sim {

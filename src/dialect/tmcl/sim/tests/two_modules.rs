@@ -60,3 +60,43 @@ fn a_module_can_be_given_a_new_address() {
     assert!(sim.send(&old.encode()).is_empty());
     let _: ReplyFrame = sim.frame(3, 6, 1, 0, 0);
 }
+
+#[test]
+fn the_console_steers_each_module_and_says_what_it_cannot_do() {
+    use crate::sim::Device;
+    use std::time::Duration;
+    let mut sim = two();
+    let mut say = |command: &str| {
+        sim.bus
+            .control(Duration::ZERO, command)
+            .map(|r| r.unwrap_or_else(|e| format!("error: {e}")))
+    };
+    let cases = [
+        ("input 3 1", "input 3 = 1"),
+        ("@3 input 4 low", "input 4 = 0"),
+        ("input x 1", "error: 'x' is not a port number"),
+        ("input 3 maybe", "error: 'maybe' is not a level; use 0 or 1"),
+        ("analog 0 512", "analog 0 = 512"),
+        ("analog 0 lots", "error: 'lots' is not a number"),
+        ("switch left -500", "switch left at -500"),
+        ("@3 switch home 0", "switch home at 0"),
+        ("switch ref off", "switch home at off"),
+        (
+            "switch up 5",
+            "error: 'up' is not a switch; use left, right or home",
+        ),
+        (
+            "switch right far",
+            "error: 'far' is not a position (or 'off')",
+        ),
+        ("switch x left 5", "error: 'x' is not a motor number"),
+        ("motor", "position 0 target 0 velocity 0.000 pps reached 1"),
+        ("motor 4", "error: no module 1 with a motor 4"),
+        ("@x motor", "error: '@x' is not a module address"),
+    ];
+    for (command, expected) in cases {
+        assert_eq!(say(command).as_deref(), Some(expected), "{command}");
+    }
+    assert_eq!(say("not a bus command"), None);
+    assert_eq!(say("@3 faults"), None);
+}
