@@ -397,7 +397,7 @@ fn absurd_times_are_refused_before_any_clock_sees_them() {
         let out = run(&["-c", line]);
         assert_eq!(code(&out), 2, "{line}: {}", stderr(&out));
         assert!(
-            stderr(&out).contains("'300000000000y' is longer than 7days"),
+            stderr(&out).contains("'300000000000y' is longer than 7 days"),
             "{line}: {}",
             stderr(&out)
         );
@@ -406,7 +406,7 @@ fn absurd_times_are_refused_before_any_clock_sees_them() {
     let out = drive.run(&["-c", ":scan 1 300000000000y"]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     assert!(
-        stderr(&out).contains("is longer than 7days"),
+        stderr(&out).contains("is longer than 7 days"),
         "{}",
         stderr(&out)
     );

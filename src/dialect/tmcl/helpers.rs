@@ -255,9 +255,11 @@ fn report_program(
 
 fn parse_module(arg: &str) -> Result<u8, SessionError> {
     let usage = || {
-        SessionError::Usage(format!(
-            "usage: :target N|CHAR (1..26 or A..Z), not '{arg}'"
-        ))
+        let not = match arg {
+            "" => String::new(),
+            arg => format!(", not '{arg}'"),
+        };
+        SessionError::Usage(format!("usage: :target N|CHAR (1..26 or A..Z){not}"))
     };
     if let Ok(n) = arg.parse::<u8>() {
         return (1..=26).contains(&n).then_some(n).ok_or_else(usage);
