@@ -197,7 +197,7 @@ fn disasm_writes_invalid_instructions_with_a_warning() {
     );
     assert!(
         stderr(&out)
-            .contains("warning: instruction 1 is not valid in a program: 129 (run application)"),
+            .contains("warning: instruction 1 is not valid in a program: 129 — run application —"),
         "{}",
         stderr(&out)
     );

@@ -370,7 +370,7 @@ fn example_bus_scan_finds_the_modules_and_the_gap() {
         !text.contains("module 3:") && !text.contains("module 5:"),
         "{text}"
     );
-    assert!(text.contains("3 module(s) found: [1, 2, 4]"), "{text}");
+    assert!(text.contains("3 modules found: [1, 2, 4]"), "{text}");
 }
 
 #[test]

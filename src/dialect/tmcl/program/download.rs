@@ -42,9 +42,8 @@ pub fn download_and_run(
     drop(progress);
     let report = report.map_err(failed)?;
     let mut text = format!(
-        "downloaded {} instruction{} to {}{}",
-        report.stored,
-        if report.stored == 1 { "" } else { "s" },
+        "downloaded {} to {}{}",
+        crate::count::counted(report.stored, "instruction"),
         ModuleName(module),
         if report.verified {
             ", verified by reading back"
