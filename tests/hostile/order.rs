@@ -1,6 +1,7 @@
 //! What the session notices while it waits for a reply — bytes it discarded before the reply, a
 //! position event, another module's reply — appears on screen before the reply it concerns, in
-//! the REPL and in `-c` runs (notices on stderr, replies on stdout, one terminal).
+//! the REPL, in `-c` runs (notices on stderr, replies on stdout, one terminal) and before the
+//! `print` line of a script that shows the reply.
 
 use std::process::Command;
 
@@ -97,4 +98,24 @@ fn in_c_runs_stderr_notices_come_before_the_stdout_reply_in_every_output_form() 
             .unwrap_or_else(|| panic!("{form:?}: {reply} in {screen:?}"));
         assert_notices_in(&screen[..at], &format!("{form:?}, before the reply"));
     }
+}
+
+#[test]
+fn in_a_script_notices_come_before_the_print_that_shows_the_reply() {
+    let fake = Fake::tmcl(Via::Pty, on("GAP 4, 0", 1, || Act::Map(litter)));
+    let script = tempdir().join("order.rhai");
+    std::fs::write(
+        &script,
+        "print(`speed ${gap(4, 0)}`);\nprint(`then ${gap(1, 0)}`);\n",
+    )
+    .unwrap();
+    let mut args = vec!["run".to_string(), script.display().to_string()];
+    args.extend(fake.args());
+    let mut p = start(&args);
+    let screen = p.exp_eof().unwrap();
+    let at = screen
+        .find("speed 1000000")
+        .unwrap_or_else(|| panic!("the reply in {screen:?}"));
+    assert_notices_in(&screen[..at], "before the print");
+    assert!(screen[at..].contains("then 0"), "{screen:?}");
 }

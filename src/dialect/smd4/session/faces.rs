@@ -115,6 +115,7 @@ impl DialectSession for Smd4Session {
         let (session, result) = script.run(
             *self,
             |s, text| s.annotate(text),
+            |s| s.take_notices(),
             |engine, s, files| {
                 crate::dialect::smd4::script::register(engine, s);
                 crate::script::commission::register(engine, s, files);

@@ -127,6 +127,7 @@ impl DialectSession for TmclSession {
         let (session, result) = script.run(
             *self,
             |s, text| s.annotate(text),
+            |s| s.take_notices(),
             |engine, s, files| {
                 super::super::script::register(engine, s, files);
                 crate::script::commission::register(engine, s, files);
