@@ -108,7 +108,7 @@ fn source_errors_are_listed_with_file_line_column_and_exit_2() {
             "{name}:2:7: error: unknown command 'MVPP'; did you mean MVP?\n\
              {name}:3:6: error: unknown label 'Lop'; did you mean Loop?\n\
              {name}:4:8: error: 'TICK' is not a keyword of WAIT; use TICKS, POS, REFSW, LIMSW, RFS\n\
-             {name}:5:3: error: 129 (run application) is a direct-mode control function and cannot be stored in a program\n\
+             {name}:5:3: error: 129 — run application — is a direct-mode control function and cannot be stored in a program\n\
              tmclsh: {name}: 4 errors, nothing assembled\n"
         )
     );
@@ -197,7 +197,7 @@ fn disasm_writes_invalid_instructions_with_a_warning() {
     );
     assert!(
         stderr(&out)
-            .contains("warning: instruction 1 is not valid in a program: 129 (run application)"),
+            .contains("warning: instruction 1 is not valid in a program: 129 — run application —"),
         "{}",
         stderr(&out)
     );

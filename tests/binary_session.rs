@@ -32,7 +32,7 @@ fn all_binary(log: &Path) {
     let sent = sent(log);
     assert!(!sent.is_empty());
     for line in &sent {
-        assert!(line.contains("(binary)"), "not a binary frame: {line}");
+        assert!(line.ends_with(" in binary"), "not a binary frame: {line}");
         assert!(!line.contains("(139)"), "139 sent: {line}");
     }
 }
@@ -145,7 +145,8 @@ fn the_repl_of_a_binary_only_module_and_ctrl_c_stops_its_motor_with_mst_frames()
     p.exp_string("A[bin]> ").unwrap();
     assert!(velocity_after(&mut sim, "1s") > 0.0, "the motor turns");
     p.send_control('c').unwrap();
-    p.exp_string("stopped motor 0 of module A (MST)").unwrap();
+    p.exp_string("stopped motor 0 of module 1 (A) with MST")
+        .unwrap();
     p.exp_string("A[bin]> ").unwrap();
     assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
     p.send_control('d').unwrap();
@@ -173,7 +174,7 @@ fn a_crash_in_a_binary_session_stops_the_motor() {
     p.send_line("crash now").unwrap();
     let text = p.exp_eof().unwrap();
     assert!(
-        text.contains("motors stopped: motor 0 of module A (MST)"),
+        text.contains("motors stopped: motor 0 of module 1 (A) with MST"),
         "{text}"
     );
     match p.process().wait().expect("tmclsh ends") {
@@ -211,7 +212,7 @@ fn binary_makes_a_tmcm_142_session_a_binary_one_before_or_after_the_subcommand()
     assert!(text.contains("tx \"\\x01\\x81"), "{text}");
     assert!(text.contains("tx \"\\x01\\x80"), "{text}");
     assert!(
-        text.contains("module A in binary direct mode: --binary given"),
+        text.contains("module 1 (A) in binary direct mode: --binary given"),
         "{text}"
     );
 
@@ -242,8 +243,11 @@ fn a_module_refusing_139_is_talked_to_in_binary() {
     let text = std::fs::read_to_string(&log).unwrap();
     assert!(text.contains("binary reply to 139: status 2"), "{text}");
     assert!(
-        text.contains("module A in binary direct mode: it answered in binary"),
+        text.contains("module 1 (A) in binary direct mode: it answered in binary"),
         "{text}"
     );
-    assert!(text.contains("GAP 4, 0 to module 1 (binary)"), "{text}");
+    assert!(
+        text.contains("GAP 4, 0 to module 1 (A) in binary"),
+        "{text}"
+    );
 }

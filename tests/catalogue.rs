@@ -239,7 +239,7 @@ fn the_ascii_allow_list_is_the_modules() {
     );
     let said = refused(&["--profile", "tmcm-1140", "-c", "CALC ADD, 1"]);
     assert!(
-        said.contains("not in the TMCM-1140's ASCII command list") && said.contains(":bin"),
+        said.contains("the TMCM-1140's ASCII command list lacks it") && said.contains(":bin"),
         "{said}"
     );
     ok(&["--profile", "tmcm-1140", "-c", ":bin", "-c", "CALC ADD, 1"]);
@@ -255,7 +255,7 @@ fn the_ascii_allow_list_is_the_modules() {
     let file = file.to_str().unwrap();
     let said = refused(&["--profile", file, "-c", "SIO 0, 2, 1"]);
     assert!(
-        said.contains("not in the TMCM-9's ASCII command list"),
+        said.contains("the TMCM-9's ASCII command list lacks it"),
         "{said}"
     );
     ok(&["--profile", file, "-c", ":bin", "-c", "SIO 0, 2, 1"]);

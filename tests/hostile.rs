@@ -11,6 +11,7 @@
 mod fake;
 mod interrupt;
 mod modes;
+mod order;
 mod smd4;
 mod tmcl;
 

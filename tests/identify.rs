@@ -220,7 +220,7 @@ fn a_module_already_in_ascii_mode_falls_back_to_the_profile_it_has() {
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     let err = stderr(&out);
     assert!(
-        err.contains("module A did not answer command 136 (firmware version) within 300 ms"),
+        err.contains("module 1 (A) did not answer command 136 (firmware version) within 300 ms"),
         "{err}"
     );
     assert!(

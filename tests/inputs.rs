@@ -1,8 +1,10 @@
 //! Inputs and files checked at the door, through the real binary: module profiles refused with
 //! the line of each problem (and a custom profile served by the built-in simulator), piped lines
 //! with any line ending, bad bytes, control characters and endless lines, and transcripts that
-//! say what they are of and end a run that cannot write them.
+//! say what they are of and end a run that cannot write them; and the wording of the messages
+//! bad lines get.
 
+mod messages;
 mod piped;
 mod profile;
 mod transcript;

@@ -69,17 +69,23 @@ fn switching_target_identifies_each_module_once_and_takes_its_profile() {
     for module in 1..=3 {
         let asked = sent
             .iter()
-            .filter(|l| l.contains(&format!("136 to module {module} (binary)")))
+            .filter(|l| {
+                let letter = char::from(b'@' + module);
+                l.contains(&format!("136 to module {module} ({letter}) in binary"))
+            })
             .count();
         assert_eq!(asked, 1, "module {module}: {log}");
     }
     // The TMCM-1260 in frames, the others in ASCII lines, on the same session.
     assert!(
         sent.iter()
-            .any(|l| l.contains("GAP 1, 0 to module 3 (binary)")),
+            .any(|l| l.contains("GAP 1, 0 to module 3 (C) in binary")),
         "{log}"
     );
-    assert!(!sent.iter().any(|l| l.contains("to module C")), "{log}");
+    assert!(
+        !sent.iter().any(|l| l.ends_with("; to module 3 (C)")),
+        "{log}"
+    );
     assert!(
         !sent
             .iter()
@@ -156,7 +162,7 @@ fn a_given_profile_wins_for_every_module_with_a_warning_each() {
     );
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     let err = stderr(&out);
-    for module in ["B is a TMCM-6110", "C is a TMCM-1260"] {
+    for module in ["2 (B) is a TMCM-6110", "3 (C) is a TMCM-1260"] {
         let warning = format!("module {module}");
         assert_eq!(err.matches(&warning).count(), 1, "{err}");
     }
@@ -200,9 +206,12 @@ fn ctrl_c_stops_every_motor_the_session_moved_on_every_module() {
     }
     p.send_control('c').unwrap();
     // The binary-mode module first: frames before lines, so one quiet gap at most.
-    p.exp_string("stopped motor 0 of module C (MST)").unwrap();
-    p.exp_string("stopped motor 0 of module A (MST)").unwrap();
-    p.exp_string("stopped motor 5 of module B (MST)").unwrap();
+    p.exp_string("stopped motor 0 of module 3 (C) with MST")
+        .unwrap();
+    p.exp_string("stopped motor 0 of module 1 (A) with MST")
+        .unwrap();
+    p.exp_string("stopped motor 5 of module 2 (B) with MST")
+        .unwrap();
     p.exp_string("B> ").unwrap();
     assert!(sim.console("advance 10s").starts_with("ok"));
     for (module, motor) in turning {

@@ -152,7 +152,7 @@ fn module() {
         &|_| Setup::tmcl().with(&["--timeout", "30"]),
         &|_, out, _| {
             exit(out, 3)?;
-            says(out, "module B")
+            says(out, "module 2 (B)")
         },
         &no_special,
     );
@@ -280,7 +280,7 @@ fn stay_ascii() {
     let left_ascii = |log: &str| {
         read(log)
             .lines()
-            .rfind(|l| l.contains("-- module A "))
+            .rfind(|l| l.contains("-- module 1 (A) "))
             .is_some_and(|l| l.contains("left ASCII mode"))
     };
     // Without the option each of these faces puts the module back in binary mode at the end.

@@ -32,16 +32,16 @@ fn test2_downloaded_runs_between_the_two_positions_while_queries_are_answered() 
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(
         stdout(&out).trim(),
-        "downloaded 13 instructions to module 1, verified by reading back; the module is in ASCII mode"
+        "downloaded 13 instructions to module 1 (A), verified by reading back; the module is in ASCII mode"
     );
     let got = lines(&sim, &[":run", ":status"]);
     assert_eq!(
         got[0],
-        "program started on module A; the module is in ASCII mode"
+        "program started on module 1 (A); the module is in ASCII mode"
     );
     assert_eq!(
         got[1],
-        "program on module A: running (1); the module is in ASCII mode"
+        "program on module 1 (A): running (1); the module is in ASCII mode"
     );
     // ROL for 5 s, ROR for 5 s, then the loop between +1000000 and -1000000.
     sim.console("advance 2s");
@@ -64,7 +64,7 @@ fn test2_downloaded_runs_between_the_two_positions_while_queries_are_answered() 
     let got = lines(&sim, &[":stop", ":status"]);
     assert_eq!(
         got[1],
-        "program on module A: stopped (0); the module is in ASCII mode"
+        "program on module 1 (A): stopped (0); the module is in ASCII mode"
     );
     sim.console("advance 600s");
     let before = lines(&sim, &["GAP target_position, 0"]);
@@ -94,15 +94,15 @@ fn stepping_advances_one_instruction_from_ascii_mode() {
     );
     assert_eq!(
         got[1],
-        "program on module A: reset (3); the module is in ASCII mode"
+        "program on module 1 (A): reset (3); the module is in ASCII mode"
     );
     assert_eq!(
         got[2],
-        "program step done on module A; the module is in ASCII mode"
+        "program step done on module 1 (A); the module is in ASCII mode"
     );
     assert_eq!(
         got[3],
-        "program on module A: stepping (2); the module is in ASCII mode"
+        "program on module 1 (A): stepping (2); the module is in ASCII mode"
     );
     assert_eq!(got[4], "BA 100 1", "the program counter moved by one");
     assert_eq!(
@@ -131,7 +131,7 @@ fn download_with_run_and_from_a_program_file() {
     );
     assert_eq!(
         lines(&sim, &[":status"]),
-        ["program on module A: running (1); the module is in ASCII mode"]
+        ["program on module 1 (A): running (1); the module is in ASCII mode"]
     );
 }
 
@@ -169,5 +169,5 @@ fn the_built_in_module_runs_programs_too() {
     let text = stdout(&out);
     assert!(text.contains("downloaded 13 instructions"), "{text}");
     assert!(text.contains("running (1)"), "{text}");
-    assert!(text.contains("program stopped on module A"), "{text}");
+    assert!(text.contains("program stopped on module 1 (A)"), "{text}");
 }

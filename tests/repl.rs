@@ -102,7 +102,8 @@ fn ctrl_c_during_a_wait_stops_the_rotating_motor() {
         .unwrap();
     p.exp_string("spinning").unwrap();
     p.send_control('c').unwrap();
-    p.exp_string("stopped motor 0 of module A (MST)").unwrap();
+    p.exp_string("stopped motor 0 of module 1 (A) with MST")
+        .unwrap();
     p.exp_string("interrupted").unwrap();
     p.exp_string("A> ").unwrap();
     // The motor decelerates with its ramp; it ends standing.

@@ -83,7 +83,7 @@ fn a_crash_in_the_repl_stops_the_motor_and_restores_binary_mode() {
     assert!(velocity_after(&mut sim, "1s") > 0.0, "the motor turns");
     p.send_line("crash now").unwrap();
     let text = p.exp_eof().unwrap();
-    assert_crash_report(&text, "motor 0 of module A (MST)");
+    assert_crash_report(&text, "motor 0 of module 1 (A) with MST");
     assert!(
         text.contains("modules returned to the mode they were found in"),
         "{text}"
@@ -104,7 +104,7 @@ fn a_crash_in_the_middle_of_a_download_leaves_download_mode_before_mst() {
         &[(CRASH, "download:2")],
     );
     assert_eq!(code(&out), 101, "{}", stderr(&out));
-    assert_crash_report(&stderr(&out), "motor 0 of module A (MST)");
+    assert_crash_report(&stderr(&out), "motor 0 of module 1 (A) with MST");
     // In download mode the MST would have been stored as a program instruction.
     assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
     executes_binary_commands(&sim);
@@ -158,7 +158,7 @@ fn ctrl_c_in_the_middle_of_a_download_leaves_download_mode_before_mst() {
     let out = child.wait_with_output().expect("tmclsh ends");
     assert_eq!(code(&out), 130, "{}", stderr(&out));
     assert!(
-        stderr(&out).contains("stopped motor 0 of module A (MST)"),
+        stderr(&out).contains("stopped motor 0 of module 1 (A) with MST"),
         "{}",
         stderr(&out)
     );
@@ -185,7 +185,7 @@ fn a_crash_inside_a_script_s_download_stops_the_motor_the_script_started() {
         &[(CRASH, "assemble")],
     );
     assert_eq!(code(&out), 101, "{}", stderr(&out));
-    assert_crash_report(&stderr(&out), "motor 0 of module A (MST)");
+    assert_crash_report(&stderr(&out), "motor 0 of module 1 (A) with MST");
     assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
     executes_binary_commands(&sim);
 }
@@ -205,7 +205,7 @@ fn a_crash_with_an_smd4_drive_sends_motor_stop() {
     assert!(drive.motor().velocity > 0.0, "the motor turns");
     p.send_line("crash now").unwrap();
     let text = p.exp_eof().unwrap();
-    assert_crash_report(&text, "the motor of drive SMD4 (MOTOR:STOP)");
+    assert_crash_report(&text, "the motor of the drive with MOTOR:STOP");
     assert_eq!(exit_code(&p), 101);
     drive.console("advance 5s");
     assert_eq!(drive.motor().velocity, 0.0);
@@ -226,7 +226,8 @@ fn ctrl_c_at_the_idle_prompt_stops_the_motor_this_session_started() {
     p.exp_string("A> ").unwrap();
     assert!(velocity_after(&mut sim, "1s") > 0.0, "the motor turns");
     p.send_control('c').unwrap();
-    p.exp_string("stopped motor 0 of module A (MST)").unwrap();
+    p.exp_string("stopped motor 0 of module 1 (A) with MST")
+        .unwrap();
     p.exp_string("A> ").unwrap();
     assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
     // Stopped: the next Ctrl-C is a plain one again.
@@ -253,7 +254,7 @@ fn ctrl_c_at_the_idle_smd4_prompt_sends_motor_stop() {
     drive.console("advance 5s");
     assert!(drive.motor().velocity > 0.0, "the motor turns");
     p.send_control('c').unwrap();
-    p.exp_string("(MOTOR:STOP)").unwrap();
+    p.exp_string("with MOTOR:STOP").unwrap();
     p.exp_string("smd4> ").unwrap();
     drive.console("advance 5s");
     assert_eq!(drive.motor().velocity, 0.0);
@@ -280,7 +281,7 @@ fn stop_warns_that_the_program_s_motion_goes_on_and_ctrl_c_then_stops_it() {
     );
     p.send_line(":stop").unwrap();
     p.exp_string("program stopped").unwrap();
-    p.exp_string("warning: motor 0 of module A is still turning")
+    p.exp_string("warning: motor 0 of module 1 (A) is still turning")
         .unwrap();
     p.exp_string("A> ").unwrap();
     assert!(
@@ -288,7 +289,8 @@ fn stop_warns_that_the_program_s_motion_goes_on_and_ctrl_c_then_stops_it() {
         "STOP does not stop the motion"
     );
     p.send_control('c').unwrap();
-    p.exp_string("stopped motor 0 of module A (MST)").unwrap();
+    p.exp_string("stopped motor 0 of module 1 (A) with MST")
+        .unwrap();
     p.exp_string("A> ").unwrap();
     assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
     p.send_control('d').unwrap();
@@ -357,7 +359,10 @@ fn hostile_program_files_refused_by_download_helpers_stop_the_turning_motor() {
         assert_eq!(code(&out), 2, ":download {name}: {}", stderr(&out));
         let err = stderr(&out);
         assert!(err.contains(message), ":download {name}: {err}");
-        assert!(err.contains("stopped motor 0 of module A (MST)"), "{err}");
+        assert!(
+            err.contains("stopped motor 0 of module 1 (A) with MST"),
+            "{err}"
+        );
         assert_eq!(velocity_after(&mut sim, "10s"), 0.0, ":download {name}");
 
         let script = dir.join(format!("{name}.rhai"));
@@ -392,7 +397,7 @@ fn absurd_times_are_refused_before_any_clock_sees_them() {
         let out = run(&["-c", line]);
         assert_eq!(code(&out), 2, "{line}: {}", stderr(&out));
         assert!(
-            stderr(&out).contains("'300000000000y' is longer than 7days"),
+            stderr(&out).contains("'300000000000y' is longer than 7 days"),
             "{line}: {}",
             stderr(&out)
         );
@@ -401,7 +406,7 @@ fn absurd_times_are_refused_before_any_clock_sees_them() {
     let out = drive.run(&["-c", ":scan 1 300000000000y"]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     assert!(
-        stderr(&out).contains("is longer than 7days"),
+        stderr(&out).contains("is longer than 7 days"),
         "{}",
         stderr(&out)
     );

@@ -136,7 +136,7 @@ fn each_exit_code() {
             "device.rhai",
             "send(\"GAP 200, 0\");",
             1,
-            "module A refused 'AGAP 200, 0': status 3 (wrong type)",
+            "module 1 (A) refused 'AGAP 200, 0': status 3 (wrong type)",
         ),
         ("runtime.rhai", "let a = [1]; a[5];", 1, "runtime.rhai:1:"),
         ("throw.rhai", "throw \"bad\";", 1, "error: bad"),
@@ -177,7 +177,7 @@ fn a_silent_module_is_exit_3() {
     let path = script("silent.rhai", "gap(1, 0);");
     let out = run(&["run", &path, "--port", &sim.first, "--timeout", "150"]);
     assert_eq!(code(&out), 3, "{}", stderr(&out));
-    assert!(stderr(&out).contains("no reply from module A within 150 ms"));
+    assert!(stderr(&out).contains("no reply from module 1 (A) within 150 ms"));
 }
 
 #[test]
@@ -200,7 +200,7 @@ fn a_failing_script_stops_the_motor_it_started() {
     let out = run(&["run", &path, "--port", &sim.first]);
     assert_eq!(code(&out), 1);
     assert!(
-        stderr(&out).contains("stopped motor 0 of module A (MST)"),
+        stderr(&out).contains("stopped motor 0 of module 1 (A) with MST"),
         "{}",
         stderr(&out)
     );
@@ -237,7 +237,10 @@ fn ctrl_c_interrupts_a_sleeping_script_and_stops_the_rotation() {
     assert_eq!(out.status.code(), Some(130));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("spin.rhai:3:1: interrupted"), "{err}");
-    assert!(err.contains("stopped motor 0 of module A (MST)"), "{err}");
+    assert!(
+        err.contains("stopped motor 0 of module 1 (A) with MST"),
+        "{err}"
+    );
     sim.console("advance 10s");
     assert!(
         sim.console("motor").contains("velocity 0"),
@@ -367,7 +370,7 @@ fn example_bus_scan_finds_the_modules_and_the_gap() {
         !text.contains("module 3:") && !text.contains("module 5:"),
         "{text}"
     );
-    assert!(text.contains("3 module(s) found: [1, 2, 4]"), "{text}");
+    assert!(text.contains("3 modules found: [1, 2, 4]"), "{text}");
 }
 
 #[test]

@@ -241,7 +241,7 @@ fn a_silent_module_fails_with_exit_3_within_the_timeout() {
     assert_eq!(code(&out), 3);
     let err = stderr(&out);
     assert!(
-        err.contains("no reply from module A within 200 ms"),
+        err.contains("no reply from module 1 (A) within 200 ms"),
         "{err}"
     );
     assert!(err.contains("does not answer in ASCII mode"), "{err}");
@@ -313,8 +313,9 @@ fn piped_stdin_skips_blanks_and_comments_and_stops_at_the_first_failure() {
         "the failing reply is printed, nothing after"
     );
     assert!(
-        stderr(&device)
-            .contains("line 2 (GAP 200, 0): module A refused 'AGAP 200, 0': status 3 (wrong type)"),
+        stderr(&device).contains(
+            "line 2 (GAP 200, 0): module 1 (A) refused 'AGAP 200, 0': status 3 (wrong type)"
+        ),
         "{}",
         stderr(&device)
     );
@@ -349,7 +350,7 @@ fn an_aborted_run_stops_the_motor_it_started() {
     let out = on(&sim, &["-c", "ROR 0, 200000", "-c", "GAP 300, 0"]);
     assert_eq!(code(&out), 2);
     assert!(
-        stderr(&out).contains("stopped motor 0 of module A (MST)"),
+        stderr(&out).contains("stopped motor 0 of module 1 (A) with MST"),
         "{}",
         stderr(&out)
     );
@@ -379,7 +380,7 @@ fn the_transcript_has_every_byte_with_its_meaning() {
         "{text}"
     );
     assert!(
-        text.contains(r#" tx "AGAP 4, 0\r" ; to module A"#),
+        text.contains(r#" tx "AGAP 4, 0\r" ; to module 1 (A)"#),
         "{text}"
     );
     assert!(

@@ -172,7 +172,7 @@ pub fn restore_snapshot(
     let plan = restore::plan(snapshot, &params, device);
     let blocking = check::blocking(&plan.problems, options.force);
     if !blocking.is_empty() {
-        let target = format!("{} ({})", device.who(), device.module_name());
+        let target = format!("{}, type {}", device.who(), device.module_name());
         let refusal = check::refusal(label, &target, &blocking, !options.redact);
         return Err(Failure::refused(refusal).into());
     }
@@ -243,7 +243,7 @@ pub fn store_question(device: &dyn ParamDevice, plan: &Plan, outcome: &Outcome) 
             names.join(", ")
         ),
         _ => format!(
-            "store {} parameter{} to the {memory} of {who} ({})?",
+            "store {} parameter{} ({}) to the {memory} of {who}?",
             params.len(),
             if params.len() == 1 { "" } else { "s" },
             names.join(", ")

@@ -70,7 +70,7 @@ impl FakeDevice {
 
     fn refused(name: &str) -> SessionError {
         SessionError::Device {
-            module: "A".into(),
+            module: "module 1 (A)".into(),
             sent: name.to_string(),
             reason: format!("status {}", Status::WrongType),
         }
@@ -87,7 +87,7 @@ impl ParamDevice for FakeDevice {
     }
 
     fn who(&self) -> String {
-        "module 1".into()
+        "module 1 (A)".into()
     }
 
     fn memory(&self) -> &'static str {
@@ -123,7 +123,7 @@ impl ParamDevice for FakeDevice {
         }
         if self.time_out_at.as_ref() == Some(&param.name) {
             return Err(SessionError::Timeout {
-                module: "A".into(),
+                module: "module 1 (A)".into(),
                 timeout: std::time::Duration::from_millis(1000),
                 hint: String::new(),
             });

@@ -264,7 +264,7 @@ mod tests {
             Some(1)
         }
         fn who(&self) -> String {
-            "module 1".into()
+            "module 1 (A)".into()
         }
         fn memory(&self) -> &'static str {
             "EEPROM"

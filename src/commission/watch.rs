@@ -156,11 +156,12 @@ mod tests {
         assert_eq!(frames, 3);
         assert_eq!(screen.frames.len(), 3);
         let frame = &screen.frames[2];
-        assert!(frame[0].starts_with("module 1 every 10 ms"));
+        assert!(frame[0].starts_with("module 1 (A) every 10 ms"));
         let row: Vec<&str> = frame[2].split_whitespace().collect();
         assert_eq!(row, ["actual_position", "1500", "usteps"]);
         assert!(
-            frame[3].starts_with("actual_speed") && frame[3].contains("error  module A refused")
+            frame[3].starts_with("actual_speed")
+                && frame[3].contains("error  module 1 (A) refused")
         );
     }
 

@@ -58,7 +58,7 @@ pub struct Decoded {
 /// A module's answer that it could not do what was asked: an error status or error code.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Refusal {
-    /// The module (address character, or `@N` for SMD4).
+    /// The module as messages name it (`module 1 (A)`, `drive @3`).
     pub module: String,
     /// The line sent.
     pub sent: String,

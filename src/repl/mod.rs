@@ -97,34 +97,46 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
     Exit::Success
 }
 
-/// Runs one typed line and shows its outcome.
+/// Runs one typed line and shows its outcome. What the session noticed while it waited for a
+/// reply (bytes it discarded before the reply, a position event, a transcript that failed) is
+/// shown before the reply or error it concerns.
 fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Flow {
     if only_remark(text) {
         return Flow::Continue;
     }
     crate::crash::point("repl", text);
     interrupt::take();
-    let result = if text.starts_with(':') {
-        shell.helper(text, out)
-    } else {
-        shell.session().execute(text).map(|reply| {
-            let ok = reply.ok();
-            let shown = if shell.raw {
-                reply.shown
-            } else {
-                reply.decoded
-            };
-            // Escaped before it is coloured: the colour is ours, any other sequence is the device's.
-            let shown = escape_control(&shown).into_owned();
-            let shown = match (color, ok) {
-                (false, _) => shown,
-                (true, true) => shown.green().to_string(),
-                (true, false) => shown.red().to_string(),
-            };
-            let _ = writeln!(out, "{}{shown}", stamp(shell));
-            Flow::Continue
-        })
-    };
+    if text.starts_with(':') {
+        let result = shell.helper(text, out);
+        // A helper writes as it goes, and some redraw what they wrote (`:watch`, `:plot`, a
+        // progress bar): a line put between would break the drawing, so its notices follow.
+        show_notices(shell, color, out);
+        return outcome(shell, result, color, out);
+    }
+    let result = shell.session().execute(text);
+    show_notices(shell, color, out);
+    let result = result.map(|reply| {
+        let ok = reply.ok();
+        let shown = if shell.raw {
+            reply.shown
+        } else {
+            reply.decoded
+        };
+        // Escaped before it is coloured: the colour is ours, any other sequence is the device's.
+        let shown = escape_control(&shown).into_owned();
+        let shown = match (color, ok) {
+            (false, _) => shown,
+            (true, true) => shown.green().to_string(),
+            (true, false) => shown.red().to_string(),
+        };
+        let _ = writeln!(out, "{}{shown}", stamp(shell));
+        Flow::Continue
+    });
+    outcome(shell, result, color, out)
+}
+
+/// Writes the session's notices, one line each.
+fn show_notices(shell: &mut Shell, color: bool, out: &mut dyn Write) {
     for notice in shell.session().take_notices() {
         let notice = escape_control(&notice).into_owned();
         let line = if color {
@@ -134,6 +146,15 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
         };
         let _ = writeln!(out, "{line}");
     }
+}
+
+/// Ends a line: an error is shown, Ctrl-C stops the motors, a lost link is waited for.
+fn outcome(
+    shell: &mut Shell,
+    result: Result<Flow, SessionError>,
+    color: bool,
+    out: &mut dyn Write,
+) -> Flow {
     match result {
         Ok(flow) => flow,
         Err(SessionError::Interrupted) => {

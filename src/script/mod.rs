@@ -56,6 +56,7 @@ pub struct Script {
     limits: Limits,
     sandbox: Rc<Sandbox>,
     print: PrintSink,
+    notice: PrintSink,
     elsewhere: Elsewhere,
 }
 
@@ -81,6 +82,7 @@ impl Script {
                 limits,
                 sandbox: Rc::new(sandbox),
                 print: Rc::new(print_to_stdout),
+                notice: Rc::new(notice_to_stderr),
                 elsewhere: Rc::new(|_| None),
             }),
             Err(e) => Err(Failure::refused(format!("cannot read script {name}: {e}"))),
@@ -100,6 +102,7 @@ impl Script {
             limits,
             sandbox: Rc::new(sandbox),
             print: Rc::new(print_to_stdout),
+            notice: Rc::new(notice_to_stderr),
             elsewhere: Rc::new(|_| None),
         }
     }
@@ -107,6 +110,12 @@ impl Script {
     /// The script with its `print` lines sent to `sink` instead of stdout.
     pub fn print_to(mut self, sink: PrintSink) -> Script {
         self.print = sink;
+        self
+    }
+
+    /// The script with the session's notices sent to `sink` instead of stderr.
+    pub fn notices_to(mut self, sink: PrintSink) -> Script {
+        self.notice = sink;
         self
     }
 
@@ -118,19 +127,35 @@ impl Script {
 
     /// Runs over a session of type `S`, with the functions `register` adds (a dialect's device
     /// functions) besides those every script has; `log` lines go to the transcript through
-    /// `annotate` (to stderr when none is written). The engine holds the session for the run
-    /// and gives it back when dropped.
+    /// `annotate` (to stderr when none is written). What the session noticed (`notices`: bytes
+    /// discarded before a reply, an event) goes out before the next `print` line, which may show
+    /// that reply; what is left when the script ends is the caller's. The engine holds the
+    /// session for the run and gives it back when dropped.
     pub fn run<S: 'static>(
         &self,
         session: S,
         annotate: fn(&mut S, &str) -> bool,
+        notices: fn(&mut S) -> Vec<String>,
         register: Registrar<S>,
     ) -> (S, Result<(), Failure>) {
         let shared = Rc::new(RefCell::new(session));
         let watchdog = limits::Watchdog::start(self.limits.max_time);
         let result = {
             let budget = self.limits.max_memory.and_then(Budget::from_now);
-            let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &self.print);
+            // Made here, so the handle on the session it holds is gone with the engine.
+            let print: PrintSink = {
+                let (session, print, notice) =
+                    (shared.clone(), self.print.clone(), self.notice.clone());
+                Rc::new(move |text: &str| {
+                    if let Ok(mut session) = session.try_borrow_mut() {
+                        for text in notices(&mut session) {
+                            notice(&escape_control(&text));
+                        }
+                    }
+                    print(text);
+                })
+            };
+            let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &print);
             let log_session = shared.clone();
             common::register(
                 &mut engine,
@@ -232,6 +257,11 @@ fn base_engine(
 /// neither.
 pub fn print_to_stdout(escaped: &str) {
     println!("{escaped}");
+}
+
+/// Where the session's notices go during a run by default: stderr, as the other diagnostics.
+pub fn notice_to_stderr(escaped: &str) {
+    eprintln!("tmclsh: {escaped}");
 }
 
 fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Failure> {

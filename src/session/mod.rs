@@ -61,9 +61,9 @@ pub enum SessionError {
     #[error("{0}")]
     Rejected(String),
     /// The module answered with an error status or error code.
-    #[error("module {module} refused '{sent}': {reason}")]
+    #[error("{module} refused '{sent}': {reason}")]
     Device {
-        /// The module (address character, or `@N` for SMD4).
+        /// The module as messages name it (`module 1 (A)`, `drive @3`).
         module: String,
         /// The line sent.
         sent: String,
@@ -71,9 +71,9 @@ pub enum SessionError {
         reason: String,
     },
     /// Nothing (usable) came back in time.
-    #[error("no reply from module {module} within {} ms{hint}", timeout.as_millis())]
+    #[error("no reply from {module} within {} ms{hint}", timeout.as_millis())]
     Timeout {
-        /// The module (address character, or `@N` for SMD4).
+        /// The module as messages name it (`module 1 (A)`, `drive @3`).
         module: String,
         /// How long we waited.
         timeout: Duration,

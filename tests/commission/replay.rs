@@ -118,7 +118,7 @@ fn the_script_goes_to_stdout_and_a_broken_log_is_refused_with_its_line() {
         stderr(&out)
     );
 
-    std::fs::write(&log, "2026-01-01T00:00:00Z tx \"AGAP 4, 0\\r\" ; to module A\n2026-01-01T00:00:00Z rx \"BA 100 7\\r\" ; A: 100, value 7\n").unwrap();
+    std::fs::write(&log, "2026-01-01T00:00:00Z tx \"AGAP 4, 0\\r\" ; to module 1 (A)\n2026-01-01T00:00:00Z rx \"BA 100 7\\r\" ; A: 100, value 7\n").unwrap();
     let out = expect(&["transcript", "to-rhai", arg(&log)], 0);
     assert!(
         stdout(&out).contains("assert_eq(send(\"AGAP 4, 0\"), 7);  // max_positioning_speed"),

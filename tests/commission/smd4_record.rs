@@ -220,7 +220,7 @@ fn watch_shows_values_labels_units_and_real_values_and_ctrl_c_stops_the_motor() 
     term.send(":watch MOTOR:VMAX,SYS:MODE,MOTOR:IR 50ms\r");
     let frame = term.until("MOTOR:IR");
     let frame = frame + term.until("A rms").as_str();
-    assert!(frame.contains("the SMD4 every 50 ms"), "{frame:?}");
+    assert!(frame.contains("the drive every 50 ms"), "{frame:?}");
     assert!(frame.contains("Hz (real 1000)"), "{frame:?}");
     assert!(frame.contains("1 (Remote)"), "{frame:?}");
     term.until("any key stops");

@@ -300,7 +300,7 @@ fn store_survives_sys_load_and_a_power_cycle_and_a_dry_run_changes_nothing() {
     let report = stdout(&worn);
     assert!(report.contains("restored 1 parameter"), "{report}");
     assert!(
-        report.contains("FAILED STORE: module SMD4 refused 'STORE': error -5"),
+        report.contains("FAILED STORE: the drive refused 'STORE': error -5"),
         "{report}"
     );
 }
@@ -348,10 +348,10 @@ fn a_file_the_table_refuses_is_refused_whole_and_settings_the_drive_refuses_are_
     assert_exit(&out, 1);
     let report = stdout(&out);
     assert!(
-        report.contains("FAILED MOTOR:RES: module SMD4 refused 'MOTOR:RES,100': error -2"),
+        report.contains("FAILED MOTOR:RES: the drive refused 'MOTOR:RES,100': error -2"),
         "{report}"
     );
-    assert!(report.contains("FAILED BAKE:T: module SMD4 refused 'BAKE:T,250': error -2"));
+    assert!(report.contains("FAILED BAKE:T: the drive refused 'BAKE:T,250': error -2"));
     assert!(report.contains("not stored to non-volatile memory: some parameters failed"));
     let now = send(&drive, &[], &["MOTOR:RES", "LIMIT:EN"]);
     assert!(
@@ -472,7 +472,7 @@ fn a_tmcl_snapshot_or_one_of_another_drive_is_refused_by_an_smd4() {
         if force.is_empty() {
             assert!(
                 err.contains(
-                    "it holds TMCL axis and global parameters, and the SMD4 is an SMD4 drive"
+                    "it holds TMCL axis and global parameters, and the drive is an SMD4 drive"
                 ),
                 "{err}"
             );

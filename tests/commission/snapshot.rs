@@ -363,7 +363,7 @@ fn a_bad_file_changes_nothing_on_the_module_and_lists_every_problem() {
         let err = stderr(&out);
         assert!(
             err.contains(
-                "cannot be restored onto module 1 (TMCM-142); nothing was sent (3 problems):"
+                "cannot be restored onto module 1 (A), type TMCM-142; nothing was sent (3 problems):"
             ),
             "{err}"
         );
@@ -422,7 +422,7 @@ fn each_refusal_class_is_listed_and_force_restores_by_name() {
     let err = stderr(&out);
     for problem in [
         "(4 problems):",
-        "\n  it is a snapshot of a TMCM-1140, and module 1 is a TMCM-142",
+        "\n  it is a snapshot of a TMCM-1140, and module 1 (A) is a TMCM-142",
         "\n  pid_i: number = 99 in the file, but it is axis 31",
         "\n  [axis.0] max_curent: not a parameter of the TMCM-142; did you mean max_current?",
         "\n  [axis.3]: the TMCM-142 has no motor 3 (it has motors 0..0)",
@@ -472,7 +472,7 @@ fn a_snapshot_of_the_other_dialect_or_with_nothing_restorable_is_refused_even_fo
     for (file, problem) in [
         (
             &drive,
-            "it holds SMD4 drive settings, and module 1 is a TMCL module",
+            "it holds SMD4 drive settings, and module 1 (A) is a TMCL module",
         ),
         (&live, "nothing in it is a setting of the TMCM-142"),
     ] {
@@ -561,7 +561,7 @@ fn a_write_the_module_refuses_midway_is_reported_with_what_was_written() {
         "{report}"
     );
     assert!(
-        report.contains("FAILED max_current: module A refused 'ASAP 6, 0, 12'"),
+        report.contains("FAILED max_current: module 1 (A) refused 'ASAP 6, 0, 12'"),
         "{report}"
     );
     assert!(
@@ -634,7 +634,7 @@ fn a_link_that_fails_midway_leaves_a_report_of_what_was_written_and_what_was_not
         "{report}"
     );
     assert!(
-        report.contains("the restore stopped: no reply from module A within 200 ms"),
+        report.contains("the restore stopped: no reply from module 1 (A) within 200 ms"),
         "{report}"
     );
     assert!(
@@ -649,7 +649,7 @@ fn a_link_that_fails_midway_leaves_a_report_of_what_was_written_and_what_was_not
         not_reached.contains(" pid_d,") && !not_reached.contains("pid_p"),
         "{not_reached}"
     );
-    assert!(stderr(&out).contains("no reply from module A within 200 ms"));
+    assert!(stderr(&out).contains("no reply from module 1 (A) within 200 ms"));
 }
 
 #[test]
@@ -684,7 +684,7 @@ fn the_store_confirmation_on_a_terminal_names_what_the_restore_wrote() {
         .env("NO_COLOR", "1");
     let mut p = rexpect::session::spawn_command(command, Some(crate::util::EXPECT_MS)).unwrap();
     p.exp_string(
-        "store 2 parameters to the EEPROM of module 1 (max_current, user_variable_5)? [y/N]",
+        "store 2 parameters (max_current, user_variable_5) to the EEPROM of module 1 (A)? [y/N]",
     )
     .unwrap();
     p.send_line("n").unwrap();

@@ -33,7 +33,7 @@ fn ctrl_c_while_a_reply_is_awaited_stops_the_motor_at_once_and_leaves_nothing_be
     await_request(&fake, "GAP 1, 0");
     p.send_control('c').unwrap();
     let (_, stopped) = p
-        .exp_regex(r"interrupted: stopped motor 0 of module A \(MST\)\r\n")
+        .exp_regex(r"interrupted: stopped motor 0 of module 1 \(A\) with MST\r\n")
         .unwrap();
     assert!(!stopped.is_empty());
     let before_prompt = p.exp_string("A> ").unwrap();

@@ -28,7 +28,7 @@ fn mode_changes_wait_as_long_as_a_slow_line_needs() {
         run.lines(),
         [
             "BA 100 1000000",
-            "module A is in binary direct mode: lines go out as binary frames (:ascii returns)",
+            "module 1 (A) is in binary direct mode: lines go out as binary frames; :ascii returns",
             "BA 100 1000000"
         ],
         "{}",

@@ -207,7 +207,7 @@ fn a_reply_from_another_drive_is_reported_not_taken() {
         assert_eq!(run.lines(), ["@1,0x0888,0x0000,5.0000E+03,5.0000E+03"]);
         assert!(
             run.stderr
-                .contains("ignored a reply from drive @3 while waiting for @1"),
+                .contains("ignored a reply from drive @3 while waiting for drive @1"),
             "{}",
             run.stderr
         );

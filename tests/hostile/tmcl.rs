@@ -65,7 +65,7 @@ fn a_late_reply_is_never_taken_for_the_next_request_in_any_echo_mode() {
                 set_echo(&fake, echo);
                 fake
             };
-            fails_then_recovers(device, "no reply from module A within 1000 ms", echo);
+            fails_then_recovers(device, "no reply from module 1 (A) within 1000 ms", echo);
         }
     }
 }
@@ -217,7 +217,7 @@ fn floods_end_at_the_deadline_in_bounded_memory_and_the_next_request_gets_its_an
             };
             fails_then_recovers(
                 device,
-                "no reply from module A",
+                "no reply from module 1 (A)",
                 &format!("{via:?}: {what}"),
             );
         }
@@ -237,7 +237,7 @@ fn a_reply_from_another_module_is_reported_not_taken() {
         assert_eq!(run.lines(), ["BA 100 1000000", "BA 100 0"]);
         assert!(
             run.stderr
-                .contains("ignored a reply from module C while waiting for module A"),
+                .contains("ignored a reply from module 3 (C) while waiting for module 1 (A)"),
             "{}",
             run.stderr
         );
@@ -277,7 +277,7 @@ fn a_garbled_echo_reaches_the_transcript_as_line_noise() {
         run.expect(3, "garbled echo");
         assert!(
             run.stderr
-                .contains("line noise: module A echoed 'AGAP 4, 8' for 'AGAP 4, 0'"),
+                .contains("line noise: module 1 (A) echoed 'AGAP 4, 8' for 'AGAP 4, 0'"),
             "{}",
             run.stderr
         );
@@ -287,7 +287,7 @@ fn a_garbled_echo_reaches_the_transcript_as_line_noise() {
             "{text}"
         );
         assert!(
-            text.contains(" -- line noise: module A echoed 'AGAP 4, 8'"),
+            text.contains(" -- line noise: module 1 (A) echoed 'AGAP 4, 8'"),
             "{text}"
         );
     }

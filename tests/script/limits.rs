@@ -74,7 +74,10 @@ fn max_time_stops_a_script_whose_motor_turns_and_the_motor() {
         err.contains("ran longer than its --max-time of 1s"),
         "{err}"
     );
-    assert!(err.contains("stopped motor 0 of module A (MST)"), "{err}");
+    assert!(
+        err.contains("stopped motor 0 of module 1 (A) with MST"),
+        "{err}"
+    );
     sim.console("advance 10s");
     assert!(
         sim.console("motor").contains("velocity 0"),

@@ -49,7 +49,7 @@ fn advance_reads_a_bare_number_as_milliseconds_like_every_time() {
     assert_eq!(sim.console("advance 1.5s"), "ok 1.750000 s");
     assert!(
         sim.console("advance 8days")
-            .starts_with("error: '8days' is longer than 7days")
+            .starts_with("error: '8days' is longer than 7 days")
     );
     assert_eq!(sim.console("time"), "ok 1.750000 s");
 }

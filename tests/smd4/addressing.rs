@@ -38,7 +38,7 @@ fn address_n_reaches_the_drive_whose_slave_address_is_n() {
         assert_exit(&out, 3);
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(
-            err.contains("no reply from module @1 within 200 ms"),
+            err.contains("no reply from drive @1 within 200 ms"),
             "{err}"
         );
         assert!(err.contains("COMS:SERIAL:SLAVEADDR is 1"), "{err}");
@@ -106,7 +106,7 @@ fn addressing_mode_ignores_unprefixed_packets_until_the_drive_restarts() {
         assert!(lines(&out).is_empty());
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(
-            err.contains("no reply from module SMD4 within 200 ms"),
+            err.contains("no reply from the drive within 200 ms"),
             "{err}"
         );
         assert!(

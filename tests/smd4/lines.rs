@@ -166,7 +166,7 @@ fn a_silent_drive_exits_3_after_the_timeout() {
         assert!(lines(&out).is_empty());
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(
-            err.contains("no reply from module SMD4 within 200 ms"),
+            err.contains("no reply from the drive within 200 ms"),
             "{err}"
         );
         assert_eq!(

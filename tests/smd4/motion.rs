@@ -63,7 +63,7 @@ fn a_failing_line_while_the_motor_runs_stops_it() {
         assert_eq!(code, 1, "{err}");
         assert!(err.contains("line 2 (MOTOR:RES,16)"), "{err}");
         assert!(
-            err.contains("stopped the motor of drive SMD4 (MOTOR:STOP)"),
+            err.contains("stopped the motor of the drive with MOTOR:STOP"),
             "{err}"
         );
         comes_to_rest(&mut drive);
@@ -77,7 +77,7 @@ fn a_refused_line_while_the_motor_runs_stops_it_too() {
     assert_exit(&out, 2);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("stopped the motor of drive @1 (MOTOR:STOP)"),
+        err.contains("stopped the motor of drive @1 with MOTOR:STOP"),
         "{err}"
     );
     comes_to_rest(&mut drive);
@@ -93,7 +93,7 @@ fn ctrl_c_while_the_motor_runs_stops_it() {
         let (code, err) = client.exit();
         assert_eq!(code, 130, "{err}");
         assert!(err.contains("interrupted"), "{err}");
-        assert!(err.contains("(MOTOR:STOP)"), "{err}");
+        assert!(err.contains("with MOTOR:STOP"), "{err}");
         comes_to_rest(&mut drive);
     }
 }
@@ -113,7 +113,7 @@ fn a_failing_script_while_the_motor_runs_stops_it() {
             script.display()
         );
         assert!(err.contains(&at), "{err}");
-        assert!(err.contains("(MOTOR:STOP)"), "{err}");
+        assert!(err.contains("with MOTOR:STOP"), "{err}");
         comes_to_rest(&mut drive);
     }
 }
@@ -140,6 +140,6 @@ fn ctrl_c_in_a_script_while_the_motor_runs_stops_it() {
         err.contains(&format!("{}:3:1: interrupted", script.display())),
         "{err}"
     );
-    assert!(err.contains("(MOTOR:STOP)"), "{err}");
+    assert!(err.contains("with MOTOR:STOP"), "{err}");
     comes_to_rest(&mut drive);
 }

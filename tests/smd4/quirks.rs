@@ -90,7 +90,7 @@ fn check(quirk: Quirk) {
         )),
         "decoded in every spelling: {err}"
     );
-    assert!(err.contains("(MOTOR:STOP)"), "{err}");
+    assert!(err.contains("with MOTOR:STOP"), "{err}");
     drive.console_until("motor", |m| m.contains("standby 1"));
 
     let dir = crate::util::tempdir();

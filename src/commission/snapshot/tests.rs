@@ -31,7 +31,7 @@ fn a_snapshot_round_trips_through_its_file_text() {
         "{text}"
     );
     assert!(text.contains("firmware = \"142V9.99\""));
-    assert!(text.contains("pid_error = { number = 38, error = \"module A refused"));
+    assert!(text.contains("pid_error = { number = 38, error = \"module 1 (A) refused"));
     let back = Snapshot::from_toml(&text).unwrap();
     assert_eq!(back, snapshot);
 }
@@ -337,7 +337,7 @@ fn store_happens_only_when_confirmed_and_only_for_the_written_eeprom_parameters(
     assert!(!device.log.iter().any(|l| l.starts_with("store")));
     assert_eq!(
         asked,
-        ["store 2 parameters to the EEPROM of module 1 (max_current, standby_current)?"],
+        ["store 2 parameters (max_current, standby_current) to the EEPROM of module 1 (A)?"],
         "the question names what would be stored: the written EEPROM parameters"
     );
 
@@ -483,7 +483,7 @@ fn another_module_wrong_numbers_unknown_motors_and_names_are_refused_unless_forc
     let (result, _) = restore_file(&mut device, &snapshot, RestoreOptions::default());
     let message = result.unwrap_err().to_string();
     assert!(message.contains("(4 problems)"), "{message}");
-    assert!(message.contains("a snapshot of a TMCM-1140, and module 1 is a TMCM-142"));
+    assert!(message.contains("a snapshot of a TMCM-1140, and module 1 (A) is a TMCM-142"));
     assert!(
         message.contains("pid_i: number = 99 in the file, but it is axis 3"),
         "{message}"
@@ -547,7 +547,7 @@ fn a_file_of_the_other_dialect_or_with_nothing_restorable_is_refused_even_forced
         result
             .unwrap_err()
             .to_string()
-            .contains("it holds SMD4 drive settings, and module 1 is a TMCL module")
+            .contains("it holds SMD4 drive settings, and module 1 (A) is a TMCL module")
     );
     assert!(device.log.is_empty());
 }
@@ -608,7 +608,7 @@ fn a_link_failure_midway_reports_what_was_written_in_flight_and_not_sent() {
         "{report}"
     );
     assert!(
-        report.contains("the restore stopped: no reply from module A"),
+        report.contains("the restore stopped: no reply from module 1 (A)"),
         "{report}"
     );
     assert!(

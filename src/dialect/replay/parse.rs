@@ -126,7 +126,7 @@ mod tests {
     #[test]
     fn sent_received_and_notes_are_read_with_their_bytes_and_meaning() {
         let text = "2026-01-01T00:00:00.000Z -- session opened on simulator\n\
-                    2026-01-01T00:00:00.001Z tx \"AGAP 1, 0\\r\" ; to module A\n\
+                    2026-01-01T00:00:00.001Z tx \"AGAP 1, 0\\r\" ; to module 1 (A)\n\
                     \n\
                     2026-01-01T00:00:00.002Z rx \"AGAP 1, 0\\rBA 100 -5\\r\" ; A: 100 (ok), value -5\n\
                     2026-01-01T00:00:00.003Z tx \"\\x01\\x8B\\\"\\x00\"\n";

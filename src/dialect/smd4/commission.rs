@@ -16,7 +16,7 @@ use crate::dialect::smd4::protocol::{
     ItemType, Kind, ReplyShape, Request, Smd4Command, Smd4Reply, Smd4Spec,
 };
 use crate::dialect::smd4::protocol::{Value, items::DataItem};
-use crate::dialect::smd4::session::{Smd4Exchange, Smd4Session};
+use crate::dialect::smd4::session::{DriveName, Smd4Exchange, Smd4Session};
 use crate::session::SessionError;
 
 use crate::commission::actions::failed;
@@ -39,10 +39,7 @@ impl ParamDevice for Smd4Session {
     }
 
     fn who(&self) -> String {
-        match Smd4Session::address(self) {
-            Some(address) => format!("drive @{address}"),
-            None => "the SMD4".into(),
-        }
+        DriveName(Smd4Session::address(self)).to_string()
     }
 
     fn memory(&self) -> &'static str {

@@ -4,7 +4,7 @@ use std::io::Write;
 
 use crate::dialect::helper::{ArgKind, Helper, Section, helper};
 use crate::dialect::smd4::protocol::{MAX_ADDRESS, hints};
-use crate::dialect::smd4::session::{Smd4Session, drive_name};
+use crate::dialect::smd4::session::{DriveName, Smd4Session};
 use crate::session::SessionError;
 
 /// The helpers only SMD4 drives have.
@@ -72,7 +72,7 @@ fn describe(address: Option<u32>) -> String {
     match address {
         None => "the drive without an address prefix".into(),
         Some(0) => "every drive (@0 broadcast: no replies)".into(),
-        Some(_) => format!("drive {}", drive_name(address)),
+        Some(_) => DriveName(address).to_string(),
     }
 }
 

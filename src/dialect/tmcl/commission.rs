@@ -5,7 +5,7 @@ use crate::dialect::session::DialectSession;
 use crate::dialect::tmcl::profile::{Param, Profile};
 use crate::dialect::tmcl::protocol::line::Op;
 use crate::dialect::tmcl::protocol::validate::{Mode, validate_instruction};
-use crate::dialect::tmcl::protocol::{Instruction, Opcode};
+use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
 use crate::dialect::tmcl::session::{TmclReply, TmclSession};
 use crate::session::SessionError;
 
@@ -36,7 +36,7 @@ impl ParamDevice for TmclSession {
     }
 
     fn who(&self) -> String {
-        format!("module {}", self.target())
+        ModuleName(self.target()).to_string()
     }
 
     fn memory(&self) -> &'static str {

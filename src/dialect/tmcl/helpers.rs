@@ -7,8 +7,8 @@ use crate::dialect::helper::{ArgKind, Helper, Section, helper};
 use crate::dialect::session::DialectSession;
 use crate::dialect::tmcl::params::write_table;
 use crate::dialect::tmcl::program::{self, download};
-use crate::dialect::tmcl::protocol::line::{address_char, address_of};
-use crate::dialect::tmcl::protocol::{Instruction, Opcode};
+use crate::dialect::tmcl::protocol::line::address_of;
+use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
 use crate::dialect::tmcl::session::{Echo, TmclExchange, TmclSession};
 use crate::session::SessionError;
 
@@ -132,9 +132,8 @@ fn params(session: &TmclSession, arg: &str, out: &mut dyn Write) -> Result<(), S
 fn target(session: &mut TmclSession, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
     let module = parse_module(arg)?;
     session.set_target(module)?;
-    let c = address_char(module).unwrap_or('?');
     let which = session.identity_line();
-    writeln!(out, "target: module {module} ({c}), {which}")?;
+    writeln!(out, "target: {}, {which}", ModuleName(module))?;
     Ok(())
 }
 
@@ -176,11 +175,11 @@ fn control_program(
     } else {
         "reset"
     };
-    let c = address_char(target).unwrap_or('?');
     let mode = program::mode_text(session, target);
     writeln!(
         out,
-        "program {name} done on module {c}; the module is in {mode} mode"
+        "program {name} done on {}; the module is in {mode} mode",
+        ModuleName(target)
     )?;
     Ok(())
 }
@@ -195,11 +194,11 @@ fn program_status(session: &mut TmclSession, out: &mut dyn Write) -> Result<(), 
     )?;
     let value = exchange.value().unwrap_or(0);
     let name = program::status_name(value);
-    let c = address_char(target).unwrap_or('?');
     let mode = program::mode_text(session, target);
     writeln!(
         out,
-        "program on module {c}: {name} ({value}); the module is in {mode} mode"
+        "program on {}: {name} ({value}); the module is in {mode} mode",
+        ModuleName(target)
     )?;
     Ok(())
 }
@@ -225,15 +224,15 @@ fn switch_mode(
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
     let target = session.target();
-    let c = address_char(target).unwrap_or('?');
+    let name = ModuleName(target);
     if ascii {
         session.enter_ascii(target)?;
-        writeln!(out, "module {c} is in ASCII mode")?;
+        writeln!(out, "{name} is in ASCII mode")?;
     } else {
         session.leave_ascii(target)?;
         writeln!(
             out,
-            "module {c} is in binary direct mode: lines go out as binary frames (:ascii returns)"
+            "{name} is in binary direct mode: lines go out as binary frames; :ascii returns"
         )?;
     }
     Ok(())
@@ -249,16 +248,18 @@ fn report_program(
     let mode = program::mode_text(session, module);
     writeln!(
         out,
-        "program {verb} on module {}; the module is in {mode} mode",
-        address_char(module).unwrap_or('?')
+        "program {verb} on {}; the module is in {mode} mode",
+        ModuleName(module)
     )
 }
 
 fn parse_module(arg: &str) -> Result<u8, SessionError> {
     let usage = || {
-        SessionError::Usage(format!(
-            "usage: :target N|CHAR (1..26 or A..Z), not '{arg}'"
-        ))
+        let not = match arg {
+            "" => String::new(),
+            arg => format!(", not '{arg}'"),
+        };
+        SessionError::Usage(format!("usage: :target N|CHAR (1..26 or A..Z){not}"))
     };
     if let Ok(n) = arg.parse::<u8>() {
         return (1..=26).contains(&n).then_some(n).ok_or_else(usage);

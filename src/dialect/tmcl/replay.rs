@@ -21,7 +21,7 @@ use crate::dialect::tmcl::protocol::frame::{
 };
 use crate::dialect::tmcl::protocol::line::{self, Op, address_char, format_instruction};
 use crate::dialect::tmcl::protocol::reply::parse_reply;
-use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Opcode, Status};
+use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, ModuleName, Opcode, Status};
 
 use crate::dialect::replay::parse::{Entry, Record};
 use crate::dialect::replay::{comment, nothing_to_replay, reply_after, rhai_string};
@@ -247,8 +247,8 @@ fn binary_step(frame: &[u8; FRAME_LEN], reply: Option<&[u8]>, profile: &Profile)
         .is_some_and(|s| s.ascii_allowed);
     let (Some(c), true) = (address_char(command.address), ascii) else {
         return Some(Step::Comment(format!(
-            "not replayed (binary direct mode only): {sent} to module {}",
-            command.address
+            "not replayed (binary direct mode only): {sent} to {}",
+            ModuleName(command.address)
         )));
     };
     let reply = ReplyFrame::decode(&reply).ok()?;

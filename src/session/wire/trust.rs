@@ -30,7 +30,7 @@ const SETTLE_SLACK: Duration = Duration::from_micros(50);
 const DRAIN_BUDGET: usize = RX_CAP;
 
 /// Bytes that arrived between exchanges or while the line resynchronised.
-const OUTSIDE: &str = "data that arrived outside any exchange (a late reply?)";
+const OUTSIDE: &str = "late or unsolicited data that arrived outside any exchange";
 
 /// Recognises harmless data that arrived between exchanges (TMCL position events, late answers
 /// a dialect can attribute); `None` when it cannot vouch for all of it.

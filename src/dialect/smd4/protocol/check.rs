@@ -50,7 +50,7 @@ pub enum Noise {
     FlagWord,
     /// Another drive's address prefix.
     #[error("a reply from drive @{from}, {}", match to {
-        Some(to) => format!("not from @{to}"),
+        Some(to) => format!("not from drive @{to}"),
         None => "but requests carry no address".to_string(),
     })]
     Foreign {

@@ -55,7 +55,8 @@ pub enum RequestError {
     BadAddress(String),
     /// The mnemonic is missing or has characters mnemonics never have.
     #[error(
-        "'{0}' is not a mnemonic: mnemonics are letters, digits and ':+-_' (e.g. MOTOR:VMAX), and arguments follow after commas"
+        "{}: mnemonics are letters, digits and ':+-_' (e.g. MOTOR:VMAX), and arguments follow after commas",
+        match .0.as_str() { "" => "the mnemonic is missing".to_string(), found => format!("'{found}' is not a mnemonic") }
     )]
     BadMnemonic(String),
     /// Arguments after a space or `=` instead of a comma (`MOTOR:VMAX 2000`).

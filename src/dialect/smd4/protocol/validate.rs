@@ -72,7 +72,15 @@ pub enum ValidationError {
         usage: String,
     },
     /// An argument of the wrong type (−101).
-    #[error("'{found}' is not a valid argument of {mnemonic}: expected {}, {}; usage: {usage}", expected.name(), expected.describe())]
+    #[error(
+        "{}: expected {}, {}; usage: {usage}",
+        match found.as_str() {
+            "" => format!("the argument of {mnemonic} is empty"),
+            found => format!("'{found}' is not a valid argument of {mnemonic}"),
+        },
+        expected.name(),
+        expected.describe()
+    )]
     ArgumentType {
         /// The command.
         mnemonic: String,

@@ -15,7 +15,7 @@ use crate::session::SessionError;
 use crate::session::core::SessionCore;
 use crate::session::transcript::Header;
 
-use super::{Smd4Session, drive_name};
+use super::Smd4Session;
 
 impl DialectSession for Smd4Session {
     fn dialect(&self) -> &'static Dialect {
@@ -58,7 +58,7 @@ impl DialectSession for Smd4Session {
     /// `smd4>`, with the address prefix requests get.
     fn prompt(&self) -> String {
         match self.smd4.address {
-            Some(_) => format!("smd4 {}> ", drive_name(self.smd4.address)),
+            Some(address) => format!("smd4 @{address}> "),
             None => "smd4> ".to_string(),
         }
     }
@@ -115,6 +115,7 @@ impl DialectSession for Smd4Session {
         let (session, result) = script.run(
             *self,
             |s, text| s.annotate(text),
+            |s| s.take_notices(),
             |engine, s, files| {
                 crate::dialect::smd4::script::register(engine, s);
                 crate::script::commission::register(engine, s, files);

@@ -82,16 +82,25 @@ impl Smd4Exchange {
     pub fn refusal(&self) -> Option<Refusal> {
         let error = self.reply.as_ref()?.error.as_ref()?;
         Some(Refusal {
-            module: drive_name(self.request.address),
+            module: DriveName(self.request.address).to_string(),
             sent: self.sent.clone(),
             reason: format!("error {error}"),
         })
     }
 }
 
-/// How messages name a drive: `@3`, or `SMD4` when requests carry no prefix.
-pub fn drive_name(address: Option<u32>) -> String {
-    address.map_or_else(|| "SMD4".to_string(), |a| format!("@{a}"))
+/// How every message names a drive: `drive @3`, or `the drive` when requests carry no address
+/// prefix.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DriveName(pub Option<u32>);
+
+impl std::fmt::Display for DriveName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.0 {
+            Some(address) => write!(f, "drive @{address}"),
+            None => f.write_str("the drive"),
+        }
+    }
 }
 
 /// A conversation with the SMD4 drives on one link.
@@ -213,7 +222,7 @@ impl Smd4Session {
     ) -> Result<Option<Smd4Reply>, SessionError> {
         self.core.wire.send(
             &request.wire(self.smd4.prefix),
-            format_args!("to {}", drive_name(request.address)),
+            format_args!("to {}", DriveName(request.address)),
         )?;
         if silent {
             return Ok(None);
@@ -243,15 +252,15 @@ impl Smd4Session {
         for address in moved {
             let mut stop = Request::new("MOTOR:STOP");
             stop.address = address;
-            let name = drive_name(address);
+            let name = DriveName(address);
             let result = self.with_timeout(wait, |s| s.request(stop));
             match result.and_then(Smd4Exchange::checked) {
-                Ok(_) => report.push(format!("stopped the motor of drive {name} (MOTOR:STOP)")),
+                Ok(_) => report.push(format!("stopped the motor of {name} with MOTOR:STOP")),
                 Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
-                    "sent MOTOR:STOP to drive {name}; no answer within {} ms",
+                    "sent MOTOR:STOP to {name}; no answer within {} ms",
                     timeout.as_millis()
                 )),
-                Err(e) => report.push(format!("could not stop the motor of drive {name}: {e}")),
+                Err(e) => report.push(format!("could not stop the motor of {name}: {e}")),
             }
         }
         for line in &report {

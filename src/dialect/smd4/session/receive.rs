@@ -13,7 +13,7 @@ use crate::session::rx::is_line_break;
 use crate::session::transcript::{Entry, escape_into};
 use crate::session::wire::{MAX_LINE, Settled};
 
-use super::{Smd4Session, drive_name};
+use super::{DriveName, Smd4Session};
 
 /// The most a reply may hold, all its lines together.
 const MAX_REPLY: usize = 64 * 1024;
@@ -112,9 +112,9 @@ impl Smd4Session {
     /// Drops the line of `used` bytes that carried `reply`, another drive's.
     fn discard_foreign(&mut self, used: usize, reply: &Smd4Reply, request: &Request) {
         let kind = format!(
-            "a reply from drive {} while waiting for {}",
-            drive_name(reply.address),
-            drive_name(request.address)
+            "a reply from {} while waiting for {}",
+            DriveName(reply.address),
+            DriveName(request.address)
         );
         self.core.wire.discard(used, &kind);
     }
@@ -129,10 +129,10 @@ impl Smd4Session {
                 .wire
                 .log(Entry::Received, &reply_bytes, "no complete reply");
         }
-        let module = drive_name(request.address);
+        let module = DriveName(request.address);
         self.core.wire.note(&format!("no reply from {module}"));
         SessionError::Timeout {
-            module,
+            module: module.to_string(),
             timeout: self.core.options.timeout,
             hint: timeout_hint(&partial, request.address, self.smd4.prefix),
         }

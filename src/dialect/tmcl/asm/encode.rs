@@ -256,9 +256,9 @@ fn raw(
     }
     let mut out = Instruction::new(command, 0, 0, 0);
     let fields = [
-        (Field::Type, "<type>"),
-        (Field::Motor, "<motor>"),
-        (Field::Value, "<value>"),
+        (Field::Type, "the type"),
+        (Field::Motor, "the motor"),
+        (Field::Value, "the value"),
     ];
     for ((field, what), operand) in fields.into_iter().zip(&statement.operands) {
         let text = ProgramOperand {

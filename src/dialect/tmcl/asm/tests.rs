@@ -302,11 +302,11 @@ fn each_error_names_file_line_column_and_what_is_wrong() {
         ),
         (
             "SAP 4, 300, 1",
-            "t.tmc:1:8: error: <motor> 300 does not fit: it must lie in 0..255",
+            "t.tmc:1:8: error: the motor 300 does not fit: it must lie in 0..255",
         ),
         (
             "129 1, 0, 0",
-            "t.tmc:1:1: error: 129 (run application) is a direct-mode control function and cannot be stored in a program",
+            "t.tmc:1:1: error: 129 — run application — is a direct-mode control function and cannot be stored in a program",
         ),
         (
             "RUN",
@@ -420,7 +420,7 @@ fn load_program_takes_source_or_a_checked_program_file() {
         load_program(&invalid, "x.bin", &profile)
             .unwrap_err()
             .to_string(),
-        "x.bin: instruction 1: 129 (run application) is a direct-mode control function and cannot be stored in a program"
+        "x.bin: instruction 1: 129 — run application — is a direct-mode control function and cannot be stored in a program"
     );
     let too_long = write_binary(&vec![i(3, 0, 0, 0); 2049]).unwrap();
     assert!(matches!(

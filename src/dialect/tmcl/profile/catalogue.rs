@@ -233,7 +233,7 @@ impl Identified {
                 profile.module, version.text, profile.name
             ),
             Identified::Unknown { version, .. } => format!(
-                "TMCM-{}, firmware {}, profile {GENERIC} (built in): no profile for module {}",
+                "TMCM-{}, firmware {}, profile {GENERIC} (built in): no profile for the TMCM-{}",
                 version.module, version.text, version.module
             ),
             Identified::BootLoader { version, profile } => format!(

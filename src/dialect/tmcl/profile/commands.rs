@@ -74,6 +74,12 @@ impl OperandKind {
         }
     }
 
+    /// How a sentence names the operand (`the motor`), where a usage line shows `<motor>`.
+    pub fn noun(self) -> String {
+        let word = self.placeholder().trim_start_matches('<');
+        format!("the {}", word.trim_end_matches('>'))
+    }
+
     /// How the operand is shown in usage lines (`<motor>`).
     pub fn placeholder(self) -> &'static str {
         match self {

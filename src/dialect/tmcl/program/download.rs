@@ -6,7 +6,7 @@ use std::path::Path;
 
 use crate::dialect::tmcl::asm;
 use crate::dialect::tmcl::profile::Profile;
-use crate::dialect::tmcl::protocol::Instruction;
+use crate::dialect::tmcl::protocol::{Instruction, ModuleName};
 use crate::dialect::tmcl::session::TmclSession;
 use crate::exit::Failure;
 use crate::progress::Progress;
@@ -42,14 +42,13 @@ pub fn download_and_run(
     drop(progress);
     let report = report.map_err(failed)?;
     let mut text = format!(
-        "downloaded {} instruction{} to module {}{}",
-        report.stored,
-        if report.stored == 1 { "" } else { "s" },
-        module,
+        "downloaded {} to {}{}",
+        crate::count::counted(report.stored, "instruction"),
+        ModuleName(module),
         if report.verified {
             ", verified by reading back"
         } else {
-            " (the module does not read back; not verified)"
+            "; not verified: the module does not read back"
         }
     );
     if run {

@@ -7,7 +7,7 @@ pub mod download;
 use crate::dialect::session::DialectSession;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use crate::dialect::tmcl::protocol::line::address_char;
+use crate::dialect::tmcl::protocol::ModuleName;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 use crate::dialect::tmcl::render::application_status;
 use crate::dialect::tmcl::session::{TmclExchange, TmclSession, WireMode};
@@ -102,7 +102,7 @@ fn store_all(
         if exchange.status() != Some(Status::Stored) {
             let status = exchange.status().unwrap_or(Status::Other(0));
             return Err(SessionError::Device {
-                module: address_char(module).unwrap_or('?').to_string(),
+                module: ModuleName(module).to_string(),
                 sent: format!("instruction {address} ({})", exchange.sent),
                 reason: format!("status {status}, expected 101 (stored)"),
             });
@@ -177,7 +177,7 @@ pub fn status(session: &mut TmclSession, module: u8) -> Result<i32, SessionError
 /// Warnings about the motors of `module` that still turn, with their speed: stopping a program
 /// does not stop the motion it started. A check that cannot be made says why.
 pub fn still_turning(session: &mut TmclSession, module: u8) -> Vec<String> {
-    let c = address_char(module).unwrap_or('?');
+    let name = ModuleName(module);
     let Ok(speed) = session.profile().find_axis("actual_speed") else {
         return Vec::new();
     };
@@ -190,11 +190,11 @@ pub fn still_turning(session: &mut TmclSession, module: u8) -> Vec<String> {
         match read.map(|x| x.value().unwrap_or(0)) {
             Ok(0) => {}
             Ok(value) => warnings.push(format!(
-                "motor {motor} of module {c} is still turning ({ident} = {value}): the program \
+                "motor {motor} of {name} is still turning ({ident} = {value}): the program \
                  stopped, its motion did not; MST {motor} or Ctrl-C stops it"
             )),
             Err(e) => warnings.push(format!(
-                "could not check whether motor {motor} of module {c} still turns: {e}"
+                "could not check whether motor {motor} of {name} still turns: {e}"
             )),
         }
     }

@@ -55,7 +55,7 @@ pub enum InputError {
     ExpectedNumber {
         /// The command.
         mnemonic: String,
-        /// The operand (`<motor>`).
+        /// The operand (`the motor`).
         what: String,
         /// What was typed.
         found: String,
@@ -157,7 +157,7 @@ pub enum InputError {
         unit: String,
     },
     /// A command of the TMCL table this module does not have (profile `[commands] absent`).
-    #[error("{mnemonic} ({number}) is not a command of the {module} (its profile: {reason})")]
+    #[error("{mnemonic} ({number}) is not a command of the {module}; its profile says: {reason}")]
     AbsentCommand {
         /// The command as typed.
         mnemonic: String,

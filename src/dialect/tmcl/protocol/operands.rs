@@ -184,16 +184,16 @@ fn fill<O: OperandText>(
         }
         _ => {}
     }
-    let what = kind.placeholder();
+    let what = kind.noun();
     let number = operand
         .number(kind)
         .map_err(Fault::Operand)?
         .ok_or_else(|| InputError::ExpectedNumber {
             mnemonic: spec.display_name(),
-            what: what.into(),
+            what: what.clone(),
             found: operand.name().unwrap_or_default().to_string(),
         })?;
-    store(out, kind.field(), what, number)?;
+    store(out, kind.field(), &what, number)?;
     Ok(None)
 }
 

@@ -84,14 +84,15 @@ fn check_mode(spec: &CommandSpec, mode: Mode, profile: &Profile) -> Result<(), I
         Mode::Ascii | Mode::Binary if program_only => {
             format!("{name} only exists inside stand-alone TMCL programs")
         }
+        // The command's name goes between dashes: some names carry brackets of their own.
         Mode::Ascii => format!(
-            "{name} ({}) is not available in ASCII mode (not in the {}'s ASCII command list); \
-             switch to binary mode with :bin to send it",
+            "{name} — {} — is not available in ASCII mode: the {}'s ASCII command list lacks \
+             it; switch to binary mode with :bin to send it",
             spec.name, profile.module
         ),
-        Mode::Binary => format!("{name} ({}) cannot be sent in direct mode", spec.name),
+        Mode::Binary => format!("{name} — {} — cannot be sent in direct mode", spec.name),
         Mode::Program => format!(
-            "{name} ({}) is a direct-mode control function and cannot be stored in a program",
+            "{name} — {} — is a direct-mode control function and cannot be stored in a program",
             spec.name
         ),
     };

@@ -170,7 +170,7 @@ fn binary_mode_commands_replay_as_lines_and_the_version_as_firmware_version() {
         instruction: Instruction::new(128, 0, 0, 0),
     }
     .encode();
-    log.bytes("tx", &gap, "GAP 4, 0 to module 1 (binary)")
+    log.bytes("tx", &gap, "GAP 4, 0 to module 1 (A) in binary")
         .bytes("rx", &gap_reply, "from module 1: 100, value 2047")
         .bytes("tx", &version, "136 to module 2 (binary)")
         .bytes(
@@ -186,7 +186,7 @@ fn binary_mode_commands_replay_as_lines_and_the_version_as_firmware_version() {
             "assert_eq(send(\"AGAP 4, 0\"), 2047);  // max_positioning_speed",
             "target(2);",
             "assert_eq(firmware_version(), \"142V1.07\");",
-            "// not replayed (binary direct mode only): 128 to module 1",
+            "// not replayed (binary direct mode only): 128 to module 1 (A)",
         ]
     );
 }
@@ -202,7 +202,7 @@ fn lines_without_reply_and_stale_bytes_are_comments_or_ignored() {
         )
         .tx("AGAP 6, 0")
         .bytes("rx", b"AGAP", "incomplete, no reply")
-        .note("no reply from module A within 1000 ms")
+        .note("no reply from module 1 (A) within 1000 ms")
         .exchange("AGAP 7, 0", 100, 8);
     let steps = log.steps();
     assert_eq!(steps[0], Step::Comment("no reply to AGAP 6, 0".into()));
@@ -293,7 +293,7 @@ fn a_transcript_of_only_failures_replays_nothing() {
     let mut log = Log::default();
     log.contact()
         .tx("AGAP 6, 0")
-        .note("no reply from module A within 1000 ms");
+        .note("no reply from module 1 (A) within 1000 ms");
     assert!(!replays_something(&log.steps()));
     log.exchange("AGAP 7, 0", 100, 8);
     assert!(replays_something(&log.steps()));

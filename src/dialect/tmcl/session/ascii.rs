@@ -14,7 +14,7 @@ use std::time::{Duration, Instant};
 
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::reply::{AsciiReply, parse_reply_bytes};
-use crate::dialect::tmcl::protocol::{AsciiWord, Status};
+use crate::dialect::tmcl::protocol::{AsciiWord, ModuleName, Status};
 
 use super::{TmclExchange, TmclReply, TmclSession};
 use crate::session::SessionError;
@@ -110,11 +110,11 @@ impl TmclSession {
         optional_wait: Option<Duration>,
         echoed: &mut bool,
     ) -> Result<TmclExchange, SessionError> {
-        let c = address_char(module).unwrap_or('?');
+        let name = ModuleName(module);
         let mut line = Vec::with_capacity(wire_text.len() + 1);
         line.extend_from_slice(wire_text.as_bytes());
         line.push(b'\r');
-        self.core.wire.send(&line, format_args!("to module {c}"))?;
+        self.core.wire.send(&line, format_args!("to {name}"))?;
         let timeout = optional_wait.unwrap_or(self.core.options.timeout);
         let deadline = Instant::now() + timeout;
         let state = self.modules.get(&module);
@@ -138,7 +138,7 @@ impl TmclSession {
                     // of this request came after it: it was an earlier request's reply.
                     self.core
                         .wire
-                        .discard(found.2, "a reply that came before the echo (stale?)");
+                        .discard(found.2, "a reply that came before the echo");
                     continue;
                 }
                 let held = std::mem::take(&mut scan.held);
@@ -147,7 +147,7 @@ impl TmclSession {
             if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
                 // After BIN the module may be in binary mode, where a CR would start a frame.
                 let resync_cr = !leaves_ascii(op, text);
-                return Err(self.timed_out(c, timeout, &mut scan, resync_cr));
+                return Err(self.timed_out(module, timeout, &mut scan, resync_cr));
             }
         }
     }
@@ -227,8 +227,8 @@ impl TmclSession {
         match parse_reply_bytes(line) {
             Some(reply) if reply.status == Status::PositionReachedEvent => {
                 self.core.wire.notices.push(format!(
-                    "module {}: target position reached (event)",
-                    reply.module
+                    "{}: target position reached (event)",
+                    ModuleName::of_char(reply.module)
                 ));
                 self.core
                     .wire
@@ -250,12 +250,13 @@ impl TmclSession {
             Some(reply) if reply.module == c => {
                 self.core
                     .wire
-                    .discard(used, "a reply that came before the echo (stale?)");
+                    .discard(used, "a reply that came before the echo");
             }
             Some(reply) => {
                 let kind = format!(
-                    "a reply from module {} while waiting for module {c}",
-                    reply.module
+                    "a reply from {} while waiting for {}",
+                    ModuleName::of_char(reply.module),
+                    ModuleName(module)
                 );
                 self.core.wire.discard(used, &kind);
             }
@@ -267,16 +268,18 @@ impl TmclSession {
             None if !scan.echo_seen && looks_like_echo(line, scan.sent) => {
                 let sent = latin1(scan.sent);
                 let message = format!(
-                    "line noise: module {c} echoed '{}' for '{sent}', so it may have executed \
+                    "line noise: {} echoed '{}' for '{sent}', so it may have executed \
                      something else; check the cabling and the baud rate",
+                    ModuleName(module),
                     latin1(line)
                 );
                 return Err(self.noise(scan, used, "garbled echo", message));
             }
             None if acceptable && reply_shaped(line, c) => {
                 let message = format!(
-                    "line noise: module {c} answered '{}', which is not a valid reply \
-                     (garbled, or an unknown status); not taken",
+                    "line noise: {} answered '{}', which is not a valid reply (garbled, or an \
+                     unknown status); not taken",
+                    ModuleName(module),
                     latin1(line)
                 );
                 return Err(self.noise(scan, used, "not a valid reply", message));
@@ -324,8 +327,8 @@ impl TmclSession {
                 .settle(used, deadline, &mut |line| match parse_reply_bytes(line) {
                     Some(r) if r.status == Status::PositionReachedEvent => {
                         events.push(format!(
-                            "module {}: target position reached (event)",
-                            r.module
+                            "{}: target position reached (event)",
+                            ModuleName::of_char(r.module)
                         ));
                         true
                     }
@@ -363,8 +366,9 @@ impl TmclSession {
                     "a reply followed by more data: line noise, discarded",
                 );
                 let message = format!(
-                    "line noise: the reply '{raw}' from module {c} was followed by {after}, so it \
-                     may be cut short or not the answer; not taken"
+                    "line noise: the reply '{raw}' from {} was followed by {after}, so it may be \
+                     cut short or not the answer; not taken",
+                    ModuleName(module)
                 );
                 self.core.wire.note(&message);
                 Err(SessionError::Link(message))
@@ -388,7 +392,7 @@ impl TmclSession {
 
     fn timed_out(
         &mut self,
-        module: char,
+        module: u8,
         timeout: Duration,
         scan: &mut Scan,
         resync_cr: bool,
@@ -415,8 +419,9 @@ impl TmclSession {
             // starts clean; what it provokes is discarded while the line resynchronises.
             let _ = self.core.wire.send(b"\r", "resynchronise after timeout");
         }
+        let module = ModuleName(module);
         self.core.wire.note(&format!(
-            "no reply from module {module} within {} ms",
+            "no reply from {module} within {} ms",
             timeout.as_millis()
         ));
         SessionError::Timeout {

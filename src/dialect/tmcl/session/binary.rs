@@ -7,7 +7,7 @@ use crate::dialect::tmcl::protocol::frame::{
     CommandFrame, FRAME_LEN, ReplyFrame, decode_version_string, hex,
 };
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
-use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
+use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode, Status};
 
 use super::{TmclExchange, TmclReply, TmclSession, WireMode};
 use crate::session::SessionError;
@@ -51,9 +51,10 @@ impl TmclSession {
             instruction,
         }
         .encode();
-        self.core
-            .wire
-            .send(&frame, format_args!("{sent} to module {module} (binary)"))?;
+        self.core.wire.send(
+            &frame,
+            format_args!("{sent} to {} in binary", ModuleName(module)),
+        )?;
         // Modules in ASCII mode now hold the frame as the start of a line.
         self.line_dirty = self.modules.values().any(|m| m.mode == WireMode::Ascii);
         let exchange = |(reply, raw)| TmclExchange {
@@ -107,7 +108,7 @@ impl TmclSession {
         let reply = ReplyFrame::decode(raw).map_err(|e| {
             self.binary_noise(
                 "bad checksum",
-                format!("corrupted reply from module {module}: {e}"),
+                format!("corrupted reply from {}: {e}", ModuleName(module)),
             )
         })?;
         if reply.is_position_event() {
@@ -119,7 +120,10 @@ impl TmclSession {
             return Ok(None);
         }
         if reply.module != module || reply.command != instruction.command {
-            let kind = format!("a reply frame not for module {module}'s request");
+            let kind = format!(
+                "a reply frame not for the request to {}",
+                ModuleName(module)
+            );
             self.core.wire.discard(FRAME_LEN, &kind);
             return Ok(None);
         }
@@ -127,8 +131,8 @@ impl TmclSession {
             return Err(self.binary_noise(
                 "unknown status",
                 format!(
-                    "line noise: module {module} answered with status {code}, which no module \
-                     sends; not taken"
+                    "line noise: {} answered with status {code}, which no module sends; not taken",
+                    ModuleName(module)
                 ),
             ));
         }
@@ -136,8 +140,10 @@ impl TmclSession {
         self.core.wire.log_received(
             FRAME_LEN,
             format_args!(
-                "from module {}: {}, value {}",
-                reply.module, reply.status, reply.value
+                "from {}: {}, value {}",
+                ModuleName(reply.module),
+                reply.status,
+                reply.value
             ),
         );
         let answer = TmclReply::Status {
@@ -156,7 +162,7 @@ impl TmclSession {
                 .log(Entry::Received, &partial, "incomplete frame, no reply");
         }
         SessionError::Timeout {
-            module: address_char(module).unwrap_or('?').to_string(),
+            module: ModuleName(module).to_string(),
             timeout: self.core.options.timeout,
             hint: if partial.is_empty() {
                 String::new()
@@ -168,10 +174,10 @@ impl TmclSession {
 
     /// Tells the user of a position-reached event that came instead of, or after, a reply.
     fn note_event(&mut self, module: u8) {
-        self.core
-            .wire
-            .notices
-            .push(format!("module {module}: target position reached (event)"));
+        self.core.wire.notices.push(format!(
+            "{}: target position reached (event)",
+            ModuleName(module)
+        ));
     }
 
     /// Checks what follows the reply frame at the front of the buffer: nothing, or whole event
@@ -212,8 +218,9 @@ impl TmclSession {
         self.binary_noise(
             "a reply followed by more data",
             format!(
-                "line noise: the reply {} from module {module} was followed by {after}; not taken",
-                hex(reply)
+                "line noise: the reply {} from {} was followed by {after}; not taken",
+                hex(reply),
+                ModuleName(module)
             ),
         )
     }

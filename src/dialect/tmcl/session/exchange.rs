@@ -2,7 +2,8 @@
 //! (the line sent, what it resolved to, the reply as received).
 
 use crate::dialect::session::Refusal;
-use crate::dialect::tmcl::protocol::line::{Op, address_char};
+use crate::dialect::tmcl::protocol::ModuleName;
+use crate::dialect::tmcl::protocol::line::Op;
 use crate::dialect::tmcl::protocol::{InputError, Status};
 use crate::session::SessionError;
 
@@ -74,7 +75,7 @@ impl TmclExchange {
     pub fn refusal(&self) -> Option<Refusal> {
         match self.reply {
             TmclReply::Status { status, .. } if !status.is_success() => Some(Refusal {
-                module: address_char(self.module).unwrap_or('?').to_string(),
+                module: ModuleName(self.module).to_string(),
                 sent: self.sent.clone(),
                 reason: format!("status {status}"),
             }),

@@ -7,6 +7,7 @@ use std::time::Duration;
 
 use crate::commission::ParamDevice;
 use crate::dialect::session::{BusScan, DialectSession, Reply};
+use crate::dialect::tmcl::protocol::ModuleName;
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::{TmclGrammar, config, help, helpers, render, scan};
 use crate::dialect::{Dialect, Grammar, Helper};
@@ -72,7 +73,7 @@ impl DialectSession for TmclSession {
     fn banner(&self) -> String {
         match self.target {
             1 => self.identity_line(),
-            n => format!("{}, module {n}", self.identity_line()),
+            n => format!("{}, {}", self.identity_line(), ModuleName(n)),
         }
     }
 
@@ -134,6 +135,7 @@ impl DialectSession for TmclSession {
         let (session, result) = script.run(
             *self,
             |s, text| s.annotate(text),
+            |s| s.take_notices(),
             |engine, s, files| {
                 super::super::script::register(engine, s, files);
                 crate::script::commission::register(engine, s, files);

@@ -15,8 +15,7 @@ use std::sync::Arc;
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::catalogue::{self, GENERIC_NOTICE, Identified};
 use crate::dialect::tmcl::profile::version::FirmwareVersion;
-use crate::dialect::tmcl::protocol::line::address_char;
-use crate::dialect::tmcl::protocol::{Instruction, Opcode};
+use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
 use crate::exit::{Exit, Failure};
 
 use super::{TmclReply, TmclSession};
@@ -133,7 +132,7 @@ impl TmclSession {
     /// One 136 exchange with `module`; what it said (the profile it names in `self.identified`).
     fn ask_identity(&mut self, module: u8) -> Result<Identity, SessionError> {
         self.identified = None;
-        let c = address_char(module).unwrap_or('?');
+        let c = ModuleName(module);
         let ask = Instruction::new(Opcode::FirmwareVersion, 0, 0, 0);
         self.align_for_frame()?;
         let answer = self.exchange(module, true, |s| s.binary_exchange(module, ask));
@@ -146,11 +145,11 @@ impl TmclSession {
             Err(SessionError::Timeout { timeout, .. }) => {
                 self.core
                     .wire
-                    .note(&format!("not identified: module {c}: no answer to 136"));
+                    .note(&format!("not identified: {c}: no answer to 136"));
                 // A module in ASCII mode holds the frame as the start of a line.
                 self.end_partial_line()?;
                 self.core.wire.notices.push(format!(
-                    "module {c} did not answer command 136 (firmware version) within {} ms: not \
+                    "{c} did not answer command 136 (firmware version) within {} ms: not \
                      identified (a module already in ASCII mode, or an old firmware); using the \
                      profile {}",
                     timeout.as_millis(),
@@ -166,11 +165,11 @@ impl TmclSession {
                 identified
             }
             Err(e) => {
-                self.core.wire.note(&format!(
-                    "not identified: module {c}: answer not understood"
-                ));
+                self.core
+                    .wire
+                    .note(&format!("not identified: {c}: answer not understood"));
                 self.core.wire.notices.push(format!(
-                    "module {c} answered command 136 with {e}; not identified, using the profile {}",
+                    "{c} answered command 136 with {e}; not identified, using the profile {}",
                     profile_label(&self.fallback)
                 ));
                 return Ok(Identity::NoAnswer("answer not understood".into()));
@@ -178,7 +177,7 @@ impl TmclSession {
         };
         let version = match &identified {
             Identified::BootLoader { .. } => {
-                let message = format!("module {c}: {}", identified.banner());
+                let message = format!("{c}: {}", identified.banner());
                 self.core.wire.note(&message);
                 // Every later line to it is refused with the same report, unsent.
                 let identity = Identity::BootLoader(message.clone());
@@ -211,9 +210,9 @@ impl TmclSession {
         if given.generic || given.identity.module_number == Some(version.module) {
             return;
         }
-        let c = address_char(module).unwrap_or('?');
+        let c = ModuleName(module);
         let warning = format!(
-            "module {c} is a {module_type} ({}), but the profile given is {} for the {}; \
+            "{c} is a {module_type} ({}), but the profile given is {} for the {}; \
              the given profile is used",
             version.text,
             profile_label(given),
@@ -266,11 +265,7 @@ fn identified_note(module: u8, known: &Known) -> Option<String> {
     if !matches!(known.identity, Identity::Answered { .. }) {
         return None;
     }
-    let c = address_char(module).unwrap_or('?');
-    Some(format!(
-        "identified: module {module} ({c}), {}",
-        describe(known)
-    ))
+    Some(format!("identified: {}, {}", ModuleName(module), describe(known)))
 }
 
 /// `TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`.

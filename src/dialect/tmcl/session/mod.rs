@@ -27,7 +27,7 @@ use crate::dialect::tmcl::protocol::line::{
 };
 use crate::dialect::tmcl::protocol::syntax::parse_line;
 use crate::dialect::tmcl::protocol::validate::{self, Mode};
-use crate::dialect::tmcl::protocol::{Instruction, Opcode};
+use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
 use crate::link::Link;
 
 use crate::session::core::{Addresses, SessionCore};
@@ -285,9 +285,9 @@ impl TmclSession {
             }
             (WireMode::Binary, Op::Ascii(word)) => {
                 return Err(SessionError::Usage(format!(
-                    "{} is an ASCII-mode word and module {} is in binary mode; use :ascii, :run or :stop",
+                    "{} is an ASCII-mode word and {} is in binary mode; use :ascii, :run or :stop",
                     word.as_str(),
-                    module
+                    ModuleName(module)
                 )));
             }
         };
@@ -346,7 +346,8 @@ impl TmclSession {
     ) -> Result<TmclExchange, SessionError> {
         if self.contact(module)? != WireMode::Binary {
             return Err(SessionError::Usage(format!(
-                "module {module} must be in binary mode to store a program"
+                "{} must be in binary mode to store a program",
+                ModuleName(module)
             )));
         }
         let line = Line {
@@ -438,7 +439,8 @@ impl TmclSession {
         for &module in &to_restore {
             if let Err(e) = self.leave_ascii(module) {
                 report.push(format!(
-                    "could not return module {module} to binary mode: {e}"
+                    "could not return {} to binary mode: {e}",
+                    ModuleName(module)
                 ));
             }
         }
@@ -451,7 +453,8 @@ impl TmclSession {
         for module in back_to_ascii {
             if let Err(e) = self.enter_ascii(module) {
                 report.push(format!(
-                    "could not return module {module} to ASCII mode: {e}"
+                    "could not return {} to ASCII mode: {e}",
+                    ModuleName(module)
                 ));
             }
         }

@@ -10,6 +10,7 @@
 use std::time::{Duration, Instant};
 
 use crate::dialect::tmcl::profile::family::AsciiInterface;
+use crate::dialect::tmcl::protocol::ModuleName;
 use crate::dialect::tmcl::protocol::frame::{CommandFrame, FRAME_LEN, ReplyFrame, hex};
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, Opcode, Status};
@@ -193,10 +194,7 @@ impl TmclSession {
                 echo_known: false,
             },
         );
-        let note = format!(
-            "module {} in binary direct mode: {why}",
-            address_char(module).unwrap_or('?'),
-        );
+        let note = format!("{} in binary direct mode: {why}", ModuleName(module));
         self.core.wire.note(&note);
         Ok(())
     }
@@ -238,13 +236,13 @@ impl TmclSession {
         let bytes = frame.encode();
         self.core.wire.send(
             &bytes,
-            format_args!("enter ASCII mode (139) to module {module}"),
+            format_args!("enter ASCII mode (139) to {}", ModuleName(module)),
         )?;
         let answer = self.optional_binary_reply(module)?;
         if let Some(status) = answer.filter(|s| !s.is_success()) {
             // Still in binary mode: no CR, which its receiver would take as a frame's start.
             return Err(SessionError::Device {
-                module: address_char(module).unwrap_or('?').to_string(),
+                module: ModuleName(module).to_string(),
                 sent: "139 (enter ASCII mode)".into(),
                 reason: format!("status {status}"),
             });
@@ -339,12 +337,13 @@ impl TmclSession {
             Err(SessionError::Timeout { timeout, .. }) => {
                 self.modules.remove(&module);
                 return Err(SessionError::Timeout {
-                    module: c.to_string(),
+                    module: ModuleName(module).to_string(),
                     timeout,
-                    hint: format!(
-                        ": module {c} does not answer in ASCII mode (check --module, the port and its \
-                         baud rate, and that the module's firmware has the ASCII interface, TMCL 3.21 or later)"
-                    ),
+                    hint:
+                        ": it does not answer in ASCII mode; check --module, the port and its baud \
+                           rate, and that the module's firmware has the ASCII interface (TMCL 3.21 \
+                           or later)"
+                            .to_string(),
                 });
             }
             Err(e) => {
@@ -368,7 +367,8 @@ impl TmclSession {
             WireMode::Binary
         });
         let note = format!(
-            "module {c} in ASCII mode, echo {}, found in {} mode",
+            "{} in ASCII mode, echo {}, found in {} mode",
+            ModuleName(module),
             state.echo.name(),
             if state.found_in == WireMode::Ascii {
                 "ASCII"
@@ -392,7 +392,8 @@ impl TmclSession {
         let found = Some(state.found_in);
         if let Err(e) = self.learn_echo(module, found) {
             self.core.wire.notices.push(format!(
-                "could not read the echo setting of module {module}: {e}"
+                "could not read the echo setting of {}: {e}",
+                ModuleName(module)
             ));
         }
     }
@@ -418,9 +419,10 @@ impl TmclSession {
         if let Some(state) = self.modules.get_mut(&module) {
             state.mode = WireMode::Binary;
         }
-        self.core
-            .wire
-            .note(&format!("module {c} left ASCII mode (binary direct mode)"));
+        self.core.wire.note(&format!(
+            "{} left ASCII mode (binary direct mode)",
+            ModuleName(module)
+        ));
         Ok(exchange)
     }
 

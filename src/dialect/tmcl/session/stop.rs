@@ -4,9 +4,8 @@
 
 use std::time::Duration;
 
-use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::validate::Mode;
-use crate::dialect::tmcl::protocol::{Instruction, Opcode};
+use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
 
 use super::{TmclExchange, TmclSession, modules};
 use crate::dialect::session::DialectSession;
@@ -63,32 +62,32 @@ impl TmclSession {
         let mut report = Vec::new();
         let programs = self.binary_first(modules(&self.core.running));
         for module in programs {
-            let c = address_char(module).unwrap_or('?');
+            let name = ModuleName(module);
             match self.stop_program(module) {
-                Ok(_) => report.push(format!("stopped the TMCL program of module {c}")),
+                Ok(_) => report.push(format!("stopped the TMCL program of {name}")),
                 Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
-                    "sent STOP to module {c}; no answer within {} ms",
+                    "sent STOP to {name}; no answer within {} ms",
                     timeout.as_millis()
                 )),
-                Err(e) => report.push(format!("could not stop the program of module {c}: {e}")),
+                Err(e) => report.push(format!("could not stop the program of {name}: {e}")),
             }
         }
         let moved = self.binary_first(modules(&self.core.moved));
         for module in moved {
-            let c = address_char(module).unwrap_or('?');
+            let name = ModuleName(module);
             for (motor, result) in self.stop_motors(module) {
                 match result {
                     Ok(x) if x.ok() => {
-                        report.push(format!("stopped motor {motor} of module {c} (MST)"))
+                        report.push(format!("stopped motor {motor} of {name} with MST"))
                     }
-                    Ok(x) => report.push(format!("MST to module {c} answered {}", x.raw)),
+                    Ok(x) => {
+                        report.push(format!("MST to motor {motor} of {name} answered {}", x.raw))
+                    }
                     Err(SessionError::Timeout { timeout, .. }) => report.push(format!(
-                        "sent MST to motor {motor} of module {c}; no answer within {} ms",
+                        "sent MST to motor {motor} of {name}; no answer within {} ms",
                         timeout.as_millis()
                     )),
-                    Err(e) => {
-                        report.push(format!("could not stop motor {motor} of module {c}: {e}"))
-                    }
+                    Err(e) => report.push(format!("could not stop motor {motor} of {name}: {e}")),
                 }
             }
         }

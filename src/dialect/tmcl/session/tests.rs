@@ -440,7 +440,7 @@ fn a_silent_module_times_out_with_a_clear_message() {
     assert_eq!(crate::exit::ExitStatus::exit(&e), crate::exit::Exit::Link);
     let text = e.to_string();
     assert!(
-        text.starts_with("no reply from module A within 30 ms"),
+        text.starts_with("no reply from module 1 (A) within 30 ms"),
         "{text}"
     );
     assert!(text.contains("does not answer in ASCII mode"), "{text}");
@@ -460,7 +460,7 @@ fn a_reply_from_another_module_is_reported_not_taken() {
     assert!(
         notices
             .iter()
-            .any(|n| n.contains("reply from module C while waiting for module A")),
+            .any(|n| n.contains("reply from module 3 (C) while waiting for module 1 (A)")),
         "{notices:?}"
     );
 }
@@ -494,7 +494,7 @@ fn an_echo_that_differs_from_what_was_sent_is_line_noise() {
     let e = session.err().expect("noise while probing is an error");
     assert!(
         e.to_string()
-            .contains("line noise: module A echoed 'AGGP 67, 1' for 'AGGP 67, 0'"),
+            .contains("line noise: module 1 (A) echoed 'AGGP 67, 1' for 'AGGP 67, 0'"),
         "{e}"
     );
 }
@@ -542,7 +542,7 @@ fn device_errors_come_back_as_unsuccessful_exchanges() {
     let e = x.checked().unwrap_err();
     assert_eq!(
         e.to_string(),
-        "module A refused 'AGAP 200, 0': status 3 (wrong type)"
+        "module 1 (A) refused 'AGAP 200, 0': status 3 (wrong type)"
     );
 }
 
@@ -586,7 +586,7 @@ fn stop_motion_sends_mst_to_modules_that_were_moved() {
     let report = s.stop_motion();
     assert_eq!(
         report,
-        vec!["stopped motor 0 of module A (MST)".to_string()]
+        vec!["stopped motor 0 of module 1 (A) with MST".to_string()]
     );
     assert!(sent_text(&wire).ends_with("AMST 0\r"));
     assert!(!s.may_be_moving());
@@ -713,7 +713,7 @@ fn ctrl_c_stops_the_target_and_what_was_moved_once_each() {
     let report = session.stop_target();
     assert_eq!(
         report,
-        ["interrupted: stopped motor 0 of module A (MST)".to_string()]
+        ["interrupted: stopped motor 0 of module 1 (A) with MST".to_string()]
     );
     assert_eq!(sent_text(&wire).matches("MST").count(), 1);
 }

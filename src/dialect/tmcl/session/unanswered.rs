@@ -4,10 +4,10 @@
 
 use std::collections::VecDeque;
 
-use crate::dialect::tmcl::protocol::Status;
 use crate::dialect::tmcl::protocol::frame::{FRAME_LEN, ReplyFrame};
 use crate::dialect::tmcl::protocol::line::address_of;
 use crate::dialect::tmcl::protocol::reply::parse_reply_bytes;
+use crate::dialect::tmcl::protocol::{ModuleName, Status};
 
 use crate::session::rx::is_line_break;
 use crate::session::wire::{Harmless, Peer};
@@ -83,13 +83,13 @@ impl Unanswered {
 /// frames of command 138), and the late echo and reply of a request given up earlier (a module
 /// with none left is trusted again).
 pub(super) fn harmless(bytes: &[u8], unanswered: &mut Unanswered) -> Option<Harmless> {
-    let event = |module: String| format!("module {module}: target position reached (event)");
+    let event = |module: ModuleName| format!("{module}: target position reached (event)");
     let mut found = Harmless::default();
     let mut ascii = true;
     for line in bytes.split(|&b| is_line_break(b)).filter(|l| !l.is_empty()) {
         match parse_reply_bytes(line) {
             Some(r) if r.status == Status::PositionReachedEvent => {
-                found.notices.push(event(r.module.to_string()));
+                found.notices.push(event(ModuleName::of_char(r.module)));
             }
             Some(r) if unanswered.reply_arrived(r.module) => {
                 if let (false, Some(module)) = (unanswered.pending(r.module), address_of(r.module))
@@ -117,7 +117,7 @@ pub(super) fn harmless(bytes: &[u8], unanswered: &mut Unanswered) -> Option<Harm
             ReplyFrame::decode(frame)
                 .ok()
                 .filter(ReplyFrame::is_position_event)
-                .map(|r| event(r.module.to_string()))
+                .map(|r| event(ModuleName(r.module)))
         })
         .collect();
     notices.map(|notices| Harmless {

@@ -103,7 +103,7 @@ fn argument_type() {
     );
     assert!(message("SYS:IDENT,yes").contains("expected BOOL, 0 or 1"));
     assert!(message("COMS:NET:IP,10.0.0").contains("expected DOTTED DECIMAL"));
-    assert!(message("MOTOR:IR,").starts_with("'' is not a valid argument of MOTOR:IR"));
+    assert!(message("MOTOR:IR,").starts_with("the argument of MOTOR:IR is empty"));
 }
 
 #[test]

@@ -98,7 +98,7 @@ fn invalid_instructions_are_written_and_reported() {
     assert_eq!(addresses, [1, 2, 3]);
     let lines: Vec<&str> = disassembly.source.lines().collect();
     assert!(
-        lines[1].starts_with("    129 1, 0, 0                 // invalid in a program: 129 (run application) is a direct-mode control function"),
+        lines[1].starts_with("    129 1, 0, 0                 // invalid in a program: 129 — run application — is a direct-mode control function"),
         "{}",
         lines[1]
     );

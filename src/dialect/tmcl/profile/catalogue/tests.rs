@@ -135,7 +135,7 @@ fn identification_names_module_firmware_and_profile() {
     assert!(unknown.profile().unwrap().generic);
     assert_eq!(
         unknown.banner(),
-        "TMCM-1234, firmware 1234V100, profile generic (built in): no profile for module 1234"
+        "TMCM-1234, firmware 1234V100, profile generic (built in): no profile for the TMCM-1234"
     );
     let loader = identify("142B1.06").unwrap();
     assert!(loader.profile().is_none());

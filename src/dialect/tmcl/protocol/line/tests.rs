@@ -137,7 +137,10 @@ fn keyword_errors_list_the_keywords() {
 #[test]
 fn names_where_numbers_belong_are_refused() {
     let e = error("MST zero");
-    assert_eq!(e.to_string(), "<motor> of MST must be a number, not 'zero'");
+    assert_eq!(
+        e.to_string(),
+        "the motor of MST must be a number, not 'zero'"
+    );
 }
 
 #[test]
@@ -145,7 +148,7 @@ fn numbers_that_do_not_fit_their_field() {
     assert!(
         error("GAP 300, 0")
             .to_string()
-            .contains("<parameter> 300 does not fit")
+            .contains("the parameter 300 does not fit")
     );
     assert!(
         error("GAP 1, -1")

@@ -67,13 +67,13 @@ fn calculation_commands_share_one_rule_direct_yes_ascii_no() {
 fn direct_only_commands_are_refused_in_ascii_mode_with_a_hint() {
     let e = refused("AAP 4, 0", Mode::Ascii);
     assert!(
-        e.contains("AAP (accumulator to axis parameter) is not available in ASCII mode"),
+        e.contains("AAP — accumulator to axis parameter — is not available in ASCII mode"),
         "{e}"
     );
     assert!(e.contains(":bin"), "{e}");
     let e = refused("136 1", Mode::Ascii);
     assert!(
-        e.starts_with("136 (get firmware version) is not available in ASCII mode"),
+        e.starts_with("136 — get firmware version — is not available in ASCII mode"),
         "{e}"
     );
     assert!(check("136 1", Mode::Binary).is_ok());

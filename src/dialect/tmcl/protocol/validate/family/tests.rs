@@ -172,8 +172,8 @@ fn the_ascii_list_is_the_modules() {
     let e = refused(&p, "SIO 0, 2, 1", Mode::Ascii);
     assert_eq!(
         e,
-        "SIO (set output) is not available in ASCII mode (not in the TMCM-9's ASCII command \
-         list); switch to binary mode with :bin to send it"
+        "SIO — set output — is not available in ASCII mode: the TMCM-9's ASCII command list \
+         lacks it; switch to binary mode with :bin to send it"
     );
     assert!(check(&p, "SIO 0, 2, 1", Mode::Binary).is_ok());
     assert!(check(&p, "GAP 1, 0", Mode::Ascii).is_ok());
@@ -182,7 +182,7 @@ fn the_ascii_list_is_the_modules() {
     for mode in [Mode::Ascii, Mode::Binary] {
         let e = parse("SAC 0, 0, 0", &p).unwrap_err().to_string();
         assert!(
-            e.starts_with("SAC (29) is not a command of the TMCM-1140 (its profile: SAC (29)"),
+            e.starts_with("SAC (29) is not a command of the TMCM-1140; its profile says: SAC (29)"),
             "{mode:?}: {e}"
         );
     }
@@ -190,7 +190,7 @@ fn the_ascii_list_is_the_modules() {
     // CALC is for direct mode and programs on every module, never ASCII mode.
     let e = refused(&p, "CALC ADD, 1", Mode::Ascii);
     assert!(
-        e.contains("not in the TMCM-1140's ASCII command list") && e.contains(":bin"),
+        e.contains("the TMCM-1140's ASCII command list lacks it") && e.contains(":bin"),
         "{e}"
     );
     assert!(check(&p, "CALC ADD, 1", Mode::Binary).is_ok());
