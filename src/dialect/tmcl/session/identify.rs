@@ -265,7 +265,11 @@ fn identified_note(module: u8, known: &Known) -> Option<String> {
     if !matches!(known.identity, Identity::Answered { .. }) {
         return None;
     }
-    Some(format!("identified: {}, {}", ModuleName(module), describe(known)))
+    Some(format!(
+        "identified: {}, {}",
+        ModuleName(module),
+        describe(known)
+    ))
 }
 
 /// `TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`.
