@@ -423,7 +423,7 @@ fn switching_to_a_module_in_its_boot_loader_reports_it_and_sends_it_nothing_more
     );
     assert_eq!(code(&out), 3, "{}", stderr(&out));
     let err = stderr(&out);
-    let report = "module B: TMCM-6110 in its boot loader (6110B131): no firmware is running";
+    let report = "module 2 (B): TMCM-6110 in its boot loader (6110B131): no firmware is running";
     for line in [
         "line 2 (:target 2)",
         "line 4 (BGAP 1, 0)",
