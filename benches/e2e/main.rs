@@ -115,36 +115,22 @@ fn main() {
         eprintln!("e2e: the documented limit only");
         let cells = soak::measure_faults(&limit_plan, &soak::LIMIT_FAULTS);
         let row = soak::limit_row(&cells, &limit_plan);
-        println!("{}", report::text(std::slice::from_ref(&row)));
         let section = soak::limit_section(&cells, &limit_plan, &date());
-        println!("{section}");
-        if quick {
-            eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
-            return;
-        }
-        let path = proc::repo_file("BENCHMARKS.md");
-        let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-        let new = soak::splice_limit(&old, &report::markdown_line(&row), &section);
-        std::fs::write(&path, new).expect("write BENCHMARKS.md");
-        eprintln!("e2e: wrote the documented limit into {}", path.display());
+        show_and_write(
+            &row,
+            &section,
+            quick,
+            "the documented limit",
+            soak::splice_limit,
+        );
         return;
     }
     if std::env::args().any(|a| a == "--soak") {
         eprintln!("e2e: fault soak only");
         let cells = soak::measure(&soak_plan);
         let row = soak::row(&cells, &soak_plan);
-        println!("{}", report::text(std::slice::from_ref(&row)));
         let section = soak::section(&cells, &soak_plan, &date());
-        println!("{section}");
-        if quick {
-            eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
-            return;
-        }
-        let path = proc::repo_file("BENCHMARKS.md");
-        let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-        let new = soak::splice(&old, &report::markdown_line(&row), &section);
-        std::fs::write(&path, new).expect("write BENCHMARKS.md");
-        eprintln!("e2e: wrote the fault soak into {}", path.display());
+        show_and_write(&row, &section, quick, "the fault soak", soak::splice);
         return;
     }
     let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("e2e");
@@ -211,4 +197,27 @@ fn main() {
     let path = proc::repo_file("BENCHMARKS.md");
     std::fs::write(&path, markdown).expect("write BENCHMARKS.md");
     eprintln!("e2e: wrote {}", path.display());
+}
+
+#[cfg(target_os = "linux")]
+/// Prints a soak's row and section, and writes them into BENCHMARKS.md with `splice` unless the
+/// run was `--quick`.
+fn show_and_write(
+    row: &report::Row,
+    section: &str,
+    quick: bool,
+    what: &str,
+    splice: fn(&str, &str, &str) -> String,
+) {
+    println!("{}", report::text(std::slice::from_ref(row)));
+    println!("{section}");
+    if quick {
+        eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
+        return;
+    }
+    let path = proc::repo_file("BENCHMARKS.md");
+    let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+    let new = splice(&old, &report::markdown_line(row), section);
+    std::fs::write(&path, new).expect("write BENCHMARKS.md");
+    eprintln!("e2e: wrote {what} into {}", path.display());
 }

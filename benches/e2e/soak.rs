@@ -198,23 +198,7 @@ pub fn section(cells: &[Cell], plan: &Plan, date: &str) -> String {
             cell.took.as_secs_f64(),
         );
     }
-    let wrong: Vec<String> = cells
-        .iter()
-        .filter(|c| !c.counts.examples.is_empty())
-        .map(|c| {
-            format!(
-                "- {} / {}: {}",
-                c.target.name(),
-                c.fault.name(),
-                c.counts.examples.join("; ")
-            )
-        })
-        .collect();
-    if !wrong.is_empty() {
-        md.push_str("\nThe first silent wrong values of each cell (index, value, truth):\n\n");
-        md.push_str(&wrong.join("\n"));
-        md.push('\n');
-    }
+    push_wrong_examples(&mut md, cells);
     md
 }
 
@@ -316,6 +300,12 @@ pub fn limit_section(cells: &[Cell], plan: &Plan, date: &str) -> String {
             cell.took.as_secs_f64(),
         );
     }
+    push_wrong_examples(&mut md, cells);
+    md
+}
+
+/// The first silent wrong values of each cell that had any, as a list after a table.
+fn push_wrong_examples(md: &mut String, cells: &[Cell]) {
     let wrong: Vec<String> = cells
         .iter()
         .filter(|c| !c.counts.examples.is_empty())
@@ -333,7 +323,6 @@ pub fn limit_section(cells: &[Cell], plan: &Plan, date: &str) -> String {
         md.push_str(&wrong.join("\n"));
         md.push('\n');
     }
-    md
 }
 
 /// `BENCHMARKS.md` with the soak's row and section replaced by `row_line` and `section` (or
