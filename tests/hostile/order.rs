@@ -3,11 +3,9 @@
 //! the REPL, in `-c` runs (notices on stderr, replies on stdout, one terminal) and before the
 //! `print` line of a script that shows the reply.
 
-use std::process::Command;
+use rexpect::session::PtySession;
 
-use rexpect::session::{PtySession, spawn_command};
-
-use crate::util::{EXPECT_MS, bin, tempdir};
+use crate::util::tempdir;
 
 use super::{Act, Fake, Via, on, replace_last};
 
@@ -27,15 +25,8 @@ const NOTICES: [&str; 3] = [
 ];
 
 fn start(args: &[String]) -> PtySession {
-    let data = tempdir();
-    let mut command = Command::new(bin());
-    command
-        .args(args)
-        .env("NO_COLOR", "1")
-        .env("TERM", "xterm")
-        .env("XDG_DATA_HOME", &data)
-        .env("HOME", &data);
-    spawn_command(command, Some(EXPECT_MS)).expect("tmclsh starts in a pty")
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    crate::util::terminal(&args, &[])
 }
 
 fn assert_notices_in(text: &str, what: &str) {
