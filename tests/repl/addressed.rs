@@ -14,12 +14,13 @@ use crate::util::{bin, tempdir};
 /// The red that marks an invalid line (crossterm's `red()`).
 const RED: &str = "\x1b[38;5;9m";
 
-/// The REPL on `port` with colours on, so the highlighting can be read.
-fn coloured_repl(port: &str) -> PtySession {
+/// The REPL on `port` (with `extra` flags) with colours on, so the highlighting can be read.
+fn coloured_repl(port: &str, extra: &[&str]) -> PtySession {
     let data = tempdir();
     let mut command = Command::new(bin());
     command
         .args(["--port", port])
+        .args(extra)
         .env_remove("NO_COLOR")
         .env("TERM", "xterm")
         .env("XDG_DATA_HOME", &data)
@@ -54,7 +55,7 @@ fn regex_escape(text: &str) -> String {
 #[test]
 fn a_line_to_another_module_is_completed_hinted_and_highlighted_with_its_profile() {
     let sim = Sim::start(&["--pty", "--modules", "1:tmcm-142,2:tmcm-6110"]);
-    let mut p = coloured_repl(&sim.first);
+    let mut p = coloured_repl(&sim.first, &[]);
     // Module 2 is not identified yet: taken for a TMCM-142 like the target, and the hint says
     // so; the line is not marked invalid, since the module decides once it is asked.
     let shown = typed(
@@ -97,6 +98,31 @@ fn a_line_to_another_module_is_completed_hinted_and_highlighted_with_its_profile
     assert!(shown.contains(RED), "{shown:?}");
     // And Tab without an address offers the target's parameters: none named chopper_.
     type_in(&mut p, "AGAP chopper_\t");
+    p.exp_string("\x07").unwrap();
+    type_in(&mut p, "\x15");
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
+
+#[test]
+fn a_given_profile_reads_every_module_s_lines_before_and_after_it_answers() {
+    let sim = Sim::start(&["--pty", "--modules", "1:tmcm-142,2:tmcm-6110"]);
+    let mut p = coloured_repl(&sim.first, &["--profile", "tmcm-142"]);
+    // The given profile is used for module 2 whatever it says: nothing is assumed, and the line
+    // is invalid before it is sent …
+    let shown = typed(
+        &mut p,
+        "BGAP 4, 5",
+        r"motor 5 does not exist: the TMCM-142 has one motor \(0\.\.0\)\x1b",
+    );
+    assert!(shown.starts_with(&format!("A> {RED}BGAP 4, 5")), "{shown:?}");
+    assert!(!shown.contains("not identified"), "{shown:?}");
+    // … refused when it is …
+    type_in(&mut p, "BGAP 4, 5\r");
+    p.exp_string("error: motor 5 does not exist").unwrap();
+    p.exp_string("A> ").unwrap();
+    // … and still offers no TMCM-6110 parameter once module 2 has answered.
+    type_in(&mut p, "BGAP chopper_\t");
     p.exp_string("\x07").unwrap();
     type_in(&mut p, "\x15");
     p.send_control('d').unwrap();

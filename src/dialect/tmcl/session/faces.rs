@@ -7,7 +7,9 @@ use std::time::Duration;
 
 use crate::commission::ParamDevice;
 use crate::dialect::session::{BusScan, DialectSession, Reply};
+use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::protocol::line::address_char;
+use crate::dialect::tmcl::protocol::validate::Mode;
 use crate::dialect::tmcl::{ModuleLines, TmclGrammar, config, help, helpers, render, scan};
 use crate::dialect::{Dialect, Grammar, Helper};
 use crate::exit::Failure;
@@ -156,16 +158,19 @@ impl TmclSession {
     /// session has for it, or — a module it will identify before the first line — with the
     /// target's, assumed until the module answers.
     fn typed_lines(&self, module: u8) -> ModuleLines {
-        let mode = self.validation_mode(module);
         let unasked = !self.known.contains_key(&module) && !self.modules.contains_key(&module);
         if self.identify_each && self.core.options.enter && !self.profile_given && unasked {
+            // Reached the way a module of the target's type would be.
             let profile = self.profile.clone();
+            let binary =
+                self.binary_only || profile.identity.ascii_interface() == AsciiInterface::No;
+            let mode = if binary { Mode::Binary } else { Mode::Ascii };
             return ModuleLines {
                 profile,
                 mode,
                 assumed: true,
             };
         }
-        ModuleLines::known(self.profile_of(module), mode)
+        ModuleLines::known(self.profile_of(module), self.validation_mode(module))
     }
 }
