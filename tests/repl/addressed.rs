@@ -115,7 +115,10 @@ fn a_given_profile_reads_every_module_s_lines_before_and_after_it_answers() {
         "BGAP 4, 5",
         r"motor 5 does not exist: the TMCM-142 has one motor \(0\.\.0\)\x1b",
     );
-    assert!(shown.starts_with(&format!("A> {RED}BGAP 4, 5")), "{shown:?}");
+    assert!(
+        shown.starts_with(&format!("A> {RED}BGAP 4, 5")),
+        "{shown:?}"
+    );
     assert!(!shown.contains("not identified"), "{shown:?}");
     // … refused when it is …
     type_in(&mut p, "BGAP 4, 5\r");

@@ -45,7 +45,7 @@ pub(super) fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
             )?;
             writeln!(
                 out,
-                "{UNCERTAIN} after a mnemonic: the SMD4 document leaves part of it open or contradicts itself."
+                "{UNCERTAIN} after a mnemonic or a flag bit: the SMD4 document leaves part of it open or contradicts itself."
             )?;
         }
         _ => return Ok(false),
@@ -167,6 +167,15 @@ mod tests {
         assert!(text.contains("status bits 5, 6, 13, 14, 15"), "{text}");
         assert!(text.contains("error bits 10, 11, 12, 13, 14, 15"), "{text}");
         assert!(text.contains("does not explain it"), "{text}");
+        // A bit the document names two ways carries the sign `:help params` explains.
+        assert!(text.contains("12  Boost Disable Jumper * — "), "{text}");
+        let mut params = Vec::new();
+        assert!(topic("params", &mut params).unwrap());
+        let params = String::from_utf8(params).unwrap();
+        assert!(
+            params.contains("* after a mnemonic or a flag bit"),
+            "{params}"
+        );
         // Other commands have no flag table.
         assert!(!help("MOTOR:VMAX").contains("SFLAGS"));
         assert!(!help("MOTOR:RUNR").contains("SFLAGS"));
