@@ -6,6 +6,8 @@
 
 mod addressing;
 mod console;
+#[cfg(unix)]
+mod flags;
 mod lines;
 mod motion;
 mod multiline;

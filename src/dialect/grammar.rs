@@ -41,6 +41,9 @@ pub enum Check {
     Incomplete,
     /// Nothing typed after it makes it valid; the reason.
     Invalid(String),
+    /// Refused by the profile a module not identified yet is taken to have, which it may not
+    /// have: the module decides once the line is sent (shown neutral, with the reason).
+    Assumed(String),
 }
 
 /// Whether completing the last word of `line` offers a longer word: the line is on its way.

@@ -96,7 +96,7 @@ impl Hinter for ReplHelper {
         }
         // An invalid line's hint is why; a line on its way gets the command's or parameter's.
         match self.check(text) {
-            Check::Invalid(reason) => Some(format!("  ← {reason}")),
+            Check::Invalid(reason) | Check::Assumed(reason) => Some(format!("  ← {reason}")),
             _ => self.grammar.hint(text),
         }
     }

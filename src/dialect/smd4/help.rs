@@ -2,7 +2,9 @@
 
 use std::io::{self, Write};
 
+use super::protocol::flags::FlagTable;
 use super::protocol::{ADDRESSING_HELP, Smd4Spec, hints};
+use super::values;
 use crate::dialect::UNCERTAIN;
 use crate::wrap::{fit, terminal_width};
 
@@ -43,7 +45,7 @@ pub(super) fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
             )?;
             writeln!(
                 out,
-                "{UNCERTAIN} after a mnemonic: the SMD4 document leaves part of it open or contradicts itself."
+                "{UNCERTAIN} after a mnemonic or a flag bit: the SMD4 document leaves part of it open or contradicts itself."
             )?;
         }
         _ => return Ok(false),
@@ -53,8 +55,8 @@ pub(super) fn topic(topic: &str, out: &mut dyn Write) -> io::Result<bool> {
 
 /// `:help MOTOR:VMAX`: the request's usage, what its argument accepts, and any doubt about it;
 /// false when `word` is no mnemonic of the table.
-pub(super) fn command(spec: &Smd4Spec, word: &str, out: &mut dyn Write) -> io::Result<bool> {
-    let Some(spec) = spec.commands.get(word) else {
+pub(super) fn command(table: &Smd4Spec, word: &str, out: &mut dyn Write) -> io::Result<bool> {
+    let Some(spec) = table.commands.get(word) else {
         return Ok(false);
     };
     let usage = hints::usage(spec);
@@ -73,5 +75,109 @@ pub(super) fn command(spec: &Smd4Spec, word: &str, out: &mut dyn Write) -> io::R
     if spec.uncertain {
         writeln!(out, "  ({UNCERTAIN}: see :help params)")?;
     }
+    if values::reads_flags(spec) {
+        flag_bits(table, out)?;
+    }
     Ok(true)
+}
+
+/// The bits of both flag words, for `:help SYS:FLAGS`: what the reply's two words say, and what
+/// the fixed item after them is.
+fn flag_bits(spec: &Smd4Spec, out: &mut dyn Write) -> io::Result<()> {
+    let width = terminal_width();
+    let note = "  The reply is the two flag words every reply starts with, read bit by bit below. \
+                The item 1 after them is in the protocol document's example, which does not \
+                explain it: it is checked and not shown (:raw shows it).";
+    writeln!(out, "{}", fit(note, 2, width))?;
+    let words = [
+        ("Status (SFLAGS, the first word):", &spec.sflags, "status"),
+        (
+            "Errors (EFLAGS, the second word; latching: SYS:CLR clears them, and any set bit \
+             disables the motor):",
+            &spec.eflags,
+            "error",
+        ),
+    ];
+    let mut reserved = Vec::new();
+    for (title, table, word) in words {
+        writeln!(out, "{}", fit(&format!("  {title}"), 2, width))?;
+        for bit in table
+            .bits()
+            .iter()
+            .filter(|b| !is_reserved(b.name.as_str()))
+        {
+            let mark = if bit.uncertain {
+                format!(" {UNCERTAIN}")
+            } else {
+                String::new()
+            };
+            let row = format!("  {:>4}  {}{mark} — {}", bit.bit, bit.name, bit.meaning);
+            writeln!(out, "{}", fit(&row, 8, width))?;
+        }
+        let bits = reserved_bits(table);
+        if !bits.is_empty() {
+            reserved.push(format!("{word} bits {bits}"));
+        }
+    }
+    if !reserved.is_empty() {
+        let row = format!("  Reserved, reading 0: {}.", reserved.join("; "));
+        writeln!(out, "{}", fit(&row, 2, width))?;
+    }
+    Ok(())
+}
+
+/// A bit the table keeps for later use (`Reserved`).
+fn is_reserved(name: &str) -> bool {
+    name.eq_ignore_ascii_case("reserved")
+}
+
+/// The reserved bits of a word: `5, 6, 13, 14, 15`.
+fn reserved_bits(table: &FlagTable) -> String {
+    let bits: Vec<String> = table
+        .bits()
+        .iter()
+        .filter(|b| is_reserved(&b.name))
+        .map(|b| b.bit.to_string())
+        .collect();
+    bits.join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn help(word: &str) -> String {
+        let mut out = Vec::new();
+        assert!(command(Smd4Spec::builtin(), word, &mut out).unwrap());
+        String::from_utf8(out).unwrap()
+    }
+
+    #[test]
+    fn sys_flags_lists_every_named_bit_of_both_words() {
+        let text = help("SYS:FLAGS");
+        let spec = Smd4Spec::builtin();
+        for bit in spec.sflags.bits().iter().chain(spec.eflags.bits()) {
+            if !is_reserved(&bit.name) {
+                let row = format!("{:>4}  {}", bit.bit, bit.name);
+                assert!(text.contains(&row), "{row}: {text}");
+            }
+        }
+        assert!(text.contains("  7  Standby — "), "{text}");
+        assert!(text.contains("  5  Emergency Stop — "), "{text}");
+        assert!(text.contains("status bits 5, 6, 13, 14, 15"), "{text}");
+        assert!(text.contains("error bits 10, 11, 12, 13, 14, 15"), "{text}");
+        assert!(text.contains("does not explain it"), "{text}");
+        // A bit the document names two ways carries the sign `:help params` explains.
+        assert!(text.contains("12  Boost Disable Jumper * — "), "{text}");
+        let mut params = Vec::new();
+        assert!(topic("params", &mut params).unwrap());
+        let params = String::from_utf8(params).unwrap();
+        assert!(
+            params.contains("* after a mnemonic or a flag bit"),
+            "{params}"
+        );
+        // Other commands have no flag table.
+        assert!(!help("MOTOR:VMAX").contains("SFLAGS"));
+        assert!(!help("MOTOR:RUNR").contains("SFLAGS"));
+    }
 }

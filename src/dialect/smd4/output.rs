@@ -5,14 +5,25 @@ use serde_json::{Value, json};
 
 use crate::dialect::session::ReplyForms;
 
+use super::protocol::Smd4Spec;
 use super::session::Smd4Exchange;
+use super::values;
 
 impl ReplyForms for Smd4Exchange {
     /// The data items as received, comma-separated, with any further lines of a listing after
-    /// them; empty when the drive sends no reply.
+    /// them; empty when the drive sends no reply. SYS:FLAGS reads the flag words: they are its
+    /// value (`0x0888,0x0000`), not the fixed item after them.
     fn value(&self) -> String {
+        let spec = Smd4Spec::builtin();
+        let reads_flags = spec
+            .commands
+            .get(&self.request.mnemonic)
+            .is_some_and(values::reads_flags);
         match &self.reply {
             None => String::new(),
+            Some(r) if reads_flags && r.is_ok() => {
+                format!("0x{:04X},0x{:04X}", r.sflags.0, r.eflags.0)
+            }
             Some(r) => {
                 let mut text = r.data_strings().join(",");
                 for line in &r.lines {

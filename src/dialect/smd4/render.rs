@@ -3,7 +3,7 @@
 
 use crate::dialect::session::Decoded;
 use crate::dialect::smd4::protocol::commands::trim_number;
-use crate::dialect::smd4::protocol::{Smd4Spec, Value};
+use crate::dialect::smd4::protocol::{ReplyShape, Smd4Spec, Value};
 use crate::dialect::smd4::session::Smd4Exchange;
 use crate::dialect::smd4::values;
 
@@ -33,16 +33,26 @@ pub fn decode(exchange: &Smd4Exchange, spec: &Smd4Spec) -> Decoded {
         };
     }
     let command = spec.commands.get(&exchange.request.mnemonic);
+    // SYS:FLAGS answers with the flags themselves; its fixed item `1` carries nothing.
+    if command.is_some_and(values::reads_flags) {
+        return Decoded {
+            text: values::flags_reply(spec, response.sflags.0, response.eflags.0),
+            ok: true,
+        };
+    }
     let unit = command
         .map(|c| c.unit.clone())
         .filter(|u| !u.is_empty())
         .map(|u| format!(" {u}"))
         .unwrap_or_default();
     let meanings = command.map(values::decoding).unwrap_or_default();
+    // The fixed item the document's examples show (MOTOR:RUNR's `1`), which the reply check
+    // has made sure of, says nothing more than "ok".
+    let fixed_item = command.is_some_and(|c| matches!(c.reply, ReplyShape::Literal(_)));
     let mut text = if let Some((user, real)) = response.user_real() {
         let (user, real) = (trim_number(user), trim_number(real));
         format!("{user}{unit} requested, {real}{unit} real")
-    } else if response.data.is_empty() {
+    } else if response.data.is_empty() || fixed_item {
         "ok".to_string()
     } else {
         let items: Vec<String> = response
@@ -121,5 +131,19 @@ mod tests {
             shown("MOTOR:F", "0x0000,0x0020,2"),
             "2 (Phases shorted to GND) [none] errors: Emergency Stop"
         );
+    }
+
+    #[test]
+    fn sys_flags_shows_the_two_words_it_reads_not_its_fixed_item() {
+        assert_eq!(
+            shown("SYS:FLAGS", "0x0888,0x0000,1"),
+            "0x0888, 0x0000 (status: External Enable, Standby, Boost Operational; errors: none)"
+        );
+        assert_eq!(
+            shown("SYS:FLAGS", "0x0000,0x0003,1"),
+            "0x0000, 0x0003 (status: none; errors: Temp Short, Temp Open)"
+        );
+        // MOTOR:RUNR has the same fixed item: it moved, and the item says nothing more.
+        assert_eq!(shown("MOTOR:RUNR", "0x0000,0x0000,1"), "ok [none]");
     }
 }

@@ -52,6 +52,22 @@ pub fn explain_flags(spec: &Smd4Spec, sflags: u16, eflags: u16) -> String {
     )
 }
 
+/// Whether `command` reads the two flag words (SYS:FLAGS): a query whose only data item is the
+/// fixed one the document's example shows (`0x0000,0x0000,1`) and does not explain. The reply
+/// check has made sure of that item; what the command answers is the flags.
+pub fn reads_flags(command: &Smd4Command) -> bool {
+    command.readable && matches!(command.reply, ReplyShape::Literal(_))
+}
+
+/// The flag words as a SYS:FLAGS read shows them, with what they mean:
+/// `0x0888, 0x0000 (status: External Enable, Standby, Boost Operational; errors: none)`.
+pub fn flags_reply(spec: &Smd4Spec, sflags: u16, eflags: u16) -> String {
+    format!(
+        "0x{sflags:04X}, 0x{eflags:04X} ({})",
+        explain_flags(spec, sflags, eflags)
+    )
+}
+
 /// What `value`, read with `command`, means where the table says: the label of an enumerated
 /// value, or the flags of SYS:FLAGS (whose value is its two words, `0x0888 0x0000`).
 pub fn explain(spec: &Smd4Spec, command: &Smd4Command, value: &ParamValue) -> Option<String> {
@@ -106,6 +122,23 @@ mod tests {
         assert_eq!(explained("MOTOR:VMAX", 1000.0.into()), None);
         assert_eq!(explained("MOTOR:RES", 256.into()), None);
         assert_eq!(explained("COMS:SERIAL:BAUD", 115200.into()), None);
+    }
+
+    #[test]
+    fn only_sys_flags_reads_the_flag_words() {
+        let reading: Vec<&str> = spec()
+            .commands
+            .iter()
+            .filter(|c| reads_flags(c))
+            .map(|c| c.mnemonic.as_str())
+            .collect();
+        // MOTOR:RUNR has the same fixed item, but it moves the motor and reads nothing.
+        assert_eq!(reading, ["SYS:FLAGS"]);
+        assert_eq!(
+            flags_reply(spec(), 0x0888, 0x0020),
+            "0x0888, 0x0020 (status: External Enable, Standby, Boost Operational; errors: \
+             Emergency Stop)"
+        );
     }
 
     #[test]

@@ -23,7 +23,7 @@ pub mod script;
 pub mod session;
 pub mod sim;
 
-pub use grammar::TmclGrammar;
+pub use grammar::{ModuleLines, TmclGrammar};
 
 use crate::dialect::{Dialect, DialectSession};
 

@@ -7,9 +7,11 @@ use std::time::Duration;
 
 use crate::commission::ParamDevice;
 use crate::dialect::session::{BusScan, DialectSession, Reply};
+use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::protocol::ModuleName;
 use crate::dialect::tmcl::protocol::line::address_char;
-use crate::dialect::tmcl::{TmclGrammar, config, help, helpers, render, scan};
+use crate::dialect::tmcl::protocol::validate::Mode;
+use crate::dialect::tmcl::{ModuleLines, TmclGrammar, config, help, helpers, render, scan};
 use crate::dialect::{Dialect, Grammar, Helper};
 use crate::exit::Failure;
 use crate::script::Script;
@@ -89,10 +91,12 @@ impl DialectSession for TmclSession {
         self.note_identifications();
     }
 
-    /// The profile, and the mode of the target module.
+    /// The profile and mode of the target module, and of every module a line can address.
     fn grammar(&self) -> Arc<dyn Grammar> {
         let mode = self.validation_mode(self.target);
-        Arc::new(TmclGrammar::new(self.profile.clone(), mode))
+        let grammar = TmclGrammar::new(self.profile.clone(), mode);
+        let others = (1..=26).filter(|&m| m != self.target);
+        Arc::new(others.fold(grammar, |g, m| g.with_module(m, self.typed_lines(m))))
     }
 
     fn run_helper(
@@ -156,5 +160,27 @@ impl DialectSession for TmclSession {
             self.enter_ascii(module)?;
         }
         Ok(())
+    }
+}
+
+impl TmclSession {
+    /// How lines to `module` are read while typed, without asking the bus: with the profile the
+    /// session has for it, or — a module it will identify before the first line — with the
+    /// target's, assumed until the module answers.
+    fn typed_lines(&self, module: u8) -> ModuleLines {
+        let unasked = !self.known.contains_key(&module) && !self.modules.contains_key(&module);
+        if self.identify_each && self.core.options.enter && !self.profile_given && unasked {
+            // Reached the way a module of the target's type would be.
+            let profile = self.profile.clone();
+            let binary =
+                self.binary_only || profile.identity.ascii_interface() == AsciiInterface::No;
+            let mode = if binary { Mode::Binary } else { Mode::Ascii };
+            return ModuleLines {
+                profile,
+                mode,
+                assumed: true,
+            };
+        }
+        ModuleLines::known(self.profile_of(module), self.validation_mode(module))
     }
 }
