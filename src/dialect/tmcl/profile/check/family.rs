@@ -7,7 +7,7 @@ use std::collections::{BTreeSet, HashMap};
 use super::{Problem, Step, check_range};
 use crate::dialect::tmcl::profile::commands::{CommandTable, OperandKind};
 use crate::dialect::tmcl::profile::family::{self, AsciiInterface, Condition, GENERATIONS};
-use crate::dialect::tmcl::profile::load::{CommandRow, ProfileFile, RangeWhenRow};
+use crate::dialect::tmcl::profile::load::{CommandRow, Meta, ProfileFile, RangeWhenRow};
 use crate::dialect::tmcl::profile::version;
 
 /// Every problem of the family fields.
@@ -43,7 +43,23 @@ fn meta(key: &'static str) -> Vec<Step> {
 fn check_identity(file: &ProfileFile, problems: &mut Vec<Problem>) {
     let m = &file.meta;
     let format = m.module_number.and_then(version::format_for);
-    if let Some(number) = m.module_number {
+    check_module_number(m.module_number, format, problems);
+    check_version_prefix(m, problems);
+    check_version_format(m, format, problems);
+    check_bootloader_format(m, problems);
+    check_simulated_version(file, problems);
+    check_aliases(m, problems);
+    check_ascii_interface(m, problems);
+    check_parameter_generation(m, problems);
+}
+
+/// A module number has a version format (three or four digits).
+fn check_module_number(
+    number: Option<u32>,
+    format: Option<&'static str>,
+    problems: &mut Vec<Problem>,
+) {
+    if let Some(number) = number {
         if format.is_none() {
             problems.push(Problem::at(
                 meta("module_number"),
@@ -51,78 +67,103 @@ fn check_identity(file: &ProfileFile, problems: &mut Vec<Problem>) {
             ));
         }
     }
-    if let Some(prefix) = &m.version_prefix {
-        match m.module_number {
-            None => problems.push(Problem::at(
-                meta("version_prefix"),
-                "version_prefix needs the module_number it is the digits of",
-            )),
-            Some(number) if *prefix != number.to_string() => problems.push(Problem::at(
-                meta("version_prefix"),
-                format!(
-                    "version_prefix \"{}\" is not the module number {number}: command 136 \
-                     answers with the module number first",
-                    prefix.escape_debug()
-                ),
-            )),
-            Some(_) => {}
-        }
+}
+
+/// `version_prefix` is the module number's digits, which command 136 answers first.
+fn check_version_prefix(m: &Meta, problems: &mut Vec<Problem>) {
+    let Some(prefix) = &m.version_prefix else {
+        return;
+    };
+    match m.module_number {
+        None => problems.push(Problem::at(
+            meta("version_prefix"),
+            "version_prefix needs the module_number it is the digits of",
+        )),
+        Some(number) if *prefix != number.to_string() => problems.push(Problem::at(
+            meta("version_prefix"),
+            format!(
+                "version_prefix \"{}\" is not the module number {number}: command 136 \
+                 answers with the module number first",
+                prefix.escape_debug()
+            ),
+        )),
+        Some(_) => {}
     }
-    if let Some(written) = &m.version_format {
-        let expected: &[&str] = match format {
-            Some(f) => &[f][..],
-            None => &["NNNVa.bc", "NNNNVabc"],
-        };
-        if !expected.contains(&written.as_str()) {
-            problems.push(Problem::at(
-                meta("version_format"),
-                format!(
-                    "version_format \"{}\" must be {} (136 answers eight characters)",
-                    written.escape_debug(),
-                    expected.join(" or ")
-                ),
-            ));
-        }
+}
+
+/// `version_format` is the format of the module number's length (either, without a number).
+fn check_version_format(m: &Meta, format: Option<&'static str>, problems: &mut Vec<Problem>) {
+    let Some(written) = &m.version_format else {
+        return;
+    };
+    let expected: &[&str] = match format {
+        Some(f) => &[f][..],
+        None => &["NNNVa.bc", "NNNNVabc"],
+    };
+    if !expected.contains(&written.as_str()) {
+        problems.push(Problem::at(
+            meta("version_format"),
+            format!(
+                "version_format \"{}\" must be {} (136 answers eight characters)",
+                written.escape_debug(),
+                expected.join(" or ")
+            ),
+        ));
     }
-    if let Some(loader) = &m.bootloader_format {
-        let expected = m.version_format.as_ref().map(|f| f.replacen('V', "B", 1));
-        match expected {
-            Some(expected) if *loader != expected => problems.push(Problem::at(
-                meta("bootloader_format"),
-                format!(
-                    "bootloader_format \"{}\" must be the version_format with B for V: \
-                     \"{expected}\"",
-                    loader.escape_debug()
-                ),
-            )),
-            None => problems.push(Problem::at(
-                meta("bootloader_format"),
-                "bootloader_format needs the version_format it varies",
-            )),
-            Some(_) => {}
-        }
+}
+
+/// `bootloader_format` is the `version_format` with B for V.
+fn check_bootloader_format(m: &Meta, problems: &mut Vec<Problem>) {
+    let Some(loader) = &m.bootloader_format else {
+        return;
+    };
+    let expected = m.version_format.as_ref().map(|f| f.replacen('V', "B", 1));
+    match expected {
+        Some(expected) if *loader != expected => problems.push(Problem::at(
+            meta("bootloader_format"),
+            format!(
+                "bootloader_format \"{}\" must be the version_format with B for V: \
+                 \"{expected}\"",
+                loader.escape_debug()
+            ),
+        )),
+        None => problems.push(Problem::at(
+            meta("bootloader_format"),
+            "bootloader_format needs the version_format it varies",
+        )),
+        Some(_) => {}
     }
+}
+
+/// The simulator's `version_string` has the module's format and prefix.
+fn check_simulated_version(file: &ProfileFile, problems: &mut Vec<Problem>) {
+    let m = &file.meta;
     let simulated = file
         .simulation
         .as_ref()
         .and_then(|s| s.version_string.as_ref());
-    if let (Some(text), Some(format)) = (simulated, &m.version_format) {
-        let prefix = m.version_prefix.as_deref().unwrap_or("");
-        if !version::fits(text, format) || !text.starts_with(prefix) {
-            problems.push(Problem::at(
-                vec![Step::Key("simulation"), Step::Key("version_string")],
-                format!(
-                    "version_string \"{}\" does not have the module's format {format}{}",
-                    text.escape_debug(),
-                    if prefix.is_empty() {
-                        String::new()
-                    } else {
-                        format!(" starting with {prefix}")
-                    }
-                ),
-            ));
-        }
+    let (Some(text), Some(format)) = (simulated, &m.version_format) else {
+        return;
+    };
+    let prefix = m.version_prefix.as_deref().unwrap_or("");
+    if !version::fits(text, format) || !text.starts_with(prefix) {
+        problems.push(Problem::at(
+            vec![Step::Key("simulation"), Step::Key("version_string")],
+            format!(
+                "version_string \"{}\" does not have the module's format {format}{}",
+                text.escape_debug(),
+                if prefix.is_empty() {
+                    String::new()
+                } else {
+                    format!(" starting with {prefix}")
+                }
+            ),
+        ));
     }
+}
+
+/// Aliases are product names without spaces, other than the module's own, each given once.
+fn check_aliases(m: &Meta, problems: &mut Vec<Problem>) {
     let mut aliases: HashMap<String, usize> = HashMap::new();
     for (k, alias) in m.aliases.iter().enumerate() {
         let at = vec![Step::Key("meta"), Step::Key("aliases"), Step::Row(k)];
@@ -143,28 +184,38 @@ fn check_identity(file: &ProfileFile, problems: &mut Vec<Problem>) {
             problems.push(Problem::at(at, format!("alias {alias} is given twice")));
         }
     }
-    if let Some(word) = &m.ascii_interface {
-        if AsciiInterface::parse(word).is_none() {
-            problems.push(Problem::at(
-                meta("ascii_interface"),
-                format!(
-                    "ascii_interface \"{}\" must be yes, no or unconfirmed",
-                    word.escape_debug()
-                ),
-            ));
-        }
+}
+
+/// `ascii_interface` is one of the words [`AsciiInterface`] knows.
+fn check_ascii_interface(m: &Meta, problems: &mut Vec<Problem>) {
+    let Some(word) = &m.ascii_interface else {
+        return;
+    };
+    if AsciiInterface::parse(word).is_none() {
+        problems.push(Problem::at(
+            meta("ascii_interface"),
+            format!(
+                "ascii_interface \"{}\" must be yes, no or unconfirmed",
+                word.escape_debug()
+            ),
+        ));
     }
-    if let Some(generation) = &m.parameter_generation {
-        if !GENERATIONS.contains(&generation.as_str()) {
-            problems.push(Problem::at(
-                meta("parameter_generation"),
-                format!(
-                    "parameter_generation \"{}\" must be one of {} (data/profiles/README.md)",
-                    generation.escape_debug(),
-                    GENERATIONS.join(", ")
-                ),
-            ));
-        }
+}
+
+/// `parameter_generation` is one of [`GENERATIONS`].
+fn check_parameter_generation(m: &Meta, problems: &mut Vec<Problem>) {
+    let Some(generation) = &m.parameter_generation else {
+        return;
+    };
+    if !GENERATIONS.contains(&generation.as_str()) {
+        problems.push(Problem::at(
+            meta("parameter_generation"),
+            format!(
+                "parameter_generation \"{}\" must be one of {} (data/profiles/README.md)",
+                generation.escape_debug(),
+                GENERATIONS.join(", ")
+            ),
+        ));
     }
 }
 

@@ -216,6 +216,34 @@ fn identification_fields_are_checked_on_their_lines() {
 }
 
 #[test]
+fn identification_fields_need_the_fields_they_derive_from() {
+    // Without a module number the prefix has nothing to be the digits of, and either format fits.
+    let text = GOOD.replace("module_number = 1234\n", "");
+    let error = load(&text).unwrap_err();
+    let at = line(&text, "version_prefix");
+    assert_eq!(
+        error,
+        format!("line {at}: version_prefix needs the module_number it is the digits of")
+    );
+    let text = text
+        .replace("version_prefix = \"1234\"\n", "")
+        .replace("\"NNNNVabc\"", "\"NNNVabc\"");
+    let error = load(&text).unwrap_err();
+    assert!(
+        error.contains("version_format \"NNNVabc\" must be NNNVa.bc or NNNNVabc"),
+        "{error}"
+    );
+    // A boot loader format varies the version format: without one it cannot be checked.
+    let text = GOOD.replace("version_format = \"NNNNVabc\"\n", "");
+    let error = load(&text).unwrap_err();
+    let at = line(&text, "bootloader_format");
+    assert_eq!(
+        error,
+        format!("line {at}: bootloader_format needs the version_format it varies")
+    );
+}
+
+#[test]
 fn the_command_set_is_checked_against_the_builtin_table() {
     refused_on_its_line(
         "absent",
