@@ -460,7 +460,17 @@ fn check_ascii(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut V
         ));
         return;
     }
-    // The mnemonics of the module's table, and those it lacks.
+    let known = known_mnemonics(file, base);
+    let seen = check_allowed_commands(list, &known, problems);
+    // A file with its own rows states the list twice: both must say the same.
+    if !file.command.is_empty() {
+        check_list_matches_flags(file, &seen, list_at, problems);
+    }
+}
+
+/// The mnemonics of the module's table (upper case), each with whether the module has it: a
+/// command marked absent in `[commands]` is known but lacking.
+fn known_mnemonics(file: &ProfileFile, base: Option<&CommandTable>) -> Vec<(String, bool)> {
     let absent: &[u8] = file.commands.as_ref().map_or(&[], |c| &c.absent);
     let mut known: Vec<(String, bool)> = Vec::new();
     if file.command.is_empty() {
@@ -483,6 +493,16 @@ fn check_ascii(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut V
                 .map(|c| (c.mnemonic.to_ascii_uppercase(), true)),
         );
     }
+    known
+}
+
+/// Each word of `allowed_commands` is listed once and names a command the module has; returns
+/// the words listed, in upper case.
+fn check_allowed_commands(
+    list: &[String],
+    known: &[(String, bool)],
+    problems: &mut Vec<Problem>,
+) -> BTreeSet<String> {
     let mut seen = BTreeSet::new();
     for (k, word) in list.iter().enumerate() {
         let at = vec![
@@ -513,48 +533,57 @@ fn check_ascii(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut V
             Some(_) => {}
         }
     }
-    // A file with its own rows states the list twice: both must say the same.
-    if !file.command.is_empty() {
-        let flagged: BTreeSet<String> = file
-            .command
-            .iter()
-            .filter(|c| c.ascii_allowed)
-            .map(|c| c.mnemonic.to_ascii_uppercase())
-            .collect();
-        let missing: Vec<&String> = flagged.difference(&seen).collect();
-        let unflagged: Vec<&String> = seen.difference(&flagged).collect();
-        if !missing.is_empty() || !unflagged.is_empty() {
-            let mut parts = Vec::new();
-            if !missing.is_empty() {
-                parts.push(format!(
-                    "ascii_allowed rows not listed: {}",
-                    missing
-                        .iter()
-                        .map(|s| s.as_str())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ));
-            }
-            if !unflagged.is_empty() {
-                parts.push(format!(
-                    "listed without ascii_allowed: {}",
-                    unflagged
-                        .iter()
-                        .map(|s| s.as_str())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ));
-            }
-            problems.push(Problem::at(
-                list_at,
-                format!(
-                    "allowed_commands disagrees with the ascii_allowed flags of the [[command]] \
-                     rows ({})",
-                    parts.join("; ")
-                ),
-            ));
-        }
+    seen
+}
+
+/// The `listed` commands are those of the file's `[[command]]` rows flagged `ascii_allowed`.
+fn check_list_matches_flags(
+    file: &ProfileFile,
+    listed: &BTreeSet<String>,
+    list_at: Vec<Step>,
+    problems: &mut Vec<Problem>,
+) {
+    let flagged: BTreeSet<String> = file
+        .command
+        .iter()
+        .filter(|c| c.ascii_allowed)
+        .map(|c| c.mnemonic.to_ascii_uppercase())
+        .collect();
+    let missing: Vec<&String> = flagged.difference(listed).collect();
+    let unflagged: Vec<&String> = listed.difference(&flagged).collect();
+    if missing.is_empty() && unflagged.is_empty() {
+        return;
     }
+    let mut parts = Vec::new();
+    if !missing.is_empty() {
+        parts.push(format!(
+            "ascii_allowed rows not listed: {}",
+            joined(&missing)
+        ));
+    }
+    if !unflagged.is_empty() {
+        parts.push(format!(
+            "listed without ascii_allowed: {}",
+            joined(&unflagged)
+        ));
+    }
+    problems.push(Problem::at(
+        list_at,
+        format!(
+            "allowed_commands disagrees with the ascii_allowed flags of the [[command]] \
+             rows ({})",
+            parts.join("; ")
+        ),
+    ));
+}
+
+/// "A, B, C".
+fn joined(words: &[&String]) -> String {
+    words
+        .iter()
+        .map(|s| s.as_str())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// `[[io_port]]` rows, and the `[simulation]` port lists that repeat them.

@@ -461,6 +461,15 @@ fn a_file_with_its_own_commands_changes_no_builtin_table() {
         ),
         "{error}"
     );
+    let text = own("ascii_allowed = true\n[ascii]\nallowed_commands = []\n");
+    let error = load(&text).unwrap_err();
+    assert!(
+        error.starts_with(
+            "line 14: allowed_commands disagrees with the ascii_allowed flags of the [[command]] \
+             rows (ascii_allowed rows not listed: STGP)"
+        ),
+        "{error}"
+    );
 }
 
 #[test]
