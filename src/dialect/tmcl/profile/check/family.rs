@@ -10,6 +10,8 @@ use crate::dialect::tmcl::profile::family::{self, AsciiInterface, Condition, GEN
 use crate::dialect::tmcl::profile::load::{CommandRow, Meta, ProfileFile, RangeWhenRow};
 use crate::dialect::tmcl::profile::version;
 
+mod io;
+
 /// Every problem of the family fields.
 pub(super) fn check(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut Vec<Problem>) {
     check_identity(file, problems);
@@ -33,7 +35,7 @@ pub(super) fn check(file: &ProfileFile, base: Option<&CommandTable>, problems: &
         }
     }
     check_ascii(file, base, problems);
-    check_io(file, problems);
+    io::check_io(file, problems);
 }
 
 fn meta(key: &'static str) -> Vec<Step> {
@@ -584,101 +586,6 @@ fn joined(words: &[&String]) -> String {
         .map(|s| s.as_str())
         .collect::<Vec<_>>()
         .join(", ")
-}
-
-/// `[[io_port]]` rows, and the `[simulation]` port lists that repeat them.
-fn check_io(file: &ProfileFile, problems: &mut Vec<Problem>) {
-    let mut seen: HashMap<(u8, u8), Vec<Step>> = HashMap::new();
-    let adc_max = file.simulation.as_ref().and_then(|s| s.adc_max);
-    for (i, row) in file.io_port.iter().enumerate() {
-        let at = |key| vec![Step::Key("io_port"), Step::Row(i), Step::Key(key)];
-        let (bank, port) = match (row.bank, row.port) {
-            (Some(bank), Some(port)) => (bank, port),
-            (None, None) => continue, // a signal documented, not addressed by GIO/SIO
-            (Some(_), None) => {
-                problems.push(Problem::at(
-                    at("bank"),
-                    "an I/O port with a bank needs its port",
-                ));
-                continue;
-            }
-            (None, Some(_)) => {
-                problems.push(Problem::at(
-                    at("port"),
-                    "an I/O port with a port needs its bank",
-                ));
-                continue;
-            }
-        };
-        let named = row.name.as_deref().or(row.signal.as_deref()).unwrap_or("");
-        if named.trim().is_empty() || named.chars().any(char::is_control) {
-            problems.push(Problem::at(
-                at("name"),
-                format!("I/O port {port} of bank {bank} needs a name"),
-            ));
-        }
-        // Help, hints and replies print these: a control character would be obeyed.
-        let pin = row.pin.as_ref().map(|p| p.text()).unwrap_or_default();
-        for (key, text) in [
-            ("kind", row.kind.as_str()),
-            ("unit", &row.unit),
-            ("pin", &pin),
-        ] {
-            if text.chars().any(char::is_control) {
-                problems.push(Problem::at(
-                    at(key),
-                    format!("the {key} of I/O port {port} of bank {bank} has a control character"),
-                ));
-            }
-        }
-        check_range(row.range, at("range"), "range", problems);
-        if let (Some([_, hi]), Some(max), 1) = (row.range, adc_max, bank) {
-            if hi > i64::from(max) {
-                problems.push(Problem::at(
-                    at("range"),
-                    format!("analog port range up to {hi} is above the ADC's adc_max {max}"),
-                ));
-            }
-        }
-        match seen.get(&(bank, port)) {
-            Some(first) => problems.push(
-                Problem::at(
-                    at("port"),
-                    format!("I/O port {port} of bank {bank} is defined twice"),
-                )
-                .also(first.clone()),
-            ),
-            None => {
-                seen.insert((bank, port), at("port"));
-            }
-        }
-    }
-    let Some(sim) = &file.simulation else { return };
-    if seen.is_empty() {
-        return; // no I/O map: the simulator's lists stand alone
-    }
-    for (bank, key, listed) in [
-        (0u8, "digital_inputs", &sim.digital_inputs),
-        (1, "analog_inputs", &sim.analog_inputs),
-        (2, "outputs", &sim.outputs),
-    ] {
-        let mapped: BTreeSet<u8> = seen
-            .keys()
-            .filter(|(b, _)| *b == bank)
-            .map(|(_, p)| *p)
-            .collect();
-        let simulated: BTreeSet<u8> = listed.iter().copied().collect();
-        if mapped != simulated {
-            problems.push(Problem::at(
-                vec![Step::Key("simulation"), Step::Key(key)],
-                format!(
-                    "{key} {:?} are not the ports of bank {bank} in [[io_port]] {:?}",
-                    simulated.iter().collect::<Vec<_>>(),
-                    mapped.iter().collect::<Vec<_>>()
-                ),
-            ));
-        }
-    }
 }
 
 #[cfg(test)]

@@ -482,3 +482,21 @@ fn a_generic_profile_has_no_parameters() {
         "{error}"
     );
 }
+
+#[test]
+fn an_io_port_is_addressed_by_bank_and_port_together() {
+    let at = line(GOOD, "bank = 2");
+    let text = GOOD.replace("bank = 2\n", "");
+    let error = load(&text).unwrap_err();
+    assert!(
+        error.contains(&format!(
+            "line {at}: an I/O port with a port needs its bank"
+        )),
+        "{error}"
+    );
+    refused_on_its_line(
+        "kind = \"digital input\"",
+        "unit = \"V\\u0007\"\nkind = \"digital input\"",
+        "the unit of I/O port 0 of bank 0 has a control character",
+    );
+}
