@@ -259,3 +259,25 @@ fn decoding_tables_must_decode_each_value_one_way() {
     let builtin = Profile::builtin();
     Profile::from_toml(&with_row(fine), Some(&builtin.commands)).unwrap();
 }
+
+#[test]
+fn a_parameter_has_a_name_and_a_default_it_can_take() {
+    let error = refused(&with_row("number = 6\nname = \" \"\nident = \"a\"\n"));
+    assert!(
+        error.starts_with("line 16: name must not be empty"),
+        "{error}"
+    );
+    // A spanning row names its numbers through its identifier.
+    let text = with_row("number = 6\nnumber_last = 7\nname = \"\"\nident = \"a\"\n");
+    assert!(Profile::from_toml(&text, Some(&Profile::builtin().commands)).is_ok());
+    let error = refused(&with_row(
+        "number = 6\nname = \"a\"\nident = \"a\"\ndefault = 4294967296\n",
+    ));
+    assert!(
+        error.starts_with("line 18: default 4294967296 is not a 32-bit value"),
+        "{error}"
+    );
+    // A placeholder row defines nothing, not even a number that could collide.
+    let text = with_row("number = -1\nname = \"\"\nident = \"\"\n");
+    assert!(Profile::from_toml(&text, Some(&Profile::builtin().commands)).is_ok());
+}
