@@ -7,14 +7,13 @@
 //! when something is wrong is the file parsed a second time, keeping spans, to turn places into
 //! line numbers.
 
-use std::collections::HashMap;
-
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
 use super::commands::CommandTable;
-use super::load::{CommandRow, ProfileFile};
+use super::load::ProfileFile;
 
+mod commands;
 mod decoding;
 mod family;
 mod params;
@@ -64,8 +63,8 @@ pub(crate) fn check(file: &ProfileFile, base: Option<&CommandTable>) -> Vec<Prob
     check_meta(file, &mut problems);
     params::check_params(&file.axis_parameter, "axis_parameter", &mut problems);
     params::check_params(&file.global_parameter, "global_parameter", &mut problems);
-    check_commands(&file.command, "command", &mut problems);
-    check_commands(&file.extra_command, "extra_command", &mut problems);
+    commands::check_commands(&file.command, "command", &mut problems);
+    commands::check_commands(&file.extra_command, "extra_command", &mut problems);
     check_simulation(file, &mut problems);
     family::check(file, base, &mut problems);
     problems
@@ -112,109 +111,6 @@ pub(crate) fn check_range(
             place,
             format!("{key} [{lo}, {hi}] reaches beyond 32-bit values"),
         ));
-    }
-}
-
-fn check_commands(rows: &[CommandRow], table: &'static str, problems: &mut Vec<Problem>) {
-    let mut numbers: HashMap<u8, Vec<Step>> = HashMap::new();
-    let mut mnemonics: HashMap<String, Vec<Step>> = HashMap::new();
-    for (i, row) in rows.iter().enumerate() {
-        let at = |key| vec![Step::Key(table), Step::Row(i), Step::Key(key)];
-        match numbers.get(&row.number) {
-            Some(first) => problems.push(
-                Problem::at(
-                    at("number"),
-                    format!("command {} is defined twice", row.number),
-                )
-                .also(first.clone()),
-            ),
-            None => {
-                numbers.insert(row.number, at("number"));
-            }
-        }
-        if !row.mnemonic.chars().all(|c| c.is_ascii_alphanumeric()) {
-            problems.push(Problem::at(
-                at("mnemonic"),
-                format!(
-                    "mnemonic \"{}\" must be letters and digits (empty for control functions)",
-                    row.mnemonic.escape_debug()
-                ),
-            ));
-        } else if !row.mnemonic.is_empty() {
-            let key = row.mnemonic.to_ascii_uppercase();
-            match mnemonics.get(&key) {
-                Some(first) => problems.push(
-                    Problem::at(at("mnemonic"), format!("mnemonic {key} is defined twice"))
-                        .also(first.clone()),
-                ),
-                None => {
-                    mnemonics.insert(key, at("mnemonic"));
-                }
-            }
-        }
-        check_range(row.value_range, at("value_range"), "value_range", problems);
-        if let Some(param_use) = &row.param_use {
-            if !["read", "write", "store"].contains(&param_use.as_str()) {
-                problems.push(Problem::at(
-                    at("param_use"),
-                    format!(
-                        "param_use \"{}\" is not read, write or store",
-                        param_use.escape_debug()
-                    ),
-                ));
-            }
-        }
-        let mut values: HashMap<u8, Vec<Step>> = HashMap::new();
-        let mut names: HashMap<String, Vec<Step>> = HashMap::new();
-        for (k, keyword) in row.types.iter().enumerate() {
-            let at = |key| {
-                vec![
-                    Step::Key(table),
-                    Step::Row(i),
-                    Step::Key("types"),
-                    Step::Row(k),
-                    Step::Key(key),
-                ]
-            };
-            if keyword.name.is_empty()
-                || !keyword
-                    .name
-                    .chars()
-                    .all(|c| c.is_ascii_alphanumeric() || c == '_')
-            {
-                problems.push(Problem::at(
-                    at("name"),
-                    format!(
-                        "keyword \"{}\" of command {} must be letters, digits and _",
-                        keyword.name.escape_debug(),
-                        row.number
-                    ),
-                ));
-                continue;
-            }
-            let name = keyword.name.to_ascii_uppercase();
-            if let Some(first) = values.insert(keyword.value, at("value")) {
-                problems.push(
-                    Problem::at(
-                        at("value"),
-                        format!(
-                            "command {}: type {} has two keywords",
-                            row.number, keyword.value
-                        ),
-                    )
-                    .also(first),
-                );
-            }
-            if let Some(first) = names.insert(name.clone(), at("name")) {
-                problems.push(
-                    Problem::at(
-                        at("name"),
-                        format!("command {}: keyword {name} is defined twice", row.number),
-                    )
-                    .also(first),
-                );
-            }
-        }
     }
 }
 

@@ -281,3 +281,51 @@ fn a_parameter_has_a_name_and_a_default_it_can_take() {
     let text = with_row("number = -1\nname = \"\"\nident = \"\"\n");
     assert!(Profile::from_toml(&text, Some(&Profile::builtin().commands)).is_ok());
 }
+
+#[test]
+fn command_numbers_param_use_and_keywords_are_checked() {
+    let row = |extra: &str| {
+        format!(
+            "[meta]\nmodule = \"X\"\n\
+             [[command]]\nnumber = 1\nmnemonic = \"ROR\"\nname = \"r\"\n\
+             [[command]]\nnumber = 2\nmnemonic = \"ROL\"\nname = \"l\"\n{extra}"
+        )
+    };
+    let error = Profile::from_toml(&row("").replace("number = 2", "number = 1"), None).unwrap_err();
+    assert!(
+        error.contains("line 8: command 1 is defined twice (first on line 4)"),
+        "{error}"
+    );
+    let error = Profile::from_toml(&row("").replace("\"ROL\"", "\"RO L\""), None).unwrap_err();
+    assert!(
+        error.starts_with(
+            "line 9: mnemonic \"RO L\" must be letters and digits (empty for control functions)"
+        ),
+        "{error}"
+    );
+    let error = Profile::from_toml(&row("param_use = \"erase\"\n"), None).unwrap_err();
+    assert!(
+        error.starts_with("line 11: param_use \"erase\" is not read, write or store"),
+        "{error}"
+    );
+    let keywords = |second: &str| {
+        row(&format!(
+            "[[command.types]]\nvalue = 0\nname = \"A\"\n[[command.types]]\n{second}"
+        ))
+    };
+    let error = Profile::from_toml(&keywords("value = 0\nname = \"B\"\n"), None).unwrap_err();
+    assert!(
+        error.contains("line 15: command 2: type 0 has two keywords (first on line 12)"),
+        "{error}"
+    );
+    let error = Profile::from_toml(&keywords("value = 1\nname = \"a\"\n"), None).unwrap_err();
+    assert!(
+        error.contains("line 16: command 2: keyword A is defined twice (first on line 13)"),
+        "{error}"
+    );
+    let error = Profile::from_toml(&keywords("value = 1\nname = \"\"\n"), None).unwrap_err();
+    assert!(
+        error.contains("line 16: keyword \"\" of command 2 must be letters, digits and _"),
+        "{error}"
+    );
+}
