@@ -7,7 +7,9 @@ use std::collections::{BTreeSet, HashMap};
 use super::{Problem, Step, check_range};
 use crate::dialect::tmcl::profile::commands::{CommandTable, OperandKind};
 use crate::dialect::tmcl::profile::family::{self, AsciiInterface, Condition, GENERATIONS};
-use crate::dialect::tmcl::profile::load::{CommandRow, Meta, ProfileFile, RangeWhenRow};
+use crate::dialect::tmcl::profile::load::{
+    CommandRow, CommandsSection, Meta, ProfileFile, RangeWhenRow,
+};
 use crate::dialect::tmcl::profile::version;
 
 mod io;
@@ -242,42 +244,7 @@ fn check_generic(file: &ProfileFile, problems: &mut Vec<Problem>) {
 fn check_command_set(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut Vec<Problem>) {
     let own = !file.command.is_empty();
     if let Some(section) = &file.commands {
-        let at = |key| vec![Step::Key("commands"), Step::Key(key)];
-        if own {
-            problems.push(Problem::at(
-                vec![Step::Key("commands")],
-                "[commands] changes the built-in command table, but this file has its own \
-                 [[command]] rows: leave the command out instead",
-            ));
-        }
-        if let Some(word) = &section.base {
-            if word != "builtin" {
-                problems.push(Problem::at(
-                    at("base"),
-                    format!(
-                        "base \"{}\" must be \"builtin\" (the only table a profile starts from)",
-                        word.escape_debug()
-                    ),
-                ));
-            }
-        }
-        let mut seen = BTreeSet::new();
-        for (k, &number) in section.absent.iter().enumerate() {
-            let at = vec![Step::Key("commands"), Step::Key("absent"), Step::Row(k)];
-            if !seen.insert(number) {
-                problems.push(Problem::at(
-                    at,
-                    format!("absent command {number} is given twice"),
-                ));
-            } else if let Some(base) = base {
-                if base.by_number(number).is_none() {
-                    problems.push(Problem::at(
-                        at,
-                        format!("absent command {number} is not in the built-in command table"),
-                    ));
-                }
-            }
-        }
+        check_commands_section(section, own, base, problems);
     }
     if own && !file.extra_command.is_empty() {
         problems.push(Problem::at(
@@ -289,6 +256,62 @@ fn check_command_set(file: &ProfileFile, base: Option<&CommandTable>, problems: 
     let Some(base) = base.filter(|_| !own) else {
         return;
     };
+    check_extra_commands_are_new(file, base, problems);
+}
+
+/// `[commands]` changes the built-in table (not a file's own rows): its `base` and the
+/// commands it marks `absent`, each once and each in that table.
+fn check_commands_section(
+    section: &CommandsSection,
+    own: bool,
+    base: Option<&CommandTable>,
+    problems: &mut Vec<Problem>,
+) {
+    let at = |key| vec![Step::Key("commands"), Step::Key(key)];
+    if own {
+        problems.push(Problem::at(
+            vec![Step::Key("commands")],
+            "[commands] changes the built-in command table, but this file has its own \
+             [[command]] rows: leave the command out instead",
+        ));
+    }
+    if let Some(word) = &section.base {
+        if word != "builtin" {
+            problems.push(Problem::at(
+                at("base"),
+                format!(
+                    "base \"{}\" must be \"builtin\" (the only table a profile starts from)",
+                    word.escape_debug()
+                ),
+            ));
+        }
+    }
+    let mut seen = BTreeSet::new();
+    for (k, &number) in section.absent.iter().enumerate() {
+        let at = vec![Step::Key("commands"), Step::Key("absent"), Step::Row(k)];
+        if !seen.insert(number) {
+            problems.push(Problem::at(
+                at,
+                format!("absent command {number} is given twice"),
+            ));
+        } else if let Some(base) = base {
+            if base.by_number(number).is_none() {
+                problems.push(Problem::at(
+                    at,
+                    format!("absent command {number} is not in the built-in command table"),
+                ));
+            }
+        }
+    }
+}
+
+/// An extra command takes neither the number nor the mnemonic of a command the built-in table
+/// keeps (one marked absent may come back).
+fn check_extra_commands_are_new(
+    file: &ProfileFile,
+    base: &CommandTable,
+    problems: &mut Vec<Problem>,
+) {
     let absent: &[u8] = file.commands.as_ref().map_or(&[], |c| &c.absent);
     for (i, row) in file.extra_command.iter().enumerate() {
         let at = |key| vec![Step::Key("extra_command"), Step::Row(i), Step::Key(key)];
