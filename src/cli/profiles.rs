@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use crate::dialect::tmcl::profile::catalogue::{self, GENERIC};
+use crate::dialect::tmcl::profile::family::Identity;
 use crate::dialect::tmcl::profile::{Param, Profile};
 use crate::escape::escape_control;
 use crate::exit::Exit;
@@ -162,60 +163,100 @@ fn list(out: &mut dyn Write) -> io::Result<()> {
 
 fn detail(p: &Profile, out: &mut dyn Write) -> io::Result<()> {
     let id = &p.identity;
-    let origin = match (&p.source, p.name.as_str()) {
-        (Some(path), _) => path.display().to_string(),
-        (None, GENERIC) => "built in, data/generic.toml".to_string(),
-        (None, name) => format!("built in, data/profiles/{name}.toml"),
-    };
-    let heading = format!("{}: {} ({origin})", p.name, p.module);
+    let heading = format!("{}: {} ({})", p.name, p.module, origin(p));
     writeln!(out, "{}", escape_control(&heading))?;
-    let field = |out: &mut dyn Write, name: &str, value: &str| -> io::Result<()> {
-        if value.is_empty() {
-            return Ok(());
-        }
-        // A profile file is anyone's text: its control characters are shown, not obeyed.
-        writeln!(out, "  {name:<16}{}", escape_control(value))
-    };
     if let Some(number) = id.module_number {
-        let formats = match (&id.version_format, &id.bootloader_format) {
-            (Some(v), Some(b)) => format!(" (136 answers {v}; the boot loader {b})"),
-            (Some(v), None) => format!(" (136 answers {v})"),
-            _ => String::new(),
-        };
-        field(out, "module number", &format!("{number}{formats}"))?;
+        field(out, "module number", &module_number(number, id))?;
     }
     field(out, "aliases", &id.aliases.join(", "))?;
-    let motors = match p.axes {
-        1 => "motor 0".to_string(),
-        n => format!("motors 0..{}", n - 1),
-    };
-    field(out, "axes", &format!("{} ({motors})", p.axes))?;
+    field(out, "axes", &axes(p.axes))?;
     field(out, "ASCII interface", id.ascii_interface().as_str())?;
-    let parameters = if p.generic {
-        "by number only (0..255), no names, values unchecked".to_string()
-    } else {
-        let generation = id
-            .generation
-            .as_ref()
-            .map(|g| format!("generation {g}: "))
-            .unwrap_or_default();
-        format!(
-            "{generation}{} axis, {} global; {}",
-            p.axis.len(),
-            p.global.len(),
-            parameter_count(p)
-        )
-    };
-    field(out, "parameters", &parameters)?;
+    field(out, "parameters", &parameters(p))?;
     field(out, "motion control", &id.motion_controller)?;
     field(out, "manual", &id.manual)?;
     field(out, "", &id.manual_url)?;
+    field(out, "commands absent", &absent_commands(p))?;
+    field(out, "commands added", &added_commands(p))?;
+    let ascii: Vec<&str> = p.commands.ascii_mnemonics();
+    field(out, "ASCII commands", &ascii.join(" "))?;
+    field(out, "I/O (bank/port)", &io_ports(p))?;
+    for (fact, source) in &id.fact_sources {
+        field(out, "source of", &format!("{fact}: {source}"))?;
+    }
+    for (fact, why) in &id.uncertain_facts {
+        field(out, "uncertain", &format!("{fact}: {why}"))?;
+    }
+    documents(id, out)
+}
+
+/// One `name value` line of the detail; nothing when the value is empty.
+fn field(out: &mut dyn Write, name: &str, value: &str) -> io::Result<()> {
+    if value.is_empty() {
+        return Ok(());
+    }
+    // A profile file is anyone's text: its control characters are shown, not obeyed.
+    writeln!(out, "  {name:<16}{}", escape_control(value))
+}
+
+/// Where the profile comes from: its file, or the data file it was built in from.
+fn origin(p: &Profile) -> String {
+    match (&p.source, p.name.as_str()) {
+        (Some(path), _) => path.display().to_string(),
+        (None, GENERIC) => "built in, data/generic.toml".to_string(),
+        (None, name) => format!("built in, data/profiles/{name}.toml"),
+    }
+}
+
+/// "1234 (136 answers NNNNVabc; the boot loader NNNNBabc)".
+fn module_number(number: u32, id: &Identity) -> String {
+    let formats = match (&id.version_format, &id.bootloader_format) {
+        (Some(v), Some(b)) => format!(" (136 answers {v}; the boot loader {b})"),
+        (Some(v), None) => format!(" (136 answers {v})"),
+        _ => String::new(),
+    };
+    format!("{number}{formats}")
+}
+
+/// "2 (motors 0..1)".
+fn axes(axes: u8) -> String {
+    let motors = match axes {
+        1 => "motor 0".to_string(),
+        n => format!("motors 0..{}", n - 1),
+    };
+    format!("{axes} ({motors})")
+}
+
+/// How many parameters, of which generation; or that a generic profile knows none.
+fn parameters(p: &Profile) -> String {
+    if p.generic {
+        return "by number only (0..255), no names, values unchecked".to_string();
+    }
+    let generation = p
+        .identity
+        .generation
+        .as_ref()
+        .map(|g| format!("generation {g}: "))
+        .unwrap_or_default();
+    format!(
+        "{generation}{} axis, {} global; {}",
+        p.axis.len(),
+        p.global.len(),
+        parameter_count(p)
+    )
+}
+
+/// The built-in commands the module lacks, each with why.
+fn absent_commands(p: &Profile) -> String {
     let absent: Vec<String> = p
         .commands
         .absent_commands()
         .map(|(c, reason)| format!("{} {} ({reason})", c.number, c.display_name()))
         .collect();
-    field(out, "commands absent", &absent.join("; "))?;
+    absent.join("; ")
+}
+
+/// The commands the module has beyond the built-in table.
+fn added_commands(p: &Profile) -> String {
     let builtin = Profile::builtin();
     let extra: Vec<String> = p
         .commands
@@ -223,34 +264,34 @@ fn detail(p: &Profile, out: &mut dyn Write) -> io::Result<()> {
         .filter(|c| builtin.commands.by_number(c.number).is_none())
         .map(|c| format!("{} {}", c.number, c.display_name()))
         .collect();
-    field(out, "commands added", &extra.join(", "))?;
-    let ascii: Vec<&str> = p.commands.ascii_mnemonics();
-    field(out, "ASCII commands", &ascii.join(" "))?;
+    extra.join(", ")
+}
+
+/// The port map as `bank/port name`, or what GIO and SIO do without one.
+fn io_ports(p: &Profile) -> String {
     let ports: Vec<String> = p
         .io_ports
         .iter()
         .map(|port| format!("{}/{} {}", port.bank, port.port, port.name))
         .collect();
-    let ports = if ports.is_empty() {
+    if ports.is_empty() {
         "none: no port map, GIO and SIO send any port and bank".to_string()
     } else {
         ports.join(", ")
-    };
-    field(out, "I/O (bank/port)", &ports)?;
-    for (fact, source) in &id.fact_sources {
-        field(out, "source of", &format!("{fact}: {source}"))?;
     }
-    for (fact, why) in &id.uncertain_facts {
-        field(out, "uncertain", &format!("{fact}: {why}"))?;
+}
+
+/// The documents the profile's facts come from, each with where it is.
+fn documents(id: &Identity, out: &mut dyn Write) -> io::Result<()> {
+    if id.sources.is_empty() {
+        return Ok(());
     }
-    if !id.sources.is_empty() {
-        writeln!(out, "  documents")?;
-        for doc in &id.sources {
-            let what = format!("{}: {}", doc.id, doc.what);
-            writeln!(out, "    {}", escape_control(&what))?;
-            if !doc.at.is_empty() {
-                writeln!(out, "      {}", escape_control(&doc.at))?;
-            }
+    writeln!(out, "  documents")?;
+    for doc in &id.sources {
+        let what = format!("{}: {}", doc.id, doc.what);
+        writeln!(out, "    {}", escape_control(&what))?;
+        if !doc.at.is_empty() {
+            writeln!(out, "      {}", escape_control(&doc.at))?;
         }
     }
     Ok(())

@@ -217,57 +217,10 @@ impl Smd4Command {
 
     pub(crate) fn from_row(row: &CommandRow) -> Result<Smd4Command, String> {
         let name = &row.mnemonic;
-        let kind = match row.kind.as_str() {
-            "setting" => Kind::Setting,
-            "query" => Kind::Query,
-            "action" => Kind::Action,
-            "motion" => Kind::Motion,
-            other => return Err(format!("{name}: unknown kind '{other}'")),
-        };
-        let reply = match row.reply.as_str() {
-            "none" => ReplyShape::None,
-            "value" => ReplyShape::Value,
-            "user_real" => ReplyShape::UserReal,
-            "named" => ReplyShape::Named,
-            "multi_line" => ReplyShape::MultiLine,
-            "literal" => ReplyShape::Literal(
-                row.reply_literal
-                    .clone()
-                    .ok_or_else(|| format!("{name}: reply = \"literal\" needs reply_literal"))?,
-            ),
-            other => return Err(format!("{name}: unknown reply '{other}'")),
-        };
-        let labels: Vec<Choice> = row
-            .enum_
-            .iter()
-            .map(|e| Choice {
-                value: e.value.text(),
-                label: e.label.clone(),
-            })
-            .collect();
-        // One label per value: a reply's value must read one way.
-        for (i, choice) in labels.iter().enumerate() {
-            if choice.label.trim().is_empty() {
-                return Err(format!("{name}: enum value {} has no label", choice.value));
-            }
-            if labels[..i].iter().any(|c| c.value == choice.value) {
-                return Err(format!(
-                    "{name}: enum value {} is given twice",
-                    choice.value
-                ));
-            }
-        }
-        let arg = match row.arg_type.as_str() {
-            "none" => None,
-            ty => Some(ArgSpec {
-                ty: ItemType::from_name(ty)
-                    .ok_or_else(|| format!("{name}: unknown arg_type '{ty}'"))?,
-                min: row.min.as_ref().and_then(Scalar::as_f64),
-                max: row.max.as_ref().and_then(Scalar::as_f64),
-                choices: choices(row, &labels),
-                levels: row.levels,
-            }),
-        };
+        let kind = kind(row)?;
+        let reply = reply_shape(row)?;
+        let labels = labels(row)?;
+        let arg = arg_spec(row, &labels)?;
         let value_type = match &row.value_type {
             Some(ty) => Some(
                 ItemType::from_name(ty)
@@ -301,21 +254,95 @@ impl Smd4Command {
             no_response: row.no_response,
             persistent: row.persistent && kind == Kind::Setting && row.writable && row.readable,
             sim_value: row.sim_value.clone(),
-            examples: row
-                .examples
-                .iter()
-                .map(|e| Example {
-                    tx: e.tx.clone(),
-                    rx: e.rx.clone(),
-                    rx_more: e.rx_more.clone(),
-                    note: e.note.clone(),
-                    suspect: e.suspect,
-                })
-                .collect(),
+            examples: examples(row),
             uncertain: row.uncertain,
             uncertain_reason: row.uncertain_reason.clone(),
         })
     }
+}
+
+/// The row's `kind`.
+fn kind(row: &CommandRow) -> Result<Kind, String> {
+    match row.kind.as_str() {
+        "setting" => Ok(Kind::Setting),
+        "query" => Ok(Kind::Query),
+        "action" => Ok(Kind::Action),
+        "motion" => Ok(Kind::Motion),
+        other => Err(format!("{}: unknown kind '{other}'", row.mnemonic)),
+    }
+}
+
+/// The row's `reply`, with the text of a literal one.
+fn reply_shape(row: &CommandRow) -> Result<ReplyShape, String> {
+    let name = &row.mnemonic;
+    Ok(match row.reply.as_str() {
+        "none" => ReplyShape::None,
+        "value" => ReplyShape::Value,
+        "user_real" => ReplyShape::UserReal,
+        "named" => ReplyShape::Named,
+        "multi_line" => ReplyShape::MultiLine,
+        "literal" => ReplyShape::Literal(
+            row.reply_literal
+                .clone()
+                .ok_or_else(|| format!("{name}: reply = \"literal\" needs reply_literal"))?,
+        ),
+        other => return Err(format!("{name}: unknown reply '{other}'")),
+    })
+}
+
+/// The labels of an enumerated value, one per value: a reply's value must read one way.
+fn labels(row: &CommandRow) -> Result<Vec<Choice>, String> {
+    let name = &row.mnemonic;
+    let labels: Vec<Choice> = row
+        .enum_
+        .iter()
+        .map(|e| Choice {
+            value: e.value.text(),
+            label: e.label.clone(),
+        })
+        .collect();
+    for (i, choice) in labels.iter().enumerate() {
+        if choice.label.trim().is_empty() {
+            return Err(format!("{name}: enum value {} has no label", choice.value));
+        }
+        if labels[..i].iter().any(|c| c.value == choice.value) {
+            return Err(format!(
+                "{name}: enum value {} is given twice",
+                choice.value
+            ));
+        }
+    }
+    Ok(labels)
+}
+
+/// The argument of a write, if the command takes one: its type, limits and accepted values.
+fn arg_spec(row: &CommandRow, labels: &[Choice]) -> Result<Option<ArgSpec>, String> {
+    let ty = match row.arg_type.as_str() {
+        "none" => return Ok(None),
+        ty => ty,
+    };
+    Ok(Some(ArgSpec {
+        ty: ItemType::from_name(ty)
+            .ok_or_else(|| format!("{}: unknown arg_type '{ty}'", row.mnemonic))?,
+        min: row.min.as_ref().and_then(Scalar::as_f64),
+        max: row.max.as_ref().and_then(Scalar::as_f64),
+        choices: choices(row, labels),
+        levels: row.levels,
+    }))
+}
+
+/// The document's examples of the command.
+fn examples(row: &CommandRow) -> Vec<Example> {
+    row.examples
+        .iter()
+        .map(|e| Example {
+            tx: e.tx.clone(),
+            rx: e.rx.clone(),
+            rx_more: e.rx_more.clone(),
+            note: e.note.clone(),
+            suspect: e.suspect,
+        })
+        .collect()
 }
 
 /// Accepted values: the `allowed` list if there is one, else the enum options.

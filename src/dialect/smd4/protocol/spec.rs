@@ -189,6 +189,33 @@ mod tests {
     }
 
     #[test]
+    fn each_field_of_a_command_row_is_checked_by_name() {
+        let refused = |fields: &str| {
+            Smd4Spec::from_toml(&format!("[[command]]\nmnemonic = \"X:Y\"\n{fields}")).unwrap_err()
+        };
+        assert_eq!(
+            refused("kind = \"query\"\nreply = \"loud\"\n"),
+            "X:Y: unknown reply 'loud'"
+        );
+        assert_eq!(
+            refused("kind = \"query\"\nreply = \"literal\"\n"),
+            "X:Y: reply = \"literal\" needs reply_literal"
+        );
+        assert_eq!(
+            refused("kind = \"setting\"\nreply = \"none\"\narg_type = \"BYTE\"\n"),
+            "X:Y: unknown arg_type 'BYTE'"
+        );
+        assert_eq!(
+            refused("kind = \"query\"\nreply = \"value\"\nvalue_type = \"WORD\"\n"),
+            "X:Y: unknown value_type 'WORD'"
+        );
+        assert_eq!(
+            refused("kind = \"query\"\nreply = \"value\"\n"),
+            "X:Y: a value reply needs value_type or arg_type"
+        );
+    }
+
+    #[test]
     fn a_flag_or_enumerated_value_that_would_read_two_ways_is_refused() {
         let refused = |text: &str| Smd4Spec::from_toml(text).unwrap_err();
         let flags = "[[sflag]]\nbit = 3\nname = \"A\"\n[[sflag]]\nbit = 3\nname = \"B\"\n";

@@ -7,16 +7,16 @@
 //! when something is wrong is the file parsed a second time, keeping spans, to turn places into
 //! line numbers.
 
-use std::collections::HashMap;
-
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
 use super::commands::CommandTable;
-use super::load::{CommandRow, ParamRow, ProfileFile};
+use super::load::ProfileFile;
 
+mod commands;
 mod decoding;
 mod family;
+mod params;
 
 /// One step of a place in the file: a key of a table, or a row of an array.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -61,10 +61,10 @@ const PLACEHOLDER: i64 = -1;
 pub(crate) fn check(file: &ProfileFile, base: Option<&CommandTable>) -> Vec<Problem> {
     let mut problems = Vec::new();
     check_meta(file, &mut problems);
-    check_params(&file.axis_parameter, "axis_parameter", &mut problems);
-    check_params(&file.global_parameter, "global_parameter", &mut problems);
-    check_commands(&file.command, "command", &mut problems);
-    check_commands(&file.extra_command, "extra_command", &mut problems);
+    params::check_params(&file.axis_parameter, "axis_parameter", &mut problems);
+    params::check_params(&file.global_parameter, "global_parameter", &mut problems);
+    commands::check_commands(&file.command, "command", &mut problems);
+    commands::check_commands(&file.extra_command, "extra_command", &mut problems);
     check_simulation(file, &mut problems);
     family::check(file, base, &mut problems);
     problems
@@ -94,152 +94,6 @@ fn check_meta(file: &ProfileFile, problems: &mut Vec<Problem>) {
     }
 }
 
-/// Which rows have already used a number or an identifier, for duplicates.
-#[derive(Default)]
-struct Seen {
-    numbers: HashMap<(u8, i64), Vec<Step>>,
-    idents: HashMap<String, Vec<Step>>,
-}
-
-fn check_params(rows: &[ParamRow], table: &'static str, problems: &mut Vec<Problem>) {
-    let mut seen = Seen::default();
-    let what = match table {
-        "axis_parameter" => "axis parameter",
-        _ => "global parameter",
-    };
-    for (i, row) in rows.iter().enumerate() {
-        let at = |key| vec![Step::Key(table), Step::Row(i), Step::Key(key)];
-        let before = problems.len();
-        if row.number == PLACEHOLDER {
-            continue; // placeholder rows define no parameter
-        }
-        if !(0..=MAX_NUMBER).contains(&row.number) {
-            problems.push(Problem::at(
-                at("number"),
-                format!(
-                    "number {} is outside 0..{MAX_NUMBER} (-1 marks a placeholder row)",
-                    row.number
-                ),
-            ));
-        }
-        let last = row.number_last.unwrap_or(row.number);
-        if let Some(number_last) = row.number_last {
-            if number_last > MAX_NUMBER || number_last < row.number {
-                problems.push(Problem::at(
-                    at("number_last"),
-                    format!(
-                        "number_last {number_last} must lie between number ({}) and {MAX_NUMBER}",
-                        row.number
-                    ),
-                ));
-            }
-        }
-        if let Some(problem) = ident_problem(&row.ident) {
-            problems.push(Problem::at(at("ident"), problem));
-        }
-        if row.name.trim().is_empty() && row.number_last.is_none() {
-            problems.push(Problem::at(at("name"), "name must not be empty"));
-        }
-        if let Some(bad) = row.access.chars().find(|c| !"RWErwe".contains(*c)) {
-            problems.push(Problem::at(
-                at("access"),
-                format!(
-                    "access \"{}\" has the unknown letter {bad:?}; use R (read), W (write), \
-                     E (stored in EEPROM)",
-                    row.access.escape_debug()
-                ),
-            ));
-        }
-        check_range(row.range, at("range"), "range", problems);
-        if let Some(default) = row.default {
-            match row.range {
-                Some([lo, hi]) if lo <= hi && !(lo..=hi).contains(&default) => {
-                    problems.push(Problem::at(
-                        at("default"),
-                        format!("default {default} lies outside the range {lo}..{hi}"),
-                    ));
-                }
-                None if i32::try_from(default).is_err() => problems.push(Problem::at(
-                    at("default"),
-                    format!("default {default} is not a 32-bit value"),
-                )),
-                _ => {}
-            }
-        }
-        decoding::check(table, i, row, problems);
-        if problems.len() > before {
-            continue; // duplicates of a broken row would only repeat its problem
-        }
-        for number in row.number..=last {
-            let key = (row.bank, number);
-            match seen.numbers.get(&key) {
-                Some(first) => problems.push(
-                    Problem::at(
-                        at("number"),
-                        format!(
-                            "{what} {} is defined twice",
-                            numbered(table, row.bank, number)
-                        ),
-                    )
-                    .also(first.clone()),
-                ),
-                None => {
-                    seen.numbers.insert(key, at("number"));
-                }
-            }
-        }
-        for ident in idents(row) {
-            match seen.idents.get(&ident) {
-                Some(first) => problems.push(
-                    Problem::at(
-                        at("ident"),
-                        format!("{what} identifier '{ident}' is defined twice"),
-                    )
-                    .also(first.clone()),
-                ),
-                None => {
-                    seen.idents.insert(ident, at("ident"));
-                }
-            }
-        }
-    }
-}
-
-fn numbered(table: &str, bank: u8, number: i64) -> String {
-    if table == "axis_parameter" {
-        number.to_string()
-    } else {
-        format!("{number} of bank {bank}")
-    }
-}
-
-/// The identifiers a row defines (one per number for a `number_last` row), as looked up.
-pub(crate) fn idents(row: &ParamRow) -> Vec<String> {
-    let ident = row.ident.to_ascii_lowercase();
-    match row.number_last {
-        None => vec![ident],
-        Some(last) => (row.number..=last.min(MAX_NUMBER))
-            .map(|n| format!("{ident}_{n}"))
-            .collect(),
-    }
-}
-
-/// What is wrong with an identifier users are to type, if anything.
-fn ident_problem(ident: &str) -> Option<String> {
-    let mut chars = ident.chars();
-    let Some(first) = chars.next() else {
-        return Some("ident must not be empty".into());
-    };
-    let well_formed = (first.is_ascii_alphabetic() || first == '_')
-        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
-    (!well_formed).then(|| {
-        format!(
-            "ident \"{}\" must be letters, digits and _ (no spaces), starting with a letter or _",
-            ident.escape_debug()
-        )
-    })
-}
-
 pub(crate) fn check_range(
     range: Option<[i64; 2]>,
     place: Vec<Step>,
@@ -257,109 +111,6 @@ pub(crate) fn check_range(
             place,
             format!("{key} [{lo}, {hi}] reaches beyond 32-bit values"),
         ));
-    }
-}
-
-fn check_commands(rows: &[CommandRow], table: &'static str, problems: &mut Vec<Problem>) {
-    let mut numbers: HashMap<u8, Vec<Step>> = HashMap::new();
-    let mut mnemonics: HashMap<String, Vec<Step>> = HashMap::new();
-    for (i, row) in rows.iter().enumerate() {
-        let at = |key| vec![Step::Key(table), Step::Row(i), Step::Key(key)];
-        match numbers.get(&row.number) {
-            Some(first) => problems.push(
-                Problem::at(
-                    at("number"),
-                    format!("command {} is defined twice", row.number),
-                )
-                .also(first.clone()),
-            ),
-            None => {
-                numbers.insert(row.number, at("number"));
-            }
-        }
-        if !row.mnemonic.chars().all(|c| c.is_ascii_alphanumeric()) {
-            problems.push(Problem::at(
-                at("mnemonic"),
-                format!(
-                    "mnemonic \"{}\" must be letters and digits (empty for control functions)",
-                    row.mnemonic.escape_debug()
-                ),
-            ));
-        } else if !row.mnemonic.is_empty() {
-            let key = row.mnemonic.to_ascii_uppercase();
-            match mnemonics.get(&key) {
-                Some(first) => problems.push(
-                    Problem::at(at("mnemonic"), format!("mnemonic {key} is defined twice"))
-                        .also(first.clone()),
-                ),
-                None => {
-                    mnemonics.insert(key, at("mnemonic"));
-                }
-            }
-        }
-        check_range(row.value_range, at("value_range"), "value_range", problems);
-        if let Some(param_use) = &row.param_use {
-            if !["read", "write", "store"].contains(&param_use.as_str()) {
-                problems.push(Problem::at(
-                    at("param_use"),
-                    format!(
-                        "param_use \"{}\" is not read, write or store",
-                        param_use.escape_debug()
-                    ),
-                ));
-            }
-        }
-        let mut values: HashMap<u8, Vec<Step>> = HashMap::new();
-        let mut names: HashMap<String, Vec<Step>> = HashMap::new();
-        for (k, keyword) in row.types.iter().enumerate() {
-            let at = |key| {
-                vec![
-                    Step::Key(table),
-                    Step::Row(i),
-                    Step::Key("types"),
-                    Step::Row(k),
-                    Step::Key(key),
-                ]
-            };
-            if keyword.name.is_empty()
-                || !keyword
-                    .name
-                    .chars()
-                    .all(|c| c.is_ascii_alphanumeric() || c == '_')
-            {
-                problems.push(Problem::at(
-                    at("name"),
-                    format!(
-                        "keyword \"{}\" of command {} must be letters, digits and _",
-                        keyword.name.escape_debug(),
-                        row.number
-                    ),
-                ));
-                continue;
-            }
-            let name = keyword.name.to_ascii_uppercase();
-            if let Some(first) = values.insert(keyword.value, at("value")) {
-                problems.push(
-                    Problem::at(
-                        at("value"),
-                        format!(
-                            "command {}: type {} has two keywords",
-                            row.number, keyword.value
-                        ),
-                    )
-                    .also(first),
-                );
-            }
-            if let Some(first) = names.insert(name.clone(), at("name")) {
-                problems.push(
-                    Problem::at(
-                        at("name"),
-                        format!("command {}: keyword {name} is defined twice", row.number),
-                    )
-                    .also(first),
-                );
-            }
-        }
     }
 }
 

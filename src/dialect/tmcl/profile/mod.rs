@@ -21,7 +21,7 @@ use std::sync::{Arc, OnceLock};
 use crate::suggest;
 use commands::CommandTable;
 use family::{Identity, IoPort, RangeWhen};
-use load::{ParamRow, ProfileFile};
+use load::{ParamRow, ProfileFile, SimulationRow};
 
 pub use crate::commission::{Access, SnapshotRole, SnapshotRules};
 
@@ -292,42 +292,12 @@ impl Profile {
         let at = |place: Vec<check::Step>, message: String| {
             check::render(text, &[check::Problem::at(place, message)]).join("\n")
         };
-        let mut commands = if file.command.is_empty() {
-            let base = fallback_commands.ok_or_else(|| "no [[command]] rows".to_string())?;
-            family::compose(base, &file)
-                .map_err(|message| at(vec![check::Step::Key("extra_command")], message))?
-        } else {
-            let ascii_words = file.ascii.as_ref().map(|a| a.ascii_only_commands.clone());
-            CommandTable::from_rows(&file.command, ascii_words.unwrap_or_default()).map_err(
-                |message| {
-                    // The table names the command by number; numbers are unique by now.
-                    let row = file
-                        .command
-                        .iter()
-                        .position(|r| message.starts_with(&format!("command {}:", r.number)));
-                    let place = match row {
-                        Some(i) => vec![check::Step::Key("command"), check::Step::Row(i)],
-                        None => vec![check::Step::Key("command")],
-                    };
-                    at(place, message)
-                },
-            )?
-        };
+        let mut commands = command_table(&file, fallback_commands, at)?;
         family::apply_ascii(&mut commands, &file);
-        let mut axis = Vec::new();
-        for row in &file.axis_parameter {
-            axis.extend(expand(row, ParamKind::Axis));
-        }
-        let mut global = Vec::new();
-        for row in &file.global_parameter {
-            global.extend(expand(row, ParamKind::Global { bank: row.bank }));
-        }
-        axis.sort_by_key(|p| p.number);
-        global.sort_by_key(|p| (p.bank(), p.number));
+        let (axis, global) = parameters(&file);
         file.snapshot
             .check_names(|ident| axis.iter().chain(&global).any(|p| p.ident == ident))
             .map_err(|message| at(vec![check::Step::Key("snapshot")], message))?;
-        let sim = file.simulation.as_ref();
         Ok(Profile {
             module: file.meta.module.clone(),
             axes: file.meta.axes,
@@ -337,30 +307,7 @@ impl Profile {
             commands,
             axis,
             global,
-            sim: SimConstants {
-                velocity_pps_per_unit: sim
-                    .and_then(|s| s.velocity_pps_per_unit)
-                    .unwrap_or(15625.0 / 1048576.0),
-                acceleration_pps2_per_unit: sim
-                    .and_then(|s| s.acceleration_pps2_per_unit)
-                    .unwrap_or(1.0),
-                version_string: sim
-                    .and_then(|s| s.version_string.clone())
-                    .unwrap_or_else(|| "000V1.00".into()),
-                version_binary: sim.and_then(|s| s.version_binary).unwrap_or(0x0100),
-                tick_ms: sim.and_then(|s| s.tick_ms).unwrap_or(10),
-                analog_inputs: sim.map(|s| s.analog_inputs.clone()).unwrap_or_default(),
-                digital_inputs: sim.map(|s| s.digital_inputs.clone()).unwrap_or_default(),
-                outputs: sim.map(|s| s.outputs.clone()).unwrap_or_default(),
-                adc_max: sim.and_then(|s| s.adc_max).unwrap_or(1023),
-                frame_timeout_ms: sim.and_then(|s| s.frame_timeout_ms).unwrap_or(100),
-                ascii_line_max: sim.and_then(|s| s.ascii_line_max).unwrap_or(80),
-                encoder_usteps_per_count: sim
-                    .and_then(|s| s.encoder_usteps_per_count)
-                    .unwrap_or(1.0),
-                instruction_us: sim.and_then(|s| s.instruction_us).unwrap_or(100),
-                axis_roles: sim.and_then(|s| s.axis_roles.clone()).unwrap_or_default(),
-            },
+            sim: SimConstants::from_section(file.simulation.as_ref()),
             snapshot: file.snapshot.clone(),
             source: None,
             name: String::new(),
@@ -494,6 +441,76 @@ fn expand(row: &ParamRow, kind: ParamKind) -> Vec<Param> {
             decoding: decode::Decoding::from_rows(&row.decoding),
         })
         .collect()
+}
+
+/// The command table of a checked file: its own `[[command]]` rows, or else `fallback` changed
+/// by `[commands]` and `[[extra_command]]`. `at` renders an error at a place of the file.
+fn command_table(
+    file: &ProfileFile,
+    fallback: Option<&CommandTable>,
+    at: impl Fn(Vec<check::Step>, String) -> String,
+) -> Result<CommandTable, String> {
+    if file.command.is_empty() {
+        let base = fallback.ok_or_else(|| "no [[command]] rows".to_string())?;
+        return family::compose(base, file)
+            .map_err(|message| at(vec![check::Step::Key("extra_command")], message));
+    }
+    let ascii_words = file.ascii.as_ref().map(|a| a.ascii_only_commands.clone());
+    CommandTable::from_rows(&file.command, ascii_words.unwrap_or_default()).map_err(|message| {
+        // The table names the command by number; numbers are unique by now.
+        let row = file
+            .command
+            .iter()
+            .position(|r| message.starts_with(&format!("command {}:", r.number)));
+        let place = match row {
+            Some(i) => vec![check::Step::Key("command"), check::Step::Row(i)],
+            None => vec![check::Step::Key("command")],
+        };
+        at(place, message)
+    })
+}
+
+/// The axis and the global parameters of a checked file, one per number, sorted.
+fn parameters(file: &ProfileFile) -> (Vec<Param>, Vec<Param>) {
+    let mut axis = Vec::new();
+    for row in &file.axis_parameter {
+        axis.extend(expand(row, ParamKind::Axis));
+    }
+    let mut global = Vec::new();
+    for row in &file.global_parameter {
+        global.extend(expand(row, ParamKind::Global { bank: row.bank }));
+    }
+    axis.sort_by_key(|p| p.number);
+    global.sort_by_key(|p| (p.bank(), p.number));
+    (axis, global)
+}
+
+impl SimConstants {
+    /// The simulator's constants from a file's `[simulation]`, each missing one at its default.
+    fn from_section(sim: Option<&SimulationRow>) -> SimConstants {
+        SimConstants {
+            velocity_pps_per_unit: sim
+                .and_then(|s| s.velocity_pps_per_unit)
+                .unwrap_or(15625.0 / 1048576.0),
+            acceleration_pps2_per_unit: sim
+                .and_then(|s| s.acceleration_pps2_per_unit)
+                .unwrap_or(1.0),
+            version_string: sim
+                .and_then(|s| s.version_string.clone())
+                .unwrap_or_else(|| "000V1.00".into()),
+            version_binary: sim.and_then(|s| s.version_binary).unwrap_or(0x0100),
+            tick_ms: sim.and_then(|s| s.tick_ms).unwrap_or(10),
+            analog_inputs: sim.map(|s| s.analog_inputs.clone()).unwrap_or_default(),
+            digital_inputs: sim.map(|s| s.digital_inputs.clone()).unwrap_or_default(),
+            outputs: sim.map(|s| s.outputs.clone()).unwrap_or_default(),
+            adc_max: sim.and_then(|s| s.adc_max).unwrap_or(1023),
+            frame_timeout_ms: sim.and_then(|s| s.frame_timeout_ms).unwrap_or(100),
+            ascii_line_max: sim.and_then(|s| s.ascii_line_max).unwrap_or(80),
+            encoder_usteps_per_count: sim.and_then(|s| s.encoder_usteps_per_count).unwrap_or(1.0),
+            instruction_us: sim.and_then(|s| s.instruction_us).unwrap_or(100),
+            axis_roles: sim.and_then(|s| s.axis_roles.clone()).unwrap_or_default(),
+        }
+    }
 }
 
 #[cfg(test)]

@@ -7,8 +7,12 @@ use std::collections::{BTreeSet, HashMap};
 use super::{Problem, Step, check_range};
 use crate::dialect::tmcl::profile::commands::{CommandTable, OperandKind};
 use crate::dialect::tmcl::profile::family::{self, AsciiInterface, Condition, GENERATIONS};
-use crate::dialect::tmcl::profile::load::{CommandRow, ProfileFile, RangeWhenRow};
+use crate::dialect::tmcl::profile::load::{
+    CommandRow, CommandsSection, Meta, ProfileFile, RangeWhenRow,
+};
 use crate::dialect::tmcl::profile::version;
+
+mod io;
 
 /// Every problem of the family fields.
 pub(super) fn check(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut Vec<Problem>) {
@@ -33,7 +37,7 @@ pub(super) fn check(file: &ProfileFile, base: Option<&CommandTable>, problems: &
         }
     }
     check_ascii(file, base, problems);
-    check_io(file, problems);
+    io::check_io(file, problems);
 }
 
 fn meta(key: &'static str) -> Vec<Step> {
@@ -43,7 +47,23 @@ fn meta(key: &'static str) -> Vec<Step> {
 fn check_identity(file: &ProfileFile, problems: &mut Vec<Problem>) {
     let m = &file.meta;
     let format = m.module_number.and_then(version::format_for);
-    if let Some(number) = m.module_number {
+    check_module_number(m.module_number, format, problems);
+    check_version_prefix(m, problems);
+    check_version_format(m, format, problems);
+    check_bootloader_format(m, problems);
+    check_simulated_version(file, problems);
+    check_aliases(m, problems);
+    check_ascii_interface(m, problems);
+    check_parameter_generation(m, problems);
+}
+
+/// A module number has a version format (three or four digits).
+fn check_module_number(
+    number: Option<u32>,
+    format: Option<&'static str>,
+    problems: &mut Vec<Problem>,
+) {
+    if let Some(number) = number {
         if format.is_none() {
             problems.push(Problem::at(
                 meta("module_number"),
@@ -51,78 +71,103 @@ fn check_identity(file: &ProfileFile, problems: &mut Vec<Problem>) {
             ));
         }
     }
-    if let Some(prefix) = &m.version_prefix {
-        match m.module_number {
-            None => problems.push(Problem::at(
-                meta("version_prefix"),
-                "version_prefix needs the module_number it is the digits of",
-            )),
-            Some(number) if *prefix != number.to_string() => problems.push(Problem::at(
-                meta("version_prefix"),
-                format!(
-                    "version_prefix \"{}\" is not the module number {number}: command 136 \
-                     answers with the module number first",
-                    prefix.escape_debug()
-                ),
-            )),
-            Some(_) => {}
-        }
+}
+
+/// `version_prefix` is the module number's digits, which command 136 answers first.
+fn check_version_prefix(m: &Meta, problems: &mut Vec<Problem>) {
+    let Some(prefix) = &m.version_prefix else {
+        return;
+    };
+    match m.module_number {
+        None => problems.push(Problem::at(
+            meta("version_prefix"),
+            "version_prefix needs the module_number it is the digits of",
+        )),
+        Some(number) if *prefix != number.to_string() => problems.push(Problem::at(
+            meta("version_prefix"),
+            format!(
+                "version_prefix \"{}\" is not the module number {number}: command 136 \
+                 answers with the module number first",
+                prefix.escape_debug()
+            ),
+        )),
+        Some(_) => {}
     }
-    if let Some(written) = &m.version_format {
-        let expected: &[&str] = match format {
-            Some(f) => &[f][..],
-            None => &["NNNVa.bc", "NNNNVabc"],
-        };
-        if !expected.contains(&written.as_str()) {
-            problems.push(Problem::at(
-                meta("version_format"),
-                format!(
-                    "version_format \"{}\" must be {} (136 answers eight characters)",
-                    written.escape_debug(),
-                    expected.join(" or ")
-                ),
-            ));
-        }
+}
+
+/// `version_format` is the format of the module number's length (either, without a number).
+fn check_version_format(m: &Meta, format: Option<&'static str>, problems: &mut Vec<Problem>) {
+    let Some(written) = &m.version_format else {
+        return;
+    };
+    let expected: &[&str] = match format {
+        Some(f) => &[f][..],
+        None => &["NNNVa.bc", "NNNNVabc"],
+    };
+    if !expected.contains(&written.as_str()) {
+        problems.push(Problem::at(
+            meta("version_format"),
+            format!(
+                "version_format \"{}\" must be {} (136 answers eight characters)",
+                written.escape_debug(),
+                expected.join(" or ")
+            ),
+        ));
     }
-    if let Some(loader) = &m.bootloader_format {
-        let expected = m.version_format.as_ref().map(|f| f.replacen('V', "B", 1));
-        match expected {
-            Some(expected) if *loader != expected => problems.push(Problem::at(
-                meta("bootloader_format"),
-                format!(
-                    "bootloader_format \"{}\" must be the version_format with B for V: \
-                     \"{expected}\"",
-                    loader.escape_debug()
-                ),
-            )),
-            None => problems.push(Problem::at(
-                meta("bootloader_format"),
-                "bootloader_format needs the version_format it varies",
-            )),
-            Some(_) => {}
-        }
+}
+
+/// `bootloader_format` is the `version_format` with B for V.
+fn check_bootloader_format(m: &Meta, problems: &mut Vec<Problem>) {
+    let Some(loader) = &m.bootloader_format else {
+        return;
+    };
+    let expected = m.version_format.as_ref().map(|f| f.replacen('V', "B", 1));
+    match expected {
+        Some(expected) if *loader != expected => problems.push(Problem::at(
+            meta("bootloader_format"),
+            format!(
+                "bootloader_format \"{}\" must be the version_format with B for V: \
+                 \"{expected}\"",
+                loader.escape_debug()
+            ),
+        )),
+        None => problems.push(Problem::at(
+            meta("bootloader_format"),
+            "bootloader_format needs the version_format it varies",
+        )),
+        Some(_) => {}
     }
+}
+
+/// The simulator's `version_string` has the module's format and prefix.
+fn check_simulated_version(file: &ProfileFile, problems: &mut Vec<Problem>) {
+    let m = &file.meta;
     let simulated = file
         .simulation
         .as_ref()
         .and_then(|s| s.version_string.as_ref());
-    if let (Some(text), Some(format)) = (simulated, &m.version_format) {
-        let prefix = m.version_prefix.as_deref().unwrap_or("");
-        if !version::fits(text, format) || !text.starts_with(prefix) {
-            problems.push(Problem::at(
-                vec![Step::Key("simulation"), Step::Key("version_string")],
-                format!(
-                    "version_string \"{}\" does not have the module's format {format}{}",
-                    text.escape_debug(),
-                    if prefix.is_empty() {
-                        String::new()
-                    } else {
-                        format!(" starting with {prefix}")
-                    }
-                ),
-            ));
-        }
+    let (Some(text), Some(format)) = (simulated, &m.version_format) else {
+        return;
+    };
+    let prefix = m.version_prefix.as_deref().unwrap_or("");
+    if !version::fits(text, format) || !text.starts_with(prefix) {
+        problems.push(Problem::at(
+            vec![Step::Key("simulation"), Step::Key("version_string")],
+            format!(
+                "version_string \"{}\" does not have the module's format {format}{}",
+                text.escape_debug(),
+                if prefix.is_empty() {
+                    String::new()
+                } else {
+                    format!(" starting with {prefix}")
+                }
+            ),
+        ));
     }
+}
+
+/// Aliases are product names without spaces, other than the module's own, each given once.
+fn check_aliases(m: &Meta, problems: &mut Vec<Problem>) {
     let mut aliases: HashMap<String, usize> = HashMap::new();
     for (k, alias) in m.aliases.iter().enumerate() {
         let at = vec![Step::Key("meta"), Step::Key("aliases"), Step::Row(k)];
@@ -143,28 +188,38 @@ fn check_identity(file: &ProfileFile, problems: &mut Vec<Problem>) {
             problems.push(Problem::at(at, format!("alias {alias} is given twice")));
         }
     }
-    if let Some(word) = &m.ascii_interface {
-        if AsciiInterface::parse(word).is_none() {
-            problems.push(Problem::at(
-                meta("ascii_interface"),
-                format!(
-                    "ascii_interface \"{}\" must be yes, no or unconfirmed",
-                    word.escape_debug()
-                ),
-            ));
-        }
+}
+
+/// `ascii_interface` is one of the words [`AsciiInterface`] knows.
+fn check_ascii_interface(m: &Meta, problems: &mut Vec<Problem>) {
+    let Some(word) = &m.ascii_interface else {
+        return;
+    };
+    if AsciiInterface::parse(word).is_none() {
+        problems.push(Problem::at(
+            meta("ascii_interface"),
+            format!(
+                "ascii_interface \"{}\" must be yes, no or unconfirmed",
+                word.escape_debug()
+            ),
+        ));
     }
-    if let Some(generation) = &m.parameter_generation {
-        if !GENERATIONS.contains(&generation.as_str()) {
-            problems.push(Problem::at(
-                meta("parameter_generation"),
-                format!(
-                    "parameter_generation \"{}\" must be one of {} (data/profiles/README.md)",
-                    generation.escape_debug(),
-                    GENERATIONS.join(", ")
-                ),
-            ));
-        }
+}
+
+/// `parameter_generation` is one of [`GENERATIONS`].
+fn check_parameter_generation(m: &Meta, problems: &mut Vec<Problem>) {
+    let Some(generation) = &m.parameter_generation else {
+        return;
+    };
+    if !GENERATIONS.contains(&generation.as_str()) {
+        problems.push(Problem::at(
+            meta("parameter_generation"),
+            format!(
+                "parameter_generation \"{}\" must be one of {} (data/profiles/README.md)",
+                generation.escape_debug(),
+                GENERATIONS.join(", ")
+            ),
+        ));
     }
 }
 
@@ -189,42 +244,7 @@ fn check_generic(file: &ProfileFile, problems: &mut Vec<Problem>) {
 fn check_command_set(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut Vec<Problem>) {
     let own = !file.command.is_empty();
     if let Some(section) = &file.commands {
-        let at = |key| vec![Step::Key("commands"), Step::Key(key)];
-        if own {
-            problems.push(Problem::at(
-                vec![Step::Key("commands")],
-                "[commands] changes the built-in command table, but this file has its own \
-                 [[command]] rows: leave the command out instead",
-            ));
-        }
-        if let Some(word) = &section.base {
-            if word != "builtin" {
-                problems.push(Problem::at(
-                    at("base"),
-                    format!(
-                        "base \"{}\" must be \"builtin\" (the only table a profile starts from)",
-                        word.escape_debug()
-                    ),
-                ));
-            }
-        }
-        let mut seen = BTreeSet::new();
-        for (k, &number) in section.absent.iter().enumerate() {
-            let at = vec![Step::Key("commands"), Step::Key("absent"), Step::Row(k)];
-            if !seen.insert(number) {
-                problems.push(Problem::at(
-                    at,
-                    format!("absent command {number} is given twice"),
-                ));
-            } else if let Some(base) = base {
-                if base.by_number(number).is_none() {
-                    problems.push(Problem::at(
-                        at,
-                        format!("absent command {number} is not in the built-in command table"),
-                    ));
-                }
-            }
-        }
+        check_commands_section(section, own, base, problems);
     }
     if own && !file.extra_command.is_empty() {
         problems.push(Problem::at(
@@ -236,6 +256,62 @@ fn check_command_set(file: &ProfileFile, base: Option<&CommandTable>, problems: 
     let Some(base) = base.filter(|_| !own) else {
         return;
     };
+    check_extra_commands_are_new(file, base, problems);
+}
+
+/// `[commands]` changes the built-in table (not a file's own rows): its `base` and the
+/// commands it marks `absent`, each once and each in that table.
+fn check_commands_section(
+    section: &CommandsSection,
+    own: bool,
+    base: Option<&CommandTable>,
+    problems: &mut Vec<Problem>,
+) {
+    let at = |key| vec![Step::Key("commands"), Step::Key(key)];
+    if own {
+        problems.push(Problem::at(
+            vec![Step::Key("commands")],
+            "[commands] changes the built-in command table, but this file has its own \
+             [[command]] rows: leave the command out instead",
+        ));
+    }
+    if let Some(word) = &section.base {
+        if word != "builtin" {
+            problems.push(Problem::at(
+                at("base"),
+                format!(
+                    "base \"{}\" must be \"builtin\" (the only table a profile starts from)",
+                    word.escape_debug()
+                ),
+            ));
+        }
+    }
+    let mut seen = BTreeSet::new();
+    for (k, &number) in section.absent.iter().enumerate() {
+        let at = vec![Step::Key("commands"), Step::Key("absent"), Step::Row(k)];
+        if !seen.insert(number) {
+            problems.push(Problem::at(
+                at,
+                format!("absent command {number} is given twice"),
+            ));
+        } else if let Some(base) = base {
+            if base.by_number(number).is_none() {
+                problems.push(Problem::at(
+                    at,
+                    format!("absent command {number} is not in the built-in command table"),
+                ));
+            }
+        }
+    }
+}
+
+/// An extra command takes neither the number nor the mnemonic of a command the built-in table
+/// keeps (one marked absent may come back).
+fn check_extra_commands_are_new(
+    file: &ProfileFile,
+    base: &CommandTable,
+    problems: &mut Vec<Problem>,
+) {
     let absent: &[u8] = file.commands.as_ref().map_or(&[], |c| &c.absent);
     for (i, row) in file.extra_command.iter().enumerate() {
         let at = |key| vec![Step::Key("extra_command"), Step::Row(i), Step::Key(key)];
@@ -409,7 +485,17 @@ fn check_ascii(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut V
         ));
         return;
     }
-    // The mnemonics of the module's table, and those it lacks.
+    let known = known_mnemonics(file, base);
+    let seen = check_allowed_commands(list, &known, problems);
+    // A file with its own rows states the list twice: both must say the same.
+    if !file.command.is_empty() {
+        check_list_matches_flags(file, &seen, list_at, problems);
+    }
+}
+
+/// The mnemonics of the module's table (upper case), each with whether the module has it: a
+/// command marked absent in `[commands]` is known but lacking.
+fn known_mnemonics(file: &ProfileFile, base: Option<&CommandTable>) -> Vec<(String, bool)> {
     let absent: &[u8] = file.commands.as_ref().map_or(&[], |c| &c.absent);
     let mut known: Vec<(String, bool)> = Vec::new();
     if file.command.is_empty() {
@@ -432,6 +518,16 @@ fn check_ascii(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut V
                 .map(|c| (c.mnemonic.to_ascii_uppercase(), true)),
         );
     }
+    known
+}
+
+/// Each word of `allowed_commands` is listed once and names a command the module has; returns
+/// the words listed, in upper case.
+fn check_allowed_commands(
+    list: &[String],
+    known: &[(String, bool)],
+    problems: &mut Vec<Problem>,
+) -> BTreeSet<String> {
     let mut seen = BTreeSet::new();
     for (k, word) in list.iter().enumerate() {
         let at = vec![
@@ -462,143 +558,57 @@ fn check_ascii(file: &ProfileFile, base: Option<&CommandTable>, problems: &mut V
             Some(_) => {}
         }
     }
-    // A file with its own rows states the list twice: both must say the same.
-    if !file.command.is_empty() {
-        let flagged: BTreeSet<String> = file
-            .command
-            .iter()
-            .filter(|c| c.ascii_allowed)
-            .map(|c| c.mnemonic.to_ascii_uppercase())
-            .collect();
-        let missing: Vec<&String> = flagged.difference(&seen).collect();
-        let unflagged: Vec<&String> = seen.difference(&flagged).collect();
-        if !missing.is_empty() || !unflagged.is_empty() {
-            let mut parts = Vec::new();
-            if !missing.is_empty() {
-                parts.push(format!(
-                    "ascii_allowed rows not listed: {}",
-                    missing
-                        .iter()
-                        .map(|s| s.as_str())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ));
-            }
-            if !unflagged.is_empty() {
-                parts.push(format!(
-                    "listed without ascii_allowed: {}",
-                    unflagged
-                        .iter()
-                        .map(|s| s.as_str())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ));
-            }
-            problems.push(Problem::at(
-                list_at,
-                format!(
-                    "allowed_commands disagrees with the ascii_allowed flags of the [[command]] \
-                     rows ({})",
-                    parts.join("; ")
-                ),
-            ));
-        }
-    }
+    seen
 }
 
-/// `[[io_port]]` rows, and the `[simulation]` port lists that repeat them.
-fn check_io(file: &ProfileFile, problems: &mut Vec<Problem>) {
-    let mut seen: HashMap<(u8, u8), Vec<Step>> = HashMap::new();
-    let adc_max = file.simulation.as_ref().and_then(|s| s.adc_max);
-    for (i, row) in file.io_port.iter().enumerate() {
-        let at = |key| vec![Step::Key("io_port"), Step::Row(i), Step::Key(key)];
-        let (bank, port) = match (row.bank, row.port) {
-            (Some(bank), Some(port)) => (bank, port),
-            (None, None) => continue, // a signal documented, not addressed by GIO/SIO
-            (Some(_), None) => {
-                problems.push(Problem::at(
-                    at("bank"),
-                    "an I/O port with a bank needs its port",
-                ));
-                continue;
-            }
-            (None, Some(_)) => {
-                problems.push(Problem::at(
-                    at("port"),
-                    "an I/O port with a port needs its bank",
-                ));
-                continue;
-            }
-        };
-        let named = row.name.as_deref().or(row.signal.as_deref()).unwrap_or("");
-        if named.trim().is_empty() || named.chars().any(char::is_control) {
-            problems.push(Problem::at(
-                at("name"),
-                format!("I/O port {port} of bank {bank} needs a name"),
-            ));
-        }
-        // Help, hints and replies print these: a control character would be obeyed.
-        let pin = row.pin.as_ref().map(|p| p.text()).unwrap_or_default();
-        for (key, text) in [
-            ("kind", row.kind.as_str()),
-            ("unit", &row.unit),
-            ("pin", &pin),
-        ] {
-            if text.chars().any(char::is_control) {
-                problems.push(Problem::at(
-                    at(key),
-                    format!("the {key} of I/O port {port} of bank {bank} has a control character"),
-                ));
-            }
-        }
-        check_range(row.range, at("range"), "range", problems);
-        if let (Some([_, hi]), Some(max), 1) = (row.range, adc_max, bank) {
-            if hi > i64::from(max) {
-                problems.push(Problem::at(
-                    at("range"),
-                    format!("analog port range up to {hi} is above the ADC's adc_max {max}"),
-                ));
-            }
-        }
-        match seen.get(&(bank, port)) {
-            Some(first) => problems.push(
-                Problem::at(
-                    at("port"),
-                    format!("I/O port {port} of bank {bank} is defined twice"),
-                )
-                .also(first.clone()),
-            ),
-            None => {
-                seen.insert((bank, port), at("port"));
-            }
-        }
+/// The `listed` commands are those of the file's `[[command]]` rows flagged `ascii_allowed`.
+fn check_list_matches_flags(
+    file: &ProfileFile,
+    listed: &BTreeSet<String>,
+    list_at: Vec<Step>,
+    problems: &mut Vec<Problem>,
+) {
+    let flagged: BTreeSet<String> = file
+        .command
+        .iter()
+        .filter(|c| c.ascii_allowed)
+        .map(|c| c.mnemonic.to_ascii_uppercase())
+        .collect();
+    let missing: Vec<&String> = flagged.difference(listed).collect();
+    let unflagged: Vec<&String> = listed.difference(&flagged).collect();
+    if missing.is_empty() && unflagged.is_empty() {
+        return;
     }
-    let Some(sim) = &file.simulation else { return };
-    if seen.is_empty() {
-        return; // no I/O map: the simulator's lists stand alone
+    let mut parts = Vec::new();
+    if !missing.is_empty() {
+        parts.push(format!(
+            "ascii_allowed rows not listed: {}",
+            joined(&missing)
+        ));
     }
-    for (bank, key, listed) in [
-        (0u8, "digital_inputs", &sim.digital_inputs),
-        (1, "analog_inputs", &sim.analog_inputs),
-        (2, "outputs", &sim.outputs),
-    ] {
-        let mapped: BTreeSet<u8> = seen
-            .keys()
-            .filter(|(b, _)| *b == bank)
-            .map(|(_, p)| *p)
-            .collect();
-        let simulated: BTreeSet<u8> = listed.iter().copied().collect();
-        if mapped != simulated {
-            problems.push(Problem::at(
-                vec![Step::Key("simulation"), Step::Key(key)],
-                format!(
-                    "{key} {:?} are not the ports of bank {bank} in [[io_port]] {:?}",
-                    simulated.iter().collect::<Vec<_>>(),
-                    mapped.iter().collect::<Vec<_>>()
-                ),
-            ));
-        }
+    if !unflagged.is_empty() {
+        parts.push(format!(
+            "listed without ascii_allowed: {}",
+            joined(&unflagged)
+        ));
     }
+    problems.push(Problem::at(
+        list_at,
+        format!(
+            "allowed_commands disagrees with the ascii_allowed flags of the [[command]] \
+             rows ({})",
+            parts.join("; ")
+        ),
+    ));
+}
+
+/// "A, B, C".
+fn joined(words: &[&String]) -> String {
+    words
+        .iter()
+        .map(|s| s.as_str())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 #[cfg(test)]

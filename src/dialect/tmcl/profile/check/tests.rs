@@ -259,3 +259,73 @@ fn decoding_tables_must_decode_each_value_one_way() {
     let builtin = Profile::builtin();
     Profile::from_toml(&with_row(fine), Some(&builtin.commands)).unwrap();
 }
+
+#[test]
+fn a_parameter_has_a_name_and_a_default_it_can_take() {
+    let error = refused(&with_row("number = 6\nname = \" \"\nident = \"a\"\n"));
+    assert!(
+        error.starts_with("line 16: name must not be empty"),
+        "{error}"
+    );
+    // A spanning row names its numbers through its identifier.
+    let text = with_row("number = 6\nnumber_last = 7\nname = \"\"\nident = \"a\"\n");
+    assert!(Profile::from_toml(&text, Some(&Profile::builtin().commands)).is_ok());
+    let error = refused(&with_row(
+        "number = 6\nname = \"a\"\nident = \"a\"\ndefault = 4294967296\n",
+    ));
+    assert!(
+        error.starts_with("line 18: default 4294967296 is not a 32-bit value"),
+        "{error}"
+    );
+    // A placeholder row defines nothing, not even a number that could collide.
+    let text = with_row("number = -1\nname = \"\"\nident = \"\"\n");
+    assert!(Profile::from_toml(&text, Some(&Profile::builtin().commands)).is_ok());
+}
+
+#[test]
+fn command_numbers_param_use_and_keywords_are_checked() {
+    let row = |extra: &str| {
+        format!(
+            "[meta]\nmodule = \"X\"\n\
+             [[command]]\nnumber = 1\nmnemonic = \"ROR\"\nname = \"r\"\n\
+             [[command]]\nnumber = 2\nmnemonic = \"ROL\"\nname = \"l\"\n{extra}"
+        )
+    };
+    let error = Profile::from_toml(&row("").replace("number = 2", "number = 1"), None).unwrap_err();
+    assert!(
+        error.contains("line 8: command 1 is defined twice (first on line 4)"),
+        "{error}"
+    );
+    let error = Profile::from_toml(&row("").replace("\"ROL\"", "\"RO L\""), None).unwrap_err();
+    assert!(
+        error.starts_with(
+            "line 9: mnemonic \"RO L\" must be letters and digits (empty for control functions)"
+        ),
+        "{error}"
+    );
+    let error = Profile::from_toml(&row("param_use = \"erase\"\n"), None).unwrap_err();
+    assert!(
+        error.starts_with("line 11: param_use \"erase\" is not read, write or store"),
+        "{error}"
+    );
+    let keywords = |second: &str| {
+        row(&format!(
+            "[[command.types]]\nvalue = 0\nname = \"A\"\n[[command.types]]\n{second}"
+        ))
+    };
+    let error = Profile::from_toml(&keywords("value = 0\nname = \"B\"\n"), None).unwrap_err();
+    assert!(
+        error.contains("line 15: command 2: type 0 has two keywords (first on line 12)"),
+        "{error}"
+    );
+    let error = Profile::from_toml(&keywords("value = 1\nname = \"a\"\n"), None).unwrap_err();
+    assert!(
+        error.contains("line 16: command 2: keyword A is defined twice (first on line 13)"),
+        "{error}"
+    );
+    let error = Profile::from_toml(&keywords("value = 1\nname = \"\"\n"), None).unwrap_err();
+    assert!(
+        error.contains("line 16: keyword \"\" of command 2 must be letters, digits and _"),
+        "{error}"
+    );
+}

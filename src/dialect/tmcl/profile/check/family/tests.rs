@@ -216,6 +216,34 @@ fn identification_fields_are_checked_on_their_lines() {
 }
 
 #[test]
+fn identification_fields_need_the_fields_they_derive_from() {
+    // Without a module number the prefix has nothing to be the digits of, and either format fits.
+    let text = GOOD.replace("module_number = 1234\n", "");
+    let error = load(&text).unwrap_err();
+    let at = line(&text, "version_prefix");
+    assert_eq!(
+        error,
+        format!("line {at}: version_prefix needs the module_number it is the digits of")
+    );
+    let text = text
+        .replace("version_prefix = \"1234\"\n", "")
+        .replace("\"NNNNVabc\"", "\"NNNVabc\"");
+    let error = load(&text).unwrap_err();
+    assert!(
+        error.contains("version_format \"NNNVabc\" must be NNNVa.bc or NNNNVabc"),
+        "{error}"
+    );
+    // A boot loader format varies the version format: without one it cannot be checked.
+    let text = GOOD.replace("version_format = \"NNNNVabc\"\n", "");
+    let error = load(&text).unwrap_err();
+    let at = line(&text, "bootloader_format");
+    assert_eq!(
+        error,
+        format!("line {at}: bootloader_format needs the version_format it varies")
+    );
+}
+
+#[test]
 fn the_command_set_is_checked_against_the_builtin_table() {
     refused_on_its_line(
         "absent",
@@ -433,6 +461,15 @@ fn a_file_with_its_own_commands_changes_no_builtin_table() {
         ),
         "{error}"
     );
+    let text = own("ascii_allowed = true\n[ascii]\nallowed_commands = []\n");
+    let error = load(&text).unwrap_err();
+    assert!(
+        error.starts_with(
+            "line 14: allowed_commands disagrees with the ascii_allowed flags of the [[command]] \
+             rows (ascii_allowed rows not listed: STGP)"
+        ),
+        "{error}"
+    );
 }
 
 #[test]
@@ -443,5 +480,23 @@ fn a_generic_profile_has_no_parameters() {
     assert!(
         error.starts_with("line 4: a generic profile knows parameters by number only"),
         "{error}"
+    );
+}
+
+#[test]
+fn an_io_port_is_addressed_by_bank_and_port_together() {
+    let at = line(GOOD, "bank = 2");
+    let text = GOOD.replace("bank = 2\n", "");
+    let error = load(&text).unwrap_err();
+    assert!(
+        error.contains(&format!(
+            "line {at}: an I/O port with a port needs its bank"
+        )),
+        "{error}"
+    );
+    refused_on_its_line(
+        "kind = \"digital input\"",
+        "unit = \"V\\u0007\"\nkind = \"digital input\"",
+        "the unit of I/O port 0 of bank 0 has a control character",
     );
 }
