@@ -21,6 +21,15 @@ const MAX_REPLY: usize = 64 * 1024;
 /// What is discarded most often.
 const UNEXPECTED: &str = "unexpected data from the line";
 
+/// A reply being read: what its request expects, the lines collected so far and their bytes (for
+/// the transcript), and whether the rest of an overlong line is still being dropped.
+struct Reading {
+    expect: Expectation,
+    collector: ReplyCollector,
+    bytes: Vec<u8>,
+    in_junk: bool,
+}
+
 impl Smd4Session {
     /// Reads the reply to `request`: whole lines, fed to a collector; a multi-line reply ends
     /// when nothing arrived for the quiet gap, a single-line one once the bytes after it were
@@ -28,83 +37,138 @@ impl Smd4Session {
     /// deadline nor memory.
     pub(super) fn receive(&mut self, request: &Request) -> Result<Smd4Reply, SessionError> {
         let expect = Expectation::for_request(&self.spec.commands, request);
-        let mut collector = ReplyCollector::new(expect.clone());
+        let mut reading = Reading {
+            collector: ReplyCollector::new(expect.clone()),
+            expect,
+            bytes: Vec::new(),
+            in_junk: false,
+        };
         let deadline = Instant::now() + self.core.options.timeout;
         // A multi-line reply's last line may come up to the deadline; its quiet gap after that.
         let multi_line_end = deadline + self.smd4.quiet_gap;
-        // This reply's bytes, for the transcript.
-        let mut reply_bytes = Vec::new();
-        let mut in_junk = false;
         loop {
-            loop {
-                if in_junk {
-                    match self.core.wire.rx.line_end(0) {
-                        Some(end) => {
-                            self.core.wire.discard_more(end);
-                            in_junk = false;
-                        }
-                        None => {
-                            let n = self.core.wire.rx.len();
-                            self.core.wire.discard_more(n);
-                            break;
-                        }
-                    }
-                }
-                let bytes = self.core.wire.rx.bytes();
-                let breaks = bytes.iter().take_while(|&&b| is_line_break(b)).count();
-                if breaks > 0 {
-                    reply_bytes.extend(self.core.wire.rx.take(breaks));
-                    continue;
-                }
-                let Some(end) = self.core.wire.rx.line_end(0) else {
-                    if self.core.wire.rx.len() > MAX_LINE {
-                        let n = self.core.wire.rx.len();
-                        self.core.wire.discard(n, UNEXPECTED);
-                        in_junk = true;
-                    }
-                    break;
-                };
-                let used = end + 1;
-                if end > MAX_LINE {
-                    self.core.wire.discard(used, UNEXPECTED);
-                    continue;
-                }
-                let line = String::from_utf8_lossy(&self.core.wire.rx.bytes()[..end]).into_owned();
-                match collector.push_line(&line) {
-                    Ok(CollectorState::Complete(reply)) if foreign(&reply, request) => {
-                        self.discard_foreign(used, &reply, request);
-                        collector = ReplyCollector::new(expect.clone());
-                    }
-                    Ok(CollectorState::Complete(reply)) => {
-                        return self.settle(*reply, reply_bytes, used, deadline, &expect, request);
-                    }
-                    Ok(CollectorState::AwaitQuiet) => {
-                        reply_bytes.extend(self.core.wire.rx.take(used));
-                        if reply_bytes.len() > MAX_REPLY {
-                            let what = "is longer than 64 KiB";
-                            return Err(self.endless(request, reply_bytes, what));
-                        }
-                    }
-                    Err(_) => self.core.wire.discard(used, UNEXPECTED),
-                }
+            if let Some(outcome) = self.judge_lines(&mut reading, request, deadline) {
+                return outcome;
             }
-            let now = Instant::now();
-            if collector.awaiting_quiet() {
-                if now >= multi_line_end {
-                    return Err(self.endless(request, reply_bytes, "did not end in time"));
+            if let Some(outcome) = self.await_more(&mut reading, request, deadline, multi_line_end)
+            {
+                return outcome;
+            }
+        }
+    }
+
+    /// Judges the whole lines received so far: the reply's outcome once one is known, `None`
+    /// while more must be read.
+    fn judge_lines(
+        &mut self,
+        reading: &mut Reading,
+        request: &Request,
+        deadline: Instant,
+    ) -> Option<Result<Smd4Reply, SessionError>> {
+        loop {
+            if reading.in_junk && !self.skip_junk(reading) {
+                return None;
+            }
+            let bytes = self.core.wire.rx.bytes();
+            let breaks = bytes.iter().take_while(|&&b| is_line_break(b)).count();
+            if breaks > 0 {
+                reading.bytes.extend(self.core.wire.rx.take(breaks));
+                continue;
+            }
+            let Some(end) = self.core.wire.rx.line_end(0) else {
+                if self.core.wire.rx.len() > MAX_LINE {
+                    let n = self.core.wire.rx.len();
+                    self.core.wire.discard(n, UNEXPECTED);
+                    reading.in_junk = true;
                 }
-                let gap_end = now + self.smd4.quiet_gap;
-                if !self.core.wire.fill(gap_end.min(multi_line_end))? {
-                    if gap_end > multi_line_end {
-                        return Err(self.endless(request, reply_bytes, "did not end in time"));
+                return None;
+            };
+            let used = end + 1;
+            if end > MAX_LINE {
+                self.core.wire.discard(used, UNEXPECTED);
+                continue;
+            }
+            let line = String::from_utf8_lossy(&self.core.wire.rx.bytes()[..end]).into_owned();
+            match reading.collector.push_line(&line) {
+                Ok(CollectorState::Complete(reply)) if foreign(&reply, request) => {
+                    self.discard_foreign(used, &reply, request);
+                    reading.collector = ReplyCollector::new(reading.expect.clone());
+                }
+                Ok(CollectorState::Complete(reply)) => {
+                    let bytes = std::mem::take(&mut reading.bytes);
+                    let expect = &reading.expect;
+                    return Some(self.settle(*reply, bytes, used, deadline, expect, request));
+                }
+                Ok(CollectorState::AwaitQuiet) => {
+                    reading.bytes.extend(self.core.wire.rx.take(used));
+                    if reading.bytes.len() > MAX_REPLY {
+                        let bytes = std::mem::take(&mut reading.bytes);
+                        return Some(Err(self.endless(request, bytes, "is longer than 64 KiB")));
                     }
-                    let reply = collector
-                        .finish_quiet()
-                        .expect("awaiting quiet means a first line came");
-                    return self.finish(reply, &reply_bytes, &expect, request);
                 }
-            } else if now >= deadline || !self.core.wire.fill(deadline)? {
-                return Err(self.no_reply(request, reply_bytes));
+                Err(_) => self.core.wire.discard(used, UNEXPECTED),
+            }
+        }
+    }
+
+    /// Drops the rest of an overlong line: `false` while its end has not come yet.
+    fn skip_junk(&mut self, reading: &mut Reading) -> bool {
+        match self.core.wire.rx.line_end(0) {
+            Some(end) => {
+                self.core.wire.discard_more(end);
+                reading.in_junk = false;
+                true
+            }
+            None => {
+                let n = self.core.wire.rx.len();
+                self.core.wire.discard_more(n);
+                false
+            }
+        }
+    }
+
+    /// Reads more, up to the deadline, or for a multi-line reply up to its quiet gap: the
+    /// reply's outcome when the time is up, `None` when bytes came.
+    fn await_more(
+        &mut self,
+        reading: &mut Reading,
+        request: &Request,
+        deadline: Instant,
+        multi_line_end: Instant,
+    ) -> Option<Result<Smd4Reply, SessionError>> {
+        let now = Instant::now();
+        if !reading.collector.awaiting_quiet() {
+            return match (now >= deadline, self.core.wire.fill(deadline)) {
+                (false, Ok(true)) => None,
+                (false, Err(e)) => Some(Err(e)),
+                _ => Some(Err(
+                    self.no_reply(request, std::mem::take(&mut reading.bytes))
+                )),
+            };
+        }
+        let late = "did not end in time";
+        if now >= multi_line_end {
+            return Some(Err(self.endless(
+                request,
+                std::mem::take(&mut reading.bytes),
+                late,
+            )));
+        }
+        let gap_end = now + self.smd4.quiet_gap;
+        match self.core.wire.fill(gap_end.min(multi_line_end)) {
+            Ok(true) => None,
+            Err(e) => Some(Err(e)),
+            Ok(false) if gap_end > multi_line_end => Some(Err(self.endless(
+                request,
+                std::mem::take(&mut reading.bytes),
+                late,
+            ))),
+            Ok(false) => {
+                let fresh = ReplyCollector::new(reading.expect.clone());
+                let reply = std::mem::replace(&mut reading.collector, fresh)
+                    .finish_quiet()
+                    .expect("awaiting quiet means a first line came");
+                Some(self.finish(reply, &reading.bytes, &reading.expect, request))
             }
         }
     }
