@@ -212,8 +212,9 @@ impl TmclSession {
         }
         let c = ModuleName(module);
         let warning = format!(
-            "{c} is a {module_type} ({}), but the profile given is {} for the {}; \
+            "{c} is {} ({}), but the profile given is {} for the {}; \
              the given profile is used",
+            crate::article::with_article(module_type),
             version.text,
             profile_label(given),
             given.module
