@@ -36,7 +36,7 @@ pub(super) fn write_help(
             out,
             "{}",
             crate::wrap::fit(
-                "Leave with :quit (or quit, exit) or Ctrl-D; the modules go back to the mode they were found in.",
+                "Leave with :quit, quit or exit (anything typed after them is ignored: exit 1 leaves with the session's own exit code) or Ctrl-D; the modules go back to the mode they were found in.",
                 0,
                 crate::wrap::terminal_width()
             )
