@@ -15,17 +15,19 @@ pub fn article(name: &str) -> &'static str {
     }
 }
 
-/// Product names and abbreviations (`SMD4`, `TMCM-142`, `FPGA`) are spelt out letter by letter,
-/// so their first letter's name counts; other words are read as words.
+/// Product names, abbreviations and type names (`SMD4`, `TMCM-142`, `FPGA`, `f64`) are spelt out
+/// letter by letter, so their first letter's name counts; other words are read as words.
 fn starts_with_vowel_sound(name: &str) -> bool {
     let mut chars = name.chars();
     let Some(first) = chars.next() else {
         return false;
     };
     let second = chars.next();
-    let spelt = first.is_ascii_uppercase()
-        && second.is_none_or(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '-');
+    let spelt = (first.is_ascii_uppercase()
+        && second.is_none_or(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '-'))
+        || (first.is_ascii_alphabetic() && second.is_some_and(|c| c.is_ascii_digit()));
     if spelt {
+        let first = first.to_ascii_uppercase();
         // The letters whose names start with a vowel: "ay", "ee", "ef", "aitch", "eye", "el",
         // "em", "en", "oh", "ar", "es", "ex".
         return "AEFHILMNORSX".contains(first);
@@ -67,5 +69,11 @@ mod tests {
         assert_eq!(with_article("module"), "a module");
         assert_eq!(with_article("8-axis module"), "an 8-axis module");
         assert_eq!(article(""), "a");
+        // Script value types.
+        assert_eq!(with_article("array"), "an array");
+        assert_eq!(with_article("i64"), "an i64");
+        assert_eq!(with_article("f64"), "an f64");
+        assert_eq!(with_article("u8"), "a u8");
+        assert_eq!(with_article("map"), "a map");
     }
 }
