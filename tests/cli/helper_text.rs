@@ -123,3 +123,19 @@ fn no_help_or_usage_line_of_any_helper_has_a_doubled_space() {
         }
     }
 }
+
+#[test]
+fn params_with_a_filter_nothing_matches_says_so_in_each_dialect() {
+    for (protocol, said) in [
+        ("tmcl", "no parameter matches 'zzz'"),
+        ("smd4", "no setting matches 'zzz'"),
+    ] {
+        let out = run_in(
+            &tempdir(),
+            &["--protocol", protocol, "-c", ":params zzz"],
+            "",
+        );
+        assert_eq!(code(&out), 0, "{}", stderr(&out));
+        assert_eq!(stdout(&out).trim_end(), said, "{protocol}");
+    }
+}
