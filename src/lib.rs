@@ -13,6 +13,7 @@
 #![deny(missing_docs)]
 #![warn(unreachable_pub)]
 
+pub mod article;
 #[cfg(feature = "cli")]
 pub mod cli;
 pub mod clock;

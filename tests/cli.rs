@@ -166,6 +166,7 @@ fn a_transposition_is_suggested_wherever_names_are() {
 mod config;
 mod examples;
 mod forgiving;
+mod helper_text;
 mod history;
 mod log;
 mod output;

@@ -490,6 +490,37 @@ fn switching_to_an_unknown_module_gives_it_the_generic_profile_with_one_notice()
 }
 
 #[test]
+fn each_unknown_module_on_a_bus_gets_a_generic_profile_notice_naming_it() {
+    let dir = tempdir();
+    let (b, c) = (
+        crate::identify::module_answering(&dir, "9999V100"),
+        crate::identify::module_answering(&dir, "8888V100"),
+    );
+    let bus = format!("1:tmcm-142,2:{},3:{}", b.display(), c.display());
+    let sim = Sim::start(&["--pty", "--modules", &bus]);
+    let input = ":target 2\nGAP 1, 0\n:target 3\nGAP 1, 0\n:target 2\nGAP 1, 0\n";
+    let out = piped(&sim, &[], input);
+    let err = stderr(&out);
+    assert_eq!(code(&out), 0, "{err}");
+    let notices: Vec<&str> = err
+        .lines()
+        .filter(|l| l.contains("generic TMCL profile"))
+        .collect();
+    assert_eq!(
+        notices,
+        [
+            "tmclsh: module 2 (B), a TMCM-9999, uses the generic TMCL profile: commands and \
+             motors 0..5 are checked, parameters by number only (0..255, no names, values \
+             unchecked); `tmclsh profiles` lists the modules with tables",
+            "tmclsh: module 3 (C), a TMCM-8888, uses the generic TMCL profile: commands and \
+             motors 0..5 are checked, parameters by number only (0..255, no names, values \
+             unchecked); `tmclsh profiles` lists the modules with tables",
+        ],
+        "one notice per unknown module, each naming it: {err}"
+    );
+}
+
+#[test]
 fn the_simulator_refuses_a_boot_loader_at_an_address_not_on_the_bus() {
     let out = run(&["sim", "--modules", "1,2", "--boot-loader=3"]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));

@@ -270,6 +270,24 @@ fn a_runaway_loop_hits_the_operation_cap() {
 }
 
 #[test]
+fn a_value_of_the_wrong_type_is_named_with_its_article() {
+    for (source, said) in [
+        (
+            "gap([1], 0)",
+            "a parameter is a number or a name, not an array",
+        ),
+        (
+            "gap(#{}, 0)",
+            "a parameter is a number or a name, not a map",
+        ),
+    ] {
+        let out = run(&["run", &script("type.rhai", source)]);
+        assert_eq!(code(&out), 2, "{}", stderr(&out));
+        assert!(stderr(&out).contains(said), "{}", stderr(&out));
+    }
+}
+
+#[test]
 fn scripts_cannot_import_or_eval() {
     let path = script("import.rhai", "import \"os\" as os;");
     let out = run(&["run", &path]);

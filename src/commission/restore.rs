@@ -20,6 +20,7 @@ pub mod check;
 use std::collections::BTreeSet;
 use std::io::{self, Write};
 
+use crate::article::with_article;
 use crate::commission::SnapshotRole;
 use crate::session::SessionError;
 
@@ -174,11 +175,15 @@ fn file_problems(
     if snapshot.module != module {
         problems.push(Problem::forceable(
             Subject::File,
-            format!("it is a snapshot of another module type, not of a {module}"),
+            format!(
+                "it is a snapshot of another module type, not of {}",
+                with_article(&module)
+            ),
             Some(format!(
-                "it is a snapshot of a {}, and {} is a {module}",
-                snapshot.module,
-                device.who()
+                "it is a snapshot of {}, and {} is {}",
+                with_article(&snapshot.module),
+                device.who(),
+                with_article(&module)
             )),
         ));
     }

@@ -88,6 +88,8 @@ pub struct Dialect {
     pub scan_addresses: &'static str,
     /// The example in the usage of `:scan`.
     pub scan_example: &'static str,
+    /// Two of its readable parameters, for the examples in the usage of `:watch` and `:record`.
+    pub param_example: &'static str,
 }
 
 /// A parsed command line, which a dialect reads its own session and simulator flags from:

@@ -209,13 +209,19 @@ fn names(value: &Dynamic) -> Fallible<Vec<String>> {
             .map(|v| {
                 v.into_immutable_string()
                     .map(|s| s.trim().to_string())
-                    .map_err(|t| refused(format!("a parameter name is a string, not a {t}")))
+                    .map_err(|t| {
+                        refused(format!(
+                            "a parameter name is a string, not {}",
+                            crate::article::with_article(t)
+                        ))
+                    })
             })
             .collect();
     }
     let text = value.clone().into_immutable_string().map_err(|t| {
         refused(format!(
-            "parameters are names (an array or \"a,b\"), not a {t}"
+            "parameters are names (an array or \"a,b\"), not {}",
+            crate::article::with_article(t)
         ))
     })?;
     let list: Vec<String> = text

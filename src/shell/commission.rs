@@ -37,9 +37,13 @@ pub fn helper(
     match name {
         "snapshot" => snapshot(session.param_device(), arg, out),
         "scan" => scan(session, arg, out),
-        "watch" => watch(session.param_device(), arg, out),
+        "watch" => {
+            let example = session.dialect().param_example;
+            watch(session.param_device(), arg, example, out)
+        }
         "record" => {
-            let (path, recording) = record(session.param_device(), arg, out)?;
+            let example = session.dialect().param_example;
+            let (path, recording) = record(session.param_device(), arg, example, out)?;
             state.last_recording = Some((path, recording));
             Ok(())
         }
@@ -119,7 +123,7 @@ fn scan(
 ) -> Result<(), SessionError> {
     let dialect = session.dialect();
     let usage_text = format!(
-        ":scan [ADDRESSES] [TIME PER REPLY]  (e.g. :scan {})",
+        ":scan [ADDRESSES] [TIME PER REPLY] (e.g. :scan {})",
         dialect.scan_example
     );
     let words: Vec<&str> = arg.split_whitespace().collect();
@@ -171,16 +175,17 @@ fn params_and_times(
     Ok((params, durations))
 }
 
+/// `:watch PARAM[,PARAM…] [INTERVAL]`; `example` names parameters of the session's dialect.
 fn watch(
     session: &mut dyn ParamDevice,
     arg: &str,
+    example: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
-    const USAGE: &str =
-        ":watch PARAM[,PARAM…] [INTERVAL]  (e.g. :watch actual_position,actual_speed 200ms)";
+    let usage_text = format!(":watch PARAM[,PARAM…] [INTERVAL] (e.g. :watch {example} 200ms)");
     let words: Vec<&str> = arg.split_whitespace().collect();
     let (params, times) =
-        params_and_times(session, &words, 1).map_err(|e| usage(&format!("{USAGE}; {e}")))?;
+        params_and_times(session, &words, 1).map_err(|e| usage(&format!("{usage_text}; {e}")))?;
     if !interactive() {
         return Err(SessionError::Usage(
             ":watch needs a terminal; without one, :record FILE.csv PARAMS INTERVAL DURATION samples to a file"
@@ -192,24 +197,29 @@ fn watch(
     watch::watch(session, &params, interval, &mut screen).map(|_| ())
 }
 
+/// `:record FILE.csv PARAM[,PARAM…] [INTERVAL] [DURATION]`; `example` names parameters of the
+/// session's dialect.
 fn record(
     session: &mut dyn ParamDevice,
     arg: &str,
+    example: &str,
     out: &mut dyn Write,
 ) -> Result<(PathBuf, Recording), SessionError> {
-    const USAGE: &str = ":record FILE.csv PARAM[,PARAM…] [INTERVAL] [DURATION]  (e.g. :record ramp.csv actual_position,actual_speed 20ms 3s)";
+    let usage_text = format!(
+        ":record FILE.csv PARAM[,PARAM…] [INTERVAL] [DURATION] (e.g. :record ramp.csv {example} 20ms 3s)"
+    );
     let words: Vec<&str> = arg.split_whitespace().collect();
     let Some((file, rest)) = words.split_first() else {
-        return Err(usage(USAGE));
+        return Err(usage(&usage_text));
     };
     let (params, times) =
-        params_and_times(session, rest, 2).map_err(|e| usage(&format!("{USAGE}; {e}")))?;
+        params_and_times(session, rest, 2).map_err(|e| usage(&format!("{usage_text}; {e}")))?;
     let interval = times.first().copied().unwrap_or(Duration::from_millis(100));
     let duration = times.get(1).copied();
     let terminal = interactive();
     if duration.is_none() && !terminal {
         return Err(SessionError::Usage(format!(
-            "without a terminal to stop it, :record needs a duration; {USAGE}"
+            "without a terminal to stop it, :record needs a duration; {usage_text}"
         )));
     }
     let plan = record::Plan {

@@ -4,12 +4,31 @@
 use std::io::{self, Write};
 
 use crate::dialect::DialectSession;
+use crate::dialect::helper::Helper;
 
 use super::helpers;
 
 /// `:help time`: the one grammar of times (`crate::duration`).
 const TIMES: &str = "Times (:scan, :watch, :record, run --max-time, the simulator's advance) are a number with a unit \
 (250ms, 2s, 1.5s, 1m) or a bare number of milliseconds (250 is 250ms), at most 7 days.";
+
+/// The width of the usage column of the helper table.
+const USAGE_COLUMN: usize = 30;
+
+/// A helper's usage and summary in two columns after `indent`; a usage wider than its column
+/// has a line of its own, so that every summary starts in the same column.
+fn helper_rows(h: &Helper, indent: &str, width: Option<usize>) -> String {
+    let summary_at = indent.len() + USAGE_COLUMN + 1;
+    let row = |usage: &str| format!("{indent}{usage:<USAGE_COLUMN$} {}", h.summary);
+    if h.usage.chars().count() <= USAGE_COLUMN {
+        return crate::wrap::fit(&row(h.usage), summary_at, width);
+    }
+    format!(
+        "{indent}{}\n{}",
+        h.usage,
+        crate::wrap::fit(&row(""), summary_at, width)
+    )
+}
 
 /// Writes the help on `topic` (empty: the overview).
 pub(super) fn write_help(
@@ -24,8 +43,7 @@ pub(super) fn write_help(
         writeln!(out, "Helper commands:")?;
         let width = crate::wrap::terminal_width();
         for h in helpers::available(dialect) {
-            let row = format!("  {:<30} {}", h.usage, h.summary);
-            writeln!(out, "{}", crate::wrap::fit(&row, 33, width))?;
+            writeln!(out, "{}", helper_rows(h, "  ", width))?;
         }
         let more = format!("More: {}", session.help_more());
         return writeln!(out, "\n{}", crate::wrap::fit(&more, 6, width));
@@ -36,7 +54,7 @@ pub(super) fn write_help(
             out,
             "{}",
             crate::wrap::fit(
-                "Leave with :quit (or quit, exit) or Ctrl-D; the modules go back to the mode they were found in.",
+                "Leave with :quit, quit or exit (anything typed after them is ignored: exit 1 leaves with the session's own exit code) or Ctrl-D; the modules go back to the mode they were found in.",
                 0,
                 crate::wrap::terminal_width()
             )
@@ -71,10 +89,29 @@ pub(super) fn write_help(
         return Ok(());
     }
     if let Ok(h) = helpers::find(&word, dialect) {
-        return writeln!(out, "{:<30} {}", h.usage, h.summary);
+        return writeln!(out, "{}", helper_rows(h, "", crate::wrap::terminal_width()));
     }
     if session.help_command(&word, out)? {
         return Ok(());
     }
     writeln!(out, "no help on '{topic}'; :help lists topics")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dialect::DIALECTS;
+
+    #[test]
+    fn every_summary_of_the_helper_table_starts_in_the_same_column() {
+        for dialect in DIALECTS {
+            for h in helpers::available(dialect) {
+                let rows = helper_rows(h, "  ", None);
+                let summary = rows.lines().last().unwrap();
+                let at = summary.find(h.summary).unwrap();
+                assert_eq!(at, 2 + USAGE_COLUMN + 1, "{rows}");
+                assert!(rows.starts_with(&format!("  {}", h.usage)), "{rows}");
+            }
+        }
+    }
 }

@@ -181,6 +181,18 @@ mod tests {
     }
 
     #[test]
+    fn every_helper_s_usage_and_summary_are_single_spaced() {
+        for dialect in DIALECTS {
+            for h in available(dialect) {
+                for text in [h.usage, h.summary] {
+                    assert!(!text.contains("  "), "{}: {text:?}", dialect.name);
+                    assert_eq!(text.trim(), text, "{}: {text:?}", dialect.name);
+                }
+            }
+        }
+    }
+
+    #[test]
     fn every_helper_has_usage_starting_with_its_name() {
         let all = SHARED.iter().chain(DIALECTS.iter().flat_map(|d| d.helpers));
         for h in all {

@@ -11,7 +11,9 @@ pub enum Everyday {
     Clear,
 }
 
-/// The everyday word `text` is, if it is one (any case; `help` and `?` may name a topic).
+/// The everyday word `text` is, if it is one (any case; `help` and `?` may name a topic). `exit`
+/// and `quit` leave whatever follows them (`exit now`), as `:quit` does: no module has such a
+/// command, so nothing is sent, and the words after them mean nothing else (not an exit code).
 pub fn everyday(text: &str) -> Option<Everyday> {
     let text = text.trim();
     let (word, rest) = match text.split_once(char::is_whitespace) {
@@ -21,7 +23,7 @@ pub fn everyday(text: &str) -> Option<Everyday> {
     match word.to_ascii_lowercase().as_str() {
         "help" | "?" if rest.is_empty() => Some(Everyday::Helper(":help".into())),
         "help" | "?" => Some(Everyday::Helper(format!(":help {rest}"))),
-        "exit" | "quit" if rest.is_empty() => Some(Everyday::Helper(":quit".into())),
+        "exit" | "quit" => Some(Everyday::Helper(":quit".into())),
         "clear" | "cls" if rest.is_empty() => Some(Everyday::Clear),
         _ => None,
     }
@@ -54,8 +56,11 @@ mod tests {
         assert_eq!(everyday("? exit"), helper(":help exit"));
         assert_eq!(everyday("exit"), helper(":quit"));
         assert_eq!(everyday("Quit"), helper(":quit"));
+        for leave in ["exit now", "quit please", "EXIT 1", "quit\t!"] {
+            assert_eq!(everyday(leave), helper(":quit"), "{leave}");
+        }
         assert_eq!(everyday("clear"), Some(Everyday::Clear));
-        for line in ["exit 0", "quitter", "GAP 1, 0", "MOTOR:VMAX", "clear 1", ""] {
+        for line in ["exit,0", "quitter", "GAP 1, 0", "MOTOR:VMAX", "clear 1", ""] {
             assert_eq!(everyday(line), None, "{line}");
         }
     }

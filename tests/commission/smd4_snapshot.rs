@@ -488,7 +488,7 @@ fn a_tmcl_snapshot_or_one_of_another_drive_is_refused_by_an_smd4() {
     let out = snapshot(&drive, &["restore", arg(&other)], &[]);
     assert_exit(&out, 2);
     assert!(
-        stderr(&out).contains("it is a snapshot of a SMD2"),
+        stderr(&out).contains("it is a snapshot of an SMD2, and the drive is an SMD4"),
         "{}",
         stderr(&out)
     );

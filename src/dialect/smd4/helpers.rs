@@ -25,8 +25,13 @@ pub fn run(
 ) -> Result<(), SessionError> {
     match helper.name {
         "params" => {
+            let mut any = false;
             for spec in hints::matching(&session.spec().commands, arg) {
                 writeln!(out, "{}", hints::fitted_row(spec))?;
+                any = true;
+            }
+            if !any {
+                writeln!(out, "no setting matches '{arg}'")?;
             }
         }
         "target" => {

@@ -47,6 +47,7 @@ pub static DIALECT: Dialect = Dialect {
     typed_here,
     scan_addresses: "1-247",
     scan_example: "1-247 50ms",
+    param_example: "MOTOR:PACT,MOTOR:VACT",
 };
 
 /// SMD4 mnemonics have colons (`MOTOR:VMAX`, `@3,SYS:FW`): how the history of earlier versions,

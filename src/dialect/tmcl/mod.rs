@@ -60,6 +60,7 @@ pub static DIALECT: Dialect = Dialect {
     typed_here,
     scan_addresses: "1-26",
     scan_example: "1-26 200ms",
+    param_example: "actual_position,actual_speed",
 };
 
 /// Whether `dialect` is TMCL (for the subcommands only TMCL has: `download`).

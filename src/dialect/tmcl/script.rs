@@ -364,7 +364,12 @@ fn name_of(param: &Dynamic) -> Fallible<String> {
         .clone()
         .into_immutable_string()
         .map(|s| s.to_string())
-        .map_err(|t| refused(format!("a parameter is a number or a name, not a {t}")))
+        .map_err(|t| {
+            refused(format!(
+                "a parameter is a number or a name, not {}",
+                crate::article::with_article(t)
+            ))
+        })
 }
 
 fn module_address(address: &Dynamic) -> Fallible<u8> {

@@ -106,7 +106,8 @@ impl TmclSession {
             _ => self.fallback.clone(),
         };
         if profile.generic && !self.fallback.generic {
-            self.core.wire.notices.push(GENERIC_NOTICE.to_string());
+            let notice = generic_notice(module, &identity);
+            self.core.wire.notices.push(notice);
         }
         let known = Known { profile, identity };
         if let Some(line) = identified_note(module, &known) {
@@ -212,8 +213,9 @@ impl TmclSession {
         }
         let c = ModuleName(module);
         let warning = format!(
-            "{c} is a {module_type} ({}), but the profile given is {} for the {}; \
+            "{c} is {} ({}), but the profile given is {} for the {}; \
              the given profile is used",
+            crate::article::with_article(module_type),
             version.text,
             profile_label(given),
             given.module
@@ -256,6 +258,19 @@ impl TmclSession {
     /// What the session knows about its module.
     pub fn identity(&self) -> &Identity {
         &self.identity
+    }
+}
+
+/// The notice of a module no built-in profile describes, which names it, so that each such
+/// module on a bus has its own: `module 2 (B), a TMCM-9999, uses the generic TMCL profile: …`.
+fn generic_notice(module: u8, identity: &Identity) -> String {
+    let c = ModuleName(module);
+    match identity {
+        Identity::Answered { module, .. } => format!(
+            "{c}, {}, uses the {GENERIC_NOTICE}",
+            crate::article::with_article(module)
+        ),
+        _ => format!("{c} uses the {GENERIC_NOTICE}"),
     }
 }
 

@@ -182,7 +182,10 @@ fn the_ascii_list_is_the_modules() {
     for mode in [Mode::Ascii, Mode::Binary] {
         let e = parse("SAC 0, 0, 0", &p).unwrap_err().to_string();
         assert!(
-            e.starts_with("SAC (29) is not a command of the TMCM-1140; its profile says: SAC (29)"),
+            e.starts_with(
+                "SAC (29) is not a command of the TMCM-1140; its profile says: the TMCM-1140's \
+                 manual does not list it"
+            ),
             "{mode:?}: {e}"
         );
     }
