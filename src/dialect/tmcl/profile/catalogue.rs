@@ -6,7 +6,7 @@
 //!
 //! A session that has read the module's 136 type-0 answer hands it to [`identify`]: a firmware
 //! answer gives the profile of its module number ([`Identified::Known`]) or the generic one
-//! ([`Identified::Unknown`], with [`GENERIC_NOTICE`] to show once); a boot-loader answer
+//! ([`Identified::Unknown`], with [`GENERIC_NOTICE`] to show for each unknown module); a boot-loader answer
 //! ([`Identified::BootLoader`]) means nothing else may be sent. [`Identified::banner`] is the line
 //! the banner and `-v` print (`TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in)`). An
 //! explicit `--profile` is [`resolve`]d instead and wins over what the module says. The pieces are

@@ -146,7 +146,7 @@ impl TmclSession {
             Err(SessionError::Timeout { timeout, .. }) => {
                 self.core
                     .wire
-                    .note(&format!("not identified: {c}: no answer to 136"));
+                    .note(&format!("not identified: {c}, no answer to 136"));
                 // A module in ASCII mode holds the frame as the start of a line.
                 self.end_partial_line()?;
                 self.core.wire.notices.push(format!(
@@ -168,7 +168,7 @@ impl TmclSession {
             Err(e) => {
                 self.core
                     .wire
-                    .note(&format!("not identified: {c}: answer not understood"));
+                    .note(&format!("not identified: {c}, answer not understood"));
                 self.core.wire.notices.push(format!(
                     "{c} answered command 136 with {e}; not identified, using the profile {}",
                     profile_label(&self.fallback)
