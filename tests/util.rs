@@ -29,9 +29,15 @@ pub fn run(args: &[&str]) -> Output {
 
 /// Runs `tmclsh ARGS` with `input` on stdin (a pipe, so stdin is not a terminal).
 pub fn run_with_stdin(args: &[&str], input: &str) -> Output {
+    run_with_stdin_in(Path::new("."), args, input)
+}
+
+/// [`run_with_stdin`] in the working directory `dir`.
+pub fn run_with_stdin_in(dir: &Path, args: &[&str], input: &str) -> Output {
     use std::io::Write;
     let mut child = Command::new(bin())
         .args(args)
+        .current_dir(dir)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())

@@ -1,33 +1,9 @@
 //! The help and usage lines of every helper of both dialects: examples in the session's own
 //! dialect that run as shown, and no doubled space inside a text.
 
-use std::path::Path;
-use std::process::{Command, Output, Stdio};
-
-use crate::util::{bin, code, stderr, stdout, tempdir};
+use crate::util::{code, run_with_stdin_in, stderr, stdout, tempdir};
 use tmclsh::dialect::DIALECTS;
 use tmclsh::shell::helpers;
-
-/// `tmclsh ARGS` in `dir`, with `input` piped on stdin.
-fn run_in(dir: &Path, args: &[&str], input: &str) -> Output {
-    use std::io::Write;
-    let mut child = Command::new(bin())
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .env("NO_COLOR", "1")
-        .spawn()
-        .expect("tmclsh runs");
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .unwrap();
-    child.wait_with_output().expect("tmclsh finishes")
-}
 
 /// The example of a usage message: what follows `(e.g. ` up to its `)`.
 fn example(message: &str) -> &str {
@@ -45,7 +21,7 @@ fn the_watch_and_record_examples_are_in_the_session_s_dialect_and_run_as_shown()
         let dir = tempdir();
         let protocol = ["--protocol", dialect.name];
         let usage = |helper: &str| {
-            let out = run_in(&dir, &[&protocol[..], &["-c", helper]].concat(), "");
+            let out = run_with_stdin_in(&dir, &[&protocol[..], &["-c", helper]].concat(), "");
             assert_eq!(code(&out), 2, "{}", stderr(&out));
             stderr(&out)
         };
@@ -57,7 +33,7 @@ fn the_watch_and_record_examples_are_in_the_session_s_dialect_and_run_as_shown()
         // Both name the same parameters, which the session's own module reads.
         let names = record.split_whitespace().nth(2).unwrap();
         assert_eq!(watch.split_whitespace().nth(1), Some(names), "{watch}");
-        let out = run_in(&dir, &[&protocol[..], &["-c", &record]].concat(), "");
+        let out = run_with_stdin_in(&dir, &[&protocol[..], &["-c", &record]].concat(), "");
         assert_eq!(code(&out), 0, "{}: {}", dialect.name, stderr(&out));
         let csv = std::fs::read_to_string(dir.join("ramp.csv")).unwrap();
         let header = csv.lines().next().unwrap().to_ascii_lowercase();
@@ -99,7 +75,7 @@ fn no_help_or_usage_line_of_any_helper_has_a_doubled_space() {
             input.push_str(&format!(":help {name}\n:{name} @@ @@\n"));
         }
         let dir = tempdir();
-        let out = run_in(&dir, &["--protocol", dialect.name, "--keep-going"], &input);
+        let out = run_with_stdin_in(&dir, &["--protocol", dialect.name, "--keep-going"], &input);
         let (shown, errors) = (stdout(&out), stderr(&out));
         for row in shown.lines() {
             assert!(row_is_single_spaced(row), "{}: {row:?}", dialect.name);
@@ -130,7 +106,7 @@ fn params_with_a_filter_nothing_matches_says_so_in_each_dialect() {
         ("tmcl", "no parameter matches 'zzz'"),
         ("smd4", "no setting matches 'zzz'"),
     ] {
-        let out = run_in(
+        let out = run_with_stdin_in(
             &tempdir(),
             &["--protocol", protocol, "-c", ":params zzz"],
             "",
