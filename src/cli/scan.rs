@@ -44,7 +44,7 @@ pub(super) fn run(
     let out = &mut super::snapshot::PipeSafe(out);
     let dialect = args.module.protocol();
     let list = args.addresses.as_deref().unwrap_or(dialect.scan_addresses);
-    let addresses = parse_addresses(list)
+    let addresses = parse_addresses(list, dialect.max_address)
         .map_err(|e| Failure::new(Exit::Refused, format!("--addresses: {e}")))?;
     let per_reply = if args.module.timeout_given() {
         args.module.session.options().timeout

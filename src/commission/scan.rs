@@ -19,20 +19,20 @@ pub fn scan_wait(timeout: Duration) -> Duration {
     }
 }
 
-/// Parses an address list: numbers 1..255 and letters A..Z, single or as ranges, comma separated
-/// (`1-26`, `A-Z`, `A,C,30-40`).
-pub fn parse_addresses(text: &str) -> Result<Vec<u8>, String> {
+/// Parses an address list: numbers 1..`max` and letters A..Z, single or as ranges, comma
+/// separated (`1-26`, `A-Z`, `A,C,30-40`).
+pub fn parse_addresses(text: &str, max: u8) -> Result<Vec<u8>, String> {
     let one = |word: &str| -> Result<u8, String> {
         let word = word.trim();
         if let Ok(n) = word.parse::<u8>() {
-            if n >= 1 {
+            if (1..=max).contains(&n) {
                 return Ok(n);
             }
         }
         let mut chars = word.chars();
         match (chars.next().and_then(letter), chars.next()) {
             (Some(a), None) => Ok(a),
-            _ => Err(format!("'{word}' is not a bus address (1..255 or A..Z)")),
+            _ => Err(format!("'{word}' is not a bus address (1..{max} or A..Z)")),
         }
     };
     let mut addresses = Vec::new();
@@ -92,27 +92,35 @@ mod tests {
     #[test]
     fn address_lists_take_numbers_letters_and_ranges() {
         assert_eq!(
-            parse_addresses("1-26").unwrap(),
+            parse_addresses("1-26", 255).unwrap(),
             (1..=26).collect::<Vec<u8>>()
         );
         assert_eq!(
-            parse_addresses("A-Z").unwrap(),
+            parse_addresses("A-Z", 255).unwrap(),
             (1..=26).collect::<Vec<u8>>()
         );
-        assert_eq!(parse_addresses("c, a,30-32").unwrap(), [1, 3, 30, 31, 32]);
-        assert_eq!(parse_addresses("255").unwrap(), [255]);
+        assert_eq!(
+            parse_addresses("c, a,30-32", 255).unwrap(),
+            [1, 3, 30, 31, 32]
+        );
+        assert_eq!(parse_addresses("255", 255).unwrap(), [255]);
         assert!(
-            parse_addresses("0")
+            parse_addresses("0", 255)
                 .unwrap_err()
                 .contains("'0' is not a bus address")
         );
         assert!(
-            parse_addresses("5-2")
+            parse_addresses("5-2", 255)
                 .unwrap_err()
                 .contains("runs backwards")
         );
-        assert!(parse_addresses("AA").is_err());
-        assert!(parse_addresses("256").is_err());
+        assert!(parse_addresses("AA", 255).is_err());
+        assert!(parse_addresses("256", 255).is_err());
+        assert!(
+            parse_addresses("248", 247)
+                .unwrap_err()
+                .contains("'248' is not a bus address (1..247 or A..Z)")
+        );
     }
 
     #[test]

@@ -86,6 +86,8 @@ pub struct Dialect {
     pub typed_here: fn(&str) -> bool,
     /// What `:scan` and `tmclsh scan` try by default (`1-26`).
     pub scan_addresses: &'static str,
+    /// The highest bus address a scan may name.
+    pub max_address: u8,
     /// The example in the usage of `:scan`.
     pub scan_example: &'static str,
     /// Two of its readable parameters, for the examples in the usage of `:watch` and `:record`.

@@ -127,7 +127,8 @@ fn scan(
         dialect.scan_example
     );
     let words: Vec<&str> = arg.split_whitespace().collect();
-    let addresses = parse_addresses(words.first().copied().unwrap_or(dialect.scan_addresses))
+    let list = words.first().copied().unwrap_or(dialect.scan_addresses);
+    let addresses = parse_addresses(list, dialect.max_address)
         .map_err(|e| usage(&format!("{usage_text}; {e}")))?;
     let per_reply = match words.get(1) {
         Some(t) => crate::duration::parse(t).map_err(|e| usage(&format!("{usage_text}; {e}")))?,

@@ -46,6 +46,8 @@ pub static DIALECT: Dialect = Dialect {
     legacy_note: Some(replay::OPENED),
     typed_here,
     scan_addresses: "1-247",
+    // 247 fits a byte; a test of the descriptor compares the two.
+    max_address: protocol::MAX_ADDRESS as u8,
     scan_example: "1-247 50ms",
     param_example: "MOTOR:PACT,MOTOR:VACT",
 };

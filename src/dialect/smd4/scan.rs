@@ -155,6 +155,14 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_scan_list_names_the_addresses_the_protocol_has() {
+        assert_eq!(
+            u32::from(crate::dialect::smd4::DIALECT.max_address),
+            MAX_ADDRESS
+        );
+    }
+
+    #[test]
     fn the_table_lists_each_drive_and_the_note_on_addressing_mode() {
         let report = Smd4Scan {
             scanned: (1..=247).collect(),

@@ -59,6 +59,7 @@ pub static DIALECT: Dialect = Dialect {
     legacy_note: None,
     typed_here,
     scan_addresses: "1-26",
+    max_address: 255,
     scan_example: "1-26 200ms",
     param_example: "actual_position,actual_speed",
 };
