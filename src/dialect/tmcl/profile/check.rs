@@ -13,10 +13,10 @@ use toml::de::{DeTable, DeValue};
 use super::commands::CommandTable;
 use super::load::ProfileFile;
 
-mod commands;
+mod command_rows;
 mod decoding;
 mod family;
-mod params;
+mod param_rows;
 
 /// One step of a place in the file: a key of a table, or a row of an array.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -61,10 +61,10 @@ const PLACEHOLDER: i64 = -1;
 pub(crate) fn check(file: &ProfileFile, base: Option<&CommandTable>) -> Vec<Problem> {
     let mut problems = Vec::new();
     check_meta(file, &mut problems);
-    params::check_params(&file.axis_parameter, "axis_parameter", &mut problems);
-    params::check_params(&file.global_parameter, "global_parameter", &mut problems);
-    commands::check_commands(&file.command, "command", &mut problems);
-    commands::check_commands(&file.extra_command, "extra_command", &mut problems);
+    param_rows::check_params(&file.axis_parameter, "axis_parameter", &mut problems);
+    param_rows::check_params(&file.global_parameter, "global_parameter", &mut problems);
+    command_rows::check_commands(&file.command, "command", &mut problems);
+    command_rows::check_commands(&file.extra_command, "extra_command", &mut problems);
     check_simulation(file, &mut problems);
     family::check(file, base, &mut problems);
     problems
