@@ -140,15 +140,7 @@ fn protocol() {
 fn module() {
     table(
         &["--module", "2"],
-        &[
-            ShellC,
-            ShellStdin,
-            Run,
-            Download,
-            SnapshotSave,
-            SnapshotDiff,
-            SnapshotRestore,
-        ],
+        &ONE_MODULE,
         &|_| Setup::tmcl().with(&["--timeout", "30"]),
         &|_, out, _| {
             exit(out, 3)?;
@@ -162,15 +154,7 @@ fn module() {
 fn echo() {
     table(
         &["--echo", "line"],
-        &[
-            ShellC,
-            ShellStdin,
-            Run,
-            Download,
-            SnapshotSave,
-            SnapshotDiff,
-            SnapshotRestore,
-        ],
+        &ONE_MODULE,
         &|_| Setup::tmcl().with(&["--log", &fresh("echo.log")]),
         &|face, out, cell| {
             finished(face, out)?;
@@ -247,15 +231,7 @@ fn no_enter() {
     // The built-in module starts in binary mode: without the 139 frame it cannot answer lines.
     table(
         &["--no-enter"],
-        &[
-            ShellC,
-            ShellStdin,
-            Run,
-            Download,
-            SnapshotSave,
-            SnapshotDiff,
-            SnapshotRestore,
-        ],
+        &ONE_MODULE,
         &|_| Setup::tmcl().with(&["--timeout", "30"]),
         &|_, out, _| {
             exit(out, 3)?;
@@ -267,15 +243,7 @@ fn no_enter() {
 
 #[test]
 fn stay_ascii() {
-    let faces = [
-        ShellC,
-        ShellStdin,
-        Run,
-        Download,
-        SnapshotSave,
-        SnapshotDiff,
-        SnapshotRestore,
-    ];
+    let faces = ONE_MODULE;
     // What the transcript says last about module A: found or entered ASCII mode, or left it.
     let left_ascii = |log: &str| {
         read(log)
@@ -315,15 +283,7 @@ fn stay_ascii() {
 fn binary() {
     table(
         &["--binary"],
-        &[
-            ShellC,
-            ShellStdin,
-            Run,
-            Download,
-            SnapshotSave,
-            SnapshotDiff,
-            SnapshotRestore,
-        ],
+        &ONE_MODULE,
         &|_| Setup::tmcl().with(&["--log", &fresh("binary.log")]),
         &|face, out, cell| {
             finished(face, out)?;
@@ -341,15 +301,7 @@ fn binary() {
 fn verbose() {
     table(
         &["-v"],
-        &[
-            ShellC,
-            ShellStdin,
-            Run,
-            Download,
-            SnapshotSave,
-            SnapshotDiff,
-            SnapshotRestore,
-        ],
+        &ONE_MODULE,
         &|_| Setup::tmcl(),
         &|face, out, _| {
             finished(face, out)?;
@@ -374,14 +326,7 @@ fn verbose() {
 fn address() {
     table(
         &["--address", "1"],
-        &[
-            ShellC,
-            ShellStdin,
-            Run,
-            SnapshotSave,
-            SnapshotDiff,
-            SnapshotRestore,
-        ],
+        &ONE_DRIVE,
         &|_| Setup::smd4().with(&["--log", &fresh("address.log")]),
         &|face, out, cell| {
             finished(face, out)?;

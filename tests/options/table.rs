@@ -65,6 +65,27 @@ pub(super) const SESSIONS: [Face; 8] = [
     Scan,
 ];
 
+/// The faces that talk to one TMCL module (every session but the scan).
+pub(super) const ONE_MODULE: [Face; 7] = [
+    ShellC,
+    ShellStdin,
+    Run,
+    Download,
+    SnapshotSave,
+    SnapshotDiff,
+    SnapshotRestore,
+];
+
+/// The faces that talk to one SMD4 drive (no program to download).
+pub(super) const ONE_DRIVE: [Face; 6] = [
+    ShellC,
+    ShellStdin,
+    Run,
+    SnapshotSave,
+    SnapshotDiff,
+    SnapshotRestore,
+];
+
 /// Where the option under test is written.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Position {
