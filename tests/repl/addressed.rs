@@ -61,7 +61,7 @@ fn a_line_to_another_module_is_completed_hinted_and_highlighted_with_its_profile
     let shown = typed(
         &mut p,
         "BGAP 4, 5",
-        r"motor 5 does not exist: the TMCM-142 has one motor \(0\.\.0\) \(module B not identified yet, taken for a TMCM-142\)",
+        r"motor 5 does not exist: the TMCM-142 has one motor \(0\.\.0\); module 2 \(B\) not identified yet, taken for a TMCM-142",
     );
     assert!(!shown.contains(RED), "{shown:?}");
     // Sending it identifies module 2 and reads the reply with its profile.

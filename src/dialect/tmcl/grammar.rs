@@ -10,11 +10,13 @@ use crate::dialect::grammar::{Candidate, Check, Completion, Grammar, completes_f
 use crate::dialect::{Dialect, elsewhere};
 
 use super::profile::Profile;
+use super::protocol::ModuleName;
 use super::protocol::error::InputError;
-use super::protocol::line::{self, address_char, address_of};
+use super::protocol::line::{self, address_of};
 use super::protocol::syntax::without_comment;
 use super::protocol::validate::{Mode, validate};
 use super::{complete, hint};
+use crate::article::with_article;
 
 /// How the lines to one module are read: its profile and the mode it takes them in.
 #[derive(Debug, Clone)]
@@ -134,10 +136,10 @@ impl TmclGrammar {
 /// What a hint or a refusal adds for a module not identified yet: the profile it is taken for.
 fn assumption(module: Option<u8>, lines: &ModuleLines) -> Option<String> {
     let module = module.filter(|_| lines.assumed)?;
-    let c = address_char(module).unwrap_or('?');
     Some(format!(
-        "module {c} not identified yet, taken for a {}",
-        lines.profile.module
+        "{} not identified yet, taken for {}",
+        ModuleName(module),
+        with_article(&lines.profile.module)
     ))
 }
 
@@ -185,7 +187,7 @@ impl Grammar for TmclGrammar {
         let (module, lines) = self.lines_of(line);
         let text = hint::hint(line, &lines.profile)?;
         Some(match assumption(module, lines) {
-            Some(note) => format!("{text} ({note})"),
+            Some(note) => format!("{text}; {note}"),
             None => text,
         })
     }
@@ -199,9 +201,7 @@ impl Grammar for TmclGrammar {
         match Self::verdict(lines, text) {
             Ok(()) => Check::Valid,
             Err(error) => match (self.judge(lines, text, error), assumption(module, lines)) {
-                (Check::Invalid(reason), Some(note)) => {
-                    Check::Assumed(format!("{reason} ({note})"))
-                }
+                (Check::Invalid(reason), Some(note)) => Check::Assumed(format!("{reason}; {note}")),
                 (check, _) => check,
             },
         }
@@ -427,7 +427,7 @@ mod tests {
     #[test]
     fn a_module_not_identified_yet_is_taken_for_the_target_and_the_hint_says_so() {
         let g = bus();
-        let note = "(module C not identified yet, taken for a TMCM-142)";
+        let note = "; module 3 (C) not identified yet, taken for a TMCM-142";
         let hint = g.hint("CGAP 4").unwrap();
         assert!(hint.contains("#4 max_positioning_speed"), "{hint}");
         assert!(hint.ends_with(note), "{hint}");
