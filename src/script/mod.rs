@@ -56,7 +56,6 @@ pub struct Script {
     limits: Limits,
     sandbox: Rc<Sandbox>,
     print: PrintSink,
-    notice: PrintSink,
     elsewhere: Elsewhere,
 }
 
@@ -82,7 +81,6 @@ impl Script {
                 limits,
                 sandbox: Rc::new(sandbox),
                 print: Rc::new(print_to_stdout),
-                notice: Rc::new(notice_to_stderr),
                 elsewhere: Rc::new(|_| None),
             }),
             Err(e) => Err(Failure::refused(format!("cannot read script {name}: {e}"))),
@@ -102,7 +100,6 @@ impl Script {
             limits,
             sandbox: Rc::new(sandbox),
             print: Rc::new(print_to_stdout),
-            notice: Rc::new(notice_to_stderr),
             elsewhere: Rc::new(|_| None),
         }
     }
@@ -110,12 +107,6 @@ impl Script {
     /// The script with its `print` lines sent to `sink` instead of stdout.
     pub fn print_to(mut self, sink: PrintSink) -> Script {
         self.print = sink;
-        self
-    }
-
-    /// The script with the session's notices sent to `sink` instead of stderr.
-    pub fn notices_to(mut self, sink: PrintSink) -> Script {
-        self.notice = sink;
         self
     }
 
@@ -144,12 +135,11 @@ impl Script {
             let budget = self.limits.max_memory.and_then(Budget::from_now);
             // Made here, so the handle on the session it holds is gone with the engine.
             let print: PrintSink = {
-                let (session, print, notice) =
-                    (shared.clone(), self.print.clone(), self.notice.clone());
+                let (session, print) = (shared.clone(), self.print.clone());
                 Rc::new(move |text: &str| {
                     if let Ok(mut session) = session.try_borrow_mut() {
                         for text in notices(&mut session) {
-                            notice(&escape_control(&text));
+                            notice_to_stderr(&escape_control(&text));
                         }
                     }
                     print(text);
@@ -259,8 +249,8 @@ pub fn print_to_stdout(escaped: &str) {
     println!("{escaped}");
 }
 
-/// Where the session's notices go during a run by default: stderr, as the other diagnostics.
-pub fn notice_to_stderr(escaped: &str) {
+/// Where the session's notices go during a run: stderr, as the other diagnostics.
+fn notice_to_stderr(escaped: &str) {
     eprintln!("tmclsh: {escaped}");
 }
 
