@@ -13,6 +13,8 @@ pub enum Exit {
     Link,
     /// 130: interrupted by Ctrl-C.
     Interrupted,
+    /// 128 + N: ended by signal N (SIGTERM 143, SIGHUP 129), after stopping the motors.
+    Terminated(u8),
 }
 
 impl Exit {
@@ -24,6 +26,7 @@ impl Exit {
             Exit::Refused => 2,
             Exit::Link => 3,
             Exit::Interrupted => 130,
+            Exit::Terminated(signal) => 128u8.saturating_add(signal),
         }
     }
 }

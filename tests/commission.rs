@@ -7,6 +7,7 @@ mod repl;
 mod replay;
 mod scan;
 mod script;
+mod signals;
 mod smd4_record;
 mod smd4_replay;
 mod smd4_scan;

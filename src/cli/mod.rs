@@ -105,12 +105,25 @@ pub fn main() -> Exit {
     };
     // Not locked for the whole run: `sim` prints from its console thread too.
     let mut stdout = std::io::stdout();
-    match run(cli, &mut stdout) {
+    let exit = match run(cli, &mut stdout) {
         Ok(exit) => exit,
         Err(failure) => {
             diagnose(&failure.message);
             failure.exit
         }
+    };
+    signalled(exit)
+}
+
+/// A run SIGTERM or SIGHUP ended (its waits end as for Ctrl-C, its motors stopped on the way)
+/// exits 128 + the signal's number, as the shell expects of a process a signal ended.
+fn signalled(exit: Exit) -> Exit {
+    match (exit, crate::session::interrupt::terminated()) {
+        (Exit::Interrupted | Exit::Success, Some(signal)) => {
+            diagnose(&format!("ended by {}", signal.name()));
+            Exit::Terminated(signal.number() as u8)
+        }
+        _ => exit,
     }
 }
 

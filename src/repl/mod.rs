@@ -1,6 +1,7 @@
 //! The interactive shell: rustyline with history, completion, hints and highlighting; decoded,
 //! coloured replies; Ctrl-C stops a command (and the motor) in flight, and at the idle prompt stops
-//! the motors while something this session started may still move; a lost link is waited for and
+//! the motors while something this session started may still move; SIGTERM and SIGHUP, at the
+//! prompt or during a command, stop them and end the shell; a lost link is waited for and
 //! reopened with history and settings intact.
 
 pub mod complete;
@@ -56,12 +57,26 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         out,
         "Type :help for help, Tab to complete, Ctrl-D to leave."
     );
+    let mut exit = Exit::Success;
     loop {
+        // SIGTERM or SIGHUP, during a command or at the prompt: the session ends here.
+        if let Some(signal) = interrupt::terminated() {
+            terminate(shell, signal);
+            exit = Exit::Interrupted;
+            break;
+        }
         // What the last command changed (TMCL :bin) shows in completion and validation.
         if let Some(helper) = editor.helper_mut() {
             helper.grammar = shell.session_ref().grammar();
         }
-        match editor.readline(&shell.prompt()) {
+        let line = {
+            let _prompting = interrupt::Prompting::start();
+            editor.readline(&shell.prompt())
+        };
+        if interrupt::terminated().is_some() {
+            continue;
+        }
+        match line {
             Ok(text) => {
                 let flow = match everyday(&text) {
                     Some(Everyday::Clear) => {
@@ -90,11 +105,37 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
             }
         }
     }
+    // A hang-up may end the editor's read before its signal is seen.
+    if let (Exit::Success, Some(signal)) = (exit, interrupt::terminated()) {
+        terminate(shell, signal);
+        exit = Exit::Interrupted;
+    }
     history::save(&mut editor, dialect);
     for message in shell.session().close() {
         let _ = writeln!(out, "{}", escape_control(&message));
     }
-    Exit::Success
+    exit
+}
+
+/// SIGTERM or SIGHUP: what this session set moving is stopped as after a failure, and said so on
+/// stderr (the terminal may be gone); the caller ends the shell (exit 143 or 129).
+fn terminate(shell: &mut Shell, signal: interrupt::Termination) {
+    interrupt::take();
+    let stopped = if shell.session_ref().may_be_moving() {
+        shell.session().stop_motion()
+    } else {
+        Vec::new()
+    };
+    let mut err = std::io::stderr();
+    let what = if stopped.is_empty() {
+        "nothing this session started was moving".to_string()
+    } else {
+        "stopping what this session set moving".to_string()
+    };
+    let _ = writeln!(err, "tmclsh: {}: leaving the shell; {what}", signal.name());
+    for line in stopped {
+        let _ = writeln!(err, "tmclsh: {}", escape_control(&line));
+    }
 }
 
 /// Runs one typed line and shows its outcome. What the session noticed while it waited for a

@@ -162,9 +162,10 @@ fn goes_on(shell: &Shell, error: &SessionError, options: Options) -> bool {
         && transcript_written(shell).is_ok()
 }
 
-/// The worse of two outcomes, by what the failure says about the run: Ctrl-C (130) ended it; a
-/// link failure (3) leaves unknown what the module did; a device error (1) means the module is
-/// not in the state the input assumed; a refused line (2) was not sent at all.
+/// The worse of two outcomes, by what the failure says about the run: SIGTERM or SIGHUP (143,
+/// 129) and Ctrl-C (130) ended it; a link failure (3) leaves unknown what the module did; a
+/// device error (1) means the module is not in the state the input assumed; a refused line (2)
+/// was not sent at all.
 pub fn worse(a: Exit, b: Exit) -> Exit {
     fn rank(exit: Exit) -> u8 {
         match exit {
@@ -173,6 +174,7 @@ pub fn worse(a: Exit, b: Exit) -> Exit {
             Exit::DeviceError => 2,
             Exit::Link => 3,
             Exit::Interrupted => 4,
+            Exit::Terminated(_) => 5,
         }
     }
     if rank(b) > rank(a) { b } else { a }

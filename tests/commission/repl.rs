@@ -120,6 +120,12 @@ impl Terminal {
         }
     }
 
+    /// Sends `signal` to tmclsh, by its process id.
+    pub(super) fn signal(&self, signal: nix::sys::signal::Signal) {
+        let pid = nix::unistd::Pid::from_raw(self.child.id() as i32);
+        nix::sys::signal::kill(pid, signal).expect("the signal is delivered");
+    }
+
     /// Whether the terminal is back in line mode with echo (not left raw).
     pub(super) fn cooked(&self) -> bool {
         let modes = tcgetattr(self.master.as_fd()).unwrap();

@@ -1,0 +1,74 @@
+//! SIGTERM and SIGHUP end the REPL as Ctrl-C ends a run: at the idle prompt (where the line editor
+//! blocks in a read), during `:watch` and during a command, the motor this session set turning is
+//! stopped (read back on the simulator's console), the terminal is back in line mode, and the exit
+//! code is 128 + the signal's number.
+
+use nix::sys::signal::Signal;
+
+use super::repl::Terminal;
+use crate::sim::Sim;
+
+/// The simulated motor's velocity after `time` more simulated time.
+fn velocity_after(sim: &mut Sim, time: &str) -> f64 {
+    assert!(sim.console(&format!("advance {time}")).starts_with("ok"));
+    let motor = sim.console("motor");
+    let words: Vec<&str> = motor.split_whitespace().collect();
+    let at = words.iter().position(|w| *w == "velocity").expect(&motor);
+    words[at + 1].parse().expect(&motor)
+}
+
+/// A REPL on a simulator with a manual clock, its motor set turning by `ROR 0, 50000`.
+fn turning() -> (Sim, Terminal) {
+    let mut sim = Sim::start(&["--pty", "--manual-clock"]);
+    let mut term = Terminal::spawn(&["--port", &sim.first]);
+    term.until("A> ");
+    term.send("ROR 0, 50000\r");
+    term.until("ok");
+    term.until("A> ");
+    assert!(velocity_after(&mut sim, "1s") > 0.0, "the motor turns");
+    (sim, term)
+}
+
+/// Signal at the idle prompt: the message names the signal and the stop, the motor stops.
+fn at_the_prompt(signal: Signal, name: &str, code: i32) {
+    let (mut sim, mut term) = turning();
+    term.signal(signal);
+    term.until(&format!("{name}: leaving the shell"));
+    term.until("stopped motor 0 of module 1 (A) with MST");
+    assert_eq!(term.exit_code(), code);
+    assert!(term.cooked(), "the terminal is back in line mode");
+    assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
+}
+
+#[test]
+fn sigterm_at_the_idle_prompt_stops_the_motor_and_exits_143() {
+    at_the_prompt(Signal::SIGTERM, "SIGTERM", 143);
+}
+
+#[test]
+fn sighup_at_the_idle_prompt_stops_the_motor_and_exits_129() {
+    at_the_prompt(Signal::SIGHUP, "SIGHUP", 129);
+}
+
+#[test]
+fn sigterm_with_nothing_moving_says_so() {
+    let _sim = Sim::start(&["--pty", "--manual-clock"]);
+    let mut term = Terminal::spawn(&["--port", &_sim.first]);
+    term.until("A> ");
+    term.signal(Signal::SIGTERM);
+    term.until("nothing this session started was moving");
+    assert_eq!(term.exit_code(), 143);
+    assert!(term.cooked());
+}
+
+#[test]
+fn sigterm_during_a_watch_restores_the_terminal_and_stops_the_motor() {
+    let (mut sim, mut term) = turning();
+    term.send(":watch actual_speed\r");
+    term.until("any key stops");
+    term.signal(Signal::SIGTERM);
+    term.until("stopped motor 0 of module 1 (A) with MST");
+    assert_eq!(term.exit_code(), 143);
+    assert!(term.cooked(), "the terminal is back in line mode");
+    assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
+}
