@@ -2,6 +2,7 @@
 //! line, column and both values, Ctrl-C during a rotation, the operation cap, and the example
 //! scripts of `scripts/`, against the simulator.
 
+mod ending;
 mod limits;
 mod sandbox;
 
@@ -210,6 +211,22 @@ fn a_failing_script_stops_the_motor_it_started() {
 
 #[test]
 fn ctrl_c_interrupts_a_sleeping_script_and_stops_the_rotation() {
+    let err = signal_a_sleeping_script(nix::sys::signal::Signal::SIGINT, 130);
+    assert!(!err.contains("ended by"), "{err}");
+}
+
+#[test]
+fn sigterm_and_sighup_end_a_sleeping_script_with_the_rotation_stopped() {
+    use nix::sys::signal::Signal;
+    let err = signal_a_sleeping_script(Signal::SIGTERM, 143);
+    assert!(err.contains("tmclsh: ended by SIGTERM"), "{err}");
+    let err = signal_a_sleeping_script(Signal::SIGHUP, 129);
+    assert!(err.contains("tmclsh: ended by SIGHUP"), "{err}");
+}
+
+/// Sends `signal` to a script sleeping with the motor turning; checks the exit code, the stop
+/// and the stopped motor; returns stderr.
+fn signal_a_sleeping_script(signal: nix::sys::signal::Signal, expected: i32) -> String {
     let mut sim = Sim::start(&["--pty", "--manual-clock"]);
     let path = script(
         "spin.rhai",
@@ -228,14 +245,10 @@ fn ctrl_c_interrupts_a_sleeping_script_and_stops_the_rotation() {
         !sim.console("motor").contains("velocity 0 "),
         "turning before Ctrl-C"
     );
-    nix::sys::signal::kill(
-        nix::unistd::Pid::from_raw(child.id() as i32),
-        nix::sys::signal::Signal::SIGINT,
-    )
-    .unwrap();
+    nix::sys::signal::kill(nix::unistd::Pid::from_raw(child.id() as i32), signal).unwrap();
     let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(130));
-    let err = String::from_utf8_lossy(&out.stderr);
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(expected), "{err}");
     assert!(err.contains("spin.rhai:3:1: interrupted"), "{err}");
     assert!(
         err.contains("stopped motor 0 of module 1 (A) with MST"),
@@ -246,6 +259,7 @@ fn ctrl_c_interrupts_a_sleeping_script_and_stops_the_rotation() {
         sim.console("motor").contains("velocity 0"),
         "the motor ends stopped"
     );
+    err
 }
 
 #[test]

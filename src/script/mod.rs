@@ -20,6 +20,7 @@ pub(crate) use volatile;
 
 pub mod commission;
 pub(crate) mod common;
+mod ending;
 pub mod failure;
 pub mod limits;
 pub mod memory;
@@ -231,6 +232,7 @@ fn base_engine(
     if let Some(budget) = budget {
         memory::register_builders(&mut engine, budget);
     }
+    ending::register(&mut engine);
     engine.register_type_with_name::<Failure>("Failure");
     engine.register_fn("to_string", |f: &mut Failure| f.message.clone());
     // `catch (e)` can tell a timeout or noise (3) from a device error (1) by the exit code.
@@ -275,15 +277,22 @@ fn execute(engine: &Engine, script: &Script) -> Result<(), Failure> {
         .map(|a| Dynamic::from(a.clone()))
         .collect();
     scope.push_constant("args", args);
-    engine.run_ast_with_scope(&mut scope, &ast).map_err(|e| {
-        let context = Context {
-            name,
-            engine,
-            ast: &ast,
-            elsewhere: &script.elsewhere,
-        };
-        report(&context, *e)
-    })
+    let Err(error) = engine.run_ast_with_scope(&mut scope, &ast) else {
+        return Ok(());
+    };
+    if let Some(outcome) = ending::outcome(&error) {
+        return outcome.map_err(|failure| Failure {
+            exit: failure.exit,
+            message: at(name, error.position(), &failure.message),
+        });
+    }
+    let context = Context {
+        name,
+        engine,
+        ast: &ast,
+        elsewhere: &script.elsewhere,
+    };
+    Err(report(&context, *error))
 }
 
 /// What a failure is reported with: the script's name, and what explains a call of an unknown
