@@ -46,8 +46,9 @@ pub struct RunArgs {
     pub args: Vec<String>,
 }
 
-/// Runs the script; on any failure or Ctrl-C the modules it moved are stopped (MST) and every
-/// module is put back in the mode it was found in before exiting.
+/// Runs the script; on any failure or Ctrl-C, and when the transcript it asked for cannot be
+/// written, the modules it moved are stopped (MST) and every module is put back in the mode it
+/// was found in before exiting.
 pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
     interrupt::install();
     script::check_file(&args.script)?;
@@ -67,28 +68,37 @@ pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
         max_time: args.max_time,
         allow_dirs: args.allow_dir.clone(),
         overwrite: args.overwrite,
+        needs_transcript: true,
     };
     let (mut session, outcome) = crate::shell::run_file(&args.script, &args.args, session, limits);
     for notice in session.take_notices() {
         super::diagnose(&notice);
     }
+    // A transcript lost after the script's last operation fails the run all the same.
+    let lost = |session: &dyn crate::dialect::DialectSession| {
+        session.transcript().and_then(|t| t.failure())
+    };
     let exit = match outcome {
-        Ok(()) => Exit::Success,
+        Ok(()) if lost(session.as_ref()).is_none() => Exit::Success,
+        Ok(()) => Exit::Link,
         Err(report) => {
             super::diagnose(&report.message);
-            interrupt::take();
-            for message in session.stop_motion() {
-                super::diagnose(&message);
-            }
             report.exit
         }
     };
+    if exit != Exit::Success {
+        interrupt::take();
+        for message in session.stop_motion() {
+            super::diagnose(&message);
+        }
+    }
     for message in session.close() {
         super::diagnose(&message);
     }
-    if let Some(failure) = session.transcript().and_then(|t| t.failure()) {
+    if let Some(failure) = lost(session.as_ref()) {
         eprintln!("tmclsh: {failure}: the run asked for a transcript, so it failed");
         if exit == Exit::Success {
+            // Only the closing lines were lost; the script ran.
             return Ok(Exit::Link);
         }
     }

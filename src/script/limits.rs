@@ -28,6 +28,9 @@ pub struct Limits {
     pub allow_dirs: Vec<PathBuf>,
     /// Whether file functions may replace existing files tmclsh did not write.
     pub overwrite: bool,
+    /// Whether the run ends when the transcript it asked for cannot be written (`tmclsh run`,
+    /// as `-c`; the REPL's `:source` goes on without one, as the REPL does).
+    pub needs_transcript: bool,
 }
 
 /// The default memory budget in MiB.
@@ -42,6 +45,7 @@ impl Default for Limits {
             max_time: None,
             allow_dirs: Vec::new(),
             overwrite: false,
+            needs_transcript: false,
         }
     }
 }

@@ -121,13 +121,16 @@ impl Script {
     /// functions) besides those every script has; `log` lines go to the transcript through
     /// `annotate` (to stderr when none is written). What the session noticed (`notices`: bytes
     /// discarded before a reply, an event) goes out before the next `print` line, which may show
-    /// that reply; what is left when the script ends is the caller's. The engine holds the
+    /// that reply; what is left when the script ends is the caller's. With
+    /// `limits.needs_transcript`, the script ends (exit 3) at its next operation once
+    /// `lost_transcript` says the transcript can no longer be written. The engine holds the
     /// session for the run and gives it back when dropped.
     pub fn run<S: 'static>(
         &self,
         session: S,
         annotate: fn(&mut S, &str) -> bool,
         notices: fn(&mut S) -> Vec<String>,
+        lost_transcript: fn(&S) -> bool,
         register: Registrar<S>,
     ) -> (S, Result<(), Failure>) {
         let shared = Rc::new(RefCell::new(session));
@@ -146,7 +149,14 @@ impl Script {
                     print(text);
                 })
             };
-            let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &print);
+            // `tmclsh run` ends, as a `-c` run does, once the transcript it asked for is lost.
+            let halt: Halt = if self.limits.needs_transcript {
+                let session = shared.clone();
+                Box::new(move || session.try_borrow().is_ok_and(|s| lost_transcript(&s)))
+            } else {
+                never()
+            };
+            let mut engine = base_engine(&self.limits, budget, watchdog.flag(), &print, halt);
             let log_session = shared.clone();
             common::register(
                 &mut engine,
@@ -191,6 +201,7 @@ pub fn check_file(path: &Path) -> Result<(), Failure> {
         None,
         Arc::default(),
         &(Rc::new(print_to_stdout) as PrintSink),
+        never(),
     );
     compile(&engine, &name, &source).map(|_| ())
 }
@@ -198,6 +209,15 @@ pub fn check_file(path: &Path) -> Result<(), Failure> {
 /// Why the progress callback ended a script.
 const MEMORY: &str = "memory";
 const TIME: &str = "time";
+const TRANSCRIPT: &str = "transcript";
+
+/// Whether the run must end before its next operation (a transcript it needs was lost).
+type Halt = Box<dyn Fn() -> bool>;
+
+/// Never halts: runs that need no transcript, and compiling.
+fn never() -> Halt {
+    Box::new(|| false)
+}
 
 /// The engine with limits and sandboxing, printing to `print`, without device functions. Rhai's data-size limits are
 /// not set: they walk whole values after every call (see [`memory`]); `budget` bounds memory
@@ -207,6 +227,7 @@ fn base_engine(
     budget: Option<Budget>,
     expired: Arc<AtomicBool>,
     print: &PrintSink,
+    halt: Halt,
 ) -> Engine {
     let mut engine = Engine::new();
     engine.set_optimization_level(OptimizationLevel::Simple);
@@ -225,6 +246,8 @@ fn base_engine(
             Some(Dynamic::from("interrupted"))
         } else if budget.is_some_and(Budget::exceeded) {
             Some(Dynamic::from(MEMORY))
+        } else if halt() {
+            Some(Dynamic::from(TRANSCRIPT))
         } else {
             None
         }
@@ -390,6 +413,14 @@ fn report(context: &Context<'_>, error: EvalAltResult) -> Failure {
         EvalAltResult::ErrorTerminated(token, _) if token.to_string() == MEMORY => Failure {
             exit: Exit::DeviceError,
             message: at(name, position, memory::MESSAGE),
+        },
+        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == TRANSCRIPT => Failure {
+            exit: Exit::Link,
+            message: at(
+                name,
+                position,
+                "the run stops: it asked for a transcript that cannot be written",
+            ),
         },
         EvalAltResult::ErrorTerminated(..) => Failure {
             exit: Exit::Interrupted,

@@ -55,6 +55,7 @@ fn device_functions_never_run_while_compiling_even_at_full_optimisation() {
         None,
         Arc::default(),
         &(Rc::new(print_to_stdout) as PrintSink),
+        never(),
     );
     let sandbox = Rc::new(Sandbox::new([std::path::Path::new(".")], false));
     crate::dialect::tmcl::script::register(&mut engine, &shared, &sandbox);
@@ -154,8 +155,9 @@ fn registered(register: impl FnOnce(&mut Engine)) -> Vec<String> {
         None,
         Arc::default(),
         &print,
+        never(),
     ));
-    let mut engine = base_engine(&Limits::default(), None, Arc::default(), &print);
+    let mut engine = base_engine(&Limits::default(), None, Arc::default(), &print, never());
     register(&mut engine);
     let mut added: Vec<String> = function_names(&engine)
         .into_iter()

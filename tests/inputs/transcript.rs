@@ -9,6 +9,7 @@ use std::process::Command;
 use rexpect::session::spawn_command;
 
 use super::run_piped;
+use crate::sim::Sim;
 use crate::util::{bin, code, run, stderr, stdout, tempdir};
 
 fn arg(path: &Path) -> &str {
@@ -261,6 +262,39 @@ fn a_transcript_that_fills_the_disk_mid_run_ends_it_with_exit_3() {
         stderr(&out).contains("the run asked for a transcript, so it failed"),
         "{}",
         stderr(&out)
+    );
+}
+
+#[test]
+fn a_script_whose_transcript_fills_the_disk_stops_at_once_with_its_motor_stopped() {
+    let mut sim = Sim::start(&["--pty", "--manual-clock"]);
+    let dir = tempdir();
+    let rhai = dir.join("spin.rhai");
+    std::fs::write(
+        &rhai,
+        "ror(0, 50000);\nfor i in 0..60 { gap(4, 0); }\nprint(\"all read\");\n",
+    )
+    .unwrap();
+    let log = dir.join("spin.log");
+    let out = with_small_disk(&["run", arg(&rhai), "--port", &sim.first, "--log", arg(&log)])
+        .output()
+        .unwrap();
+    let err = stderr(&out);
+    assert_eq!(code(&out), 3, "{err}");
+    assert!(
+        err.contains("the run stops: it asked for a transcript that cannot be written"),
+        "{err}"
+    );
+    assert!(err.contains("cannot write the transcript"), "{err}");
+    assert!(
+        err.contains("stopped motor 0 of module 1 (A) with MST"),
+        "{err}"
+    );
+    assert_eq!(stdout(&out), "", "the script stopped before its end");
+    sim.console("advance 10s");
+    assert!(
+        sim.console("motor").contains("velocity 0"),
+        "the motor ends stopped"
     );
 }
 

@@ -140,6 +140,7 @@ impl DialectSession for TmclSession {
             *self,
             |s, text| s.annotate(text),
             |s| s.take_notices(),
+            |s| s.transcript().is_some_and(|t| t.failure().is_some()),
             |engine, s, files| {
                 super::super::script::register(engine, s, files);
                 crate::script::commission::register(engine, s, files);
