@@ -163,6 +163,31 @@ fn a_transposition_is_suggested_wherever_names_are() {
     }
 }
 
+/// A usage error on a terminal, where clap would pass an argument's escape sequence through:
+/// shown escaped, nothing raw but clap's line ends.
+#[test]
+fn usage_errors_show_escape_sequences_from_arguments_escaped() {
+    let mut p = crate::util::terminal(
+        &["--timeout", "5\x1b]0;owned\x07\x7f", "--bogus\x1b[2J"],
+        &[],
+    );
+    let shown = p.exp_eof().unwrap();
+    assert!(shown.contains("--bogus\\x1B[2J"), "{shown:?}");
+    assert!(
+        !shown
+            .chars()
+            .any(|c| c.is_control() && c != '\n' && c != '\r'),
+        "{shown:?}"
+    );
+    let out = run(&["--timeout", "5\x7f\u{9b}2J"]);
+    assert_eq!(code(&out), 2);
+    assert!(
+        stderr(&out).contains("'5\\x7F\\u{9b}2J'"),
+        "{}",
+        stderr(&out)
+    );
+}
+
 mod config;
 mod examples;
 mod forgiving;

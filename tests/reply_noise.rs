@@ -380,6 +380,51 @@ fn tmcl_device_text_is_escaped_on_both_streams() {
 }
 
 #[test]
+fn transcripts_and_json_carry_no_raw_device_or_input_text() {
+    let module = tmcl_module(&[
+        ("AGAP 1, 0", b"AGAP 1,\x1b0\rBA 100 5\r"),
+        (
+            "AGAP 2, 0",
+            b"AGAP 2, 0\r\x1b]0;owned\x07\x7f\x9b2J\rBA 100 7\r",
+        ),
+    ]);
+    let log = tempdir().join("noise.log");
+    let log_arg = log.display().to_string();
+    let out = client(
+        &module,
+        &[
+            "--log",
+            &log_arg,
+            "--json",
+            "--keep-going",
+            "-c",
+            "GAP 2, 0",
+            "-c",
+            "GAP 1, 0",
+            "-c",
+            "GAP 3, 0\x7f\x1b[2J",
+        ],
+        "",
+    );
+    assert_exit(&out, 3);
+    assert_nothing_raw(&out);
+    let json = text(&out.stdout);
+    assert!(json.contains("\\u007f"), "the input's DEL, escaped: {json}");
+    let transcript = std::fs::read(&log).unwrap();
+    let raw: Vec<u8> = transcript
+        .iter()
+        .copied()
+        .filter(|&b| (b < 0x20 && b != b'\n') || b >= 0x7F)
+        .collect();
+    assert!(raw.is_empty(), "{raw:02X?} in {:?}", text(&transcript));
+    let transcript = text(&transcript);
+    assert!(
+        transcript.contains("-- line noise: module 1 (A) echoed 'AGAP 1,\\x1B0'"),
+        "the line noise note quotes the echo escaped: {transcript}"
+    );
+}
+
+#[test]
 fn tmcl_reply_lines_reach_stdout_escaped() {
     // Form feed and vertical tab count as white space after a reply; they are shown, escaped.
     let module = tmcl_module(&[("AGAP 3, 0", b"AGAP 3, 0\rBA 100 9\x0c\x0b\r")]);

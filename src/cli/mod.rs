@@ -23,6 +23,7 @@ mod snapshot;
 mod target;
 mod transcript;
 
+use std::borrow::Cow;
 use std::ffi::OsString;
 use std::io::Write;
 use std::path::PathBuf;
@@ -30,6 +31,7 @@ use std::path::PathBuf;
 use clap::{FromArgMatches, Parser, Subcommand};
 
 use crate::dialect::Configured;
+use crate::escape::escape_control;
 use crate::exit::{Exit, Failure};
 
 /// Terminal and scripting shell for TMCL and SMD4 stepper-motor modules.
@@ -95,8 +97,9 @@ pub fn main() -> Exit {
     let cli = match parse_with(std::env::args_os().collect(), &defaults) {
         Ok(cli) => cli,
         Err(e) => {
-            let _ = e.print();
-            return if e.use_stderr() {
+            let use_stderr = e.use_stderr();
+            print_usage_error(e);
+            return if use_stderr {
                 Exit::Refused
             } else {
                 Exit::Success
@@ -127,6 +130,47 @@ fn signalled(exit: Exit) -> Exit {
     }
 }
 
+/// Prints clap's message (an error, or `--help` and `--version`). It quotes arguments and, in
+/// help, environment values; when one of those carries a control character, the quoted values are
+/// escaped (`\x1B[2J`, visible) and the message is printed without clap's colours, with anything
+/// else escaped too, so nothing typed or inherited can act on the terminal.
+fn print_usage_error(mut error: clap::Error) {
+    use clap::error::ContextValue;
+    let hostile = |text: &str| matches!(escape_control(text), Cow::Owned(_));
+    let inherited = std::env::args_os().chain(std::env::vars_os().map(|(_, value)| value));
+    if !inherited
+        .into_iter()
+        .any(|text| hostile(&text.to_string_lossy()))
+    {
+        let _ = error.print();
+        return;
+    }
+    let escape = |text: &String| escape_control(text).into_owned();
+    let escaped: Vec<_> = error
+        .context()
+        .filter_map(|(kind, value)| match value {
+            ContextValue::String(text) if hostile(text) => {
+                Some((kind, ContextValue::String(escape(text))))
+            }
+            ContextValue::Strings(texts) if texts.iter().any(|t| hostile(t)) => Some((
+                kind,
+                ContextValue::Strings(texts.iter().map(escape).collect()),
+            )),
+            _ => None,
+        })
+        .collect();
+    for (kind, value) in escaped {
+        error.insert(kind, value);
+    }
+    // Rendered plain: clap's styles (and any sequence left in a message) stripped, then escaped.
+    let text = escape_control(&error.render().to_string()).into_owned();
+    let _ = if error.use_stderr() {
+        std::io::stderr().write_all(text.as_bytes())
+    } else {
+        std::io::stdout().write_all(text.as_bytes())
+    };
+}
+
 /// Parses a command line (program name first) without configuration files.
 pub fn parse(argv: Vec<OsString>) -> Result<Cli, clap::Error> {
     parse_with(argv, &config::Defaults::none())
@@ -151,7 +195,7 @@ pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cl
 
 /// One line of diagnostics on stderr, its device and input text escaped.
 pub(crate) fn diagnose(message: &str) {
-    eprintln!("tmclsh: {}", crate::escape::escape_control(message));
+    eprintln!("tmclsh: {}", escape_control(message));
 }
 
 /// Runs a parsed command line, printing results to `out`.

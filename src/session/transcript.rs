@@ -18,6 +18,7 @@ use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
+use crate::escape::escape_control;
 use crate::exit::{Exit, ExitStatus};
 
 mod header;
@@ -144,14 +145,17 @@ impl Transcript {
             humantime::format_rfc3339_millis(SystemTime::now()),
             entry.tag()
         );
+        // A meaning may quote device text (a note on line noise, a module's name): escaped, so
+        // `cat` of the file shows it and a line feed in it cannot forge a line of its own.
+        let meaning = meaning.to_string();
+        let meaning = escape_control(&meaning).replace('\n', "\\n");
         if matches!(entry, Entry::Note | Entry::Header) {
-            let _ = write!(self.line, "{meaning}");
+            self.line.push_str(&meaning);
         } else {
             escape_into(bytes, &mut self.line);
-            let before = self.line.len();
-            let _ = write!(self.line, " ; {meaning}");
-            if self.line.len() == before + 3 {
-                self.line.truncate(before); // no meaning
+            if !meaning.is_empty() {
+                self.line.push_str(" ; ");
+                self.line.push_str(&meaning);
             }
         }
         self.line.push('\n');
@@ -226,6 +230,29 @@ mod tests {
         );
         let error = Transcript::open(Path::new("/nonexistent/dir/t.log"), &header).unwrap_err();
         assert_eq!(error.exit(), Exit::Refused);
+    }
+
+    #[test]
+    fn device_text_in_a_meaning_reaches_the_file_escaped_on_its_line() {
+        let dir = std::env::temp_dir().join(format!("tmclsh-noise-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("t.log");
+        let _ = std::fs::remove_file(&path);
+        let mut t = Transcript::open(&path, &tmcl_header(&Profile::builtin())).unwrap();
+        let hostile = "line noise: 'B\x1b]0;owned\x07\x7f\u{9b}2J'\n2026 tx \"forged\"";
+        t.record(Entry::Note, b"", hostile).unwrap();
+        t.record(Entry::Received, b"\x1b[2J", hostile).unwrap();
+        drop(t);
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert_eq!(text.lines().count(), 3, "{text}");
+        assert!(
+            !text.chars().any(|c| c.is_control() && c != '\n'),
+            "{text:?}"
+        );
+        assert!(
+            text.contains("'B\\x1B]0;owned\\x07\\x7F\\u{9b}2J'\\n2026 tx"),
+            "{text}"
+        );
     }
 
     #[test]

@@ -74,7 +74,8 @@ pub fn json_line(value: &Value) -> String {
     String::from_utf8(bytes).expect("the formatter writes ASCII")
 }
 
-/// serde_json's compact output, with every character beyond ASCII written as `\uXXXX`.
+/// serde_json's compact output (which escapes C0 controls), with DEL and every character beyond
+/// ASCII (C1 controls among them) written as `\uXXXX`: nothing in it a terminal acts on.
 struct AsciiFormatter;
 
 impl serde_json::ser::Formatter for AsciiFormatter {
@@ -84,7 +85,8 @@ impl serde_json::ser::Formatter for AsciiFormatter {
         fragment: &str,
     ) -> io::Result<()> {
         for c in fragment.chars() {
-            if c.is_ascii() {
+            // DEL is ASCII, but a control character JSON leaves to the writer.
+            if c.is_ascii() && c != '\x7f' {
                 writer.write_all(&[c as u8])?;
             } else {
                 let mut units = [0u16; 2];
@@ -103,10 +105,11 @@ mod tests {
 
     #[test]
     fn json_is_ascii_and_round_trips() {
-        let text = "BA 100 \u{1b}[2J \u{202e}evil \u{1F600} \"q\" \\";
+        let text = "BA 100 \u{1b}[2J \u{7f}\u{9b}2J \u{202e}evil \u{1F600} \"q\" \\";
         let line = json_line(&json!({ "raw": text }));
         assert!(line.is_ascii(), "{line}");
-        assert!(!line.contains('\u{1b}'));
+        assert!(!line.chars().any(|c| c.is_control()), "{line}");
+        assert!(line.contains("\\u007f\\u009b2J"), "{line}");
         assert!(
             line.contains("\\u202e") && line.contains("\\ud83d\\ude00"),
             "{line}"
