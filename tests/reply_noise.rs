@@ -425,6 +425,24 @@ fn transcripts_and_json_carry_no_raw_device_or_input_text() {
 }
 
 #[test]
+fn a_flood_of_position_events_is_one_line_with_a_count() {
+    let mut flood = b"AGAP 2, 0\r".to_vec();
+    for _ in 0..200 {
+        flood.extend_from_slice(b"BA 128 0\r");
+    }
+    flood.extend_from_slice(b"BA 100 7\r");
+    let module = tmcl_module(&[("AGAP 2, 0", flood.as_slice())]);
+    let out = client(&module, &["-c", "GAP 2, 0"], "");
+    assert_exit(&out, 0);
+    assert_eq!(text(&out.stdout), "BA 100 7\n");
+    let stderr = text(&out.stderr);
+    assert_eq!(
+        stderr, "tmclsh: module 1 (A): target position reached (event) (and 199 more like it)\n",
+        "one line, first the event, then the count"
+    );
+}
+
+#[test]
 fn tmcl_reply_lines_reach_stdout_escaped() {
     // Form feed and vertical tab count as white space after a reply; they are shown, escaped.
     let module = tmcl_module(&[("AGAP 3, 0", b"AGAP 3, 0\rBA 100 9\x0c\x0b\r")]);

@@ -219,7 +219,7 @@ pub trait DialectSession: AsAny {
 
     /// Messages gathered since the last call: validator warnings, line noise, ignored replies.
     fn take_notices(&mut self) -> Vec<String> {
-        std::mem::take(&mut self.core_mut().wire.notices)
+        crate::session::notices::summarise(std::mem::take(&mut self.core_mut().wire.notices))
     }
 
     /// Adds a message for the user, shown with the session's own notices (on stderr in

@@ -6,6 +6,7 @@
 
 pub mod core;
 pub mod interrupt;
+pub mod notices;
 pub(crate) mod rx;
 pub mod transcript;
 pub(crate) mod wire;
