@@ -162,6 +162,11 @@ fn ctrl_c_in_the_middle_of_a_download_leaves_download_mode_before_mst() {
         "{}",
         stderr(&out)
     );
+    assert!(
+        stderr(&out).contains("module 1 (A): program memory now holds a partial program ("),
+        "{}",
+        stderr(&out)
+    );
     assert!(sim.console("delay 0 0").starts_with("ok"));
     assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
     executes_binary_commands(&sim);

@@ -34,9 +34,26 @@ pub fn download(
 ) -> Result<DownloadReport, SessionError> {
     session.in_binary(module, |s| {
         let mut download_mode = DownloadMode::enter(s, module)?;
-        let stored = store_all(download_mode.session, module, program, &mut progress);
+        let mut count = 0;
+        let stored = store_all(
+            download_mode.session,
+            module,
+            program,
+            &mut count,
+            &mut progress,
+        );
         let quit = download_mode.leave();
         drop(download_mode);
+        if stored.is_err() && count > 0 {
+            // Whatever ended it (Ctrl-C, a lost link, a refusal), the module keeps what it got.
+            s.notify(format!(
+                "{}: program memory now holds a partial program ({} of {} stored from address \
+                 0, the rest as it was); download it again before running it",
+                ModuleName(module),
+                count,
+                crate::count::counted(program.len(), "instruction"),
+            ));
+        }
         stored?;
         quit?;
         let verified = verify(s, module, program, &mut progress)?;
@@ -91,14 +108,19 @@ impl Drop for DownloadMode<'_> {
     }
 }
 
+/// Stores each instruction in turn; `count` says how many the module stored, also on failure.
 fn store_all(
     s: &mut TmclSession,
     module: u8,
     program: &[Instruction],
+    count: &mut usize,
     progress: &mut impl FnMut(usize, usize),
 ) -> Result<(), SessionError> {
     for (address, instruction) in program.iter().enumerate() {
         let exchange = s.store_instruction(module, *instruction)?;
+        if exchange.status() == Some(Status::Stored) {
+            *count = address + 1;
+        }
         if exchange.status() != Some(Status::Stored) {
             let status = exchange.status().unwrap_or(Status::Other(0));
             return Err(SessionError::Device {
