@@ -12,6 +12,10 @@ use std::time::Duration;
 
 static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 static TERMINATED: AtomicI32 = AtomicI32::new(0);
+/// Set when an interrupt is taken after SIGTERM or SIGHUP: the run is stopping its motors and
+/// ending, and the flag raised again (ctrlc's thread runs late, the prompt is sent SIGINT) must
+/// not cancel the stops.
+static ENDING: AtomicBool = AtomicBool::new(false);
 static PROMPTING: AtomicBool = AtomicBool::new(false);
 static INSTALL: Once = Once::new();
 
@@ -84,8 +88,8 @@ fn watch_terminations() {
             let Some(number) = signals.forever().next() else {
                 return;
             };
+            // ctrlc's handler, chained, raises the interrupt flag.
             let _ = TERMINATED.compare_exchange(0, number, Ordering::SeqCst, Ordering::SeqCst);
-            INTERRUPTED.store(true, Ordering::SeqCst);
             // Runs until the process exits; a further TERM or HUP changes nothing.
             loop {
                 if PROMPTING.load(Ordering::SeqCst) {
@@ -97,14 +101,19 @@ fn watch_terminations() {
     drop(spawned);
 }
 
-/// Whether Ctrl-C was pressed and not yet handled.
+/// Whether Ctrl-C was pressed and not yet handled (never once the run is ending after SIGTERM or
+/// SIGHUP, so nothing cancels its stops).
 pub fn pending() -> bool {
-    INTERRUPTED.load(Ordering::SeqCst)
+    INTERRUPTED.load(Ordering::SeqCst) && !ENDING.load(Ordering::SeqCst)
 }
 
 /// Marks the interrupt handled; returns whether there was one.
 pub fn take() -> bool {
-    INTERRUPTED.swap(false, Ordering::SeqCst)
+    let taken = INTERRUPTED.swap(false, Ordering::SeqCst);
+    if TERMINATED.load(Ordering::SeqCst) != 0 {
+        ENDING.store(true, Ordering::SeqCst);
+    }
+    taken
 }
 
 /// Raises the flag as Ctrl-C would (tests, and faces that see Ctrl-C as a key).

@@ -19,8 +19,14 @@ fn velocity_after(sim: &mut Sim, time: &str) -> f64 {
 
 /// A REPL on a simulator with a manual clock, its motor set turning by `ROR 0, 50000`.
 fn turning() -> (Sim, Terminal) {
+    turning_with(&[])
+}
+
+fn turning_with(flags: &[&str]) -> (Sim, Terminal) {
     let mut sim = Sim::start(&["--pty", "--manual-clock"]);
-    let mut term = Terminal::spawn(&["--port", &sim.first]);
+    let mut args = vec!["--port", sim.first.as_str()];
+    args.extend(flags);
+    let mut term = Terminal::spawn(&args);
     term.until("A> ");
     term.send("ROR 0, 50000\r");
     term.until("ok");
@@ -70,5 +76,28 @@ fn sigterm_during_a_watch_restores_the_terminal_and_stops_the_motor() {
     term.until("stopped motor 0 of module 1 (A) with MST");
     assert_eq!(term.exit_code(), 143);
     assert!(term.cooked(), "the terminal is back in line mode");
+    assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
+}
+
+#[test]
+fn sigterm_while_a_reply_is_awaited_stops_the_motor_and_exits_143() {
+    // A minute's timeout: only the signal can end the wait this test makes.
+    let (mut sim, mut term) = turning_with(&["--timeout", "60000"]);
+    // Replies held back until simulated time passes, which the test does not let happen.
+    assert!(sim.console("delay 1 100000").starts_with("ok"));
+    term.send("GAP 3, 0\r");
+    // The request is on the line: the simulator has seen it (its echo is held back too).
+    let deadline = std::time::Instant::now() + crate::sim::PATIENCE;
+    while sim.console("faults").contains("delayed 0") {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the request never arrived"
+        );
+    }
+    term.signal(Signal::SIGTERM);
+    term.until("SIGTERM: leaving the shell");
+    assert_eq!(term.exit_code(), 143);
+    assert!(term.cooked());
+    assert!(sim.console("delay 0 0").starts_with("ok"));
     assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
 }
