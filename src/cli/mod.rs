@@ -123,7 +123,8 @@ pub fn main() -> Exit {
 fn signalled(exit: Exit) -> Exit {
     match (exit, crate::session::interrupt::terminated()) {
         (Exit::Interrupted | Exit::Success, Some(signal)) => {
-            diagnose(&format!("ended by {}", signal.name()));
+            // Not `eprintln!`, which panics when a hung-up terminal refuses the line.
+            let _ = writeln!(std::io::stderr(), "tmclsh: ended by {}", signal.name());
             Exit::Terminated(signal.number() as u8)
         }
         _ => exit,

@@ -61,7 +61,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
     loop {
         // SIGTERM or SIGHUP, during a command or at the prompt: the session ends here.
         if let Some(signal) = interrupt::terminated() {
-            terminate(shell, signal);
+            terminate(shell, signal.name());
             exit = Exit::Interrupted;
             break;
         }
@@ -99,15 +99,18 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
                 }
             }
             Err(ReadlineError::Eof) => break,
+            // The terminal is gone (a read fails with EIO once it hangs up, with or without the
+            // SIGHUP): the same as a hang-up.
             Err(e) => {
-                eprintln!("tmclsh: {e}");
+                terminate(shell, &format!("the terminal failed ({e})"));
+                exit = Exit::Terminated(interrupt::Termination::Hup.number() as u8);
                 break;
             }
         }
     }
     // A hang-up may end the editor's read before its signal is seen.
     if let (Exit::Success, Some(signal)) = (exit, interrupt::terminated()) {
-        terminate(shell, signal);
+        terminate(shell, signal.name());
         exit = Exit::Interrupted;
     }
     history::save(&mut editor, dialect);
@@ -117,9 +120,10 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
     exit
 }
 
-/// SIGTERM or SIGHUP: what this session set moving is stopped as after a failure, and said so on
-/// stderr (the terminal may be gone); the caller ends the shell (exit 143 or 129).
-fn terminate(shell: &mut Shell, signal: interrupt::Termination) {
+/// SIGTERM, SIGHUP or a terminal gone (`why`): what this session set moving is stopped as after
+/// a failure, and said so on stderr (the terminal may be gone); the caller ends the shell (exit
+/// 143 or 129).
+fn terminate(shell: &mut Shell, why: &str) {
     interrupt::take();
     let stopped = if shell.session_ref().may_be_moving() {
         shell.session().stop_motion()
@@ -132,7 +136,7 @@ fn terminate(shell: &mut Shell, signal: interrupt::Termination) {
     } else {
         "stopping what this session set moving".to_string()
     };
-    let _ = writeln!(err, "tmclsh: {}: leaving the shell; {what}", signal.name());
+    let _ = writeln!(err, "tmclsh: {why}: leaving the shell; {what}");
     for line in stopped {
         let _ = writeln!(err, "tmclsh: {}", escape_control(&line));
     }

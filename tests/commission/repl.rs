@@ -38,6 +38,12 @@ impl Terminal {
             ws_ypixel: 0,
         });
         let pty = nix::pty::openpty(size.as_ref(), None).expect("a pseudo-terminal");
+        // The master stays ours: tmclsh holding it too would never see the terminal go away.
+        nix::fcntl::fcntl(
+            &pty.master,
+            nix::fcntl::FcntlArg::F_SETFD(nix::fcntl::FdFlag::FD_CLOEXEC),
+        )
+        .expect("close-on-exec");
         let slave: OwnedFd = pty.slave;
         let home = tempdir();
         let child = Command::new(bin())
@@ -118,6 +124,12 @@ impl Terminal {
                 let _ = self.master.read(&mut buf);
             }
         }
+    }
+
+    /// Closes the terminal's master side, as a terminal emulator that goes away does (no SIGHUP:
+    /// tmclsh is not the session leader here); its reads then fail.
+    pub(super) fn hang_up(&mut self) {
+        self.master = File::open("/dev/null").unwrap();
     }
 
     /// Sends `signal` to tmclsh, by its process id.

@@ -1,7 +1,7 @@
 //! SIGTERM and SIGHUP end the REPL as Ctrl-C ends a run: at the idle prompt (where the line editor
 //! blocks in a read), during `:watch` and during a command, the motor this session set turning is
 //! stopped (read back on the simulator's console), the terminal is back in line mode, and the exit
-//! code is 128 + the signal's number.
+//! code is 128 + the signal's number. A terminal that goes away without a SIGHUP is one too.
 
 use nix::sys::signal::Signal;
 
@@ -99,5 +99,13 @@ fn sigterm_while_a_reply_is_awaited_stops_the_motor_and_exits_143() {
     assert_eq!(term.exit_code(), 143);
     assert!(term.cooked());
     assert!(sim.console("delay 0 0").starts_with("ok"));
+    assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
+}
+
+#[test]
+fn a_terminal_that_goes_away_is_a_hang_up() {
+    let (mut sim, mut term) = turning();
+    term.hang_up();
+    assert_eq!(term.exit_code(), 129);
     assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
 }
