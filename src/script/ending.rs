@@ -60,8 +60,11 @@ fn show(value: &Dynamic) -> String {
 /// `Some(Ok)` for a script that passed, `Some(Err)` with the failure (its message without the
 /// position, which the caller puts in front).
 pub(crate) fn outcome(error: &EvalAltResult) -> Option<Result<(), Failure>> {
-    let EvalAltResult::ErrorTerminated(token, _) = error else {
-        return None;
+    let token = match error {
+        EvalAltResult::ErrorTerminated(token, _) => token,
+        // Called from a closure a built-in function ran (`map`, `filter`): wrapped by it.
+        EvalAltResult::ErrorInFunctionCall(_, _, inner, _) => return outcome(inner),
+        _ => return None,
     };
     match token.clone().try_cast::<Ended>()? {
         Ended::Passed => Some(Ok(())),

@@ -50,3 +50,22 @@ fn exit_and_exit_0_end_the_script_as_its_last_line_would() {
         assert_eq!(stdout(&out), "before\n", "{call}");
     }
 }
+
+#[test]
+fn exit_inside_a_closure_a_built_in_function_runs_ends_the_script_too() {
+    let path = script(
+        "map.rhai",
+        "[1, 2].map(|x| exit(x + 1));\nprint(\"after\");\n",
+    );
+    let out = run(&["run", &path]);
+    assert_eq!(code(&out), 1, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("the script called exit(2): it fails"),
+        "{}",
+        stderr(&out)
+    );
+    let path = script("map0.rhai", "[1, 2].map(|x| exit(0));\nprint(\"after\");\n");
+    let out = run(&["run", &path]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert_eq!(stdout(&out), "");
+}
