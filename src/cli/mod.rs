@@ -138,11 +138,12 @@ fn signalled(exit: Exit) -> Exit {
 fn print_usage_error(mut error: clap::Error) {
     use clap::error::ContextValue;
     let hostile = |text: &str| matches!(escape_control(text), Cow::Owned(_));
-    let inherited = std::env::args_os().chain(std::env::vars_os().map(|(_, value)| value));
-    if !inherited
-        .into_iter()
-        .any(|text| hostile(&text.to_string_lossy()))
-    {
+    let ours = |(name, _): &(OsString, OsString)| name.to_string_lossy().starts_with("TMCLSH_");
+    let mut given = std::env::args_os().chain(std::env::vars_os().filter(ours).map(|(_, v)| v));
+    // Clap's own styles are SGR sequences; anything else (a configured default shown in help)
+    // came from outside.
+    let styled = error.render().ansi().to_string();
+    if !given.any(|text| hostile(&text.to_string_lossy())) && !hostile(&without_sgr(&styled)) {
         let _ = error.print();
         return;
     }
@@ -170,6 +171,26 @@ fn print_usage_error(mut error: clap::Error) {
     } else {
         std::io::stdout().write_all(text.as_bytes())
     };
+}
+
+/// `text` without its SGR sequences (`ESC [ digits and semicolons m`), the only ones clap writes.
+fn without_sgr(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(at) = rest.find("\x1b[") {
+        out.push_str(&rest[..at]);
+        let after = &rest[at + 2..];
+        let end = after.find(|c: char| !(c.is_ascii_digit() || c == ';'));
+        match end {
+            Some(end) if after[end..].starts_with('m') => rest = &after[end + 1..],
+            _ => {
+                out.push('\x1b');
+                rest = &rest[at + 1..];
+            }
+        }
+    }
+    out.push_str(rest);
+    out
 }
 
 /// Parses a command line (program name first) without configuration files.
@@ -244,4 +265,16 @@ fn tmcl_profile(configs: &Configured) -> &crate::dialect::tmcl::profile::Profile
 /// The clap command, for completions and docs.
 pub fn command() -> clap::Command {
     relevance::hide_unused(<Cli as clap::CommandFactory>::command())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_sgr_sequences_are_taken_for_clap_s_own() {
+        assert_eq!(without_sgr("\x1b[1m\x1b[31merror:\x1b[0m x"), "error: x");
+        assert_eq!(without_sgr("a\x1b]0;t\x07b"), "a\x1b]0;t\x07b");
+        assert_eq!(without_sgr("a\x1b[2Jb\x1b["), "a\x1b[2Jb\x1b[");
+    }
 }
