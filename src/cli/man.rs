@@ -112,6 +112,10 @@ connection failure, timeout or lost link
 130
 interrupted (Ctrl\-C)
 .TP
+143, 129
+ended by SIGTERM or SIGHUP (or the interactive shell's terminal went away); the motors the
+session set moving were stopped first
+.TP
 101
 internal error; the motors the session set moving were stopped first
 .SH ENVIRONMENT
