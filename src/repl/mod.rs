@@ -62,7 +62,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         // SIGTERM or SIGHUP, during a command or at the prompt: the session ends here.
         if let Some(signal) = interrupt::terminated() {
             terminate(shell, signal.name());
-            exit = Exit::Interrupted;
+            exit = Exit::Terminated(signal.number() as u8);
             break;
         }
         // What the last command changed (TMCL :bin) shows in completion and validation.
@@ -111,7 +111,7 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
     // A hang-up may end the editor's read before its signal is seen.
     if let (Exit::Success, Some(signal)) = (exit, interrupt::terminated()) {
         terminate(shell, signal.name());
-        exit = Exit::Interrupted;
+        exit = Exit::Terminated(signal.number() as u8);
     }
     history::save(&mut editor, dialect);
     for message in shell.session().close() {
