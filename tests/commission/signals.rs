@@ -109,3 +109,45 @@ fn a_terminal_that_goes_away_is_a_hang_up() {
     assert_eq!(term.exit_code(), 129);
     assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
 }
+
+/// Piped lines wait for more input with the motor turning: SIGTERM stops it and exits 143.
+#[test]
+fn sigterm_ends_piped_lines_with_the_motor_stopped() {
+    use std::io::{BufRead, BufReader, Write};
+    use std::process::{Command, Stdio};
+
+    let mut sim = Sim::start(&["--pty", "--manual-clock"]);
+    let mut child = Command::new(crate::util::bin())
+        .args(["--port", &sim.first])
+        .env("NO_COLOR", "1")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    stdin.write_all(b"ROR 0, 50000\n").unwrap();
+    stdin.flush().unwrap();
+    let mut line = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut line)
+        .unwrap();
+    assert!(line.starts_with("BA 100"), "{line}");
+    assert!(velocity_after(&mut sim, "1s") > 0.0, "the motor turns");
+    // stdin stays open: the run waits for more lines.
+    nix::sys::signal::kill(
+        nix::unistd::Pid::from_raw(child.id() as i32),
+        Signal::SIGTERM,
+    )
+    .unwrap();
+    let out = child.wait_with_output().unwrap();
+    drop(stdin);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(143), "{err}");
+    assert!(
+        err.contains("stopped motor 0 of module 1 (A) with MST"),
+        "{err}"
+    );
+    assert!(err.contains("tmclsh: ended by SIGTERM"), "{err}");
+    assert_eq!(velocity_after(&mut sim, "10s"), 0.0);
+}
