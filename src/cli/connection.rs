@@ -148,6 +148,9 @@ pub enum EchoMode {
     None,
 }
 
+/// How many files of one second a `--log` directory may get.
+const LOG_NAMES: u32 = 1000;
+
 impl SessionArgs {
     /// The session options these flags select.
     pub fn options(&self) -> SessionOptions {
@@ -177,10 +180,27 @@ impl SessionArgs {
                 format!("cannot create the log directory {}: {e}", path.display()),
             )
         })?;
-        let file = log_file(path, device, std::time::SystemTime::now());
-        Transcript::open(&file, header)
-            .map(Some)
-            .map_err(Failure::from)
+        // A new file, never an existing one: not another session's of the same second, not
+        // a symlink planted with the name this one would get.
+        let now = std::time::SystemTime::now();
+        for n in 1..=LOG_NAMES {
+            let file = log_file(path, device, now, n);
+            if file.symlink_metadata().is_ok() {
+                continue;
+            }
+            match Transcript::create_new(&file, header) {
+                Ok(transcript) => return Ok(Some(transcript)),
+                Err(_) if file.symlink_metadata().is_ok() => continue,
+                Err(e) => return Err(e.into()),
+            }
+        }
+        Err(Failure::new(
+            Exit::Refused,
+            format!(
+                "cannot start a transcript in {}: {LOG_NAMES} files of this second exist",
+                path.display()
+            ),
+        ))
     }
 }
 

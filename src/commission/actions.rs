@@ -42,6 +42,8 @@ pub fn save_new(
 
 /// Refuses an existing `path` (exit 2) unless `force` says to replace it.
 pub fn check_new(path: &Path, force: bool) -> Result<(), SessionError> {
+    crate::file::check_writable(path)
+        .map_err(|e| SessionError::Usage(format!("cannot write snapshot {e}")))?;
     if !force && path.symlink_metadata().is_ok() {
         return Err(SessionError::Usage(format!(
             "{} exists; add --force to replace it (or save to another file)",
