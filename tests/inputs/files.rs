@@ -160,3 +160,40 @@ fn a_helper_on_a_fifo_in_the_repl_gives_the_prompt_back_with_the_error() {
     p.send_control('d').unwrap();
     p.exp_eof().unwrap();
 }
+
+#[test]
+fn a_script_may_start_with_a_byte_order_mark() {
+    let dir = tempdir();
+    let script = dir.join("bom.rhai");
+    std::fs::write(&script, "\u{feff}send(\"GAP 4, 0\");\n").unwrap();
+    let out = guarded(&dir, &["run", script.to_str().unwrap()], "");
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+}
+
+#[test]
+fn sources_with_cr_only_line_ends_assemble_to_the_same_program() {
+    let dir = hostile_dir();
+    let source = std::fs::read_to_string(dir.join("test2.tmc")).unwrap();
+    let endings = [
+        ("lf.tmc", source.replace("\r\n", "\n")),
+        ("cr.tmc", source.replace("\r\n", "\n").replace('\n', "\r")),
+        (
+            "crlf.tmc",
+            source.replace("\r\n", "\n").replace('\n', "\r\n"),
+        ),
+        (
+            "bom.tmc",
+            format!("\u{feff}{}", source.replace("\r\n", "\n")),
+        ),
+    ];
+    let mut programs = Vec::new();
+    for (name, text) in endings {
+        std::fs::write(dir.join(name), text).unwrap();
+        let bin = format!("{name}.bin");
+        let out = guarded(&dir, &["asm", name, "-o", &bin], "");
+        assert_eq!(code(&out), 0, "{name}: {}", stderr(&out));
+        programs.push(std::fs::read(dir.join(&bin)).unwrap());
+    }
+    assert!(programs.iter().all(|p| p == &programs[0]));
+    assert!(programs[0].len() > 7 * 10, "the whole program");
+}
