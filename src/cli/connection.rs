@@ -28,11 +28,30 @@ pub struct ConnectionArgs {
     #[arg(long, value_name = "PATH", env = "TMCLSH_PORT")]
     pub port: Option<String>,
     /// Serial bit rate (8N1).
-    #[arg(long, value_name = "N", env = "TMCLSH_BAUD", default_value_t = 9600)]
+    #[arg(long, value_name = "N", env = "TMCLSH_BAUD", default_value_t = 9600, value_parser = parse_baud)]
     pub baud: u32,
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT")]
     pub tcp: Option<String>,
+}
+
+/// The bit rates a serial port can be set to: from the slowest teletype rate to the fastest
+/// USB adapters'.
+pub const BAUD_RANGE: std::ops::RangeInclusive<u32> = 50..=12_000_000;
+
+/// A `--baud` value (also `baud` in a configuration file, `TMCLSH_BAUD`): a whole number in
+/// [`BAUD_RANGE`]. 0 would make every byte take for ever (and opened no port); refused before
+/// anything is opened.
+fn parse_baud(text: &str) -> Result<u32, String> {
+    let hint = format!(
+        "a bit rate is a whole number from {} to {}, such as 9600 or 115200",
+        BAUD_RANGE.start(),
+        BAUD_RANGE.end()
+    );
+    match text.trim().parse::<u32>() {
+        Ok(baud) if BAUD_RANGE.contains(&baud) => Ok(baud),
+        _ => Err(hint),
+    }
 }
 
 /// Which protocol the module speaks: shared by the faces that talk to a module and by `params`.

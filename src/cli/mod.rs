@@ -123,8 +123,7 @@ pub fn parse(argv: Vec<OsString>) -> Result<Cli, clap::Error> {
 /// options written before the subcommand are handed to it, and options given on the command line
 /// that it has no use for are refused.
 pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cli, clap::Error> {
-    let mut cmd = defaults.apply(command());
-    cmd.build();
+    let mut cmd = config::apply_environment(defaults.apply(command()))?;
     let first = cmd.try_get_matches_from_mut(argv.clone())?;
     let argv = position::behind_subcommand(&mut cmd, &first, argv)?;
     let matches = cmd.try_get_matches_from_mut(argv)?;

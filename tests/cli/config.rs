@@ -2,6 +2,8 @@
 //! command line and the environment, shown by `tmclsh config`, checked line by line, and never
 //! refused where the option has no use.
 
+mod sources;
+
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 

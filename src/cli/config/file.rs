@@ -173,7 +173,7 @@ fn expand_home(path: &str) -> Cow<'_, Path> {
 
 /// Whether the option `id` of `cmd` takes `value`, by the option's own value parser (so a file
 /// can never hold what the command line would refuse), and if not, why.
-fn option_accepts(cmd: &Command, id: &str, value: &str) -> Result<(), String> {
+pub(super) fn option_accepts(cmd: &Command, id: &str, value: &str) -> Result<(), String> {
     let arg = cmd
         .get_arguments()
         .find(|a| a.get_id() == id)

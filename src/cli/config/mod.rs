@@ -9,6 +9,7 @@
 //! only what was written on the command line): a configured port does not bother `tmclsh asm`.
 //! `tmclsh config` shows every value and where it came from.
 
+mod env;
 mod file;
 
 use std::io::{self, Write};
@@ -21,6 +22,8 @@ use crate::exit::Exit;
 
 pub use file::Scope;
 use file::{Entry, project_file, user_file};
+
+pub(super) use env::apply as apply_environment;
 
 use super::connection::ModuleArgs;
 use super::position::leaf_matches;
