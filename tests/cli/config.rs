@@ -3,6 +3,8 @@
 //! refused where the option has no use.
 
 mod sources;
+#[cfg(unix)]
+mod trust;
 
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};

@@ -18,10 +18,11 @@ use std::path::PathBuf;
 use clap::parser::ValueSource;
 use clap::{ArgMatches, Command};
 
+use crate::dialect::Dialect;
 use crate::exit::Exit;
 
 pub use file::Scope;
-use file::{Entry, project_file, user_file};
+use file::{Entry, Read, project_file, user_file};
 
 pub(super) use env::apply as apply_environment;
 
@@ -129,6 +130,8 @@ pub struct Defaults {
     project: Option<PathBuf>,
     /// Where the project file was looked for.
     searched_from: Option<PathBuf>,
+    /// The project file found and not used, and why.
+    ignored: Option<(PathBuf, String)>,
 }
 
 impl Defaults {
@@ -137,19 +140,36 @@ impl Defaults {
         Defaults::default()
     }
 
-    /// Reads the user's and the project's files; a file with an unknown key or a bad value is an
-    /// error naming the file and line (exit 2).
+    /// Reads the user's and the project's files; a file with an unknown key or a bad value, or
+    /// one that is not a regular file, is an error naming the file (and line) (exit 2). A project
+    /// file that is not trusted (another user's, or writable by others) is ignored with a note on
+    /// stderr.
     pub fn load() -> Result<Defaults, String> {
         let cwd = std::env::current_dir().ok();
         let user = user_file();
-        let project = cwd.as_deref().and_then(project_file);
+        let mut project = cwd.as_deref().and_then(project_file);
         let cmd = super::command();
         let mut entries = Vec::new();
-        if let Some(path) = project.as_deref() {
-            entries.extend(file::read(path, Scope::Project, &cmd)?);
+        let mut ignored = None;
+        if let Some(path) = project.clone() {
+            match file::read(&path, Scope::Project, &cmd)? {
+                Read::Entries(read) => entries.extend(read),
+                Read::Ignored(why) => {
+                    super::diagnose(&format!(
+                        "ignored {}: {why}; a tmclsh.toml must be yours and writable only \
+                         by you (chown it, or chmod go-w)",
+                        path.display()
+                    ));
+                    ignored = Some((path, why));
+                    project = None;
+                }
+            }
         }
-        if let Some(path) = user.as_deref().filter(|p| p.is_file()) {
-            let user_entries = file::read(path, Scope::User, &cmd)?;
+        // Anything at the user's path is read, so a directory or a FIFO there is named.
+        if let Some(path) = user.as_deref().filter(|p| p.symlink_metadata().is_ok()) {
+            let Read::Entries(user_entries) = file::read(path, Scope::User, &cmd)? else {
+                unreachable!("only project files are ignored")
+            };
             let overridden = |e: &Entry| entries.iter().any(|p: &Entry| p.key.name == e.key.name);
             let kept: Vec<Entry> = user_entries
                 .into_iter()
@@ -162,6 +182,7 @@ impl Defaults {
             user,
             project,
             searched_from: cwd,
+            ignored,
         })
     }
 
@@ -224,11 +245,32 @@ struct Line {
     value: Option<String>,
     /// Where it came from.
     origin: String,
+    /// Why it has no effect, if it has none: another setting wins (`--tcp` over a port), or the
+    /// option belongs to the other dialect (a TMCL `profile` under `--protocol smd4`).
+    unused: Option<String>,
 }
 
 /// Fills in the report of a parsed `tmclsh config` from its matches.
 pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults) {
     let leaf = leaf_matches(matches);
+    let tcp = leaf.get_one::<String>("tcp");
+    let dialect = leaf.get_one::<&'static Dialect>("protocol").copied();
+    let unused = |key: &Key| -> Option<String> {
+        if let (Some(tcp), "port" | "baud") = (tcp, key.id) {
+            return Some(format!("--tcp {} wins", crate::escape::escape_control(tcp)));
+        }
+        let dialect = dialect?;
+        let owner = crate::dialect::DIALECTS
+            .iter()
+            .find(|d| d.own_options.contains(&key.id))?;
+        (owner.name != dialect.name).then(|| {
+            format!(
+                "{} only; the protocol is {}",
+                owner.name.to_uppercase(),
+                dialect.name
+            )
+        })
+    };
     args.report = KEYS
         .iter()
         .map(|key| {
@@ -260,7 +302,13 @@ pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults)
                 Kind::Integer => raw,
                 _ => toml::Value::String(raw).to_string(),
             });
-            Line { key, value, origin }
+            let unused = value.as_ref().and_then(|_| unused(key));
+            Line {
+                key,
+                value,
+                origin,
+                unused,
+            }
         })
         .collect();
     args.defaults = Some(defaults.clone());
@@ -273,18 +321,30 @@ pub fn run(args: &ConfigArgs, out: &mut dyn Write) -> io::Result<Exit> {
         out,
         "# precedence: command line > environment > project file > user file > built-in"
     )?;
-    match (&defaults.project, &defaults.searched_from) {
-        (Some(path), _) => writeln!(out, "# project file: {}", path.display())?,
-        (None, Some(dir)) => writeln!(
+    match (
+        &defaults.project,
+        &defaults.ignored,
+        &defaults.searched_from,
+    ) {
+        (Some(path), _, _) => writeln!(out, "# project file: {}", path.display())?,
+        (None, Some((path, why)), _) => writeln!(
+            out,
+            "# project file: none ({} ignored: {why})",
+            path.display()
+        )?,
+        (None, None, Some(dir)) => writeln!(
             out,
             "# project file: none (no tmclsh.toml in {} or above)",
             dir.display()
         )?,
-        (None, None) => writeln!(out, "# project file: none")?,
+        (None, None, None) => writeln!(out, "# project file: none")?,
     }
     match &defaults.user {
         Some(path) if path.is_file() => writeln!(out, "# user file: {}", path.display())?,
-        Some(path) => writeln!(out, "# user file: none ({} does not exist)", path.display())?,
+        Some(path) => match crate::file::describe_path(path).as_str() {
+            "missing" => writeln!(out, "# user file: none ({} does not exist)", path.display())?,
+            what => writeln!(out, "# user file: none ({} is {what})", path.display())?,
+        },
         None => writeln!(out, "# user file: none (no home directory)")?,
     }
     let width = args
@@ -297,7 +357,10 @@ pub fn run(args: &ConfigArgs, out: &mut dyn Write) -> io::Result<Exit> {
         match &line.value {
             Some(value) => {
                 let setting = format!("{} = {value}", line.key.name);
-                writeln!(out, "{setting:<width$}  # {}", line.origin)?;
+                match &line.unused {
+                    None => writeln!(out, "{setting:<width$}  # {}", line.origin)?,
+                    Some(why) => writeln!(out, "# {setting} ({}) is not used: {why}", line.origin)?,
+                }
             }
             None => writeln!(out, "# {} is not set: {}", line.key.name, line.key.unset)?,
         }
@@ -329,7 +392,9 @@ mod tests {
         let file = place.join("tmclsh.toml");
         std::fs::write(&file, "baud = 300\nprotocol = \"smd4\"\n").unwrap();
         let cmd = super::super::command();
-        let entries = file::read(&file, Scope::Project, &cmd).unwrap();
+        let Ok(file::Read::Entries(entries)) = file::read(&file, Scope::Project, &cmd) else {
+            panic!("the file is read");
+        };
         let defaults = Defaults {
             entries,
             ..Defaults::none()
