@@ -183,7 +183,8 @@ pub fn write(path: &Path, bytes: &[u8]) -> Result<(), FileError> {
 }
 
 /// Refuses an existing `path` that is not a regular file (a symlink followed), before any long
-/// work whose result would go there.
+/// work whose result would go there, or before handing the path to a library that opens it
+/// itself (the line editor's history).
 pub fn check_writable(path: &Path) -> Result<(), FileError> {
     match std::fs::metadata(path) {
         Ok(meta) if !meta.is_file() => Err(not_regular(path, &meta)),

@@ -197,3 +197,17 @@ fn sources_with_cr_only_line_ends_assemble_to_the_same_program() {
     assert!(programs.iter().all(|p| p == &programs[0]));
     assert!(programs[0].len() > 7 * 10, "the whole program");
 }
+
+#[test]
+fn a_fifo_in_place_of_the_history_file_is_left_alone() {
+    let data = tempdir();
+    std::fs::create_dir_all(data.join("tmclsh")).unwrap();
+    let history = data.join("tmclsh").join("history-tmcl");
+    nix::unistd::mkfifo(&history, nix::sys::stat::Mode::from_bits_truncate(0o600)).unwrap();
+    let mut p = terminal(&[], &[("XDG_DATA_HOME", data.to_str().unwrap())]);
+    p.exp_string("A> ").unwrap();
+    p.send_line("GAP 4, 0").unwrap();
+    p.exp_string("1000000").unwrap();
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}
