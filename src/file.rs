@@ -77,19 +77,20 @@ pub enum Follow {
 /// Opens the regular file at `path` for `mode` without blocking; refuses anything else, saying
 /// what it is. The file returned is in blocking mode again.
 pub fn open(path: &Path, mode: Mode, follow: Follow) -> Result<File, FileError> {
-    let looked = match follow {
+    let look = || match follow {
         Follow::Yes => std::fs::metadata(path),
         Follow::No => std::fs::symlink_metadata(path),
     };
-    match looked {
+    match look() {
         Ok(meta) if !meta.is_file() => return Err(not_regular(path, &meta)),
         Err(e) if mode == Mode::Read => return Err(FileError::io(path, "read", &e)),
         _ => {}
     }
     let doing = if mode == Mode::Read { "read" } else { "write" };
     let file = options(mode, follow).open(path).map_err(|e| {
-        // A FIFO put in place after the look (ENXIO when no one reads it), or a symlink.
-        match std::fs::symlink_metadata(path) {
+        // A FIFO put in place after the look (ENXIO when no one reads it), or a symlink not
+        // followed.
+        match look() {
             Ok(meta) if !meta.is_file() && mode != Mode::CreateNew => not_regular(path, &meta),
             Ok(_) if mode == Mode::CreateNew && e.kind() == std::io::ErrorKind::AlreadyExists => {
                 FileError::new(path, "exists already; not replaced".into())
