@@ -97,7 +97,17 @@ pub fn diff(
     out: &mut dyn Write,
 ) -> Result<Comparison, SessionError> {
     let file = Snapshot::load(path)?;
-    let comparison = diff::with_device(&file, device)?;
+    diff_snapshot(device, &file, path, out)
+}
+
+/// [`diff`] of a snapshot already read from `path`.
+pub fn diff_snapshot(
+    device: &mut dyn ParamDevice,
+    file: &Snapshot,
+    path: &Path,
+    out: &mut dyn Write,
+) -> Result<Comparison, SessionError> {
+    let comparison = diff::with_device(file, device)?;
     let right = device.who();
     report(comparison, [&path.display().to_string(), &right], out)
 }

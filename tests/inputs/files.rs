@@ -94,6 +94,12 @@ fn command_line_files_that_are_not_regular_files_are_refused_without_blocking() 
         for args in reads {
             let out = guarded(&dir, &args, "");
             refused(&out, file, &format!("{args:?}"));
+            // Refused before any link is opened.
+            assert!(
+                !stderr(&out).contains("using the built-in simulated"),
+                "{args:?}: {}",
+                stderr(&out)
+            );
         }
     }
     // (An existing directory given to --log is a log directory.)
