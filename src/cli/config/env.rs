@@ -7,6 +7,7 @@
 use clap::Command;
 use clap::error::ErrorKind;
 
+use super::super::ports::usb::UsbSpec;
 use super::file::option_accepts;
 
 /// `cmd` with the empty variables' options reading no variable, or the error naming the first
@@ -26,7 +27,11 @@ pub(in crate::cli) fn apply(cmd: Command) -> Result<Command, clap::Error> {
         };
         let refused = match value.to_str() {
             None => Some("not UTF-8 text".to_string()),
-            Some(text) => option_accepts(&cmd, &id, text).err(),
+            // A usb: name is checked as a file's port is.
+            Some(text) => match UsbSpec::parse(text) {
+                Some(Err(why)) if id == "port" => Some(why),
+                _ => option_accepts(&cmd, &id, text).err(),
+            },
         };
         if let Some(why) = refused {
             let message = format!(

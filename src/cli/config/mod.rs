@@ -250,6 +250,45 @@ struct Line {
     unused: Option<String>,
 }
 
+/// Where the value of `key` in `leaf` came from: "command line", "environment TMCLSH_PORT",
+/// "project /home/me/rig/tmclsh.toml:1", "built-in".
+fn origin(leaf: &ArgMatches, key: &Key, defaults: &Defaults) -> String {
+    match leaf.value_source(key.id) {
+        Some(ValueSource::CommandLine) => "command line".to_string(),
+        Some(ValueSource::EnvVariable) => {
+            let cmd = super::command();
+            let var = cmd
+                .get_arguments()
+                .find(|a| a.get_id() == key.id)
+                .and_then(|a| a.get_env())
+                .map(|v| v.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            format!("environment {var}")
+        }
+        Some(ValueSource::DefaultValue) => match defaults.entry(key) {
+            Some(e) => format!("{} {}:{}", e.scope.name(), e.file.display(), e.line),
+            None => "built-in".to_string(),
+        },
+        _ => "built-in".to_string(),
+    }
+}
+
+/// Where the value of the option `id` came from when not from the command line (so a message
+/// about it can say: `environment TMCLSH_PROFILE`, `project FILE:LINE`), else `None`.
+pub fn origin_of(matches: &ArgMatches, id: &str, defaults: &Defaults) -> Option<String> {
+    let key = KEYS.iter().find(|k| k.id == id)?;
+    let leaf = leaf_matches(matches);
+    let leaf = if leaf.try_contains_id(id).unwrap_or(false) {
+        leaf
+    } else {
+        matches
+    };
+    match origin(leaf, key, defaults).as_str() {
+        "command line" | "built-in" => None,
+        other => Some(other.to_string()),
+    }
+}
+
 /// Fills in the report of a parsed `tmclsh config` from its matches.
 pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults) {
     let leaf = leaf_matches(matches);
@@ -280,24 +319,7 @@ pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults)
                 .flatten()
                 .and_then(|mut values| values.next())
                 .map(|v| v.to_string_lossy().into_owned());
-            let origin = match leaf.value_source(key.id) {
-                Some(ValueSource::CommandLine) => "command line".to_string(),
-                Some(ValueSource::EnvVariable) => {
-                    let cmd = super::command();
-                    let var = cmd
-                        .get_arguments()
-                        .find(|a| a.get_id() == key.id)
-                        .and_then(|a| a.get_env())
-                        .map(|v| v.to_string_lossy().into_owned())
-                        .unwrap_or_default();
-                    format!("environment {var}")
-                }
-                Some(ValueSource::DefaultValue) => match defaults.entry(key) {
-                    Some(e) => format!("{} {}:{}", e.scope.name(), e.file.display(), e.line),
-                    None => "built-in".to_string(),
-                },
-                _ => "built-in".to_string(),
-            };
+            let origin = origin(leaf, key, defaults);
             let value = raw.map(|raw| match key.kind {
                 Kind::Integer => raw,
                 _ => toml::Value::String(raw).to_string(),

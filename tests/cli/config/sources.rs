@@ -99,3 +99,40 @@ fn an_empty_environment_variable_counts_as_unset_and_a_bad_one_is_named() {
         );
     }
 }
+
+#[test]
+fn a_port_or_profile_refused_later_still_names_where_it_came_from() {
+    let place = Place::new();
+    let out = place.run(&["-c", "GAP 4, 0"], &[("TMCLSH_PORT", "usb:zz")]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("environment variable TMCLSH_PORT: `usb:zz`"),
+        "{}",
+        stderr(&out)
+    );
+    let out = place.run(&["-c", "GAP 4, 0"], &[("TMCLSH_PROFILE", "nosuch")]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("environment TMCLSH_PROFILE: no built-in profile or file 'nosuch'"),
+        "{}",
+        stderr(&out)
+    );
+    let file = place.project_file("profile = \"nosuch\"\n");
+    let out = place.run(&["-c", "GAP 4, 0"], &[]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains(&format!(
+            "project {}:1: no built-in profile",
+            file.display()
+        )),
+        "{}",
+        stderr(&out)
+    );
+    // From the command line, the option itself is the origin.
+    let out = place.run(&["--profile", "nosuch", "-c", "GAP 4, 0"], &[]);
+    assert!(
+        stderr(&out).contains("tmclsh: no built-in profile"),
+        "{}",
+        stderr(&out)
+    );
+}
