@@ -217,3 +217,30 @@ fn a_fifo_in_place_of_the_history_file_is_left_alone() {
     p.send_control('d').unwrap();
     p.exp_eof().unwrap();
 }
+
+#[test]
+fn huge_files_are_refused_by_their_size_not_read() {
+    let dir = tempdir();
+    for name in ["huge.toml", "huge.rhai", "huge.tmc", "huge.log"] {
+        std::fs::File::create(dir.join(name))
+            .unwrap()
+            .set_len(2 << 30) // sparse
+            .unwrap();
+    }
+    let cases: [(&[&str], &str); 6] = [
+        (&["snapshot", "diff", "huge.toml"], "larger than 4 MiB"),
+        (&["run", "huge.rhai"], "larger than 4 MiB"),
+        (&["asm", "huge.tmc"], "larger than 4 MiB"),
+        (&["sim", "--state", "huge.toml"], "larger than 4 MiB"),
+        (&["--profile", "huge.toml", "params"], "larger than 4 MiB"),
+        (
+            &["transcript", "to-rhai", "huge.log"],
+            "larger than 256 MiB",
+        ),
+    ];
+    for (args, why) in cases {
+        let out = guarded(&dir, args, "");
+        assert_eq!(code(&out), 2, "{args:?}: {}", stderr(&out));
+        assert!(stderr(&out).contains(why), "{args:?}: {}", stderr(&out));
+    }
+}
