@@ -24,6 +24,7 @@ pub mod dialect;
 pub mod duration;
 pub mod escape;
 pub mod exit;
+pub mod file;
 #[doc(hidden)]
 pub mod fuzz_entry;
 pub mod link;

@@ -4,6 +4,7 @@
 //! say what they are of and end a run that cannot write them; and the wording of the messages
 //! bad lines get.
 
+mod files;
 mod messages;
 mod piped;
 mod profile;

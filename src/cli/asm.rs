@@ -23,16 +23,15 @@ pub(super) struct AsmArgs {
 
 pub(super) fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
     let name = args.file.display().to_string();
-    let bytes = std::fs::read(&args.file)
-        .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {name}: {e}")))?;
+    let bytes = crate::file::read(&args.file, crate::file::READ_LIMIT)
+        .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {e}")))?;
     if asm::is_program_file(&bytes) {
         return Err(Failure::new(
             Exit::Refused,
             format!("{name} is an assembled program file, not source; use `tmclsh disasm {name}`"),
         ));
     }
-    // Only comments may hold non-ASCII text; old Windows files are not UTF-8 there.
-    let source = String::from_utf8_lossy(&bytes);
+    let source = asm::source_text(&bytes);
     let program = match asm::assemble(&source, &name, profile) {
         Ok(program) => program,
         Err(errors) => {
@@ -56,12 +55,8 @@ pub(super) fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Res
     if let Some(path) = &args.output {
         let bytes = asm::write_binary(&program.instructions)
             .map_err(|e| Failure::new(Exit::Refused, e.to_string()))?;
-        std::fs::write(path, bytes).map_err(|e| {
-            Failure::new(
-                Exit::Refused,
-                format!("cannot write {}: {e}", path.display()),
-            )
-        })?;
+        crate::file::write(path, &bytes)
+            .map_err(|e| Failure::new(Exit::Refused, format!("cannot write {e}")))?;
     }
     report(args, &program, &source, profile, out).or_else(|e| {
         if e.kind() == std::io::ErrorKind::BrokenPipe {

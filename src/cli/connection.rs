@@ -28,11 +28,30 @@ pub struct ConnectionArgs {
     #[arg(long, value_name = "PATH", env = "TMCLSH_PORT")]
     pub port: Option<String>,
     /// Serial bit rate (8N1).
-    #[arg(long, value_name = "N", env = "TMCLSH_BAUD", default_value_t = 9600)]
+    #[arg(long, value_name = "N", env = "TMCLSH_BAUD", default_value_t = 9600, value_parser = parse_baud)]
     pub baud: u32,
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT")]
     pub tcp: Option<String>,
+}
+
+/// The bit rates a serial port can be set to: from the slowest teletype rate to the fastest
+/// USB adapters'.
+pub const BAUD_RANGE: std::ops::RangeInclusive<u32> = 50..=12_000_000;
+
+/// A `--baud` value (also `baud` in a configuration file, `TMCLSH_BAUD`): a whole number in
+/// [`BAUD_RANGE`], refused otherwise before anything is opened (0 used to reach the serial link
+/// after the module had been put into ASCII mode).
+fn parse_baud(text: &str) -> Result<u32, String> {
+    let hint = format!(
+        "a bit rate is a whole number from {} to {}, such as 9600 or 115200",
+        BAUD_RANGE.start(),
+        BAUD_RANGE.end()
+    );
+    match text.trim().parse::<u32>() {
+        Ok(baud) if BAUD_RANGE.contains(&baud) => Ok(baud),
+        _ => Err(hint),
+    }
 }
 
 /// Which protocol the module speaks: shared by the faces that talk to a module and by `params`.
@@ -148,6 +167,9 @@ pub enum EchoMode {
     None,
 }
 
+/// How many files of one second a `--log` directory may get.
+const LOG_NAMES: u32 = 1000;
+
 impl SessionArgs {
     /// The session options these flags select.
     pub fn options(&self) -> SessionOptions {
@@ -177,10 +199,27 @@ impl SessionArgs {
                 format!("cannot create the log directory {}: {e}", path.display()),
             )
         })?;
-        let file = log_file(path, device, std::time::SystemTime::now());
-        Transcript::open(&file, header)
-            .map(Some)
-            .map_err(Failure::from)
+        // A new file, never an existing one: not another session's of the same second, not
+        // a symlink planted with the name this one would get.
+        let now = std::time::SystemTime::now();
+        for n in 1..=LOG_NAMES {
+            let file = log_file(path, device, now, n);
+            if file.symlink_metadata().is_ok() {
+                continue;
+            }
+            match Transcript::create_new(&file, header) {
+                Ok(transcript) => return Ok(Some(transcript)),
+                Err(_) if file.symlink_metadata().is_ok() => continue,
+                Err(e) => return Err(e.into()),
+            }
+        }
+        Err(Failure::new(
+            Exit::Refused,
+            format!(
+                "cannot start a transcript in {}: {LOG_NAMES} files of this second exist",
+                path.display()
+            ),
+        ))
     }
 }
 

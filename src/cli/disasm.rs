@@ -21,8 +21,8 @@ pub(super) fn run(
     out: &mut dyn Write,
 ) -> Result<Exit, Failure> {
     let name = args.file.display().to_string();
-    let bytes = std::fs::read(&args.file)
-        .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {name}: {e}")))?;
+    let bytes = crate::file::read(&args.file, crate::file::READ_LIMIT)
+        .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {e}")))?;
     let instructions = asm::read_binary(&bytes)
         .map_err(|e| Failure::new(Exit::Refused, format!("{name}: {e}")))?;
     let disassembly = asm::disassemble(&instructions, profile);

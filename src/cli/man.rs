@@ -122,7 +122,7 @@ internal error; the motors the session set moving were stopped first
 .TP
 \fBTMCLSH_PORT\fR, \fBTMCLSH_BAUD\fR, \fBTMCLSH_PROTOCOL\fR, \fBTMCLSH_PROFILE\fR, \fBTMCLSH_MODULE\fR, \fBTMCLSH_TIMEOUT\fR
 the value of the option of the same name, below the command line and above the configuration
-files
+files; an empty variable counts as unset
 .TP
 \fBNO_COLOR\fR
 plain output in the interactive shell
@@ -132,7 +132,9 @@ where the user's configuration file and the shell's history are
 .SH FILES
 .TP
 \fBtmclsh.toml\fR
-the project's configuration file, in the working directory or the nearest directory above it
+the project's configuration file, in the working directory or the nearest directory above it;
+used only when it is the user's (or root's) and nobody else may write it, otherwise ignored with a
+note
 .TP
 \fB$XDG_CONFIG_HOME/tmclsh/config.toml\fR (\fB~/.config/tmclsh/config.toml\fR)
 the user's configuration file; keys port, baud, protocol, profile, module, timeout, echo and

@@ -49,6 +49,10 @@ pub struct Cli {
 
     #[command(subcommand)]
     command: Option<Command>,
+
+    /// Where `profile` came from when not from the command line, for messages about it.
+    #[arg(skip)]
+    profile_origin: Option<String>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -202,13 +206,13 @@ pub fn parse(argv: Vec<OsString>) -> Result<Cli, clap::Error> {
 /// options written before the subcommand are handed to it, and options given on the command line
 /// that it has no use for are refused.
 pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cli, clap::Error> {
-    let mut cmd = defaults.apply(command());
-    cmd.build();
+    let mut cmd = config::apply_environment(defaults.apply(command()))?;
     let first = cmd.try_get_matches_from_mut(argv.clone())?;
     let argv = position::behind_subcommand(&mut cmd, &first, argv)?;
     let matches = cmd.try_get_matches_from_mut(argv)?;
     relevance::check(&mut cmd, &matches)?;
     let mut cli = Cli::from_arg_matches(&matches)?;
+    cli.profile_origin = config::origin_of(&matches, "profile", defaults);
     if let Some(Command::Config(args)) = &mut cli.command {
         config::explain(args, &matches, defaults);
     }
@@ -225,8 +229,13 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
     if let Some(Command::Profiles(args)) = &cli.command {
         return profiles::run(args, out); // the built-in catalogue: no profile to load
     }
-    let configs = Configured::load(cli.profile.as_deref())
-        .map_err(|message| Failure::new(Exit::Refused, message))?;
+    let configs = Configured::load(cli.profile.as_deref()).map_err(|message| {
+        let message = match &cli.profile_origin {
+            Some(origin) => format!("{origin}: {message}"),
+            None => message,
+        };
+        Failure::new(Exit::Refused, message)
+    })?;
     let result = match cli.command {
         Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports(args)) => ports::run(&args, &configs, out),

@@ -7,6 +7,7 @@ use std::path::PathBuf;
 
 use crate::commission::ParamDevice;
 use crate::commission::actions::{self, RestoreOptions};
+use crate::commission::snapshot::Snapshot;
 use crate::dialect::{Configured, Purpose};
 use crate::exit::{Exit, Failure};
 use crate::session::{SessionError, interrupt};
@@ -104,9 +105,13 @@ pub(super) fn run(
             file,
             other: None,
             module,
-        } => with_device(&module, configs, |d| {
-            actions::diff(d, &file, out).map(|_| ())
-        }),
+        } => {
+            // Read before the link is opened: nothing is sent for a file that is not a snapshot.
+            let snapshot = Snapshot::load(&file)?;
+            with_device(&module, configs, |d| {
+                actions::diff_snapshot(d, &snapshot, &file, out).map(|_| ())
+            })
+        }
         Action::Restore {
             file,
             store,
@@ -128,6 +133,8 @@ pub(super) fn run(
                 force,
                 redact: false,
             };
+            let snapshot = Snapshot::load(&file)?;
+            let label = file.display().to_string();
             with_device(&module, configs, |d| {
                 let mut confirm = |question: &str| {
                     if ask {
@@ -136,7 +143,8 @@ pub(super) fn run(
                         Ok(true)
                     }
                 };
-                actions::restore(d, &file, options, &mut confirm, out).map(|_| ())
+                actions::restore_snapshot(d, &snapshot, &label, options, &mut confirm, out)
+                    .map(|_| ())
             })
         }
     }

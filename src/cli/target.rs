@@ -99,11 +99,18 @@ pub(super) fn is_log_dir(path: &Path) -> bool {
 }
 
 /// The transcript file for a session with `device` in the log directory `dir`:
-/// `DEVICE-YYYY-MM-DDTHH-MM-SS.log`, the time in UTC like the transcript's own timestamps.
-pub(super) fn log_file(dir: &Path, device: &str, now: SystemTime) -> PathBuf {
+/// `DEVICE-YYYY-MM-DDTHH-MM-SS.log`, the time in UTC like the transcript's own timestamps; the
+/// `n`th choice (from 1) after the first is numbered (`…-2.log`), so sessions started in the same
+/// second get files of their own.
+pub(super) fn log_file(dir: &Path, device: &str, now: SystemTime, n: u32) -> PathBuf {
     let stamp = humantime::format_rfc3339_seconds(now).to_string();
     let stamp = stamp.trim_end_matches('Z').replace(':', "-");
-    dir.join(format!("{device}-{stamp}.log"))
+    let number = if n > 1 {
+        format!("-{n}")
+    } else {
+        String::new()
+    };
+    dir.join(format!("{device}-{stamp}{number}.log"))
 }
 
 #[cfg(test)]
@@ -134,8 +141,12 @@ mod tests {
     fn log_files_are_named_by_device_and_date() {
         let at = SystemTime::UNIX_EPOCH + Duration::from_secs(1_796_120_102);
         assert_eq!(
-            log_file(Path::new("logs"), "ttyUSB0", at),
+            log_file(Path::new("logs"), "ttyUSB0", at, 1),
             Path::new("logs/ttyUSB0-2026-12-01T10-15-02.log")
+        );
+        assert_eq!(
+            log_file(Path::new("logs"), "ttyUSB0", at, 2),
+            Path::new("logs/ttyUSB0-2026-12-01T10-15-02-2.log")
         );
     }
 }

@@ -2,7 +2,7 @@
 //! same commands and checks the values received — of a TMCL or an SMD4 session, as the
 //! transcript's header says. What it cannot read, or what replays nothing, is refused (exit 2).
 
-use std::io::{Read, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use crate::dialect::{Configured, replay};
@@ -55,7 +55,8 @@ pub(super) fn run(
         .replay(&entries, kind.header.as_ref(), &name, wait)
         .map_err(refused)?;
     let written = match &output {
-        Some(path) => std::fs::write(path, &script),
+        Some(path) => crate::file::write(path, script.as_bytes())
+            .map_err(|e| std::io::Error::other(e.to_string())),
         None => out.write_all(script.as_bytes()),
     };
     match written {
@@ -73,17 +74,7 @@ const MAX_TRANSCRIPT: u64 = 256 << 20;
 
 /// The transcript's text, refused when it is not text or larger than [`MAX_TRANSCRIPT`].
 fn read_transcript(path: &Path) -> Result<String, String> {
-    let file = std::fs::File::open(path).map_err(|e| format!("cannot read the transcript: {e}"))?;
-    let mut bytes = Vec::new();
-    file.take(MAX_TRANSCRIPT + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| format!("cannot read the transcript: {e}"))?;
-    if bytes.len() as u64 > MAX_TRANSCRIPT {
-        return Err(format!(
-            "larger than {} MiB: not a transcript tmclsh reads",
-            MAX_TRANSCRIPT >> 20
-        ));
-    }
+    let bytes = crate::file::read(path, MAX_TRANSCRIPT).map_err(|e| e.reason)?;
     String::from_utf8(bytes).map_err(|e| {
         let line = e.as_bytes()[..e.utf8_error().valid_up_to()]
             .iter()

@@ -42,6 +42,8 @@ pub fn save_new(
 
 /// Refuses an existing `path` (exit 2) unless `force` says to replace it.
 pub fn check_new(path: &Path, force: bool) -> Result<(), SessionError> {
+    crate::file::check_writable(path)
+        .map_err(|e| SessionError::Usage(format!("cannot write snapshot {e}")))?;
     if !force && path.symlink_metadata().is_ok() {
         return Err(SessionError::Usage(format!(
             "{} exists; add --force to replace it (or save to another file)",
@@ -95,7 +97,17 @@ pub fn diff(
     out: &mut dyn Write,
 ) -> Result<Comparison, SessionError> {
     let file = Snapshot::load(path)?;
-    let comparison = diff::with_device(&file, device)?;
+    diff_snapshot(device, &file, path, out)
+}
+
+/// [`diff`] of a snapshot already read from `path`.
+pub fn diff_snapshot(
+    device: &mut dyn ParamDevice,
+    file: &Snapshot,
+    path: &Path,
+    out: &mut dyn Write,
+) -> Result<Comparison, SessionError> {
+    let comparison = diff::with_device(file, device)?;
     let right = device.who();
     report(comparison, [&path.display().to_string(), &right], out)
 }

@@ -189,6 +189,9 @@ impl Recording {
     }
 }
 
+/// The largest recording read back (`:plot FILE`): hours of samples, more than other files.
+pub const READ_LIMIT: u64 = 64 << 20;
+
 /// A CSV file being written sample by sample.
 pub struct CsvFile {
     file: std::fs::File,
@@ -197,9 +200,8 @@ pub struct CsvFile {
 impl CsvFile {
     /// Creates (or replaces) the file and writes the header.
     pub fn create(path: &std::path::Path, columns: &[String]) -> Result<CsvFile, SessionError> {
-        let file = std::fs::File::create(path).map_err(|e| {
-            SessionError::Usage(format!("cannot write recording {}: {e}", path.display()))
-        })?;
+        let file = crate::file::create(path)
+            .map_err(|e| SessionError::Usage(format!("cannot write recording {e}")))?;
         CsvFile::start(file, columns)
     }
 

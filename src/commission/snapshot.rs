@@ -226,9 +226,8 @@ impl Snapshot {
 
     /// Reads a snapshot file; errors are usage errors naming the file.
     pub fn load(path: &Path) -> Result<Snapshot, SessionError> {
-        let text = std::fs::read_to_string(path).map_err(|e| {
-            SessionError::Usage(format!("cannot read snapshot {}: {e}", path.display()))
-        })?;
+        let text = crate::file::read_text(path, crate::file::READ_LIMIT)
+            .map_err(|e| SessionError::Usage(format!("cannot read snapshot {e}")))?;
         Snapshot::from_toml(&text).map_err(|e| {
             SessionError::Usage(format!(
                 "{} is not a tmclsh snapshot: {}",
@@ -240,9 +239,8 @@ impl Snapshot {
 
     /// Writes the snapshot to `path` (replacing it).
     pub fn save(&self, path: &Path) -> Result<(), SessionError> {
-        std::fs::write(path, self.to_toml()).map_err(|e| {
-            SessionError::Usage(format!("cannot write snapshot {}: {e}", path.display()))
-        })
+        crate::file::write(path, self.to_toml().as_bytes())
+            .map_err(|e| SessionError::Usage(format!("cannot write snapshot {e}")))
     }
 }
 

@@ -15,8 +15,14 @@ pub struct SerialLink {
 }
 
 impl SerialLink {
-    /// Opens `path` at `baud`, 8N1, no flow control.
+    /// Opens `path` at `baud`, 8N1, no flow control. A rate of 0 is refused before the port is
+    /// opened (the command line refuses it earlier; a byte would take for ever).
     pub fn open(path: &str, baud: u32) -> Result<Self, LinkError> {
+        if baud == 0 {
+            return Err(LinkError::Open(format!(
+                "cannot open serial port {path} at 0 baud: a bit rate is a positive number"
+            )));
+        }
         let port = open_port(path, baud)?;
         Ok(SerialLink {
             path: path.to_string(),
@@ -90,5 +96,18 @@ impl Link for SerialLink {
 
     fn byte_time(&self) -> Option<Duration> {
         Some(Duration::from_secs_f64(10.0 / f64::from(self.baud)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_rate_of_0_is_refused_before_opening() {
+        let Err(LinkError::Open(message)) = SerialLink::open("/dev/null", 0) else {
+            panic!("opened at 0 baud");
+        };
+        assert!(message.contains("at 0 baud"), "{message}");
     }
 }

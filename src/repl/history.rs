@@ -18,16 +18,20 @@ pub(super) fn path(dialect: &Dialect) -> Option<PathBuf> {
 }
 
 /// Loads `dialect`'s history into the editor (from the shared file of earlier versions, keeping
-/// this dialect's lines, when it has none yet). A missing or unreadable file is an empty history.
+/// this dialect's lines, when it has none yet). A missing or unreadable file is an empty history,
+/// and so is one that is not a regular file (a FIFO would block the editor's open).
 pub(super) fn load(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Dialect) {
     let Some(path) = path(dialect) else { return };
+    if crate::file::check_writable(&path).is_err() {
+        return;
+    }
     if path.exists() {
         let _ = editor.load_history(&path);
         return;
     }
     let legacy = path.with_file_name("history");
     let mut shared = DefaultHistory::new();
-    if shared.load(&legacy).is_err() {
+    if crate::file::check_writable(&legacy).is_err() || shared.load(&legacy).is_err() {
         return;
     }
     for line in shared.iter().filter(|line| belongs(line, dialect)) {
@@ -40,6 +44,9 @@ pub(super) fn save(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Di
     let Some(path) = path(dialect) else { return };
     if let Some(dir) = path.parent() {
         let _ = std::fs::create_dir_all(dir);
+    }
+    if crate::file::check_writable(&path).is_err() {
+        return;
     }
     let _ = editor.save_history(Path::new(&path));
 }

@@ -74,7 +74,7 @@ impl Script {
     pub fn from_file(path: &Path, args: &[String], limits: Limits) -> Result<Script, Failure> {
         let name = path.display().to_string();
         let sandbox = Sandbox::for_script(path, &limits.allow_dirs, limits.overwrite);
-        match std::fs::read_to_string(path) {
+        match read_source(path) {
             Ok(source) => Ok(Script {
                 name,
                 source,
@@ -84,7 +84,7 @@ impl Script {
                 print: Rc::new(print_to_stdout),
                 elsewhere: Rc::new(|_| None),
             }),
-            Err(e) => Err(Failure::refused(format!("cannot read script {name}: {e}"))),
+            Err(e) => Err(Failure::refused(format!("cannot read script {e}"))),
         }
     }
 
@@ -189,12 +189,23 @@ impl Script {
     }
 }
 
+/// A script's text: a regular file of at most [`crate::file::READ_LIMIT`] bytes; a UTF-8 byte
+/// order mark at its start (some Windows editors write one) is skipped, not shown to Rhai as an
+/// invisible character it refuses.
+fn read_source(path: &Path) -> Result<String, crate::file::FileError> {
+    let text = crate::file::read_text(path, crate::file::READ_LIMIT)?;
+    Ok(match text.strip_prefix('\u{feff}') {
+        Some(rest) => rest.to_string(),
+        None => text,
+    })
+}
+
 /// Checks that a script compiles, before any connection is opened.
 pub fn check_file(path: &Path) -> Result<(), Failure> {
     let name = path.display().to_string();
-    let source = std::fs::read_to_string(path).map_err(|e| Failure {
+    let source = read_source(path).map_err(|e| Failure {
         exit: Exit::Refused,
-        message: format!("cannot read script {name}: {e}"),
+        message: format!("cannot read script {e}"),
     })?;
     let engine = base_engine(
         &Limits::default(),

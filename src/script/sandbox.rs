@@ -5,20 +5,20 @@
 //!   those given with `--allow-dir`. Paths are canonicalised (`..` and symlinks resolved) before
 //!   the check, and the file actually opened is checked again (Linux: through `/proc/self/fd`),
 //!   so a symlink or a directory swapped in between cannot lead outside.
-//! - Only regular files: the type is checked before opening and on the opened file; files are
-//!   opened non-blocking and without following a last symlink, so a FIFO or a device never
-//!   blocks or streams forever.
-//! - Reads are capped in size, checked on the opened file and while reading.
+//! - Only regular files, opened without following a last symlink, and reads capped in size:
+//!   the policy of every file a user names (`crate::file`), so a FIFO or a device never blocks
+//!   or streams forever.
 //! - An existing file is replaced only when it is a tmclsh file of the same kind (a snapshot, a
 //!   recording), unless the sandbox allows overwriting (`--overwrite`).
 //! - Messages name the path and what is wrong, never what the file contains.
 
-use std::fs::{File, Metadata, OpenOptions};
+use crate::file::{self, FileError, Follow, Mode, io_reason};
+use std::fs::{File, Metadata};
 use std::io::{Read, Seek, SeekFrom};
 use std::path::{Component, Path, PathBuf};
 
-/// The largest file a script may read (snapshots, program sources).
-pub const READ_LIMIT: u64 = 4 << 20;
+/// The largest file a script may read (snapshots, program sources): the policy's.
+pub const READ_LIMIT: u64 = file::READ_LIMIT;
 
 /// What a file function writes, and how to recognise a file of that kind it may replace.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -128,9 +128,9 @@ impl Sandbox {
         if !self.inside(&real) {
             return Err(self.outside(path));
         }
-        let file = read_regular(&real, limit).map_err(|reason| refusal(path, reason))?;
-        self.check_opened(path, &file.0)?;
-        Ok(file.1)
+        let opened = file::open(&real, Mode::Read, Follow::No).map_err(|e| refused(path, e))?;
+        self.check_opened(path, &opened)?;
+        file::read_opened(&opened, &real, limit).map_err(|e| refused(path, e))
     }
 
     /// Checks that [`Sandbox::create`] would open `path` for a file of `kind`, without creating
@@ -142,8 +142,8 @@ impl Sandbox {
             Ok(meta) if !meta.is_file() => Err(refusal(path, not_regular(&meta))),
             Ok(meta) if meta.len() == 0 || self.overwrite => Ok(()),
             Ok(_) => {
-                let file = open_for_reading(&target)
-                    .map_err(|e| refusal(path, format!("cannot read it: {}", io_reason(&e))))?;
+                let file =
+                    file::open(&target, Mode::Read, Follow::No).map_err(|e| refused(path, e))?;
                 self.check_opened(path, &file)?;
                 self.check_ours(path, &file, kind)
             }
@@ -160,16 +160,13 @@ impl Sandbox {
                 return Err(refusal(path, not_regular(&meta)));
             }
         }
-        let file = open_for_writing(&target)
-            .map_err(|e| refusal(path, format!("cannot write it: {}", io_reason(&e))))?;
+        let file = file::open(&target, Mode::Write, Follow::No).map_err(|e| refused(path, e))?;
         self.check_opened(path, &file)?;
-        let meta = file
+        let len = file
             .metadata()
-            .map_err(|e| refusal(path, format!("cannot write it: {}", io_reason(&e))))?;
-        if !meta.is_file() {
-            return Err(refusal(path, not_regular(&meta)));
-        }
-        if meta.len() > 0 && !self.overwrite {
+            .map_err(|e| refusal(path, format!("cannot write it: {}", io_reason(&e))))?
+            .len();
+        if len > 0 && !self.overwrite {
             self.check_ours(path, &file, kind)?;
         }
         file.set_len(0)
@@ -262,79 +259,19 @@ fn refusal(path: &str, reason: String) -> PathRefusal {
     }
 }
 
-/// An I/O error in words, without the path (the message names it already).
-fn io_reason(error: &std::io::Error) -> String {
-    let text = error.to_string();
-    match text.find(" (os error") {
-        Some(i) => text[..i].to_lowercase(),
-        None => text.to_lowercase(),
-    }
+/// The policy's refusal as the sandbox says it: the script's path, with a hint for scripts.
+fn refused(path: &str, error: FileError) -> PathRefusal {
+    let reason = if error.reason.ends_with("not a regular file") {
+        format!("{}; scripts use regular files only", error.reason)
+    } else {
+        error.reason
+    };
+    refusal(path, reason)
 }
 
 fn not_regular(meta: &Metadata) -> String {
-    let kind = describe_type(meta);
+    let kind = file::describe_type(meta);
     format!("{kind}, not a regular file; scripts use regular files only")
-}
-
-fn describe_type(meta: &Metadata) -> &'static str {
-    let t = meta.file_type();
-    if t.is_dir() {
-        return "a directory";
-    }
-    if t.is_symlink() {
-        return "a symlink";
-    }
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::FileTypeExt;
-        if t.is_fifo() {
-            return "a FIFO";
-        }
-        if t.is_char_device() || t.is_block_device() {
-            return "a device";
-        }
-        if t.is_socket() {
-            return "a socket";
-        }
-    }
-    "a special file"
-}
-
-/// Reads the regular file at `path` — at most `limit` bytes, never blocking on a FIFO or
-/// streaming from a device: the type is checked before opening and again on the opened file,
-/// which is opened non-blocking without following a last symlink. Returns the file and its
-/// bytes; the error says why not, without quoting the file. For every face that reads a file a
-/// user or a script names (scripts, `download`).
-pub fn read_regular(path: &Path, limit: u64) -> Result<(File, Vec<u8>), String> {
-    let meta = std::fs::metadata(path).map_err(|e| format!("cannot read it: {}", io_reason(&e)))?;
-    if !meta.is_file() {
-        return Err(not_regular(&meta));
-    }
-    let file = open_for_reading(path).map_err(|e| format!("cannot read it: {}", io_reason(&e)))?;
-    let meta = file
-        .metadata()
-        .map_err(|e| format!("cannot read it: {}", io_reason(&e)))?;
-    if !meta.is_file() {
-        return Err(not_regular(&meta));
-    }
-    let too_large = || {
-        format!(
-            "larger than {} KiB, more than such a file can be",
-            limit >> 10
-        )
-    };
-    if meta.len() > limit {
-        return Err(too_large());
-    }
-    let mut bytes = Vec::with_capacity(meta.len() as usize);
-    (&file)
-        .take(limit + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| format!("cannot read it: {}", io_reason(&e)))?;
-    if bytes.len() as u64 > limit {
-        return Err(too_large());
-    }
-    Ok((file, bytes))
 }
 
 fn read_head(mut file: &File, buf: &mut [u8]) -> std::io::Result<usize> {
@@ -348,42 +285,6 @@ fn read_head(mut file: &File, buf: &mut [u8]) -> std::io::Result<usize> {
     }
     file.seek(SeekFrom::Start(0))?;
     Ok(filled)
-}
-
-#[cfg(unix)]
-fn open_for_reading(path: &Path) -> std::io::Result<File> {
-    use std::os::unix::fs::OpenOptionsExt;
-    OpenOptions::new()
-        .read(true)
-        .custom_flags(nix::fcntl::OFlag::O_NONBLOCK.bits() | nix::fcntl::OFlag::O_NOFOLLOW.bits())
-        .open(path)
-}
-
-#[cfg(not(unix))]
-fn open_for_reading(path: &Path) -> std::io::Result<File> {
-    OpenOptions::new().read(true).open(path)
-}
-
-#[cfg(unix)]
-fn open_for_writing(path: &Path) -> std::io::Result<File> {
-    use std::os::unix::fs::OpenOptionsExt;
-    OpenOptions::new()
-        .read(true)
-        .write(true)
-        .create(true)
-        .truncate(false)
-        .custom_flags(nix::fcntl::OFlag::O_NONBLOCK.bits() | nix::fcntl::OFlag::O_NOFOLLOW.bits())
-        .open(path)
-}
-
-#[cfg(not(unix))]
-fn open_for_writing(path: &Path) -> std::io::Result<File> {
-    OpenOptions::new()
-        .read(true)
-        .write(true)
-        .create(true)
-        .truncate(false)
-        .open(path)
 }
 
 /// The path of an opened file as the kernel sees it, where the system tells it.

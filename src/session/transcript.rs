@@ -12,8 +12,9 @@
 //! A transcript that cannot be written (a full disk) stops recording at the first failed line and
 //! says why ([`Transcript::failure`]); the faces decide what that means for the run.
 
+use crate::file::{Follow, Mode};
 use std::fmt::{Display, Write as _};
-use std::fs::{File, OpenOptions};
+use std::fs::File;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
@@ -52,14 +53,10 @@ impl Entry {
 /// Why a transcript could not be started.
 #[derive(Debug, thiserror::Error)]
 pub enum TranscriptError {
-    /// The file could not be opened (a bad path, no permission): the request is refused.
-    #[error("cannot open log file {path}: {source}")]
-    Open {
-        /// The file.
-        path: String,
-        /// What the OS said.
-        source: io::Error,
-    },
+    /// The file could not be opened (a bad path, no permission, not a regular file): the
+    /// request is refused.
+    #[error("cannot open log file {0}")]
+    Open(crate::file::FileError),
     /// The file opened, but its header could not be written (a full disk).
     #[error("cannot write the transcript {path}: {source}")]
     Write {
@@ -73,7 +70,7 @@ pub enum TranscriptError {
 impl ExitStatus for TranscriptError {
     fn exit(&self) -> Exit {
         match self {
-            TranscriptError::Open { .. } => Exit::Refused,
+            TranscriptError::Open(_) => Exit::Refused,
             TranscriptError::Write { .. } => Exit::Link,
         }
     }
@@ -90,17 +87,24 @@ pub struct Transcript {
 }
 
 impl Transcript {
-    /// Opens `path` for appending (created if missing) and writes the header of this session.
+    /// Opens `path` for appending (created if missing; a regular file, never a FIFO or a
+    /// device) and writes the header of this session.
     pub fn open(path: &Path, header: &Header) -> Result<Self, TranscriptError> {
+        let file =
+            crate::file::open(path, Mode::Append, Follow::Yes).map_err(TranscriptError::Open)?;
+        Transcript::start(path, file, header)
+    }
+
+    /// Creates `path`, which must not exist (a symlink in its place is not followed), and
+    /// writes the header: a `--log` directory's new file.
+    pub fn create_new(path: &Path, header: &Header) -> Result<Self, TranscriptError> {
+        let file =
+            crate::file::open(path, Mode::CreateNew, Follow::No).map_err(TranscriptError::Open)?;
+        Transcript::start(path, file, header)
+    }
+
+    fn start(path: &Path, file: File, header: &Header) -> Result<Self, TranscriptError> {
         let shown = || path.display().to_string();
-        let file = OpenOptions::new()
-            .create(true)
-            .append(true)
-            .open(path)
-            .map_err(|source| TranscriptError::Open {
-                path: shown(),
-                source,
-            })?;
         let mut transcript = Transcript {
             path: path.to_path_buf(),
             file,
@@ -219,14 +223,13 @@ mod tests {
 
     #[cfg(target_os = "linux")]
     #[test]
-    fn a_transcript_that_cannot_be_written_says_so_once() {
+    fn a_transcript_is_a_regular_file() {
         let header = tmcl_header(&Profile::builtin());
         let error = Transcript::open(Path::new("/dev/full"), &header).unwrap_err();
-        assert_eq!(error.exit(), Exit::Link);
-        assert!(
-            error
-                .to_string()
-                .starts_with("cannot write the transcript /dev/full: ")
+        assert_eq!(error.exit(), Exit::Refused);
+        assert_eq!(
+            error.to_string(),
+            "cannot open log file /dev/full: a character device, not a regular file"
         );
         let error = Transcript::open(Path::new("/nonexistent/dir/t.log"), &header).unwrap_err();
         assert_eq!(error.exit(), Exit::Refused);

@@ -310,8 +310,8 @@ fn plot(state: &State, arg: &str, out: &mut dyn Write) -> Result<(), SessionErro
             }
         },
         [file] => {
-            let text = std::fs::read_to_string(file)
-                .map_err(|e| SessionError::Usage(format!("cannot read recording {file}: {e}")))?;
+            let text = crate::file::read_text(Path::new(file), record::READ_LIMIT)
+                .map_err(|e| SessionError::Usage(format!("cannot read recording {e}")))?;
             loaded = Recording::from_csv(&text).map_err(|e| {
                 SessionError::Usage(format!("{file} is not a tmclsh recording: {e}"))
             })?;

@@ -25,22 +25,12 @@ pub trait Store: Send {
 /// Why a store could not be read or written.
 #[derive(Debug, thiserror::Error)]
 pub enum StoreError {
-    /// The file exists but cannot be read.
-    #[error("cannot read state file {path}: {source}")]
-    Read {
-        /// The file.
-        path: String,
-        /// What the OS said.
-        source: std::io::Error,
-    },
+    /// The file exists but cannot be read (or is no regular file, or too large).
+    #[error("cannot read state file {0}")]
+    Read(crate::file::FileError),
     /// The file cannot be written.
-    #[error("cannot write state file {path}: {source}")]
-    Write {
-        /// The file.
-        path: String,
-        /// What the OS said.
-        source: std::io::Error,
-    },
+    #[error("cannot write state file {0}")]
+    Write(crate::file::FileError),
 }
 
 /// A state file on disk; a missing file means factory state and is created by the first save.
@@ -60,25 +50,17 @@ impl FileStore {
 
 impl Store for FileStore {
     fn load(&self) -> Result<Option<String>, StoreError> {
-        match std::fs::read_to_string(&self.path) {
-            Ok(text) => Ok(Some(text)),
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
-            Err(source) => Err(StoreError::Read {
-                path: self.name(),
-                source,
-            }),
-        }
+        crate::file::read_text_if_any(&self.path, crate::file::READ_LIMIT).map_err(StoreError::Read)
     }
 
     fn save(&mut self, text: &str) -> Result<(), StoreError> {
         let mut aside = self.path.clone().into_os_string();
         aside.push(".tmp");
-        std::fs::write(&aside, text)
-            .and_then(|()| std::fs::rename(&aside, &self.path))
-            .map_err(|source| StoreError::Write {
-                path: self.name(),
-                source,
-            })
+        let aside = PathBuf::from(aside);
+        crate::file::check_writable(&self.path).map_err(StoreError::Write)?;
+        crate::file::write(&aside, text.as_bytes()).map_err(StoreError::Write)?;
+        std::fs::rename(&aside, &self.path)
+            .map_err(|e| StoreError::Write(crate::file::FileError::io(&self.path, "write", &e)))
     }
 
     fn name(&self) -> String {

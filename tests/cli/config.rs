@@ -2,6 +2,10 @@
 //! command line and the environment, shown by `tmclsh config`, checked line by line, and never
 //! refused where the option has no use.
 
+mod sources;
+#[cfg(unix)]
+mod trust;
+
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 

@@ -131,3 +131,48 @@ fn log_file_and_off_still_work() {
         "{text}"
     );
 }
+
+/// `sim-tmcl-YYYY-MM-DDTHH-MM-SS.log` for `at`, as tmclsh names a built-in session's file.
+fn predicted(at: std::time::SystemTime) -> String {
+    let stamp = humantime::format_rfc3339_seconds(at).to_string();
+    format!(
+        "sim-tmcl-{}.log",
+        stamp.trim_end_matches('Z').replace(':', "-")
+    )
+}
+
+#[cfg(unix)]
+#[test]
+fn a_log_directory_never_reuses_a_name_nor_follows_a_planted_symlink() {
+    let dir = tempdir();
+    let victim = dir.join("victim.txt");
+    std::fs::write(&victim, "keep me\n").unwrap();
+    let logs = dir.join("logs");
+    std::fs::create_dir(&logs).unwrap();
+    // Every name the next minute could give, first choice and second: planted symlinks (as
+    // another user could in a shared directory) and a session's file of the same second.
+    let now = std::time::SystemTime::now();
+    for s in 0..60 {
+        let at = now + std::time::Duration::from_secs(s);
+        let first = logs.join(predicted(at));
+        std::os::unix::fs::symlink(&victim, &first).unwrap();
+        let second = first.to_str().unwrap().replace(".log", "-2.log");
+        std::fs::write(&second, "another session\n").unwrap();
+    }
+    let out = run(&["--log", logs.to_str().unwrap(), "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert_eq!(std::fs::read_to_string(&victim).unwrap(), "keep me\n");
+    let made: Vec<String> = names(&logs)
+        .into_iter()
+        .filter(|n| n.ends_with("-3.log"))
+        .collect();
+    assert_eq!(made.len(), 1, "{made:?}");
+    let text = std::fs::read_to_string(logs.join(&made[0])).unwrap();
+    assert!(text.contains("AGAP 1, 0"), "{text}");
+    for name in names(&logs).iter().filter(|n| n.ends_with("-2.log")) {
+        assert_eq!(
+            std::fs::read_to_string(logs.join(name)).unwrap(),
+            "another session\n"
+        );
+    }
+}

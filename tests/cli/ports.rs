@@ -178,11 +178,13 @@ fn a_usb_name_finds_its_adapter_or_says_why_not() {
     let out = machine.run(&["--port", "usb:ftdi", "-c", "GAP 1, 0"]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     assert!(stderr(&out).contains("usb:VID:PID"), "{}", stderr(&out));
-    // A subcommand resolves it the same way.
+    // A subcommand resolves it the same way (after reading its file, which must be a snapshot).
+    let snapshot = tempdir().join("min.toml");
+    std::fs::write(&snapshot, "[module]\nname = \"TMCM-142\"\n").unwrap();
     let out = machine.run(&[
         "snapshot",
         "diff",
-        "/nonexistent.toml",
+        snapshot.to_str().unwrap(),
         "--port",
         "usb:dead:beef",
     ]);

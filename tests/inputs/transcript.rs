@@ -188,36 +188,65 @@ fn a_transcript_from_before_headers_is_read_with_a_notice() {
 
 #[test]
 fn a_transcript_that_cannot_be_written_fails_the_run_with_exit_3() {
-    let script = tempdir().join("s.rhai");
+    let dir = tempdir();
+    let script = dir.join("s.rhai");
     std::fs::write(&script, "send(\"GAP 4, 0\");\n").unwrap();
+    let log = dir.join("t.log");
     let faces: [(&str, Vec<&str>, &[u8]); 3] = [
-        ("-c", vec!["--log", "/dev/full", "-c", "GAP 4, 0"], b""),
-        ("stdin", vec!["--log", "/dev/full"], b"GAP 4, 0\n"),
-        ("run", vec!["run", arg(&script), "--log", "/dev/full"], b""),
+        ("-c", vec!["--log", arg(&log), "-c", "GAP 4, 0"], b""),
+        ("stdin", vec!["--log", arg(&log)], b"GAP 4, 0\n"),
+        ("run", vec!["run", arg(&script), "--log", arg(&log)], b""),
     ];
     for (face, args, input) in faces {
-        let out = run_piped(&args, input.to_vec());
-        assert_eq!(out.code, 3, "{face}: {}", out.stderr());
-        assert!(
-            out.stderr()
-                .contains("cannot write the transcript /dev/full: "),
-            "{face}: {}",
-            out.stderr()
-        );
+        // No room at all: the header cannot be written.
+        let mut command = with_disk_of(0, &args);
+        let out = piped(&mut command, input);
+        assert_eq!(code(&out), 3, "{face}: {}", stderr(&out));
+        let expected = format!("cannot write the transcript {}: ", log.display());
+        assert!(stderr(&out).contains(&expected), "{face}: {}", stderr(&out));
         assert!(out.stdout.is_empty(), "{face}: nothing ran");
     }
+    // A device is no transcript: refused before anything runs.
+    let out = run_piped(&["--log", "/dev/full", "-c", "GAP 4, 0"], Vec::new());
+    assert_eq!(out.code, 2, "{}", out.stderr());
+    assert!(
+        out.stderr()
+            .contains("/dev/full: a character device, not a regular file"),
+        "{}",
+        out.stderr()
+    );
     let out = run_piped(&[], b"GAP 4, 0\n:log /dev/full\nGAP 5, 0\n".to_vec());
-    assert_eq!(out.code, 3, "{}", out.stderr());
+    assert_eq!(out.code, 2, "{}", out.stderr());
     assert_eq!(out.stdout, "BA 100 1000000\n");
+}
+
+/// Runs `command` with `input` on its stdin.
+fn piped(command: &mut Command, input: &[u8]) -> std::process::Output {
+    use std::io::Write;
+    let mut child = command
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(input).unwrap();
+    child.wait_with_output().unwrap()
 }
 
 /// `tmclsh ARGS` in a shell whose file size limit is a few blocks, as on a full disk: the
 /// transcript fails after its first lines (SIGXFSZ ignored, so the write fails with EFBIG).
 fn with_small_disk(args: &[&str]) -> Command {
+    with_disk_of(4, args)
+}
+
+/// `tmclsh ARGS` with a file size limit of `blocks`.
+fn with_disk_of(blocks: u32, args: &[&str]) -> Command {
     let mut command = Command::new("sh");
     command
         .arg("-c")
-        .arg("trap '' XFSZ; ulimit -f 4; exec \"$0\" \"$@\"")
+        .arg(format!(
+            "trap '' XFSZ; ulimit -f {blocks}; exec \"$0\" \"$@\""
+        ))
         .arg(bin())
         .args(args)
         .env("NO_COLOR", "1");
@@ -311,7 +340,7 @@ fn the_repl_says_the_transcript_failed_and_goes_on_without_it() {
         spawn_command(command, Some(crate::util::EXPECT_MS)).expect("tmclsh starts in a pty");
     p.exp_string("A> ").unwrap();
     p.send_line(":log /dev/full").unwrap();
-    p.exp_string("cannot write the transcript /dev/full")
+    p.exp_string("/dev/full: a character device, not a regular file")
         .unwrap();
     p.send_line(&format!(":log {}", arg(&log))).unwrap();
     p.exp_string("logging to").unwrap();

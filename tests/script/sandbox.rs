@@ -191,13 +191,13 @@ fn fifos_devices_and_huge_files_are_refused_without_blocking() {
             "snapshot_save",
         ] {
             let out = run_script(&dir, &format!("{call}(\"{name}\");"), &[]);
-            refused(&out, "a FIFO, not a regular file", "secret");
+            refused(&out, "a named pipe (FIFO), not a regular file", "secret");
         }
     }
     let out = run_script(&dir, "download(\"/dev/zero\");", &[]);
     refused(&out, "outside the directories", "secret");
     let out = run_script(&dir, "download(\"/dev/zero\");", &["--allow-dir", "/dev"]);
-    refused(&out, "a device, not a regular file", "secret");
+    refused(&out, "a character device, not a regular file", "secret");
 
     let huge = dir.join("huge.tmc");
     std::fs::File::create(&huge)
@@ -205,14 +205,14 @@ fn fifos_devices_and_huge_files_are_refused_without_blocking() {
         .set_len(2 << 30)
         .unwrap(); // sparse
     let out = run_script(&dir, "download(\"huge.tmc\");", &[]);
-    refused(&out, "larger than 4096 KiB", "secret");
+    refused(&out, "larger than 4 MiB", "secret");
     let huge_toml = dir.join("huge.toml");
     std::fs::File::create(&huge_toml)
         .unwrap()
         .set_len(2 << 30)
         .unwrap();
     let out = run_script(&dir, "snapshot_diff(\"huge.toml\");", &[]);
-    refused(&out, "larger than 4096 KiB", "secret");
+    refused(&out, "larger than 4 MiB", "secret");
 }
 
 #[test]

@@ -56,17 +56,98 @@ pub(super) fn user_file() -> Option<PathBuf> {
 }
 
 /// The project's configuration file: `tmclsh.toml` in `from` or the nearest directory above it.
+/// Anything there counts, so a broken file (a directory, a FIFO, a symlink loop, unreadable) is
+/// an error naming it rather than skipped for one further up.
 pub(super) fn project_file(from: &Path) -> Option<PathBuf> {
     from.ancestors()
         .map(|dir| dir.join("tmclsh.toml"))
-        .find(|file| file.is_file())
+        .find(|file| file.symlink_metadata().is_ok())
 }
 
-/// Reads and checks one file against the options of `cmd`.
-pub(super) fn read(path: &Path, scope: Scope, cmd: &Command) -> Result<Vec<Entry>, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let at = |offset: usize| format!("{}:{}", path.display(), line_at(&text, offset));
-    let root = DeTable::parse(&text).map_err(|e| {
+/// What reading a configuration file gave.
+pub(super) enum Read {
+    /// Its values, checked.
+    Entries(Vec<Entry>),
+    /// Not used, and why: a project file another user could have written.
+    Ignored(String),
+}
+
+/// Reads and checks one file against the options of `cmd`; a project file is used only when it
+/// is trusted (see [`distrust`]).
+pub(super) fn read(path: &Path, scope: Scope, cmd: &Command) -> Result<Read, String> {
+    use crate::file::{Follow, Mode};
+    let file = crate::file::open(path, Mode::Read, Follow::Yes).map_err(|e| e.to_string())?;
+    if scope == Scope::Project {
+        let opened = file
+            .metadata()
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let link = path.symlink_metadata().ok();
+        if let Some(why) = distrust(&opened).or_else(|| link.as_ref().and_then(distrust_link)) {
+            return Ok(Read::Ignored(why));
+        }
+    }
+    let bytes = crate::file::read_opened(&file, path, crate::file::READ_LIMIT)
+        .map_err(|e| e.to_string())?;
+    let text =
+        String::from_utf8(bytes).map_err(|_| format!("{}: not UTF-8 text", path.display()))?;
+    parse(path, &text, scope, cmd).map(Read::Entries)
+}
+
+/// Why a project file may not be trusted, as git's `safe.directory` reasons: one owned by
+/// another user (root aside), or one others may write, may have been planted — in a shared
+/// directory such as the system's temporary one — to redirect everyone's port and logs. A file
+/// writable by its group is trusted only when that group is the user's own (the user-private
+/// groups of a umask of 002).
+#[cfg(unix)]
+fn distrust(meta: &std::fs::Metadata) -> Option<String> {
+    use std::os::unix::fs::MetadataExt;
+    let me = nix::unistd::geteuid().as_raw();
+    let mode = meta.mode() & 0o777;
+    if meta.uid() != me && meta.uid() != 0 {
+        return Some(format!(
+            "owned by uid {}, not by you (uid {me}) or root",
+            meta.uid()
+        ));
+    }
+    if mode & 0o002 != 0 {
+        return Some(format!("writable by everyone (mode {mode:03o})"));
+    }
+    if mode & 0o020 != 0 && meta.gid() != nix::unistd::getegid().as_raw() {
+        return Some(format!(
+            "writable by group {} (mode {mode:03o})",
+            meta.gid()
+        ));
+    }
+    None
+}
+
+/// A symlink in the project file's place is trusted only when its owner is.
+#[cfg(unix)]
+fn distrust_link(meta: &std::fs::Metadata) -> Option<String> {
+    use std::os::unix::fs::MetadataExt;
+    let me = nix::unistd::geteuid().as_raw();
+    (meta.file_type().is_symlink() && meta.uid() != me && meta.uid() != 0).then(|| {
+        format!(
+            "a symlink owned by uid {}, not by you (uid {me}) or root",
+            meta.uid()
+        )
+    })
+}
+
+#[cfg(not(unix))]
+fn distrust(_meta: &std::fs::Metadata) -> Option<String> {
+    None
+}
+
+#[cfg(not(unix))]
+fn distrust_link(_meta: &std::fs::Metadata) -> Option<String> {
+    None
+}
+
+/// Checks one file's text against the options of `cmd`.
+fn parse(path: &Path, text: &str, scope: Scope, cmd: &Command) -> Result<Vec<Entry>, String> {
+    let at = |offset: usize| format!("{}:{}", path.display(), line_at(text, offset));
+    let root = DeTable::parse(text).map_err(|e| {
         let place = e
             .span()
             .map_or_else(|| path.display().to_string(), |s| at(s.start));
@@ -92,7 +173,7 @@ pub(super) fn read(path: &Path, scope: Scope, cmd: &Command) -> Result<Vec<Entry
             key,
             value,
             file: path.to_path_buf(),
-            line: line_at(&text, name.span().start),
+            line: line_at(text, name.span().start),
             scope,
         });
     }
@@ -173,7 +254,7 @@ fn expand_home(path: &str) -> Cow<'_, Path> {
 
 /// Whether the option `id` of `cmd` takes `value`, by the option's own value parser (so a file
 /// can never hold what the command line would refuse), and if not, why.
-fn option_accepts(cmd: &Command, id: &str, value: &str) -> Result<(), String> {
+pub(super) fn option_accepts(cmd: &Command, id: &str, value: &str) -> Result<(), String> {
     let arg = cmd
         .get_arguments()
         .find(|a| a.get_id() == id)

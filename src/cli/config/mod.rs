@@ -9,6 +9,7 @@
 //! only what was written on the command line): a configured port does not bother `tmclsh asm`.
 //! `tmclsh config` shows every value and where it came from.
 
+mod env;
 mod file;
 
 use std::io::{self, Write};
@@ -17,10 +18,13 @@ use std::path::PathBuf;
 use clap::parser::ValueSource;
 use clap::{ArgMatches, Command};
 
+use crate::dialect::Dialect;
 use crate::exit::Exit;
 
 pub use file::Scope;
-use file::{Entry, project_file, user_file};
+use file::{Entry, Read, project_file, user_file};
+
+pub(super) use env::apply as apply_environment;
 
 use super::connection::ModuleArgs;
 use super::position::leaf_matches;
@@ -126,6 +130,8 @@ pub struct Defaults {
     project: Option<PathBuf>,
     /// Where the project file was looked for.
     searched_from: Option<PathBuf>,
+    /// The project file found and not used, and why.
+    ignored: Option<(PathBuf, String)>,
 }
 
 impl Defaults {
@@ -134,19 +140,36 @@ impl Defaults {
         Defaults::default()
     }
 
-    /// Reads the user's and the project's files; a file with an unknown key or a bad value is an
-    /// error naming the file and line (exit 2).
+    /// Reads the user's and the project's files; a file with an unknown key or a bad value, or
+    /// one that is not a regular file, is an error naming the file (and line) (exit 2). A project
+    /// file that is not trusted (another user's, or writable by others) is ignored with a note on
+    /// stderr.
     pub fn load() -> Result<Defaults, String> {
         let cwd = std::env::current_dir().ok();
         let user = user_file();
-        let project = cwd.as_deref().and_then(project_file);
+        let mut project = cwd.as_deref().and_then(project_file);
         let cmd = super::command();
         let mut entries = Vec::new();
-        if let Some(path) = project.as_deref() {
-            entries.extend(file::read(path, Scope::Project, &cmd)?);
+        let mut ignored = None;
+        if let Some(path) = project.clone() {
+            match file::read(&path, Scope::Project, &cmd)? {
+                Read::Entries(read) => entries.extend(read),
+                Read::Ignored(why) => {
+                    super::diagnose(&format!(
+                        "ignored {}: {why}; a tmclsh.toml must be yours and writable only \
+                         by you (chown it, or chmod go-w)",
+                        path.display()
+                    ));
+                    ignored = Some((path, why));
+                    project = None;
+                }
+            }
         }
-        if let Some(path) = user.as_deref().filter(|p| p.is_file()) {
-            let user_entries = file::read(path, Scope::User, &cmd)?;
+        // Anything at the user's path is read, so a directory or a FIFO there is named.
+        if let Some(path) = user.as_deref().filter(|p| p.symlink_metadata().is_ok()) {
+            let Read::Entries(user_entries) = file::read(path, Scope::User, &cmd)? else {
+                unreachable!("only project files are ignored")
+            };
             let overridden = |e: &Entry| entries.iter().any(|p: &Entry| p.key.name == e.key.name);
             let kept: Vec<Entry> = user_entries
                 .into_iter()
@@ -159,6 +182,7 @@ impl Defaults {
             user,
             project,
             searched_from: cwd,
+            ignored,
         })
     }
 
@@ -221,11 +245,71 @@ struct Line {
     value: Option<String>,
     /// Where it came from.
     origin: String,
+    /// Why it has no effect, if it has none: another setting wins (`--tcp` over a port), or the
+    /// option belongs to the other dialect (a TMCL `profile` under `--protocol smd4`).
+    unused: Option<String>,
+}
+
+/// Where the value of `key` in `leaf` came from: "command line", "environment TMCLSH_PORT",
+/// "project /home/me/rig/tmclsh.toml:1", "built-in".
+fn origin(leaf: &ArgMatches, key: &Key, defaults: &Defaults) -> String {
+    match leaf.value_source(key.id) {
+        Some(ValueSource::CommandLine) => "command line".to_string(),
+        Some(ValueSource::EnvVariable) => {
+            let cmd = super::command();
+            let var = cmd
+                .get_arguments()
+                .find(|a| a.get_id() == key.id)
+                .and_then(|a| a.get_env())
+                .map(|v| v.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            format!("environment {var}")
+        }
+        Some(ValueSource::DefaultValue) => match defaults.entry(key) {
+            Some(e) => format!("{} {}:{}", e.scope.name(), e.file.display(), e.line),
+            None => "built-in".to_string(),
+        },
+        _ => "built-in".to_string(),
+    }
+}
+
+/// Where the value of the option `id` came from when not from the command line (so a message
+/// about it can say: `environment TMCLSH_PROFILE`, `project FILE:LINE`), else `None`.
+pub fn origin_of(matches: &ArgMatches, id: &str, defaults: &Defaults) -> Option<String> {
+    let key = KEYS.iter().find(|k| k.id == id)?;
+    let leaf = leaf_matches(matches);
+    let leaf = if leaf.try_contains_id(id).unwrap_or(false) {
+        leaf
+    } else {
+        matches
+    };
+    match origin(leaf, key, defaults).as_str() {
+        "command line" | "built-in" => None,
+        other => Some(other.to_string()),
+    }
 }
 
 /// Fills in the report of a parsed `tmclsh config` from its matches.
 pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults) {
     let leaf = leaf_matches(matches);
+    let tcp = leaf.get_one::<String>("tcp");
+    let dialect = leaf.get_one::<&'static Dialect>("protocol").copied();
+    let unused = |key: &Key| -> Option<String> {
+        if let (Some(tcp), "port" | "baud") = (tcp, key.id) {
+            return Some(format!("--tcp {} wins", crate::escape::escape_control(tcp)));
+        }
+        let dialect = dialect?;
+        let owner = crate::dialect::DIALECTS
+            .iter()
+            .find(|d| d.own_options.contains(&key.id))?;
+        (owner.name != dialect.name).then(|| {
+            format!(
+                "{} only; the protocol is {}",
+                owner.name.to_uppercase(),
+                dialect.name
+            )
+        })
+    };
     args.report = KEYS
         .iter()
         .map(|key| {
@@ -235,29 +319,18 @@ pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults)
                 .flatten()
                 .and_then(|mut values| values.next())
                 .map(|v| v.to_string_lossy().into_owned());
-            let origin = match leaf.value_source(key.id) {
-                Some(ValueSource::CommandLine) => "command line".to_string(),
-                Some(ValueSource::EnvVariable) => {
-                    let cmd = super::command();
-                    let var = cmd
-                        .get_arguments()
-                        .find(|a| a.get_id() == key.id)
-                        .and_then(|a| a.get_env())
-                        .map(|v| v.to_string_lossy().into_owned())
-                        .unwrap_or_default();
-                    format!("environment {var}")
-                }
-                Some(ValueSource::DefaultValue) => match defaults.entry(key) {
-                    Some(e) => format!("{} {}:{}", e.scope.name(), e.file.display(), e.line),
-                    None => "built-in".to_string(),
-                },
-                _ => "built-in".to_string(),
-            };
+            let origin = origin(leaf, key, defaults);
             let value = raw.map(|raw| match key.kind {
                 Kind::Integer => raw,
                 _ => toml::Value::String(raw).to_string(),
             });
-            Line { key, value, origin }
+            let unused = value.as_ref().and_then(|_| unused(key));
+            Line {
+                key,
+                value,
+                origin,
+                unused,
+            }
         })
         .collect();
     args.defaults = Some(defaults.clone());
@@ -270,18 +343,30 @@ pub fn run(args: &ConfigArgs, out: &mut dyn Write) -> io::Result<Exit> {
         out,
         "# precedence: command line > environment > project file > user file > built-in"
     )?;
-    match (&defaults.project, &defaults.searched_from) {
-        (Some(path), _) => writeln!(out, "# project file: {}", path.display())?,
-        (None, Some(dir)) => writeln!(
+    match (
+        &defaults.project,
+        &defaults.ignored,
+        &defaults.searched_from,
+    ) {
+        (Some(path), _, _) => writeln!(out, "# project file: {}", path.display())?,
+        (None, Some((path, why)), _) => writeln!(
+            out,
+            "# project file: none ({} ignored: {why})",
+            path.display()
+        )?,
+        (None, None, Some(dir)) => writeln!(
             out,
             "# project file: none (no tmclsh.toml in {} or above)",
             dir.display()
         )?,
-        (None, None) => writeln!(out, "# project file: none")?,
+        (None, None, None) => writeln!(out, "# project file: none")?,
     }
     match &defaults.user {
         Some(path) if path.is_file() => writeln!(out, "# user file: {}", path.display())?,
-        Some(path) => writeln!(out, "# user file: none ({} does not exist)", path.display())?,
+        Some(path) => match crate::file::describe_path(path).as_str() {
+            "missing" => writeln!(out, "# user file: none ({} does not exist)", path.display())?,
+            what => writeln!(out, "# user file: none ({} is {what})", path.display())?,
+        },
         None => writeln!(out, "# user file: none (no home directory)")?,
     }
     let width = args
@@ -294,7 +379,10 @@ pub fn run(args: &ConfigArgs, out: &mut dyn Write) -> io::Result<Exit> {
         match &line.value {
             Some(value) => {
                 let setting = format!("{} = {value}", line.key.name);
-                writeln!(out, "{setting:<width$}  # {}", line.origin)?;
+                match &line.unused {
+                    None => writeln!(out, "{setting:<width$}  # {}", line.origin)?,
+                    Some(why) => writeln!(out, "# {setting} ({}) is not used: {why}", line.origin)?,
+                }
             }
             None => writeln!(out, "# {} is not set: {}", line.key.name, line.key.unset)?,
         }
@@ -326,7 +414,9 @@ mod tests {
         let file = place.join("tmclsh.toml");
         std::fs::write(&file, "baud = 300\nprotocol = \"smd4\"\n").unwrap();
         let cmd = super::super::command();
-        let entries = file::read(&file, Scope::Project, &cmd).unwrap();
+        let Ok(file::Read::Entries(entries)) = file::read(&file, Scope::Project, &cmd) else {
+            panic!("the file is read");
+        };
         let defaults = Defaults {
             entries,
             ..Defaults::none()

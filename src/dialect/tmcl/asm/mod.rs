@@ -167,6 +167,15 @@ pub enum LoadError {
     },
 }
 
+/// A source file's bytes as text: not UTF-8 only in comments (old Windows files), so invalid
+/// bytes are replaced; a byte order mark skipped; CR LF and CR-only line ends (old Mac
+/// editors, TMCL-IDE exports) made LF, so every line is its own.
+pub fn source_text(bytes: &[u8]) -> String {
+    let text = String::from_utf8_lossy(bytes);
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+    text.replace("\r\n", "\n").replace('\r', "\n")
+}
+
 /// The instructions of a program file or of source text, told apart by the file's first bytes
 /// (not its name): assembled if source, checked as the assembler would if binary.
 pub fn load_program(
@@ -175,7 +184,7 @@ pub fn load_program(
     profile: &Profile,
 ) -> Result<Vec<Instruction>, LoadError> {
     if !is_program_file(bytes) {
-        let source = String::from_utf8_lossy(bytes);
+        let source = source_text(bytes);
         return assemble(&source, name, profile)
             .map(|p| p.instructions)
             .map_err(LoadError::Source);

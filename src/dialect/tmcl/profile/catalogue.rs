@@ -160,7 +160,8 @@ pub fn names() -> Vec<String> {
 }
 
 /// What `--profile NAME|FILE` names: a built-in profile by name, alias or module number first,
-/// then a file. A value that is neither is refused with the nearest name.
+/// then a file (anything at the path, so a directory or a FIFO is refused as what it is). A
+/// value that is neither is refused with the nearest name.
 pub fn resolve(arg: &Path) -> Result<Arc<Profile>, ProfileError> {
     let text = arg.to_string_lossy();
     if let Some(profile) = by_name(&text) {
@@ -169,7 +170,7 @@ pub fn resolve(arg: &Path) -> Result<Arc<Profile>, ProfileError> {
     if let Some(profile) = text.parse::<u32>().ok().and_then(by_module_number) {
         return Ok(profile);
     }
-    if arg.is_file() || looks_like_a_path(&text) {
+    if arg.symlink_metadata().is_ok() || looks_like_a_path(&text) {
         return Profile::from_file(arg).map(Arc::new);
     }
     let suggestion = suggest::nearest(

@@ -165,13 +165,8 @@ pub struct Profile {
 #[derive(Debug, thiserror::Error)]
 pub enum ProfileError {
     /// The file could not be read.
-    #[error("cannot read profile {path}: {source}")]
-    Read {
-        /// The file.
-        path: String,
-        /// What the OS said.
-        source: std::io::Error,
-    },
+    #[error("cannot read profile {0}")]
+    Read(crate::file::FileError),
     /// The file is not valid TOML, does not follow the schema, or has rows that cannot be right.
     #[error(
         "profile {path} refused (schema in the README, \"Module profiles\"):\n  {}",
@@ -251,10 +246,8 @@ impl Profile {
 
     /// Loads a profile file; a file without `[[command]]` rows uses the built-in command table.
     pub fn from_file(path: &Path) -> Result<Profile, ProfileError> {
-        let text = std::fs::read_to_string(path).map_err(|source| ProfileError::Read {
-            path: path.display().to_string(),
-            source,
-        })?;
+        let text =
+            crate::file::read_text(path, crate::file::READ_LIMIT).map_err(ProfileError::Read)?;
         let mut profile = Profile::from_text(&text, &path.display().to_string())?;
         profile.source = Some(path.to_path_buf());
         profile.name = path

@@ -21,8 +21,8 @@ fn failed(error: impl Into<Failure>) -> SessionError {
 /// Loads a program file or assembles a source file.
 pub fn load(path: &Path, profile: &Profile) -> Result<Vec<Instruction>, SessionError> {
     let name = path.display().to_string();
-    let bytes = std::fs::read(path)
-        .map_err(|e| failed(Failure::refused(format!("cannot read {name}: {e}"))))?;
+    let bytes = crate::file::read(path, crate::file::READ_LIMIT)
+        .map_err(|e| failed(Failure::refused(format!("cannot read {e}"))))?;
     asm::load_program(&bytes, &name, profile).map_err(|e| failed(Failure::refused(e.to_string())))
 }
 
