@@ -7,8 +7,9 @@
 //! request is taken. A request whose exchange failed may still be echoed and answered late, so an
 //! identical request after it is spelled differently — spaces after the address character, which
 //! the manual allows (`A GAP 1, 0`) — and a late echo cannot pass for its echo. Without an echo
-//! nothing in a reply says which request it answers; the wire's resynchronisation after a failure
-//! is what keeps a late reply out (see `session/wire.rs`).
+//! nothing in a reply says which request it answers: after a failure the next request to that
+//! module is preceded by a barrier the module refuses, and every reply before that refusal is
+//! discarded (see `barrier.rs`).
 
 use std::time::{Duration, Instant};
 
