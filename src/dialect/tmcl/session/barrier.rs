@@ -8,8 +8,9 @@
 //! - **Binary direct mode**: a reply frame names its module and command. The session keeps, per
 //!   module, the commands whose replies may still come ([`LateFrames`]); a request whose command is
 //!   not among them cannot take a late reply and goes out as it is. Otherwise the barrier is a
-//!   read with a command none of them has (136 type 1, 135, GAP 1), taken only from a frame of
-//!   that command.
+//!   read with a command none of them has (136 type 1, 135, 134), taken only from a frame of
+//!   that command. All three are control functions, so a module in download mode executes
+//!   them instead of storing them.
 //! - **ASCII without echo**: a reply names only its module. The barrier is `GAP 1, 255`, which a
 //!   module refuses with status 4 (there is no motor 255), a status no validated request gets
 //!   from a module its profile describes; every other reply before it is discarded.
@@ -27,11 +28,12 @@ use crate::session::SessionError;
 use super::TmclSession;
 
 /// The reads a binary barrier is made of, in order of preference: each is answered by every
-/// module (a module without one refuses it, which is an answer too) and changes nothing.
+/// module (a module without one refuses it, naming the command, which is an answer too) and
+/// changes nothing: the version number, the program's status, the program memory at 0.
 const BINARY_BARRIERS: [(Opcode, u8, u8); 3] = [
     (Opcode::FirmwareVersion, 1, 0),
     (Opcode::ApplicationStatus, 0, 0),
-    (Opcode::Gap, 1, 0),
+    (Opcode::ReadMemory, 0, 0),
 ];
 
 /// Barriers one request may need at most: each answered one resolves at least the oldest
@@ -259,13 +261,13 @@ mod tests {
         late.failed(1, Opcode::FirmwareVersion);
         assert_eq!(late.barrier(1).command, Opcode::ApplicationStatus);
         late.failed(1, Opcode::ApplicationStatus);
-        assert_eq!(late.barrier(1).command, Opcode::Gap);
-        late.failed(1, Opcode::Gap);
+        assert_eq!(late.barrier(1).command, Opcode::ReadMemory);
+        late.failed(1, Opcode::ReadMemory);
         // Every kind in doubt: the one whose first place is latest resolves the most.
-        assert_eq!(late.barrier(1).command, Opcode::Gap);
-        late.answered(1, Opcode::Gap);
-        assert!(!late.in_doubt(1, &ggp()), "GGP came before the first GAP");
-        assert!(late.in_doubt(1, &Instruction::new(Opcode::Gap, 1, 0, 0)));
+        assert_eq!(late.barrier(1).command, Opcode::ReadMemory);
+        late.answered(1, Opcode::ReadMemory);
+        assert!(!late.in_doubt(1, &ggp()), "GGP came before the first 134");
+        assert!(late.in_doubt(1, &Instruction::new(Opcode::ReadMemory, 0, 0, 0)));
     }
 
     #[test]
