@@ -297,6 +297,9 @@ fn in_a_text_item_only_one_printable_character_changed_counts_as_undetectable() 
         ("[\"24044.12\"]", "[\"240A4.12\"]"),
         ("[\"24044.12\"]", "[\"24044=12\"]"),
         ("[\"24044.12\"]", "[\"!4044.12\"]"),
+        // A byte corrupted into a backslash, which the script prints escaped.
+        ("[\"24044.12\"]", "[\"24044.\\\\2\"]"),
+        ("[\"24044.12\"]", "[\"24044.\\\"2\"]"),
     ] {
         assert!(one_character_changed(got, truth), "{got} for {truth}");
     }

@@ -418,15 +418,30 @@ pub fn one_digit_changed(got: &str, truth: &str) -> bool {
 
 /// Whether `got` is `truth` with one printable character changed into another printable one:
 /// all a client can see of a corrupted byte in a text item no grammar constrains (see
-/// [`SMD4_TEXT`]).
+/// [`SMD4_TEXT`]). Both are compared as the items hold them, not as the script prints them (a
+/// backslash or quote is printed escaped).
 pub fn one_character_changed(got: &str, truth: &str) -> bool {
-    let printable = |c: u8| c.is_ascii_graphic() && c != b'"' && c != b'\\';
-    let mut differing = got.bytes().zip(truth.bytes()).filter(|(g, t)| g != t);
+    let (got, truth) = (unescape(got), unescape(truth));
+    let printable = |c: u8| c.is_ascii_graphic() && c != b',';
+    let mut differing = got.iter().zip(truth.iter()).filter(|(g, t)| g != t);
     got.len() == truth.len()
         && matches!(
             (differing.next(), differing.next()),
-            (Some((g, t)), None) if printable(g) && printable(t)
+            (Some((&g, &t)), None) if printable(g) && printable(t)
         )
+}
+
+/// A printed string item as the item holds it: `\\` and `\"` are one character each.
+fn unescape(printed: &str) -> Vec<u8> {
+    let mut out = Vec::with_capacity(printed.len());
+    let mut bytes = printed.bytes();
+    while let Some(b) = bytes.next() {
+        match b {
+            b'\\' => out.extend(bytes.next()),
+            _ => out.push(b),
+        }
+    }
+    out
 }
 
 /// `8-4-4-4-12` hexadecimal digits.
