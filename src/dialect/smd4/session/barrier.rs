@@ -9,7 +9,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::dialect::smd4::protocol::{ErrorCode, Expectation, Request, Smd4Reply, parse_reply};
-use crate::session::SessionError;
+use crate::session::{SessionError, barrier_failed};
 
 use super::{DriveName, Smd4Session};
 
@@ -114,24 +114,5 @@ impl Smd4Session {
                 Err(barrier_failed(&shown, error))
             }
         }
-    }
-}
-
-/// A barrier that failed fails the request it was for, saying so.
-fn barrier_failed(barrier: &str, error: SessionError) -> SessionError {
-    const AFTER: &str = "sent because an earlier request failed and its reply may still come; \
-                         the request was not sent, and the next one puts another barrier first";
-    match error {
-        SessionError::Timeout {
-            module, timeout, ..
-        } => SessionError::Timeout {
-            module,
-            timeout,
-            hint: format!(" to the barrier '{barrier}', {AFTER}"),
-        },
-        SessionError::Link(message) => {
-            SessionError::Link(format!("{message} (the barrier '{barrier}', {AFTER})"))
-        }
-        other => other,
     }
 }

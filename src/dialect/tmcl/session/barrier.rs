@@ -23,7 +23,7 @@ use std::collections::BTreeMap;
 
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode, Status};
-use crate::session::SessionError;
+use crate::session::{SessionError, barrier_failed};
 
 use super::TmclSession;
 
@@ -187,25 +187,6 @@ impl TmclSession {
              everything before it is discarded",
             ModuleName(module)
         ));
-    }
-}
-
-/// A barrier that failed fails the request it was for, saying so.
-fn barrier_failed(barrier: &str, error: SessionError) -> SessionError {
-    const AFTER: &str = "sent because an earlier request failed and its reply may still come; \
-                         the request was not sent, and the next one puts another barrier first";
-    match error {
-        SessionError::Timeout {
-            module, timeout, ..
-        } => SessionError::Timeout {
-            module,
-            timeout,
-            hint: format!(" to the barrier '{barrier}', {AFTER}"),
-        },
-        SessionError::Link(message) => {
-            SessionError::Link(format!("{message} (the barrier '{barrier}', {AFTER})"))
-        }
-        other => other,
     }
 }
 
