@@ -493,7 +493,7 @@ impl TmclSession {
 
 /// Whether a reply is what the ASCII barrier is answered with.
 fn barrier_like(reply: &AsciiReply) -> bool {
-    reply.status == super::barrier::ASCII_BARRIER_STATUS
+    super::barrier::refuses_barrier(reply.status)
 }
 
 /// Whether a request may leave the module in binary mode (BIN, typed or sent unvalidated).

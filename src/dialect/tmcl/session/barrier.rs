@@ -12,8 +12,9 @@
 //!   that command. All three are control functions, so a module in download mode executes
 //!   them instead of storing them.
 //! - **ASCII without echo**: a reply names only its module. The barrier is `GAP 1, 255`, which a
-//!   module refuses with status 4 (there is no motor 255), a status no validated request gets
-//!   from a module its profile describes; every other reply before it is discarded.
+//!   module refuses with status 4 (there is no motor 255; 2 or 3 are taken too), a refusal no
+//!   validated request gets from a module its profile describes; every other reply before it is
+//!   discarded.
 //!
 //! A barrier that is not answered fails the request (unsent) with a clear error; the line stays
 //! in doubt and the next request puts another barrier first. Barriers are never sent on a clean
@@ -46,8 +47,15 @@ const KEPT: usize = 64;
 /// The ASCII barrier after the address character: actual position of a motor no module has.
 pub(super) const ASCII_BARRIER: &str = "GAP 1, 255";
 
-/// The status a module refuses the ASCII barrier with (invalid value: the motor number).
-pub(super) const ASCII_BARRIER_STATUS: Status = Status::InvalidValue;
+/// Whether a status is how a module refuses the ASCII barrier: 4 (invalid value: the motor
+/// number), or 2 or 3 from a firmware that finds fault with the line otherwise. No request
+/// validated against the module's profile gets any of them.
+pub(super) fn refuses_barrier(status: Status) -> bool {
+    matches!(
+        status,
+        Status::InvalidValue | Status::WrongType | Status::InvalidCommand
+    )
+}
 
 /// Binary requests whose reply frame may still come, per module: their commands, oldest first.
 #[derive(Debug, Default)]
