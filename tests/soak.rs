@@ -102,6 +102,73 @@ fn soak_smd4_addressed() {
     soak(Target::Smd4Addressed);
 }
 
+// Binary direct mode: a reply frame names its module and command, and carries a checksum.
+#[test]
+fn soak_tmcl_binary() {
+    soak(Target::TmclBinary);
+}
+
+/// Reads per late-reply cell.
+const LATE_READS: u64 = 2000;
+
+/// Replies dropped and replies held back 250 ms, 2 % each: past the timeout (100 ms) and the
+/// quiet wait after it (as long), so a late reply comes while the next request's answer is
+/// awaited — the case a quiet line cannot rule out, which the barrier after a failure must.
+fn late_plan() -> Plan {
+    Plan {
+        reads: LATE_READS,
+        rate: 0.02,
+        timeout_ms: 100,
+        delay_ms: 250,
+        seed: 12,
+    }
+}
+
+/// Runs `target`'s late-reply cell: every read the truth or a reported failure.
+fn late_replies(target: Target) {
+    let plan = late_plan();
+    let counts = run_cell(&bin(), target, Fault::DropDelay, &plan);
+    let report = format!(
+        "{} / {}: {} {:?}",
+        target.name(),
+        Fault::DropDelay.name(),
+        counts.summary(),
+        counts.examples
+    );
+    println!("{report}");
+    assert_eq!(counts.reads, plan.reads);
+    assert!(
+        counts.injected.dropped > 0 && counts.injected.delayed > 10,
+        "the cell injected late replies: {report}"
+    );
+    assert_eq!(
+        counts.silent_wrong, 0,
+        "late replies taken for the answer to a later request: {report}"
+    );
+    assert_eq!(
+        (counts.device, counts.other),
+        (0, 0),
+        "a barrier's refusal (or a late one) taken for the module's: {report}"
+    );
+}
+
+// A late frame names the same module and command as the next request's answer when the request is
+// a read of another type or bank: the barrier after a failure keeps it out.
+#[test]
+fn late_replies_tmcl_binary() {
+    late_replies(Target::TmclBinary);
+}
+
+#[test]
+fn late_replies_tmcl_no_echo() {
+    late_replies(Target::TmclNone);
+}
+
+#[test]
+fn late_replies_smd4() {
+    late_replies(Target::Smd4);
+}
+
 // The soak's count of device errors can see one: the same loop, its reads replaced by a request
 // the module refuses (there is no parameter type 200: status 3), run on the built-in simulator.
 #[test]
@@ -230,6 +297,9 @@ fn in_a_text_item_only_one_printable_character_changed_counts_as_undetectable() 
         ("[\"24044.12\"]", "[\"240A4.12\"]"),
         ("[\"24044.12\"]", "[\"24044=12\"]"),
         ("[\"24044.12\"]", "[\"!4044.12\"]"),
+        // A byte corrupted into a backslash, which the script prints escaped.
+        ("[\"24044.12\"]", "[\"24044.\\\\2\"]"),
+        ("[\"24044.12\"]", "[\"24044.\\\"2\"]"),
     ] {
         assert!(one_character_changed(got, truth), "{got} for {truth}");
     }

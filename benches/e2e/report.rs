@@ -169,7 +169,7 @@ within the repetitions, so that a busy (or idle) spell of the machine hits both 
    row 2's runs; CPU as in row 2.
 7. **Fault soak**: reads of known values under injected faults; its own section above has the
    method and every cell's counts.
-8. **The documented limit**: the soak's delay cells with replies later than the resync window;
+8. **Late replies**: the soak's delay cells with replies later than the resync window;
    its own section above has the method and every cell's counts.
 ";
 

@@ -96,6 +96,28 @@ pub enum SessionError {
     Failed(#[from] Failure),
 }
 
+/// A barrier that failed fails the request it was for (see `dialect/tmcl/session/barrier.rs`):
+/// the error says so, and keeps what it said about the line.
+pub(crate) fn barrier_failed(barrier: &str, error: SessionError) -> SessionError {
+    const AFTER: &str = "sent because an earlier request failed and its reply may still come; \
+                         the request was not sent, and the next one puts another barrier first";
+    match error {
+        SessionError::Timeout {
+            module,
+            timeout,
+            hint,
+        } => SessionError::Timeout {
+            module,
+            timeout,
+            hint: format!(" to the barrier '{barrier}', {AFTER}{hint}"),
+        },
+        SessionError::Link(message) => {
+            SessionError::Link(format!("{message} (the barrier '{barrier}', {AFTER})"))
+        }
+        other => other,
+    }
+}
+
 impl ExitStatus for SessionError {
     fn exit(&self) -> Exit {
         match self {
@@ -128,5 +150,37 @@ impl From<crate::link::LinkError> for SessionError {
 impl From<std::io::Error> for SessionError {
     fn from(e: std::io::Error) -> Self {
         SessionError::Link(format!("output: {e}"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_failed_barrier_says_so_and_keeps_what_the_error_said() {
+        let timeout = SessionError::Timeout {
+            module: "the drive".into(),
+            timeout: Duration::from_millis(100),
+            hint: " (check the port)".into(),
+        };
+        let text = barrier_failed("TMCLSH:BARRIER", timeout).to_string();
+        assert!(
+            text.starts_with(
+                "no reply from the drive within 100 ms to the barrier 'TMCLSH:BARRIER'"
+            ) && text.contains("the request was not sent")
+                && text.ends_with(" (check the port)"),
+            "{text}"
+        );
+        let noise = barrier_failed("136 1", SessionError::Link("line noise: x".into()));
+        assert!(
+            noise
+                .to_string()
+                .starts_with("line noise: x (the barrier '136 1'")
+        );
+        assert!(matches!(
+            barrier_failed("136 1", SessionError::Interrupted),
+            SessionError::Interrupted
+        ));
     }
 }

@@ -12,6 +12,9 @@
 //!   timeout up to a second, at least 32 byte times), bounded by one more timeout
 //!   if the line never goes quiet. A clean line costs nothing: no exchange waits unless one
 //!   failed. (With an echo, a peer whose late answers have all been seen is trusted at once.)
+//!   A quiet line does not prove that no late answer is still coming: where replies do not name
+//!   their request, the dialects put a barrier on the line before the next request that could
+//!   take one (`dialect/tmcl/session/barrier.rs`, `dialect/smd4/session/barrier.rs`).
 //! - A complete reply is trusted only once the bytes right after it have been seen: a reply cut
 //!   short by a corrupted byte, or glued to more data, is line noise. The wait for them
 //!   ([`Wire::await_more`]) follows the pace at which this reply's bytes arrived, so a link that

@@ -2,7 +2,7 @@
 
 use std::time::Duration;
 
-use super::{Act, BOTH, Corruption, Fake, on, replace_last, run_script, tmclsh, with};
+use super::{Act, BOTH, Corruption, Fake, on, replace_last, run_script, same, tmclsh, with};
 
 /// Long enough that a late reply, due half a timeout after it, lands well inside the wait for a
 /// quiet line on a loaded machine (the late-reply tests depend on that window, ±300 ms).
@@ -47,6 +47,29 @@ fn fails_then_recovers(device: impl Fn() -> Fake, address: &[&str], message: &st
 
 /// With `--address 1` the simulated drive (address 1) answers with its `@1,` prefix.
 const ADDRESSINGS: [&[&str]; 2] = [&[], &["--address", "1"]];
+
+#[test]
+fn a_reply_later_than_the_quiet_wait_is_discarded_before_a_barrier() {
+    // MOTOR:AMAX's reply comes only when the next line goes out, however long the line was
+    // quiet: that line is the barrier (refused with -103), and the reply before its refusal is
+    // discarded instead of being taken for MOTOR:VMAX's (both are two reals).
+    for via in BOTH {
+        for address in ADDRESSINGS {
+            let what = format!("{via:?} {address:?}");
+            let fake = Fake::smd4(via, on("MOTOR:AMAX", 1, || Act::HoldUntilNext(same)));
+            let mut args = vec!["--protocol", "smd4", "--timeout", TIMEOUT_ARG];
+            args.extend_from_slice(address);
+            let run = run_script(&fake, FIRST_FAILS_SECOND_ANSWERS, &args);
+            run.expect(0, &what);
+            assert_eq!(
+                run.lines(),
+                ["failed", "1.0000E+03"],
+                "{what}: {}",
+                run.stderr
+            );
+        }
+    }
+}
 
 #[test]
 fn a_late_reply_is_never_taken_for_the_next_request() {

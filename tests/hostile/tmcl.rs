@@ -96,17 +96,34 @@ fn with_an_echo_even_an_identical_request_takes_only_the_reply_after_its_own_ech
 }
 
 #[test]
-fn the_one_limit_without_an_echo_a_reply_later_than_the_quiet_wait_is_indistinguishable() {
-    // What the README says: with echo off nothing in a reply names its request, so a reply that
-    // comes after the line has been quiet for the resync window is taken by the next request.
-    let fake = Fake::tmcl(
-        super::Via::Pty,
-        on("GAP 1, 0", 1, || Act::HoldUntilNext(stale)),
-    );
-    set_echo(&fake, "none");
-    let run = run_script(&fake, IDENTICAL, &["--timeout", TIMEOUT_ARG]);
-    run.expect(0, "echo off");
-    assert_eq!(run.lines(), ["failed", "777777"], "{}", run.stderr);
+fn without_an_echo_a_reply_later_than_the_quiet_wait_is_discarded_before_a_barrier() {
+    // With echo off nothing in a reply names its request, and this one comes only after the
+    // line has been quiet for the resync window, when the next line goes out: that line is the
+    // barrier (`AGAP 1, 255`, refused with status 4), and the late reply before its refusal is
+    // discarded, not taken by the next request.
+    for via in BOTH {
+        let fake = Fake::tmcl(via, on("GAP 1, 0", 1, || Act::HoldUntilNext(stale)));
+        set_echo(&fake, "none");
+        let log = std::env::temp_dir().join(format!(
+            "tmclsh-hostile-barrier-{}-{via:?}.log",
+            std::process::id()
+        ));
+        let log_arg = log.to_str().unwrap();
+        let run = run_script(
+            &fake,
+            IDENTICAL,
+            &["--timeout", TIMEOUT_ARG, "--log", log_arg],
+        );
+        run.expect(0, "echo off");
+        assert_eq!(run.lines(), ["failed", "0"], "{via:?}: {}", run.stderr);
+        let transcript = std::fs::read_to_string(&log).unwrap();
+        let _ = std::fs::remove_file(&log);
+        assert!(
+            transcript.contains("barrier: AGAP 1, 255 to module 1 (A)")
+                && transcript.contains("777777"),
+            "{via:?}: the barrier and the late reply it discarded are in the transcript:\n{transcript}"
+        );
+    }
 }
 
 /// The reply's value cut short by a byte corrupted into CR: `1000000` read as `100`.

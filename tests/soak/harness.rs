@@ -16,8 +16,8 @@ use std::time::Duration;
 /// How long the simulator may take to answer a console line or print its pty.
 const PATIENCE: Duration = Duration::from_secs(30);
 
-/// The configurations of the matrix: the three TMCL echo modes (global parameter 67) and the SMD4
-/// drive with and without an address.
+/// The configurations of the matrix: the three TMCL echo modes (global parameter 67), TMCL binary
+/// direct mode, and the SMD4 drive with and without an address.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Target {
     /// TMCL, character echo (GP67 = 0).
@@ -30,16 +30,20 @@ pub enum Target {
     Smd4,
     /// SMD4 with `--address 7` (the drive in addressing mode).
     Smd4Addressed,
+    /// TMCL binary direct mode (`--binary`): reply frames name module and command, not the
+    /// request's type or bank.
+    TmclBinary,
 }
 
 impl Target {
-    /// Every configuration, in table order.
-    pub const ALL: [Target; 5] = [
+    /// Every configuration, in table order (binary last: the cells before it keep their seeds).
+    pub const ALL: [Target; 6] = [
         Target::TmclChar,
         Target::TmclLine,
         Target::TmclNone,
         Target::Smd4,
         Target::Smd4Addressed,
+        Target::TmclBinary,
     ];
 
     /// The row label.
@@ -50,6 +54,7 @@ impl Target {
             Target::TmclNone => "TMCL no echo",
             Target::Smd4 => "SMD4",
             Target::Smd4Addressed => "SMD4 --address 7",
+            Target::TmclBinary => "TMCL binary",
         }
     }
 
@@ -62,6 +67,7 @@ impl Target {
         match self {
             Target::Smd4 => vec!["--protocol", "smd4"],
             Target::Smd4Addressed => vec!["--protocol", "smd4", "--address", "7"],
+            Target::TmclBinary => vec!["--binary"],
             _ => vec!["--stay-ascii"],
         }
     }
@@ -78,6 +84,9 @@ pub enum Fault {
     Delay,
     /// All three, each at the rate.
     All,
+    /// Replies dropped, and others held back: the late replies come when the reply to the
+    /// request after a dropped one is awaited (not in [`Fault::ALL`]: its own cells).
+    DropDelay,
 }
 
 impl Fault {
@@ -91,6 +100,7 @@ impl Fault {
             Fault::Corrupt => "corrupt",
             Fault::Delay => "delay",
             Fault::All => "all three",
+            Fault::DropDelay => "drop + delay",
         }
     }
 
@@ -109,6 +119,7 @@ impl Fault {
             Fault::Corrupt => vec![corrupt],
             Fault::Delay => vec![delay],
             Fault::All => vec![drop, corrupt, delay],
+            Fault::DropDelay => vec![drop, delay],
         }
     }
 }
@@ -287,7 +298,11 @@ pub fn run_cell(bin: &Path, target: Target, fault: Fault, plan: &Plan) -> Counts
 /// share their fault pattern and each can be replayed alone.
 pub fn cell_seed(base: u64, target: Target, fault: Fault) -> u64 {
     let row = Target::ALL.iter().position(|t| *t == target).unwrap_or(0) as u64;
-    let column = Fault::ALL.iter().position(|f| *f == fault).unwrap_or(0) as u64;
+    let column = match Fault::ALL.iter().position(|f| *f == fault) {
+        Some(column) => column as u64,
+        // Past every row of the matrix.
+        None => return base.wrapping_add(100 + row),
+    };
     base.wrapping_add(row * Fault::ALL.len() as u64 + column)
 }
 
@@ -322,7 +337,13 @@ fn tally(counts: &mut Counts, line: &str, truth: &[String], target: Target, corr
     }
     match outcome {
         "ok" if rest == truth[index] => counts.ok += 1,
-        "ok" if corrupts && one_digit_changed(rest, &truth[index]) => counts.undetectable += 1,
+        // A binary frame carries a checksum: no corrupted byte is undetectable there.
+        "ok" if corrupts
+            && target != Target::TmclBinary
+            && one_digit_changed(rest, &truth[index]) =>
+        {
+            counts.undetectable += 1
+        }
         "ok" if corrupts
             && target.smd4()
             && SMD4_TEXT.contains(&SMD4_VALUES[index].0)
@@ -397,15 +418,30 @@ pub fn one_digit_changed(got: &str, truth: &str) -> bool {
 
 /// Whether `got` is `truth` with one printable character changed into another printable one:
 /// all a client can see of a corrupted byte in a text item no grammar constrains (see
-/// [`SMD4_TEXT`]).
+/// [`SMD4_TEXT`]). Both are compared as the items hold them, not as the script prints them (a
+/// backslash or quote is printed escaped).
 pub fn one_character_changed(got: &str, truth: &str) -> bool {
-    let printable = |c: u8| c.is_ascii_graphic() && c != b'"' && c != b'\\';
-    let mut differing = got.bytes().zip(truth.bytes()).filter(|(g, t)| g != t);
+    let (got, truth) = (unescape(got), unescape(truth));
+    let printable = |c: u8| c.is_ascii_graphic() && c != b',';
+    let mut differing = got.iter().zip(truth.iter()).filter(|(g, t)| g != t);
     got.len() == truth.len()
         && matches!(
             (differing.next(), differing.next()),
-            (Some((g, t)), None) if printable(g) && printable(t)
+            (Some((&g, &t)), None) if printable(g) && printable(t)
         )
+}
+
+/// A printed string item as the item holds it: `\\` and `\"` are one character each.
+fn unescape(printed: &str) -> Vec<u8> {
+    let mut out = Vec::with_capacity(printed.len());
+    let mut bytes = printed.bytes();
+    while let Some(b) = bytes.next() {
+        match b {
+            b'\\' => out.extend(bytes.next()),
+            _ => out.push(b),
+        }
+    }
+    out
 }
 
 /// `8-4-4-4-12` hexadecimal digits.
@@ -547,11 +583,14 @@ fn setup_script(target: Target) -> String {
         }
     } else {
         let gp67 = match target {
-            Target::TmclLine => 0x10,
-            Target::TmclNone => 0x20,
-            _ => 0,
+            Target::TmclLine => Some(0x10),
+            Target::TmclNone => Some(0x20),
+            Target::TmclBinary => None,
+            _ => Some(0),
         };
-        script.push_str(&format!("sgp(67, 0, {gp67});\n"));
+        if let Some(gp67) = gp67 {
+            script.push_str(&format!("sgp(67, 0, {gp67});\n"));
+        }
         for (i, value) in tmcl_values().iter().enumerate() {
             script.push_str(&format!("sgp({i}, 2, {value});\n"));
         }

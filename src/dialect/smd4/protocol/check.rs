@@ -205,9 +205,13 @@ fn unrepresentable_code<'a>(items: &'a [DataItem], expect: &Expectation) -> Opti
 fn well_formed(raw: &str, ty: ItemType, fixed_point: bool) -> bool {
     match ty {
         ItemType::Int => {
-            all_digits(raw.strip_prefix('-').unwrap_or(raw)) && raw.parse::<i64>().is_ok()
+            let digits = match raw.strip_prefix('-') {
+                Some(magnitude) => magnitude != "0" && decimal(magnitude),
+                None => decimal(raw),
+            };
+            digits && raw.parse::<i64>().is_ok()
         }
-        ItemType::Uint | ItemType::Enum => all_digits(raw) && raw.parse::<i64>().is_ok(),
+        ItemType::Uint | ItemType::Enum => decimal(raw) && raw.parse::<i64>().is_ok(),
         ItemType::Bool => matches!(raw, "0" | "1"),
         ItemType::Float => {
             (is_scientific(raw) || (fixed_point && is_fixed(raw)))
@@ -222,6 +226,12 @@ fn well_formed(raw: &str, ty: ItemType, fixed_point: bool) -> bool {
 
 fn all_digits(text: &str) -> bool {
     !text.is_empty() && text.bytes().all(|b| b.is_ascii_digit())
+}
+
+/// Digits as a drive's printf writes a whole number: no leading zero but zero itself, so a first
+/// digit corrupted into `0` (`073` for `173`) is noise, not another value.
+fn decimal(text: &str) -> bool {
+    all_digits(text) && (text == "0" || !text.starts_with('0'))
 }
 
 /// `[-]d.dddd[d](E|e|)(+|-)dd[d]`, normalised: the leading digit is 0 only for zero itself.
@@ -253,7 +263,7 @@ fn is_scientific(raw: &str) -> bool {
 fn is_fixed(raw: &str) -> bool {
     let unsigned = raw.strip_prefix('-').unwrap_or(raw);
     unsigned.split_once('.').is_some_and(|(whole, decimals)| {
-        all_digits(whole) && all_digits(decimals) && decimals.len() == FIXED_DECIMALS
+        decimal(whole) && all_digits(decimals) && decimals.len() == FIXED_DECIMALS
     })
 }
 

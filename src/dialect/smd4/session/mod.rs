@@ -6,10 +6,13 @@
 //! or restore.
 //!
 //! With no echo, nothing in a reply says which request it answers: after any failed exchange the
-//! wire resynchronises before the next request (see `session/wire.rs`). Replies of an addressed
+//! wire resynchronises before the next request (see `session/wire.rs`), and a barrier the drive
+//! refuses goes out first, everything before its refusal discarded (see `barrier.rs`), so no late
+//! reply is taken for an answer. Replies of an addressed
 //! drive carry its `@N,` prefix, so a failure at one address does not hold up the others — unless
 //! the drives turn out to answer without the prefix.
 
+mod barrier;
 mod faces;
 mod receive;
 
@@ -110,6 +113,8 @@ pub struct Smd4Session {
     smd4: Smd4SessionOptions,
     /// An addressed drive answered without its `@N,` prefix: replies cannot be told apart.
     unprefixed_replies: bool,
+    /// Failed requests whose replies may still come, and barriers given up (`barrier.rs`).
+    doubt: barrier::Doubt,
 }
 
 impl Smd4Session {
@@ -125,6 +130,7 @@ impl Smd4Session {
             spec: Smd4Spec::builtin(),
             smd4,
             unprefixed_replies: false,
+            doubt: barrier::Doubt::default(),
         };
         let opened = format!(
             "SMD4 session opened on {}",
@@ -191,17 +197,15 @@ impl Smd4Session {
         let spec = self.spec.commands.get(&request.mnemonic);
         let sent = request.format(self.smd4.prefix);
         let silent = request.is_broadcast() || spec.is_some_and(|s| s.no_response);
-        let peer = match request.address {
-            Some(address) if !self.unprefixed_replies => Peer::Module(address),
-            _ => Peer::Any,
-        };
-        let timeout = self.core.options.timeout;
-        let result = self
-            .core
-            .wire
-            .begin(peer, self.core.urgent, timeout, &mut nothing_benign)
-            .and_then(|()| self.transact(&request, silent));
-        self.core.wire.finish(result.is_ok());
+        if !silent {
+            self.barrier(request.address)?;
+        }
+        let result = self.round_trip(&request, silent);
+        match &result {
+            Ok(_) => self.request_answered(request.address),
+            Err(_) if silent => {}
+            Err(_) => self.request_failed(request.address),
+        }
         let exchange = Smd4Exchange {
             sent,
             request,
@@ -211,6 +215,26 @@ impl Smd4Session {
             self.core.moved.insert(exchange.request.address);
         }
         Ok(exchange)
+    }
+
+    /// One exchange between the wire's begin and finish: a failure leaves the line suspect.
+    fn round_trip(
+        &mut self,
+        request: &Request,
+        silent: bool,
+    ) -> Result<Option<Smd4Reply>, SessionError> {
+        let peer = match request.address {
+            Some(address) if !self.unprefixed_replies => Peer::Module(address),
+            _ => Peer::Any,
+        };
+        let timeout = self.core.options.timeout;
+        let result = self
+            .core
+            .wire
+            .begin(peer, self.core.urgent, timeout, &mut nothing_benign)
+            .and_then(|()| self.transact(request, silent));
+        self.core.wire.finish(result.is_ok());
+        result
     }
 
     /// Sends a request and reads its reply (none for broadcasts and silent commands). Any error

@@ -13,7 +13,7 @@ use crate::session::rx::is_line_break;
 use crate::session::transcript::{Entry, escape_into};
 use crate::session::wire::{MAX_LINE, Settled};
 
-use super::{DriveName, Smd4Session};
+use super::{DriveName, Smd4Session, barrier};
 
 /// The most a reply may hold, all its lines together.
 const MAX_REPLY: usize = 64 * 1024;
@@ -92,6 +92,15 @@ impl Smd4Session {
             match reading.collector.push_line(&line) {
                 Ok(CollectorState::Complete(reply)) if foreign(&reply, request) => {
                     self.discard_foreign(used, &reply, request);
+                    reading.collector = ReplyCollector::new(reading.expect.clone());
+                }
+                Ok(CollectorState::Complete(reply)) if self.late(&reply, request) => {
+                    let what = if request.mnemonic == barrier::BARRIER {
+                        "late reply, before the barrier's refusal"
+                    } else {
+                        "late refusal of a barrier given up earlier"
+                    };
+                    self.core.wire.discard_quietly(used, what);
                     reading.collector = ReplyCollector::new(reading.expect.clone());
                 }
                 Ok(CollectorState::Complete(reply)) => {
@@ -216,8 +225,13 @@ impl Smd4Session {
         request: &Request,
     ) -> Result<Smd4Reply, SessionError> {
         let ended_by_cr = used > 0 && self.core.wire.rx.bytes()[used - 1] == b'\r';
+        // The refusal taken for a barrier's may be an earlier barrier's: its own may follow.
+        let barrier = request.mnemonic == barrier::BARRIER;
+        let lost = &mut self.doubt;
         let settled = if ended_by_cr {
-            self.core.wire.settle(used, deadline, &mut |_| false)?
+            self.core.wire.settle(used, deadline, &mut |line| {
+                barrier && barrier::barrier_line(line) && lost.barrier_arrived(request.address)
+            })?
         } else {
             Settled::Noise
         };
@@ -303,6 +317,18 @@ impl Smd4Session {
         };
         self.core.wire.log(Entry::Received, consumed, &meaning);
         Ok(reply)
+    }
+}
+
+impl Smd4Session {
+    /// Whether a complete reply is a late one: before a barrier's refusal, anything else; during
+    /// another request, the refusal of a barrier given up earlier.
+    fn late(&mut self, reply: &Smd4Reply, request: &Request) -> bool {
+        if request.mnemonic == barrier::BARRIER {
+            !barrier::barrier_like(reply)
+        } else {
+            barrier::barrier_like(reply) && self.lost_barrier_arrived(request.address)
+        }
     }
 }
 

@@ -7,8 +7,9 @@
 //! request is taken. A request whose exchange failed may still be echoed and answered late, so an
 //! identical request after it is spelled differently — spaces after the address character, which
 //! the manual allows (`A GAP 1, 0`) — and a late echo cannot pass for its echo. Without an echo
-//! nothing in a reply says which request it answers; the wire's resynchronisation after a failure
-//! is what keeps a late reply out (see `session/wire.rs`).
+//! nothing in a reply says which request it answers: after a failure the next request to that
+//! module is preceded by a barrier the module refuses, and every reply before that refusal is
+//! discarded (see `barrier.rs`).
 
 use std::time::{Duration, Instant};
 
@@ -38,6 +39,8 @@ struct Scan<'a> {
     echo_seen: bool,
     /// The rest of an overlong line is still arriving: discard it up to its end.
     in_junk: bool,
+    /// This is a barrier: only its refusal is its reply (see `barrier.rs`).
+    barrier: bool,
     /// This exchange's bytes taken so far, for the transcript record of the reply.
     held: Vec<u8>,
 }
@@ -62,6 +65,18 @@ impl Scan<'_> {
 /// A reply found in the buffer: the reply, its text, and the bytes its line takes.
 type Found = (AsciiReply, String, usize);
 
+/// What an ASCII request waits for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Wait {
+    /// Its reply, up to the session timeout.
+    Reply,
+    /// A reply the module may not send at all (BIN), this long; its absence leaves the line
+    /// trusted.
+    Optional(Duration),
+    /// The refusal of a barrier (see `barrier.rs`), up to the session timeout.
+    Barrier,
+}
+
 impl TmclSession {
     /// Sends `text` to `module` and waits up to the session timeout for its reply.
     pub(super) fn ascii_request(
@@ -70,32 +85,40 @@ impl TmclSession {
         text: &str,
         op: Option<Op>,
     ) -> Result<TmclExchange, SessionError> {
-        self.ascii_request_with(module, text, op, None)
+        self.ascii_request_with(module, text, op, Wait::Reply)
     }
 
-    /// As [`Self::ascii_request`]; with `optional_wait` the module may not answer at all (BIN),
-    /// so the reply is awaited that long and its absence leaves the line trusted.
+    /// As [`Self::ascii_request`], waiting for what `wait` says. A request puts a barrier on
+    /// the line first when an earlier one's reply may still come without an echo to tell it.
     pub(super) fn ascii_request_with(
         &mut self,
         module: u8,
         text: &str,
         op: Option<Op>,
-        optional_wait: Option<Duration>,
+        wait: Wait,
     ) -> Result<TmclExchange, SessionError> {
+        if wait == Wait::Reply {
+            self.ascii_barrier(module)?;
+        }
         if std::mem::take(&mut self.line_dirty) {
             self.end_partial_line()?;
         }
         self.ascii_sent = true;
         self.frames_aligned = false;
         let wire_text = self.spelling(text);
-        let optional = optional_wait.is_some();
+        let optional = matches!(wait, Wait::Optional(_));
         let mut echoed = false;
         let result = self.exchange(module, optional, |s| {
-            s.ascii_exchange(module, text, &wire_text, op, optional_wait, &mut echoed)
+            s.ascii_exchange(module, text, &wire_text, op, wait, &mut echoed)
         });
+        let c = address_char(module).unwrap_or('?');
         match &result {
+            // In order: a barrier's refusal given up earlier can no longer come.
+            Ok(_) if wait != Wait::Barrier => self.unanswered.replied(c),
             Ok(_) => {}
             Err(SessionError::Timeout { .. }) if optional => {}
+            // A barrier's failure is the barrier's to record.
+            Err(_) if wait == Wait::Barrier => {}
             Err(_) => self.unanswered.remember(wire_text.into_bytes(), echoed),
         }
         result
@@ -107,7 +130,7 @@ impl TmclSession {
         text: &str,
         wire_text: &str,
         op: Option<Op>,
-        optional_wait: Option<Duration>,
+        wait: Wait,
         echoed: &mut bool,
     ) -> Result<TmclExchange, SessionError> {
         let name = ModuleName(module);
@@ -115,7 +138,10 @@ impl TmclSession {
         line.extend_from_slice(wire_text.as_bytes());
         line.push(b'\r');
         self.core.wire.send(&line, format_args!("to {name}"))?;
-        let timeout = optional_wait.unwrap_or(self.core.options.timeout);
+        let timeout = match wait {
+            Wait::Optional(wait) => wait,
+            Wait::Reply | Wait::Barrier => self.core.options.timeout,
+        };
         let deadline = Instant::now() + timeout;
         let state = self.modules.get(&module);
         let echo_known = state.is_some_and(|m| m.echo_known);
@@ -124,6 +150,7 @@ impl TmclSession {
             sent: wire_text.as_bytes(),
             echo_seen: false,
             in_junk: false,
+            barrier: wait == Wait::Barrier,
             held: Vec::new(),
         };
         loop {
@@ -234,6 +261,21 @@ impl TmclSession {
                     .wire
                     .discard_quietly(used, "target position reached event, not a reply");
             }
+            Some(reply)
+                if reply.module == c && acceptable && scan.barrier != barrier_like(&reply) =>
+            {
+                if scan.barrier {
+                    self.core
+                        .wire
+                        .discard_quietly(used, "late reply, before the barrier's refusal");
+                } else if self.unanswered.barrier_arrived(c) {
+                    self.core
+                        .wire
+                        .discard_quietly(used, "late refusal of a barrier given up earlier");
+                } else {
+                    return Ok(Some((reply, latin1(line), used)));
+                }
+            }
             Some(reply) if reply.module == c && acceptable => {
                 return Ok(Some((reply, latin1(line), used)));
             }
@@ -321,6 +363,9 @@ impl TmclSession {
     ) -> Result<TmclExchange, SessionError> {
         let c = reply.module;
         let mut events = Vec::new();
+        // The refusal taken for a barrier's may be an earlier barrier's: its own may follow.
+        let barrier = text.get(1..) == Some(super::barrier::ASCII_BARRIER);
+        let unanswered = &mut self.unanswered;
         let settled =
             self.core
                 .wire
@@ -331,6 +376,9 @@ impl TmclSession {
                             ModuleName::of_char(r.module)
                         ));
                         true
+                    }
+                    Some(r) if barrier && r.module == c && barrier_like(&r) => {
+                        unanswered.barrier_arrived(c)
                     }
                     _ => false,
                 })?;
@@ -441,6 +489,11 @@ impl TmclSession {
             .find(|t| !self.unanswered.contains(t.as_bytes()))
             .unwrap_or_else(|| text.to_string())
     }
+}
+
+/// Whether a reply is what the ASCII barrier is answered with.
+fn barrier_like(reply: &AsciiReply) -> bool {
+    super::barrier::refuses_barrier(reply.status)
 }
 
 /// Whether a request may leave the module in binary mode (BIN, typed or sent unvalidated).

@@ -14,14 +14,23 @@ use crate::session::SessionError;
 use crate::session::transcript::Entry;
 
 impl TmclSession {
-    /// Sends one instruction as a binary frame and reads its reply.
+    /// Sends one instruction as a binary frame and reads its reply, after a barrier when a reply
+    /// given up earlier could pass for it (see `barrier.rs`).
     pub(super) fn binary_request(
         &mut self,
         module: u8,
         instruction: Instruction,
     ) -> Result<TmclExchange, SessionError> {
         self.align_for_frame()?;
-        self.exchange(module, false, |s| s.binary_exchange(module, instruction))
+        self.binary_barriers(module, &instruction)?;
+        let result = self.exchange(module, false, |s| s.binary_exchange(module, instruction));
+        match &result {
+            // 137 is never answered: nothing of it can come late.
+            _ if instruction.command == Opcode::FactoryDefaults => {}
+            Ok(_) => self.late_frames.answered(module, instruction.command),
+            Err(_) => self.late_frames.failed(module, instruction.command),
+        }
+        result
     }
 
     /// On a bus where ASCII lines went out, a module in binary mode took their bytes as the

@@ -7,6 +7,7 @@
 //! `identify.rs`). On close every module is put back in the mode it was found in.
 
 mod ascii;
+mod barrier;
 mod binary;
 mod exchange;
 mod faces;
@@ -49,6 +50,8 @@ pub struct TmclSession {
     modules: BTreeMap<u8, mode::ModuleState>,
     /// ASCII lines that failed: their echo and reply may still come.
     unanswered: Unanswered,
+    /// Binary requests that failed: their reply frames may still come (see `barrier.rs`).
+    late_frames: barrier::LateFrames,
     /// What the target module said it is (command 136).
     identity: Identity,
     /// The profile the session was opened with: the given one (`--profile`), and the one of a
@@ -140,6 +143,7 @@ impl TmclSession {
             profile,
             modules: BTreeMap::new(),
             unanswered: Unanswered::default(),
+            late_frames: barrier::LateFrames::default(),
             identity: Identity::NotAsked,
             binary_only: false,
             frames_aligned: false,

@@ -403,8 +403,12 @@ impl TmclSession {
         let c = address_char(module).unwrap_or('?');
         let text = format!("{c}BIN");
         let wait = self.optional_wait(BIN_EXCHANGE_BYTES);
-        let result =
-            self.ascii_request_with(module, &text, Some(Op::Ascii(AsciiWord::Bin)), Some(wait));
+        let result = self.ascii_request_with(
+            module,
+            &text,
+            Some(Op::Ascii(AsciiWord::Bin)),
+            super::ascii::Wait::Optional(wait),
+        );
         let exchange = match result {
             Ok(x) => x,
             Err(SessionError::Timeout { .. }) => TmclExchange {

@@ -110,11 +110,16 @@ impl FakeModule {
             return;
         }
         let i = frame.instruction;
-        let value = if i.command.number() == 6 && i.type_ == 1 {
-            self.position
-        } else {
-            0
+        // GGP 3, 2 reads a user variable the other requests here do not.
+        let value = match (i.command.number(), i.type_) {
+            (6, 1) => self.position,
+            (10, 3) => 333,
+            _ => 0,
         };
+        let lagging = self.wire.lock().unwrap().lagging;
+        let held = std::mem::take(&mut self.held);
+        self.emit(&held);
+        self.holding = lagging;
         if i.command.number() == 139 {
             self.quirks.ascii = true;
             if !self.quirks.replies_to_139 {
@@ -129,6 +134,7 @@ impl FakeModule {
             value,
         };
         self.emit(&reply.encode());
+        self.holding = false;
     }
 
     fn ascii_byte(&mut self, b: u8) {
@@ -172,6 +178,12 @@ impl FakeModule {
             return;
         }
         let profile = Profile::builtin();
+        if text.ends_with(", 255") {
+            // No motor 255: the barrier's refusal.
+            self.emit(b"BA 4 0");
+            self.emit(self.quirks.reply_ending);
+            return;
+        }
         let (status, value) = match line::parse(text, &profile).map(|l| l.op) {
             Ok(Op::Command(i)) if i.command.number() == 10 && i.type_ == 67 => {
                 (100, self.quirks.gp67)
@@ -632,7 +644,7 @@ fn with_an_echo_an_identical_request_after_a_failure_is_spelled_so_its_echo_is_i
 }
 
 #[test]
-fn without_an_echo_a_reply_later_than_the_quiet_wait_is_the_one_limit() {
+fn without_an_echo_a_reply_later_than_the_quiet_wait_is_stopped_by_a_barrier() {
     let (mut s, wire) = open(Quirks {
         gp67: 0x20,
         ..Quirks::default()
@@ -640,12 +652,82 @@ fn without_an_echo_a_reply_later_than_the_quiet_wait_is_the_one_limit() {
     // From now on the module answers each line only when the next one arrives.
     wire.lock().unwrap().lagging = true;
     assert!(s.exchange_line("GAP 1, 0").is_err());
-    let x = s.exchange_line("GAP 1, 0").unwrap();
-    assert_eq!(
-        x.value(),
-        Some(7777),
-        "nothing tells the late reply from the answer"
+    // The late 7777 comes when the barrier goes out: discarded, and the barrier's own refusal
+    // is late too.
+    let e = s.exchange_line("GAP 1, 0").unwrap_err();
+    assert!(
+        matches!(e, SessionError::Timeout { .. })
+            && e.to_string().contains("barrier 'AGAP 1, 255'"),
+        "{e}"
     );
+    let sent = sent_text(&wire);
+    let after = &sent[sent.rfind("AGAP 1, 255").unwrap()..];
+    assert!(
+        !after.contains("GAP 1, 0"),
+        "the request was not sent: {sent:?}"
+    );
+    wire.lock().unwrap().lagging = false;
+    // The next barrier's refusal follows the late one of the first; then the answer.
+    let x = s.exchange_line("GAP 1, 0").unwrap();
+    assert_eq!(x.value(), Some(-5000));
+    assert_eq!(sent_text(&wire).matches("AGAP 1, 255\r").count(), 2);
+    // The line is clean: no barrier before the next request.
+    s.exchange_line("GAP 1, 0").unwrap();
+    assert_eq!(sent_text(&wire).matches("AGAP 1, 255\r").count(), 2);
+}
+
+#[test]
+fn with_an_echo_no_barrier_is_needed() {
+    let (mut s, wire) = open(Quirks::default());
+    wire.lock().unwrap().lagging = true;
+    assert!(s.exchange_line("GAP 1, 0").is_err());
+    wire.lock().unwrap().lagging = false;
+    assert_eq!(s.exchange_line("GAP 1, 0").unwrap().value(), Some(-5000));
+    assert!(!sent_text(&wire).contains("255"), "{}", sent_text(&wire));
+}
+
+#[test]
+fn in_binary_mode_a_late_frame_is_stopped_by_a_barrier_of_another_command() {
+    let (mut s, wire) = open(Quirks::default());
+    s.exchange_line("BIN").unwrap();
+    wire.lock().unwrap().lagging = true;
+    assert!(s.exchange_line("GGP 3, 2").is_err());
+    wire.lock().unwrap().lagging = false;
+    // GGP 3, 2's 333 comes late, when the next frame goes out: the barrier (136, whose reply
+    // names another command) is sent first and its reply discards it.
+    let x = s.exchange_line("GGP 4, 2").unwrap();
+    assert_eq!(x.value(), Some(0), "not GGP 3, 2's 333");
+    let barrier = CommandFrame {
+        address: 1,
+        instruction: Instruction::new(136, 1, 0, 0),
+    }
+    .encode();
+    let sent = wire.lock().unwrap().sent.clone();
+    assert_eq!(sent.windows(9).filter(|w| *w == barrier).count(), 1);
+    // A request of a command not in doubt needs none; the line is clean again anyway.
+    s.exchange_line("GGP 4, 2").unwrap();
+    let sent = wire.lock().unwrap().sent.clone();
+    assert_eq!(sent.windows(9).filter(|w| *w == barrier).count(), 1);
+}
+
+#[test]
+fn in_binary_mode_a_lost_barrier_fails_the_request_unsent_and_the_next_tries_another() {
+    let (mut s, wire) = open(Quirks::default());
+    s.exchange_line("BIN").unwrap();
+    wire.lock().unwrap().lagging = true;
+    assert!(s.exchange_line("GGP 3, 2").is_err());
+    let e = s.exchange_line("GGP 3, 2").unwrap_err();
+    assert!(e.to_string().contains("to the barrier"), "{e}");
+    wire.lock().unwrap().lagging = false;
+    // GGP and 136 are in doubt: the next barrier is 135.
+    assert_eq!(s.exchange_line("GGP 3, 2").unwrap().value(), Some(333));
+    let barrier = CommandFrame {
+        address: 1,
+        instruction: Instruction::new(135, 0, 0, 0),
+    }
+    .encode();
+    let sent = wire.lock().unwrap().sent.clone();
+    assert_eq!(sent.windows(9).filter(|w| *w == barrier).count(), 1);
 }
 
 #[test]

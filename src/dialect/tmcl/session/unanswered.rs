@@ -2,7 +2,7 @@
 //! for what they are — neither taken for a later request's answer nor reported as noise. A
 //! request repeated while an identical one is unanswered is spelled differently (see `ascii.rs`).
 
-use std::collections::VecDeque;
+use std::collections::{BTreeMap, VecDeque};
 
 use crate::dialect::tmcl::protocol::frame::{FRAME_LEN, ReplyFrame};
 use crate::dialect::tmcl::protocol::line::address_of;
@@ -19,6 +19,8 @@ const KEPT: usize = 8;
 #[derive(Debug, Default)]
 pub(super) struct Unanswered {
     entries: VecDeque<Entry>,
+    /// Barriers given up, per module character, whose refusal may still come (see `barrier.rs`).
+    lost_barriers: BTreeMap<char, u32>,
 }
 
 #[derive(Debug)]
@@ -68,6 +70,36 @@ impl Unanswered {
             .iter()
             .position(|e| e.echoed && e.line.first() == Some(&(module as u8)));
         position.map(|i| self.entries.remove(i)).is_some()
+    }
+
+    /// A barrier to module character `module` was answered: a module answers in order, so
+    /// every request to it given up before has been answered or never will be.
+    pub(super) fn forget(&mut self, module: char) {
+        self.entries
+            .retain(|e| e.line.first() != Some(&(module as u8)));
+    }
+
+    /// A barrier to module character `module` failed: its refusal may still come.
+    pub(super) fn barrier_lost(&mut self, module: char) {
+        *self.lost_barriers.entry(module).or_default() += 1;
+    }
+
+    /// A refusal like a barrier's arrived from module character `module` during another
+    /// request: whether it is the late one of a barrier given up earlier (then counted off).
+    pub(super) fn barrier_arrived(&mut self, module: char) -> bool {
+        match self.lost_barriers.get_mut(&module) {
+            Some(n) if *n > 0 => {
+                *n -= 1;
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// A request to module character `module` was answered: in order, no barrier's refusal
+    /// given up before it can come any more.
+    pub(super) fn replied(&mut self, module: char) {
+        self.lost_barriers.remove(&module);
     }
 
     /// Whether requests to module character `module` still wait for late answers.

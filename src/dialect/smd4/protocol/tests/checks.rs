@@ -127,7 +127,9 @@ fn hostile_numbers_are_noise() {
             "{bad}"
         );
     }
-    for bad in ["1000.0", "1000.000", "1000", "1.000.00", "1e3"] {
+    for bad in [
+        "1000.0", "1000.000", "1000", "1.000.00", "1e3", "01000.00", "-00.50",
+    ] {
         assert!(
             matches!(noise("MOTOR:PACT", &format!(",{bad}")), Noise::Item { .. }),
             "{bad}"
@@ -145,6 +147,11 @@ fn hostile_numbers_are_noise() {
         ("SYS:UPTIME", "0x2710"),
         ("SYS:UPTIME", "+1"),
         ("SYS:UPTIME", "1O000"),
+        // A first digit corrupted into 0: a drive's printf writes no leading zero.
+        ("SYS:UPTIME", "073"),
+        ("MOTOR:T", "-025"),
+        ("MOTOR:T", "-0"),
+        ("MOTOR:SDMODE", "01"),
         ("MOTOR:SDMODE", "one"),
         ("SYS:IDENT", "2"),
         ("SYS:IDENT", "true"),
