@@ -7,7 +7,7 @@ use std::path::Path;
 
 use rexpect::process::WaitStatus;
 
-use crate::sim::Sim;
+use crate::sim::{Sim, velocity_after};
 use crate::util::{code, run, stderr, stdout, tempdir, terminal};
 
 /// `tmclsh --port PTY --log LOG ARGS`.
@@ -35,15 +35,6 @@ fn all_binary(log: &Path) {
         assert!(line.ends_with(" in binary"), "not a binary frame: {line}");
         assert!(!line.contains("(139)"), "139 sent: {line}");
     }
-}
-
-/// The simulated motor's velocity after `time` more simulated time.
-fn velocity_after(sim: &mut Sim, time: &str) -> f64 {
-    assert!(sim.console(&format!("advance {time}")).starts_with("ok"));
-    let motor = sim.console("motor");
-    let words: Vec<&str> = motor.split_whitespace().collect();
-    let at = words.iter().position(|w| *w == "velocity").expect(&motor);
-    words[at + 1].parse().expect(&motor)
 }
 
 #[test]

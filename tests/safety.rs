@@ -13,22 +13,13 @@ use rexpect::process::WaitStatus;
 use rexpect::session::PtySession;
 use tmclsh::dialect::tmcl::protocol::Status;
 
-use crate::sim::Sim;
+use crate::sim::{Sim, velocity_after};
 use crate::smd4::{Drive, Via};
 use crate::util::{bin, code, repo, run, stderr, tempdir, terminal};
 
 /// The TMCL simulator on a pty with a manual clock.
 fn tmcl_sim() -> Sim {
     Sim::start(&["--pty", "--manual-clock"])
-}
-
-/// The simulated motor's velocity after `time` more simulated time.
-fn velocity_after(sim: &mut Sim, time: &str) -> f64 {
-    assert!(sim.console(&format!("advance {time}")).starts_with("ok"));
-    let motor = sim.console("motor");
-    let words: Vec<&str> = motor.split_whitespace().collect();
-    let at = words.iter().position(|w| *w == "velocity").expect(&motor);
-    words[at + 1].parse().expect(&motor)
 }
 
 /// The module executes binary commands again: back in binary mode and not in download mode

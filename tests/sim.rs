@@ -25,6 +25,15 @@ use crate::util::bin;
 /// How long any single expected event may take before the test fails.
 pub const PATIENCE: Duration = Duration::from_secs(10);
 
+/// The simulated motor's velocity after `time` more simulated time (a `--manual-clock` simulator).
+pub fn velocity_after(sim: &mut Sim, time: &str) -> f64 {
+    assert!(sim.console(&format!("advance {time}")).starts_with("ok"));
+    let motor = sim.console("motor");
+    let words: Vec<&str> = motor.split_whitespace().collect();
+    let at = words.iter().position(|w| *w == "velocity").expect(&motor);
+    words[at + 1].parse().expect(&motor)
+}
+
 /// A running `tmclsh sim`.
 pub struct Sim {
     child: Child,

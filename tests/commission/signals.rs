@@ -6,16 +6,7 @@
 use nix::sys::signal::Signal;
 
 use super::repl::Terminal;
-use crate::sim::Sim;
-
-/// The simulated motor's velocity after `time` more simulated time.
-fn velocity_after(sim: &mut Sim, time: &str) -> f64 {
-    assert!(sim.console(&format!("advance {time}")).starts_with("ok"));
-    let motor = sim.console("motor");
-    let words: Vec<&str> = motor.split_whitespace().collect();
-    let at = words.iter().position(|w| *w == "velocity").expect(&motor);
-    words[at + 1].parse().expect(&motor)
-}
+use crate::sim::{Sim, velocity_after};
 
 /// A REPL on a simulator with a manual clock, its motor set turning by `ROR 0, 50000`.
 fn turning() -> (Sim, Terminal) {
