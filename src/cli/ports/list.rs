@@ -84,14 +84,9 @@ mod sysfs {
 
     use super::{Kind, Port, Usb};
 
-    /// Where `sys/` and `dev/` are: `/`, or in debug builds the directory in `TMCLSH_TEST_SYSFS`
-    /// (a made-up tree for the tests, as real adapters cannot be plugged in on demand).
+    /// Where `sys/` and `dev/` are: `/`, or the made-up tree in `TMCLSH_TEST_SYSFS`.
     pub(super) fn root() -> PathBuf {
-        #[cfg(debug_assertions)]
-        if let Some(root) = std::env::var_os("TMCLSH_TEST_SYSFS") {
-            return PathBuf::from(root);
-        }
-        PathBuf::from("/")
+        crate::link::line::sysfs::root()
     }
 
     /// The ports under `root`: every entry of `sys/class/tty` backed by a device whose file
