@@ -1,11 +1,12 @@
 //! Serial ports: `tmclsh ports` shows what USB adapters say about themselves, `--port
 //! usb:VID:PID[:SERIAL]` finds the adapter whatever its device file, and the REPL waits for a port
 //! that is not there yet. Adapters cannot be plugged in on demand, so a made-up sysfs tree (read
-//! by debug builds from TMCLSH_TEST_SYSFS) stands for them, its device files symlinks to
+//! from TMCLSH_TEST_SYSFS, by release builds too) stands for them, its device files symlinks to
 //! simulators' pseudo-terminals.
 
 #![cfg(target_os = "linux")]
 
+use std::io::Write;
 use std::os::unix::fs::symlink;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -57,6 +58,27 @@ impl Machine {
         std::fs::create_dir_all(&class).unwrap();
         symlink(&port, class.join("device")).unwrap();
         symlink(device, self.root.join("dev").join(name)).unwrap();
+    }
+
+    /// The latency timer of the FTDI adapter `name`, as `ftdi_sio` shows it.
+    fn latency(&self, name: &str, ms: u32) {
+        let port = self
+            .root
+            .join(format!("sys/devices/usb1/{name}/1-0:1.0/{name}"));
+        std::fs::write(port.join("latency_timer"), format!("{ms}\n")).unwrap();
+        let devices = self.root.join("sys/bus/usb-serial/devices");
+        std::fs::create_dir_all(&devices).unwrap();
+        let _ = std::fs::remove_file(devices.join(name));
+        symlink(&port, devices.join(name)).unwrap();
+    }
+
+    /// A UUCP lock file for `name` naming `pid`.
+    fn lock(&self, name: &str, pid: u32) -> PathBuf {
+        let dir = self.root.join("var/lock");
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join(format!("LCK..{name}"));
+        std::fs::write(&file, format!("{pid:>10}\n")).unwrap();
+        file
     }
 
     /// A built-in port (pnp).
@@ -187,6 +209,102 @@ fn a_usb_name_finds_its_adapter_or_says_why_not() {
         "usb:dead:beef",
     ]);
     assert_eq!(code(&out), 3, "{}", stderr(&out));
+}
+
+#[test]
+fn a_high_latency_timer_is_explained_once_with_its_fix() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    machine.usb_serial(
+        "ttyUSB0",
+        ("0403", "6001"),
+        Some("A1"),
+        Path::new(&sim.first),
+    );
+    let port = machine.dev("ttyUSB0");
+    let lines = [
+        "--port", &port, "--baud", "115200", "-c", "GAP 1, 0", "-c", "GAP 2, 0",
+    ];
+
+    // 16 ms, the default: the low-latency flag cannot be set on the pty behind the made-up
+    // adapter, the timer read again is still 16 ms, so the cost and the fix are given, once.
+    machine.latency("ttyUSB0", 16);
+    let out = machine.run(&lines);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert_eq!(err.matches("latency timer, 16 ms").count(), 1, "{err}");
+    assert!(err.contains("1.6 ms on the wire at 115200 baud"), "{err}");
+    assert!(
+        err.contains("echo 1 > /sys/bus/usb-serial/devices/ttyUSB0/latency_timer"),
+        "{err}"
+    );
+    assert!(err.contains("ATTR{latency_timer}=\"1\""), "{err}");
+    assert!(stdout(&out).ends_with("BA 100 0\n"), "{}", stdout(&out));
+
+    // --keep-latency leaves it alone and says nothing of it.
+    let mut kept = lines.to_vec();
+    kept.push("--keep-latency");
+    let out = machine.run(&kept);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(!stderr(&out).contains("latency"), "{}", stderr(&out));
+
+    // A timer already at 1 ms costs nothing worth a word.
+    machine.latency("ttyUSB0", 1);
+    let out = machine.run(&lines);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(!stderr(&out).contains("latency"), "{}", stderr(&out));
+}
+
+#[test]
+fn a_port_held_by_another_program_names_it() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    // Another tmclsh reading lines from a pipe: it holds the port until its input ends.
+    let mut holder = Command::new(bin())
+        .args(["--port", &sim.first])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let pid = holder.id();
+    let mut input = holder.stdin.take().unwrap();
+    let mut output = std::io::BufReader::new(holder.stdout.take().unwrap());
+    writeln!(input, "GAP 1, 0").unwrap();
+    let mut answer = String::new();
+    std::io::BufRead::read_line(&mut output, &mut answer).unwrap();
+    assert_eq!(answer, "BA 100 0\n", "the holder has the port open");
+    let out = machine.run(&["--port", &sim.first, "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 3, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(err.contains(&format!("in use by PID {pid} (")), "{err}");
+    assert!(err.contains("--port"), "the holder's command line: {err}");
+    assert!(!err.contains("plugged in"), "{err}");
+    drop(input);
+    assert!(holder.wait().unwrap().success());
+}
+
+#[test]
+fn a_live_uucp_lock_refuses_the_port_and_a_stale_one_is_noted() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    machine.usb_serial("ttyUSB0", ("0403", "6001"), None, Path::new(&sim.first));
+    let port = machine.dev("ttyUSB0");
+    // This test's own process: alive, and not the tmclsh that opens the port.
+    let file = machine.lock("ttyUSB0", std::process::id());
+    let out = machine.run(&["--port", &port, "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 3, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(
+        err.contains(&format!("locked by PID {} (", std::process::id())),
+        "{err}"
+    );
+    assert!(err.contains(&file.display().to_string()), "{err}");
+    // A PID no process has (above the kernel's pid_max).
+    machine.lock("ttyUSB0", 4_194_305);
+    let out = machine.run(&["--port", &port, "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(stderr(&out).contains("stale lock file"), "{}", stderr(&out));
 }
 
 /// The REPL on `port`, its environment clean.
