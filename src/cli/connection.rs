@@ -55,7 +55,7 @@ pub struct LineArgs {
     pub rs485: bool,
     /// RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them
     /// apart); implies --rs485.
-    #[arg(long, value_name = "MS[,MS]", env = "TMCLSH_RS485_DELAY", value_parser = rs485_delay)]
+    #[arg(long, value_name = "MS", env = "TMCLSH_RS485_DELAY", value_parser = rs485_delay)]
     pub rs485_delay: Option<Rs485>,
     /// Leave an FTDI adapter's latency timer as it is (tmclsh otherwise sets the low-latency
     /// flag, which lowers a 16 ms timer to 1 ms where the driver honours it).

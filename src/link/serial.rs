@@ -412,8 +412,8 @@ impl Link for SerialLink {
                     m.after.as_millis()
                 ),
             }),
-            bytes_out: self.bytes_out,
-            bytes_in: self.bytes_in,
+            bytes_out: Some(self.bytes_out),
+            bytes_in: Some(self.bytes_in),
             counters: os.counters().ok(),
         }
     }

@@ -256,6 +256,59 @@ fn a_high_latency_timer_is_explained_once_with_its_fix() {
 }
 
 #[test]
+fn line_shows_the_rate_the_timer_and_what_the_pty_lacks() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    machine.usb_serial("ttyUSB0", ("0403", "6001"), None, Path::new(&sim.first));
+    machine.latency("ttyUSB0", 16);
+    let port = machine.dev("ttyUSB0");
+    let out = machine.run(&[
+        "--port",
+        &port,
+        "--keep-latency",
+        "-c",
+        "GAP 1, 0",
+        "-c",
+        ":line",
+    ]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    let row = |name: &str| -> String {
+        text.lines()
+            .find_map(|l| l.strip_prefix(name))
+            .unwrap_or_else(|| panic!("no {name} row:\n{text}"))
+            .trim()
+            .to_string()
+    };
+    assert_eq!(row("rate"), "9600 baud, as read back from the driver");
+    assert!(row("modem lines").starts_with("none ("), "{text}");
+    assert!(row("latency").starts_with("16 ms: "), "{text}");
+    assert_eq!(row("echo strip"), "off");
+    // Identification, ASCII mode and the typed line: every request answered.
+    let sent = row("sent");
+    let received = row("received");
+    let requests = sent
+        .split(" in ")
+        .nth(1)
+        .unwrap()
+        .split(' ')
+        .next()
+        .unwrap();
+    let replies = received
+        .split(" in ")
+        .nth(1)
+        .unwrap()
+        .split(' ')
+        .next()
+        .unwrap();
+    assert_eq!(requests, replies, "{text}");
+    assert!(
+        sent.ends_with(" requests") && received.ends_with(" replies"),
+        "{text}"
+    );
+}
+
+#[test]
 fn a_port_held_by_another_program_names_it() {
     let sim = Sim::start(&["--pty"]);
     let machine = Machine::new();

@@ -17,10 +17,10 @@ pub struct LineState {
     pub latency: Option<Duration>,
     /// How RS-485 direction is driven, if it is.
     pub rs485: Option<String>,
-    /// Bytes sent and received through the link since it was opened.
-    pub bytes_out: u64,
-    /// Bytes received.
-    pub bytes_in: u64,
+    /// Bytes sent through the link since it was opened, where it counts them.
+    pub bytes_out: Option<u64>,
+    /// Bytes received, where it counts them.
+    pub bytes_in: Option<u64>,
     /// The driver's counters (TIOCGICOUNT), where it keeps them.
     pub counters: Option<Counters>,
 }
