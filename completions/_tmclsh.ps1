@@ -85,7 +85,8 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
         }
         'tmclsh;ports' {
             [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)')
-            [CompletionResult]::new('--probe', '--probe', [CompletionResultType]::ParameterName, 'Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for)')
+            [CompletionResult]::new('--probe', '--probe', [CompletionResultType]::ParameterName, 'Ask each USB port (or each PORT named) which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes')
+            [CompletionResult]::new('--all', '--all', [CompletionResultType]::ParameterName, 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             break

@@ -769,7 +769,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__ports)
-            opts="-h --probe --profile --help"
+            opts="-h --probe --all --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

@@ -79,7 +79,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         }
         &'tmclsh;ports'= {
             cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
-            cand --probe 'Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for)'
+            cand --probe 'Ask each USB port (or each PORT named) which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
+            cand --all 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)'
             cand -h 'Print help'
             cand --help 'Print help'
         }

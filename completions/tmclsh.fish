@@ -77,7 +77,8 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'P
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l probe -d 'Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l probe -d 'Ask each USB port (or each PORT named) which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l all -d 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -s h -l help -d 'Print help'

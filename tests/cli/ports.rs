@@ -81,6 +81,45 @@ impl Machine {
         file
     }
 
+    /// A multi-port adapter (an FT4232H): one USB device, a tty per interface.
+    fn multi_port(&self, names: &[&str], serial: &str, device: &Path) {
+        let usb = self.root.join("sys/devices/usb1/1-2");
+        for (i, name) in names.iter().enumerate() {
+            let interface = usb.join(format!("1-2:1.{i}"));
+            let port = interface.join(name);
+            std::fs::create_dir_all(&port).unwrap();
+            std::fs::write(interface.join("bInterfaceNumber"), format!("{i:02x}\n")).unwrap();
+            symlink(self.root.join("sys/bus/usb"), interface.join("subsystem")).unwrap();
+            symlink(self.root.join("sys/bus/usb-serial"), port.join("subsystem")).unwrap();
+            let class = self.root.join("sys/class/tty").join(name);
+            std::fs::create_dir_all(&class).unwrap();
+            symlink(&port, class.join("device")).unwrap();
+            symlink(device, self.root.join("dev").join(name)).unwrap();
+        }
+        std::fs::write(usb.join("idVendor"), "0403\n").unwrap();
+        std::fs::write(usb.join("idProduct"), "6011\n").unwrap();
+        std::fs::write(usb.join("serial"), format!("{serial}\n")).unwrap();
+        std::fs::write(usb.join("product"), "Quad RS232-HS\n").unwrap();
+    }
+
+    /// A udev link to `name` under `dev/serial/DIR`, relative as udev writes it.
+    fn stable(&self, dir: &str, link: &str, name: &str) -> String {
+        let dir = self.root.join("dev/serial").join(dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        symlink(format!("../../{name}"), dir.join(link)).unwrap();
+        dir.join(link).to_string_lossy().into_owned()
+    }
+
+    /// A placeholder ttyS port: serial8250 reserves it, no UART behind it (type 0).
+    fn placeholder(&self, name: &str) {
+        self.builtin(name);
+        std::fs::write(
+            self.root.join("sys/class/tty").join(name).join("type"),
+            "0\n",
+        )
+        .unwrap();
+    }
+
     /// A built-in port (pnp).
     fn builtin(&self, name: &str) {
         let device = self.root.join(format!("sys/devices/pnp0/{name}"));
@@ -135,6 +174,8 @@ fn ports_shows_ids_serial_number_and_product() {
             "USB",
             "0403:6001",
             "A50285BI",
+            "0",
+            "-",
             "FT232R",
             "USB",
             "UART",
@@ -142,12 +183,76 @@ fn ports_shows_ids_serial_number_and_product() {
         ]
     );
     assert_eq!(row("ttyUSB1")[1..4], ["USB", "2e8a:000a", "-"]);
-    assert_eq!(row("ttyS0")[1..], ["other", "-", "-"]);
+    assert_eq!(row("ttyS0")[1..], ["other", "-", "-", "-", "-"]);
     assert!(
         !text.contains("tty0 "),
         "a virtual terminal is no serial port:\n{text}"
     );
     assert!(text.contains("--port usb:0403:6001:A50285BI"), "{text}");
+}
+
+#[test]
+fn ports_shows_stable_names_interfaces_and_latency_and_hides_placeholders() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    machine.usb_serial(
+        "ttyUSB0",
+        ("0403", "6001"),
+        Some("A1"),
+        Path::new(&sim.first),
+    );
+    machine.latency("ttyUSB0", 16);
+    let by_id = machine.stable("by-id", "usb-FTDI_FT232R_USB_UART_A1-if00-port0", "ttyUSB0");
+    let by_path = machine.stable("by-path", "pci-0000:00:14.0-usb-0:1:1.0-port0", "ttyUSB0");
+    machine.multi_port(
+        &["ttyUSB1", "ttyUSB2", "ttyUSB3", "ttyUSB4"],
+        "FT4232A",
+        Path::new(&sim.first),
+    );
+    machine.builtin("ttyS0");
+    machine.placeholder("ttyS1");
+    machine.placeholder("ttyS2");
+    let out = machine.run(&["ports"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    let lines: Vec<&str> = text.lines().collect();
+    let at = lines
+        .iter()
+        .position(|l| l.starts_with(&machine.dev("ttyUSB0")))
+        .unwrap_or_else(|| panic!("{text}"));
+    let row: Vec<&str> = lines[at].split_whitespace().collect();
+    assert_eq!(row[4..7], ["0", "16", "ms"], "{text}");
+    // The stable names under their port.
+    assert_eq!(lines[at + 1], format!("  also {by_id}"), "{text}");
+    assert_eq!(lines[at + 2], format!("  also {by_path}"), "{text}");
+    let interface = |name: &str| -> String {
+        let line = lines
+            .iter()
+            .find(|l| l.starts_with(&machine.dev(name)))
+            .unwrap();
+        line.split_whitespace().nth(4).unwrap().to_string()
+    };
+    assert_eq!(interface("ttyUSB3"), "2");
+    assert!(text.contains(&machine.dev("ttyS0")), "{text}");
+    assert!(!text.contains(&machine.dev("ttyS1")), "{text}");
+    assert!(text.contains("2 placeholder ports hidden"), "{text}");
+    assert!(text.contains("FTDI latency timer above 2 ms"), "{text}");
+    let out = machine.run(&["ports", "--all"]);
+    let text = stdout(&out);
+    assert!(text.contains(&machine.dev("ttyS1")), "{text}");
+    assert!(text.contains("placeholder: no UART behind it"), "{text}");
+
+    // One port of the quad adapter by its interface; the adapter alone is ambiguous.
+    let out = machine.run(&["--port", "usb:0403:6011:FT4232A:2", "-c", "GAP 1, 0", "-v"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let out = machine.run(&["--port", "usb:0403:6011", "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(err.contains("(serial FT4232A, interface 3)"), "{err}");
+    assert!(err.contains("e.g. usb:0403:6011:FT4232A:0"), "{err}");
+    // A stable name is a port like any other.
+    let out = machine.run(&["--port", &by_id, "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
 }
 
 #[test]
@@ -455,4 +560,37 @@ fn probe_names_the_module_on_each_port_and_says_which_are_silent() {
     // Without --probe nothing is probed.
     let out = machine.run(&["ports"]);
     assert!(!stdout(&out).contains("probing"), "{}", stdout(&out));
+
+    // A built-in port is probed only when named: what is wired to it may not expect bytes.
+    let builtin = machine.dev("ttyS0");
+    symlink(&six.first, &builtin).unwrap();
+    std::fs::create_dir_all(machine.root.join("sys/devices/pnp0/ttyS0")).unwrap();
+    symlink(
+        machine.root.join("sys/bus/pnp"),
+        machine.root.join("sys/devices/pnp0/ttyS0/subsystem"),
+    )
+    .unwrap();
+    std::fs::create_dir_all(machine.root.join("sys/class/tty/ttyS0")).unwrap();
+    symlink(
+        machine.root.join("sys/devices/pnp0/ttyS0"),
+        machine.root.join("sys/class/tty/ttyS0/device"),
+    )
+    .unwrap();
+    let out = machine.run(&["ports", "--probe"]);
+    assert!(
+        !stdout(&out).contains(&format!("{builtin}: ")),
+        "{}",
+        stdout(&out)
+    );
+    let out = machine.run(&["ports", "--probe", &builtin]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    assert!(
+        text.contains(&format!("{builtin}: TMCM-6110 (6110V131)")),
+        "{text}"
+    );
+    assert!(
+        !text.contains(&format!("{}: ", machine.dev("ttyUSB0"))),
+        "{text}"
+    );
 }
