@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 
 use serialport::{DataBits, FlowControl, Parity, SerialPort, StopBits};
 
-use super::line::{LineOptions, LineState, Modem, Os, Rs485, holder, latency, sysfs};
+use super::line::{LineOptions, LineState, Modem, Os, Rs485, Saved, holder, latency, sysfs};
 use super::{Link, LinkError};
 
 #[cfg(unix)]
@@ -17,10 +17,10 @@ type Native = serialport::TTYPort;
 type Native = serialport::COMPort;
 
 /// How RS-485 direction is driven.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy)]
 enum Direction {
-    /// By the driver (TIOCSRS485).
-    Kernel(Rs485),
+    /// By the driver (TIOCSRS485), its settings as found put back on closing.
+    Kernel(Rs485, Option<Saved>),
     /// By tmclsh: RTS raised around each write.
     Software(Rs485),
 }
@@ -150,8 +150,9 @@ impl SerialLink {
             }
         }
         if let Some(mode) = options.rs485 {
+            let saved = os.rs485_saved();
             self.direction = Some(match os.set_rs485(&mode) {
-                Ok(()) => Direction::Kernel(mode),
+                Ok(()) => Direction::Kernel(mode, saved),
                 Err(why) => {
                     self.note(format!(
                         "{}: the driver has no RS-485 mode ({why}); tmclsh raises RTS around \
@@ -196,6 +197,13 @@ impl SerialLink {
         latency::read(&file)
     }
 
+    /// Puts the driver's RS-485 settings back as found (the port may be gone: then nothing).
+    fn restore(&mut self) {
+        if let Some(Direction::Kernel(_, Some(saved))) = self.direction.take() {
+            let _ = self.os().restore_rs485(&saved);
+        }
+    }
+
     /// Writes `bytes` with RTS raised around them and held until they have left the UART.
     fn send_rs485(&mut self, bytes: &[u8], mode: Rs485) -> Result<(), LinkError> {
         let lost = |e: serialport::Error| LinkError::Lost(e.to_string());
@@ -210,6 +218,14 @@ impl SerialLink {
         }
         self.port.write_request_to_send(false).map_err(lost)?;
         written.and(drained)
+    }
+}
+
+impl Drop for SerialLink {
+    /// Puts the driver's RS-485 mode back as it was found, so that the next program meets the
+    /// port it knew.
+    fn drop(&mut self) {
+        self.restore();
     }
 }
 
@@ -375,6 +391,7 @@ impl Link for SerialLink {
     }
 
     fn reopen(&mut self) -> Result<(), LinkError> {
+        self.restore();
         let mut notes = Vec::new();
         self.port = open_port(&self.path, self.baud, &mut notes)?;
         for note in notes {
@@ -401,7 +418,7 @@ impl Link for SerialLink {
             },
             latency: self.latency_timer(),
             rs485: self.direction.map(|d| match d {
-                Direction::Kernel(m) => format!(
+                Direction::Kernel(m, _) => format!(
                     "driver's RS-485 mode, RTS during sends, delays {} ms before, {} ms after",
                     m.before.as_millis(),
                     m.after.as_millis()

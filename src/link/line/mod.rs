@@ -13,4 +13,4 @@ pub mod sysfs;
 pub use settings::{LineOptions, Modem, Rs485, SettingError};
 pub use state::{Counters, LineState, ModemLines};
 
-pub(super) use os::Os;
+pub(super) use os::{Os, Saved};

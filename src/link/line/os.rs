@@ -10,10 +10,10 @@ use super::{Counters, ModemLines, Rs485};
 pub(in crate::link) type OsResult<T> = Result<T, String>;
 
 #[cfg(target_os = "linux")]
-pub(in crate::link) use linux::Os;
+pub(in crate::link) use linux::{Os, Saved};
 
 #[cfg(not(target_os = "linux"))]
-pub(in crate::link) use elsewhere::Os;
+pub(in crate::link) use elsewhere::{Os, Saved};
 
 #[cfg(target_os = "linux")]
 mod linux {
@@ -48,9 +48,13 @@ mod linux {
         iomap_base: libc::c_ulong,
     }
 
+    /// The driver's RS-485 settings as found.
+    #[derive(Debug, Clone, Copy)]
+    pub(in crate::link) struct Saved(SerialRs485);
+
     /// `struct serial_rs485`.
     #[repr(C)]
-    #[derive(Default)]
+    #[derive(Debug, Default, Clone, Copy)]
     struct SerialRs485 {
         flags: u32,
         delay_rts_before_send: u32,
@@ -120,6 +124,19 @@ mod linux {
                 dsr: on(libc::TIOCM_DSR),
                 cd: on(libc::TIOCM_CD),
             })
+        }
+
+        /// The driver's RS-485 settings now, to put back on closing.
+        pub(in crate::link) fn rs485_saved(&self) -> Option<Saved> {
+            let mut rs485 = SerialRs485::default();
+            self.ioctl(libc::TIOCGRS485, &mut rs485).ok()?;
+            Some(Saved(rs485))
+        }
+
+        /// Puts back RS-485 settings saved before.
+        pub(in crate::link) fn restore_rs485(&self, saved: &Saved) -> OsResult<()> {
+            let mut rs485 = SerialRs485 { ..saved.0 };
+            self.ioctl(libc::TIOCSRS485, &mut rs485)
         }
 
         /// Puts the driver in RS-485 mode.
@@ -210,7 +227,19 @@ mod elsewhere {
     #[derive(Debug, Clone, Copy)]
     pub(in crate::link) struct Os;
 
+    /// RS-485 settings, which this system has none of here.
+    #[derive(Debug, Clone, Copy)]
+    pub(in crate::link) struct Saved;
+
     impl Os {
+        pub(in crate::link) fn rs485_saved(&self) -> Option<Saved> {
+            None
+        }
+
+        pub(in crate::link) fn restore_rs485(&self, _: &Saved) -> OsResult<()> {
+            Err(NOT_HERE.into())
+        }
+
         pub(in crate::link) fn set_low_latency(&self) -> OsResult<()> {
             Err(NOT_HERE.into())
         }
