@@ -15,6 +15,8 @@ pub(crate) struct Tally {
     pub replies: u64,
     /// The driver's counters when last looked at (opening, or the last failed exchange).
     seen: Option<Counters>,
+    /// Whether a failed exchange has looked at them since opening.
+    looked: bool,
 }
 
 impl Tally {
@@ -31,12 +33,17 @@ impl Tally {
     pub(crate) fn failed(&mut self, link: &mut dyn Link) -> Option<String> {
         let now = link.line_state().counters?;
         let moved = self.seen.and_then(|before| now.moved_since(&before));
+        let since = if self.looked {
+            "the last request without a reply"
+        } else {
+            "the port was opened"
+        };
         self.seen = Some(now);
+        self.looked = true;
         moved.map(|moved| {
             format!(
-                "the serial port counted {moved} since it was last looked at: a rate the \
-                 modules do not use, noise, or two senders on the bus at once (`:line` shows \
-                 the counters)"
+                "the serial port counted {moved} since {since}: a rate the modules do not \
+                 use, noise, or two senders on the bus at once (`:line` shows the counters)"
             )
         })
     }
