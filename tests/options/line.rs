@@ -99,3 +99,16 @@ fn keep_latency() {
         &no_special,
     );
 }
+
+#[test]
+fn over_tcp_the_modem_lines_are_noted_once_and_the_session_works() {
+    let sim = Sim::start(&["--listen", "127.0.0.1:0"]);
+    let out = crate::util::run(&[
+        "--tcp", &sim.first, "--dtr", "on", "--rs485", "-c", "GAP 1, 0",
+    ]);
+    assert_eq!(crate::util::code(&out), 0, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert_eq!(err.matches("no modem lines").count(), 1, "{err}");
+    assert!(err.contains("--dtr on, --rs485 not applied"), "{err}");
+    assert_eq!(crate::util::stdout(&out), "BA 100 0\n");
+}
