@@ -297,6 +297,10 @@ fn cause(error: &serialport::Error) -> Cause {
     if text.contains("busy") || text.contains("exclusive lock") || text.contains("shared lock") {
         return Cause::Busy;
     }
+    // ENXIO, ENODEV: a device file with nothing behind it (an adapter just unplugged).
+    if text.contains("no such device") {
+        return Cause::Missing;
+    }
     match error.kind() {
         serialport::ErrorKind::Io(std::io::ErrorKind::PermissionDenied) => Cause::Denied,
         serialport::ErrorKind::NoDevice
@@ -465,6 +469,10 @@ mod tests {
         );
         assert_eq!(
             cause(&err(K::Io(std::io::ErrorKind::NotFound), "No such file")),
+            Cause::Missing
+        );
+        assert_eq!(
+            cause(&err(K::Unknown, "No such device or address")),
             Cause::Missing
         );
         let denied = open_hint(
