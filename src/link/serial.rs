@@ -436,6 +436,7 @@ impl Link for SerialLink {
             bytes_out: Some(self.bytes_out),
             bytes_in: Some(self.bytes_in),
             counters: os.counters().ok(),
+            notes: self.said.clone(),
         }
     }
 }

@@ -78,8 +78,9 @@ pub(crate) struct Wire {
 impl Wire {
     pub(crate) fn new(mut link: Box<dyn Link>, transcript: Option<Transcript>) -> Self {
         precise_timers();
-        let tally = Tally::new(link.as_mut());
-        Wire {
+        let state = link.line_state();
+        let tally = Tally::new(&state);
+        let mut wire = Wire {
             tally,
             link,
             rx: Rx::default(),
@@ -92,7 +93,13 @@ impl Wire {
             discards: Discards::default(),
             discarded: Vec::new(),
             pace: Pace::default(),
+        };
+        // What the line said of itself on opening (a latency timer left high, modem lines a
+        // port lacks) belongs in the transcript too: a log shared later explains itself.
+        for note in &state.notes {
+            wire.note(note);
         }
+        wire
     }
 
     /// Starts an exchange with `peer`: takes what arrived since the last one (anything but line

@@ -53,7 +53,7 @@ fn rows(link: &str, s: &LineState, requests: u64, replies: u64) -> Vec<(&'static
         ),
         None => none("this port keeps no counters"),
     };
-    vec![
+    let mut rows = vec![
         ("link", link.to_string()),
         ("rate", rate),
         ("modem lines", modem),
@@ -66,7 +66,9 @@ fn rows(link: &str, s: &LineState, requests: u64, replies: u64) -> Vec<(&'static
         ),
         ("received", traffic(s.bytes_in, replies, "reply", "replies")),
         ("errors", errors),
-    ]
+    ];
+    rows.extend(s.notes.iter().map(|note| ("note", note.clone())));
+    rows
 }
 
 /// `18 bytes in 2 requests`, or the requests alone where the link does not count bytes.

@@ -334,10 +334,16 @@ fn a_high_latency_timer_is_explained_once_with_its_fix() {
     // 16 ms, the default: the low-latency flag cannot be set on the pty behind the made-up
     // adapter, the timer read again is still 16 ms, so the cost and the fix are given, once.
     machine.latency("ttyUSB0", 16);
-    let out = machine.run(&lines);
+    let log = machine.root.join("session.log");
+    let mut logged = lines.to_vec();
+    logged.extend(["--log", log.to_str().unwrap()]);
+    let out = machine.run(&logged);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     let err = stderr(&out);
     assert_eq!(err.matches("latency timer, 16 ms").count(), 1, "{err}");
+    // The transcript has it too: a log shared later explains itself.
+    let transcript = std::fs::read_to_string(&log).unwrap();
+    assert!(transcript.contains("latency timer, 16 ms"), "{transcript}");
     assert!(err.contains("1.6 ms on the wire at 115200 baud"), "{err}");
     assert!(
         err.contains("echo 1 > /sys/bus/usb-serial/devices/ttyUSB0/latency_timer"),

@@ -23,6 +23,9 @@ pub struct LineState {
     pub bytes_in: Option<u64>,
     /// The driver's counters (TIOCGICOUNT), where it keeps them.
     pub counters: Option<Counters>,
+    /// What the link said of itself on opening (a rate the driver changed, modem lines a port
+    /// lacks, a latency timer left high), for the transcript and `:line`.
+    pub notes: Vec<String>,
 }
 
 /// The modem lines: outputs and inputs.

@@ -3,8 +3,8 @@
 //! the port counted framing errors or overruns since: a wrong rate, noise, or two drivers on an
 //! RS-485 bus look like silence otherwise.
 
-use crate::link::Link;
 use crate::link::line::Counters;
+use crate::link::{LineState, Link};
 
 /// The exchanges so far and the counters last seen.
 #[derive(Debug, Default)]
@@ -20,10 +20,10 @@ pub(crate) struct Tally {
 }
 
 impl Tally {
-    /// Starts counting on `link`, its counters as they are now.
-    pub(crate) fn new(link: &mut dyn Link) -> Tally {
+    /// Starts counting on a link in `state`, its counters as they are now.
+    pub(crate) fn new(state: &LineState) -> Tally {
         Tally {
-            seen: link.line_state().counters,
+            seen: state.counters,
             ..Tally::default()
         }
     }
@@ -54,7 +54,7 @@ mod tests {
     use std::time::Instant;
 
     use super::*;
-    use crate::link::{LineState, LinkError};
+    use crate::link::LinkError;
 
     /// A link whose driver counts `frame` framing errors.
     struct Counting {
@@ -88,7 +88,7 @@ mod tests {
     #[test]
     fn a_failed_request_names_the_errors_counted_since_last_seen() {
         let mut link = Counting { frame: 5 };
-        let mut tally = Tally::new(&mut link);
+        let mut tally = Tally::new(&link.line_state());
         assert_eq!(tally.failed(&mut link), None, "nothing new");
         link.frame = 8;
         let notice = tally.failed(&mut link).expect("moved");
