@@ -6,6 +6,7 @@
 pub mod holder;
 pub mod latency;
 mod os;
+pub(super) mod refusal;
 pub mod settings;
 pub mod state;
 pub mod sysfs;
