@@ -151,6 +151,12 @@ impl SerialLink {
                 ));
             }
         }
+        if let (Some(_), Some(rts)) = (options.rs485, options.rts) {
+            self.note(format!(
+                "{}: --rs485 drives RTS itself (high while sending), so --rts {rts} is not applied",
+                self.path
+            ));
+        }
         if let Some(mode) = options.rs485 {
             let saved = os.rs485_saved();
             self.direction = Some(match os.set_rs485(&mode) {
