@@ -5,6 +5,8 @@
 //! is refused with exit code 2 and its name — it never runs against the built-in simulator as if
 //! it had not been given.
 
+#[cfg(unix)]
+mod line;
 mod rules;
 mod table;
 

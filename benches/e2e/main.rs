@@ -3,15 +3,18 @@
 //!
 //! `cargo bench --bench e2e -- --quick` runs fewer transactions and repetitions and only prints:
 //! for trying a change, not for publishing. `-- --soak` runs only the fault soak (row 7) and
-//! rewrites only its row and section; `-- --limit` likewise for late replies (row 8). With
-//! `-- --reads N` their cells make N reads each instead of 20,000 (the table says how many).
-//! Linux only: it uses ptys, wait4 and /proc.
+//! rewrites only its row and section; `-- --limit` likewise for late replies (row 8);
+//! `-- --latency` for the latency timer rows (row 9). With `-- --reads N` the soak's and late
+//! replies' cells make N reads each instead of 20,000 (the table says how many). Linux only: it
+//! uses ptys, wait4 and /proc.
 
 #[cfg(target_os = "linux")]
 #[path = "../pure/cases.rs"]
 mod cases;
 #[cfg(target_os = "linux")]
 mod host;
+#[cfg(target_os = "linux")]
+mod latency;
 #[cfg(target_os = "linux")]
 mod local;
 #[cfg(target_os = "linux")]
@@ -47,6 +50,8 @@ struct Plan {
     start_up_runs: usize,
     memory_n: u32,
     soak_reads: u64,
+    latency_n: u32,
+    latency_reps: usize,
 }
 
 #[cfg(target_os = "linux")]
@@ -72,6 +77,8 @@ impl Plan {
             start_up_runs: 51,
             memory_n: 100_000,
             soak_reads: 20_000,
+            latency_n: 200,
+            latency_reps: 3,
         }
     }
 
@@ -96,6 +103,8 @@ impl Plan {
             start_up_runs: 11,
             memory_n: 100_000,
             soak_reads: 1000,
+            latency_n: 50,
+            latency_reps: 1,
         }
     }
 }
@@ -122,6 +131,19 @@ fn main() {
         let row = soak::limit_row(&cells, &limit_plan);
         let section = soak::limit_section(&cells, &limit_plan, &date());
         show_and_write(&row, &section, quick, "late replies", soak::splice_limit);
+        return;
+    }
+    if std::env::args().any(|a| a == "--latency") {
+        eprintln!("e2e: the latency timer rows only");
+        let rows = latency::measure(plan.latency_n, plan.latency_reps);
+        println!("{}", report::text(&rows));
+        if !quick {
+            let path = proc::repo_file("BENCHMARKS.md");
+            let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+            let lines: Vec<String> = rows.iter().map(report::markdown_line).collect();
+            std::fs::write(&path, latency::splice(&old, &lines)).expect("write BENCHMARKS.md");
+            eprintln!("e2e: wrote the latency rows into {}", path.display());
+        }
         return;
     }
     if std::env::args().any(|a| a == "--soak") {
@@ -158,6 +180,8 @@ fn main() {
     let transcript = host.pop().expect("the transcript row");
     rows.append(&mut host);
     rows.extend([in_process, start_up, size, memory, transcript]);
+    step("latency timers");
+    let latency_rows = latency::measure(plan.latency_n, plan.latency_reps);
     step("fault soak (a few minutes at full size)");
     let soak_cells = soak::measure(&soak_plan);
     rows.push(soak::row(&soak_cells, &soak_plan));
@@ -172,6 +196,7 @@ fn main() {
     let soak_line = report::markdown_line(rows.last().expect("the soak row"));
     let limit_line = report::markdown_line(&limit_row);
     rows.push(limit_row);
+    rows.extend(latency_rows);
     println!("{}", report::text(&rows));
     println!("{:<66} {:>12}", "pure part", "ns/op");
     for case in &pure {

@@ -13,6 +13,7 @@ use crate::dialect::{
 };
 use crate::exit::{Exit, Failure};
 use crate::link::Link;
+use crate::link::line::{LineOptions, Modem, Rs485};
 use crate::session::transcript::Header;
 use crate::session::{SessionOptions, Transcript};
 
@@ -33,6 +34,54 @@ pub struct ConnectionArgs {
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT")]
     pub tcp: Option<String>,
+    /// The serial line's settings: modem lines, RS-485, latency timer.
+    #[command(flatten)]
+    pub line: LineArgs,
+}
+
+/// The settings of a serial line (`link::line`).
+#[derive(Debug, Clone, clap::Args)]
+pub struct LineArgs {
+    /// DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that
+    /// resets on DTR is not reset by tmclsh starting or ending).
+    #[arg(long, value_name = "on|off|keep", env = "TMCLSH_DTR", value_parser = modem)]
+    pub dtr: Option<Modem>,
+    /// RTS on opening the port: on, off, or keep (as for --dtr).
+    #[arg(long, value_name = "on|off|keep", env = "TMCLSH_RTS", value_parser = modem)]
+    pub rts: Option<Modem>,
+    /// RS-485 direction: RTS high while tmclsh sends, low to receive (the driver's RS-485 mode
+    /// where it has one, else tmclsh raises RTS around each write and waits until it has left).
+    #[arg(long, env = "TMCLSH_RS485")]
+    pub rs485: bool,
+    /// RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them
+    /// apart); implies --rs485.
+    #[arg(long, value_name = "MS", env = "TMCLSH_RS485_DELAY", value_parser = rs485_delay)]
+    pub rs485_delay: Option<Rs485>,
+    /// Leave an FTDI adapter's latency timer as it is (tmclsh otherwise sets the low-latency
+    /// flag, which lowers a 16 ms timer to 1 ms where the driver honours it).
+    #[arg(long, env = "TMCLSH_KEEP_LATENCY")]
+    pub keep_latency: bool,
+}
+
+fn modem(text: &str) -> Result<Modem, String> {
+    text.parse()
+        .map_err(|e: crate::link::line::SettingError| e.to_string())
+}
+
+fn rs485_delay(text: &str) -> Result<Rs485, String> {
+    Rs485::parse_delay(text).map_err(|e| e.to_string())
+}
+
+impl LineArgs {
+    /// The line settings these flags give.
+    pub fn options(&self) -> LineOptions {
+        LineOptions {
+            dtr: self.dtr,
+            rts: self.rts,
+            rs485: self.rs485_delay.or_else(|| self.rs485.then(Rs485::default)),
+            keep_latency: self.keep_latency,
+        }
+    }
 }
 
 /// The bit rates a serial port can be set to: from the slowest teletype rate to the fastest
@@ -241,7 +290,8 @@ impl ConnectionArgs {
         config: &dyn DialectConfig,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
-        self.target()?.open(self.baud, config, timeout)
+        self.target()?
+            .open_line(self.baud, &self.line.options(), config, timeout)
     }
 }
 
@@ -323,7 +373,12 @@ impl ModuleArgs {
         timeout: Duration,
         audience: Audience,
     ) -> Result<Box<dyn Link>, Failure> {
-        let link = target.open(self.connection.baud, config, timeout)?;
+        let link = target.open_line(
+            self.connection.baud,
+            &self.connection.line.options(),
+            config,
+            timeout,
+        )?;
         if *target == Target::Builtin && audience == Audience::Batch {
             eprintln!(
                 "tmclsh: using the built-in simulated {}; give --port or --tcp for hardware",

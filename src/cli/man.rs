@@ -137,8 +137,8 @@ used only when it is the user's (or root's) and nobody else may write it, otherw
 note
 .TP
 \fB$XDG_CONFIG_HOME/tmclsh/config.toml\fR (\fB~/.config/tmclsh/config.toml\fR)
-the user's configuration file; keys port, baud, protocol, profile, module, timeout, echo and
-log_dir; \fBtmclsh config\fR shows each setting and where it came from
+the user's configuration file; keys port, baud, protocol, profile, module, timeout, echo,
+log_dir, dtr, rts, rs485, rs485_delay and keep_latency; \fBtmclsh config\fR shows each setting and where it came from
 .TP
 \fB$XDG_DATA_HOME/tmclsh/history\-tmcl\fR, \fBhistory\-smd4\fR
 the interactive shell's history, one file per protocol

@@ -178,6 +178,10 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
         let why = "is the bit rate of a serial port; give it with --port";
         refuse(&["baud"], why.into());
     }
+    if !has_value(leaf, "port") && !has_value(leaf, "tcp") {
+        let why = "is a setting of a serial line; give it with --port";
+        refuse(&LINE_IDS, why.into());
+    }
     if words == "snapshot diff" && has_value(leaf, "other") {
         let ids = module_ids();
         let offline: Vec<&str> = ids
@@ -195,6 +199,10 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
     }
     refusals
 }
+
+/// The serial line's settings: they need a port (or a serial server, where they are noted as
+/// not applied).
+const LINE_IDS: [&str; 5] = ["dtr", "rts", "rs485", "rs485_delay", "keep_latency"];
 
 /// The protocol in effect, for commands that have the option.
 fn dialect(matches: &ArgMatches) -> Option<&'static Dialect> {

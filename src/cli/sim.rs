@@ -15,6 +15,7 @@ use crate::sim::Device;
 use crate::sim::console::{self, Answer, Console};
 use crate::sim::fault::{Faults, Faulty};
 use crate::sim::inprocess::SharedDevice;
+use crate::sim::latency::Latency;
 use crate::sim::pacing::Paced;
 
 /// Arguments of `sim`.
@@ -42,6 +43,11 @@ pub(super) struct SimArgs {
     // Its own id: the shell's --baud (a port's bit rate) written before `sim` is not this.
     #[arg(long, id = "pace_baud", value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     pub baud: Option<u32>,
+
+    /// Hold the bytes the simulator sends until MS milliseconds pass or 62 wait, as an FTDI
+    /// adapter's latency timer does (16 ms untouched; tmclsh lowers a real one where it can).
+    #[arg(long, value_name = "MS", value_parser = clap::value_parser!(u64).range(1..=255))]
+    pub latency: Option<u64>,
 
     /// Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts.
     #[arg(long, value_name = "FILE")]
@@ -185,8 +191,8 @@ fn foreign_flag(flag: &str, owner: &Dialect, chosen: &Dialect) -> String {
     )
 }
 
-/// Faults and line pacing around any simulated device (faults inside, so replies are judged
-/// whole).
+/// Faults, line pacing and an adapter's latency timer around any simulated device (faults
+/// inside, so replies are judged whole).
 fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
     let faults = Faults {
         drop_rate: args.drop_rate,
@@ -198,8 +204,13 @@ fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
         seed: args.seed,
     };
     let device: Box<dyn Device> = Box::new(Faulty::new(device, faults));
-    match args.baud {
+    let device: Box<dyn Device> = match args.baud {
         Some(baud) => Box::new(Paced::new(device, baud)),
+        None => device,
+    };
+    // The adapter sits between the line and the host: outermost.
+    match args.latency {
+        Some(ms) => Box::new(Latency::new(device, Duration::from_millis(ms))),
         None => device,
     }
 }

@@ -7,7 +7,7 @@ use std::time::{Duration, SystemTime};
 
 use crate::dialect::{Dialect, DialectConfig};
 use crate::exit::{Exit, Failure};
-use crate::link::{Link, SerialLink, TcpLink};
+use crate::link::{LineOptions, Link, SerialLink, TcpLink};
 
 use super::ports::usb::{UsbSpec, find};
 
@@ -45,17 +45,47 @@ impl Target {
         }
     }
 
-    /// Opens the link; the built-in simulator is `config`'s dialect's.
+    /// Opens the link with the line as the system leaves it; the built-in simulator is
+    /// `config`'s dialect's.
     pub fn open(
         &self,
         baud: u32,
         config: &dyn DialectConfig,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
+        self.open_line(baud, &LineOptions::default(), config, timeout)
+    }
+
+    /// Opens the link with the line settings `line`; what the line says of itself (a rate
+    /// the driver changed, modem lines a port lacks, a latency timer that stays high) is said
+    /// on stderr, once.
+    pub fn open_line(
+        &self,
+        baud: u32,
+        line: &LineOptions,
+        config: &dyn DialectConfig,
+        timeout: Duration,
+    ) -> Result<Box<dyn Link>, Failure> {
         let failed = |e: crate::link::LinkError| Failure::new(Exit::Link, e.to_string());
         Ok(match self {
-            Target::Tcp(address) => Box::new(TcpLink::connect(address, timeout).map_err(failed)?),
-            Target::Serial(path) => Box::new(SerialLink::open(path, baud).map_err(failed)?),
+            Target::Tcp(address) => {
+                let link = TcpLink::connect(address, timeout).map_err(failed)?;
+                if line.wants_modem_lines() {
+                    super::diagnose(&format!(
+                        "a TCP link has no modem lines: {} not applied (a serial server sets \
+                         its own port's)",
+                        line.named().join(", ")
+                    ));
+                }
+                Box::new(link)
+            }
+            Target::Serial(path) => {
+                let mut link = SerialLink::open_with(path, baud, line.clone()).map_err(failed)?;
+                for note in link.take_notes() {
+                    super::diagnose(&note);
+                }
+                Box::new(link)
+            }
             Target::Builtin => {
                 let name = format!("simulated {} (built-in)", config.simulated_module());
                 crate::sim::builtin_link(config.simulator(), name)

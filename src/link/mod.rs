@@ -1,14 +1,16 @@
 //! Links: the byte pipes between tmclsh and a module — a serial port, a TCP socket, or the
 //! built-in simulator in-process. Small on purpose: send, receive before a deadline (a deadline
 //! already past takes what has arrived, which is how stale input is drained), describe, reopen
-//! after the link was lost.
+//! after the link was lost, and the line's state (`line/`: what a real serial line adds).
 
+pub mod line;
 mod serial;
 mod tcp;
 
 use std::io;
 use std::time::Instant;
 
+pub use line::{LineOptions, LineState};
 pub use serial::SerialLink;
 pub use tcp::TcpLink;
 
@@ -64,6 +66,12 @@ pub trait Link: Send {
     /// Seconds per byte on the wire, where the link knows it (serial: 10 bits per byte).
     fn byte_time(&self) -> Option<std::time::Duration> {
         None
+    }
+
+    /// The state of the line for `:line`: rate, modem lines, latency timer, byte counts, the
+    /// driver's error counters — what the link has of them. The default knows nothing.
+    fn line_state(&mut self) -> LineState {
+        LineState::default()
     }
 }
 

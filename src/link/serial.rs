@@ -1,74 +1,311 @@
-//! Serial ports (USB adapters, RS-232/485) at 8N1 without flow control.
+//! Serial ports (USB adapters, RS-232/485) at 8N1 without flow control, with the line settings
+//! of `line/`: DTR and RTS as asked, RS-485 direction, an FTDI adapter's latency timer lowered,
+//! the rate read back; a port that cannot be opened says who holds it or what to do.
 
 use std::io::{Read, Write};
+use std::path::Path;
 use std::time::{Duration, Instant};
 
 use serialport::{DataBits, FlowControl, Parity, SerialPort, StopBits};
 
+use super::line::{
+    LineOptions, LineState, Modem, Os, Rs485, Saved, holder, latency, refusal, sysfs,
+};
 use super::{Link, LinkError};
+
+#[cfg(unix)]
+type Native = serialport::TTYPort;
+#[cfg(windows)]
+type Native = serialport::COMPort;
+
+/// How RS-485 direction is driven.
+#[derive(Debug, Clone, Copy)]
+enum Direction {
+    /// By the driver (TIOCSRS485), its settings as found put back on closing.
+    Kernel(Rs485, Option<Saved>),
+    /// By tmclsh: RTS raised around each write.
+    Software(Rs485),
+}
 
 /// An open serial port.
 pub struct SerialLink {
     path: String,
     baud: u32,
-    port: Box<dyn SerialPort>,
+    options: LineOptions,
+    port: Native,
+    /// The rate the driver set, when it differs from `baud`.
+    actual: Option<u32>,
+    direction: Option<Direction>,
+    /// Whether the port has modem lines (a pty has none).
+    modem: bool,
+    /// Notes for the user not yet taken, and every note given (each is said once, reopening
+    /// included).
+    notes: Vec<String>,
+    said: Vec<String>,
+    bytes_in: u64,
+    bytes_out: u64,
 }
 
 impl SerialLink {
-    /// Opens `path` at `baud`, 8N1, no flow control. A rate of 0 is refused before the port is
-    /// opened (the command line refuses it earlier; a byte would take for ever).
+    /// Opens `path` at `baud`, 8N1, no flow control, the line as the system leaves it.
     pub fn open(path: &str, baud: u32) -> Result<Self, LinkError> {
+        SerialLink::open_with(path, baud, LineOptions::default())
+    }
+
+    /// Opens `path` at `baud` with the line settings `options`.
+    /// A rate of 0 is refused before the port is opened (the command line refuses it earlier; a
+    /// byte would take for ever).
+    pub fn open_with(path: &str, baud: u32, options: LineOptions) -> Result<Self, LinkError> {
         if baud == 0 {
             return Err(LinkError::Open(format!(
                 "cannot open serial port {path} at 0 baud: a bit rate is a positive number"
             )));
         }
-        let port = open_port(path, baud)?;
-        Ok(SerialLink {
+        let mut notes = Vec::new();
+        let port = open_port(path, baud, &mut notes)?;
+        let mut link = SerialLink {
             path: path.to_string(),
             baud,
+            options,
             port,
-        })
+            actual: None,
+            direction: None,
+            modem: true,
+            notes: Vec::new(),
+            said: Vec::new(),
+            bytes_in: 0,
+            bytes_out: 0,
+        };
+        for note in notes {
+            link.note(note);
+        }
+        link.configure();
+        Ok(link)
+    }
+
+    /// The notes about the line not taken yet: a rate the driver changed, modem lines a port
+    /// lacks, a latency timer that stays high. Each is given once.
+    pub fn take_notes(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.notes)
+    }
+
+    fn note(&mut self, note: String) {
+        if !self.said.contains(&note) {
+            self.said.push(note.clone());
+            self.notes.push(note);
+        }
+    }
+
+    fn os(&self) -> Os {
+        os_of(&self.port)
+    }
+
+    /// Applies the line settings to the port just opened.
+    fn configure(&mut self) {
+        self.actual = self.port.baud_rate().ok().filter(|rate| *rate != self.baud);
+        if let Some(actual) = self.actual {
+            self.note(format!(
+                "{}: asked for {} baud, the driver set {actual} (a rate it cannot make is \
+                 rounded or refused; choose one both ends have)",
+                self.path, self.baud
+            ));
+        }
+        self.modem_lines();
+        self.latency();
+    }
+
+    /// DTR, RTS and RS-485 as asked; a port without modem lines notes it once and goes on.
+    fn modem_lines(&mut self) {
+        let options = self.options.clone();
+        if !options.wants_modem_lines() {
+            return;
+        }
+        let os = self.os();
+        // Reading them first tells a port without modem lines before anything is changed.
+        let mut failed = os.modem_lines().err();
+        if failed.is_none() {
+            let mut results = Vec::new();
+            match options.dtr {
+                Some(Modem::On) => results.push(self.port.write_data_terminal_ready(true)),
+                Some(Modem::Off) => results.push(self.port.write_data_terminal_ready(false)),
+                _ => {}
+            }
+            match (options.rts, options.rs485) {
+                (_, Some(_)) => results.push(self.port.write_request_to_send(false)),
+                (Some(Modem::On), None) => results.push(self.port.write_request_to_send(true)),
+                (Some(Modem::Off), None) => results.push(self.port.write_request_to_send(false)),
+                _ => {}
+            }
+            failed = results
+                .into_iter()
+                .find_map(|r| r.err().map(|e| e.to_string()));
+        }
+        if let Some(why) = failed {
+            self.modem = false;
+            let named = options.named().join(", ");
+            self.note(format!(
+                "{} has no modem lines ({why}), as a pseudo-terminal has none: {named} not \
+                 applied; the session goes on without them",
+                self.path
+            ));
+            return;
+        }
+        if options.dtr == Some(Modem::Keep) || options.rts == Some(Modem::Keep) {
+            if let Err(why) = os.keep_lines_on_close() {
+                self.note(format!(
+                    "{}: cannot keep DTR and RTS up on closing ({why})",
+                    self.path
+                ));
+            }
+        }
+        if let (Some(_), Some(rts)) = (options.rs485, options.rts) {
+            self.note(format!(
+                "{}: --rs485 drives RTS itself (high while sending), so --rts {rts} is not applied",
+                self.path
+            ));
+        }
+        if let Some(mode) = options.rs485 {
+            let saved = os.rs485_saved();
+            self.direction = Some(match os.set_rs485(&mode) {
+                Ok(()) => Direction::Kernel(mode, saved),
+                Err(why) => {
+                    self.note(format!(
+                        "{}: the driver has no RS-485 mode ({why}); tmclsh raises RTS around \
+                         each write itself",
+                        self.path
+                    ));
+                    Direction::Software(mode)
+                }
+            });
+        }
+    }
+
+    /// An FTDI adapter's latency timer lowered, or what it costs said once.
+    fn latency(&mut self) {
+        let root = sysfs::root();
+        let Some(file) = latency::timer_file(&root, Path::new(&self.path)) else {
+            return;
+        };
+        let Some(found) = latency::read(&file) else {
+            return;
+        };
+        let os = self.os();
+        let outcome = latency::settle(
+            found,
+            self.options.keep_latency,
+            || os.set_low_latency(),
+            || latency::read(&file),
+        );
+        if let latency::Outcome::High { timer, why } = outcome {
+            let tty = file
+                .parent()
+                .and_then(|d| d.file_name())
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            self.note(latency::advice(&tty, timer, why.as_deref(), self.baud));
+        }
+    }
+
+    /// The timer now, if the port has one.
+    fn latency_timer(&self) -> Option<Duration> {
+        let file = latency::timer_file(&sysfs::root(), Path::new(&self.path))?;
+        latency::read(&file)
+    }
+
+    /// Puts the driver's RS-485 settings back as found (the port may be gone: then nothing).
+    fn restore(&mut self) {
+        if let Some(Direction::Kernel(_, Some(saved))) = self.direction.take() {
+            let _ = self.os().restore_rs485(&saved);
+        }
+    }
+
+    /// Writes `bytes` with RTS raised around them and held until they have left the UART.
+    fn send_rs485(&mut self, bytes: &[u8], mode: Rs485) -> Result<(), LinkError> {
+        let lost = |e: serialport::Error| LinkError::Lost(e.to_string());
+        self.port.write_request_to_send(true).map_err(lost)?;
+        if !mode.before.is_zero() {
+            std::thread::sleep(mode.before);
+        }
+        let written = self.port.write_all(bytes).map_err(LinkError::from_io);
+        let drained = self.os().drain().map_err(LinkError::Lost);
+        if !mode.after.is_zero() {
+            std::thread::sleep(mode.after);
+        }
+        self.port.write_request_to_send(false).map_err(lost)?;
+        written.and(drained)
     }
 }
 
-fn open_port(path: &str, baud: u32) -> Result<Box<dyn SerialPort>, LinkError> {
+impl Drop for SerialLink {
+    /// Puts the driver's RS-485 mode back as it was found, so that the next program meets the
+    /// port it knew.
+    fn drop(&mut self) {
+        self.restore();
+    }
+}
+
+#[cfg(unix)]
+fn os_of(port: &Native) -> Os {
+    #[cfg(target_os = "linux")]
+    {
+        Os::new(std::os::fd::AsRawFd::as_raw_fd(port))
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        let _ = port;
+        Os
+    }
+}
+
+#[cfg(windows)]
+fn os_of(_: &Native) -> Os {
+    Os
+}
+
+fn open_port(path: &str, baud: u32, notes: &mut Vec<String>) -> Result<Native, LinkError> {
+    if let Some(lock) = holder::lock(&sysfs::root(), Path::new(path)) {
+        let own = lock
+            .holder
+            .as_ref()
+            .is_some_and(|h| h.pid == std::process::id());
+        match &lock.holder {
+            Some(holder) if lock.live && !own => {
+                return Err(LinkError::Open(format!(
+                    "cannot open serial port {path}: it is locked by {holder} (lock file {}); \
+                     end that program, or remove the lock file if nothing uses the port",
+                    lock.file.display()
+                )));
+            }
+            Some(holder) if !own => notes.push(format!(
+                "ignoring the stale lock file {} ({} is not running)",
+                lock.file.display(),
+                holder.pid
+            )),
+            _ => {}
+        }
+    }
     serialport::new(path, baud)
         .data_bits(DataBits::Eight)
         .parity(Parity::None)
         .stop_bits(StopBits::One)
         .flow_control(FlowControl::None)
         .timeout(Duration::from_millis(100))
-        .open()
-        .map_err(|e| LinkError::Open(open_hint(path, &e)))
-}
-
-/// The OS error with what usually fixes it.
-fn open_hint(path: &str, error: &serialport::Error) -> String {
-    if error.description.contains("exclusive") {
-        return format!("cannot open serial port {path}: {error}; another program has it open");
-    }
-    let hint = match error.kind() {
-        serialport::ErrorKind::NoDevice => {
-            "; is the adapter plugged in? `tmclsh ports` lists the ports"
-        }
-        serialport::ErrorKind::Io(std::io::ErrorKind::PermissionDenied) => {
-            "; add yourself to the group that owns the port (often `dialout`) and log in again"
-        }
-        serialport::ErrorKind::Io(std::io::ErrorKind::NotFound) => {
-            "; `tmclsh ports` lists the ports"
-        }
-        _ => "",
-    };
-    format!("cannot open serial port {path}: {error}{hint}")
+        .open_native()
+        .map_err(|e| LinkError::Open(refusal::open_hint(path, &e)))
 }
 
 impl Link for SerialLink {
     fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
-        // The port writes straight to the kernel; flush() would be tcdrain, which waits until
-        // the bytes have left the UART and so adds a wire time (or, on a pty, a scheduler round
-        // trip) to every command for nothing.
-        self.port.write_all(bytes).map_err(LinkError::from_io)
+        if let Some(Direction::Software(mode)) = self.direction {
+            self.send_rs485(bytes, mode)?;
+        } else {
+            // The port writes straight to the kernel; flush() would be tcdrain, which waits
+            // until the bytes have left the UART and so adds a wire time (or, on a pty, a
+            // scheduler round trip) to every command for nothing.
+            self.port.write_all(bytes).map_err(LinkError::from_io)?;
+        }
+        self.bytes_out += bytes.len() as u64;
+        Ok(())
     }
 
     fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
@@ -80,7 +317,10 @@ impl Link for SerialLink {
             .map_err(|e| LinkError::Lost(e.to_string()))?;
         match self.port.read(buf) {
             Ok(0) => Err(LinkError::Lost(format!("{} closed", self.path))),
-            Ok(n) => Ok(n),
+            Ok(n) => {
+                self.bytes_in += n as u64;
+                Ok(n)
+            }
             Err(e) => Err(LinkError::from_io(e)),
         }
     }
@@ -90,12 +330,49 @@ impl Link for SerialLink {
     }
 
     fn reopen(&mut self) -> Result<(), LinkError> {
-        self.port = open_port(&self.path, self.baud)?;
+        self.restore();
+        let mut notes = Vec::new();
+        self.port = open_port(&self.path, self.baud, &mut notes)?;
+        for note in notes {
+            self.note(note);
+        }
+        self.configure();
         Ok(())
     }
 
     fn byte_time(&self) -> Option<Duration> {
-        Some(Duration::from_secs_f64(10.0 / f64::from(self.baud)))
+        let rate = self.actual.unwrap_or(self.baud);
+        Some(Duration::from_secs_f64(10.0 / f64::from(rate.max(1))))
+    }
+
+    fn line_state(&mut self) -> LineState {
+        let os = self.os();
+        LineState {
+            rate: Some(self.actual.unwrap_or(self.baud)),
+            asked_rate: self.actual.map(|_| self.baud),
+            modem: if self.modem {
+                os.modem_lines().ok()
+            } else {
+                None
+            },
+            latency: self.latency_timer(),
+            rs485: self.direction.map(|d| match d {
+                Direction::Kernel(m, _) => format!(
+                    "driver's RS-485 mode, RTS during sends, delays {} ms before, {} ms after",
+                    m.before.as_millis(),
+                    m.after.as_millis()
+                ),
+                Direction::Software(m) => format!(
+                    "RTS raised by tmclsh around each write, delays {} ms before, {} ms after",
+                    m.before.as_millis(),
+                    m.after.as_millis()
+                ),
+            }),
+            bytes_out: Some(self.bytes_out),
+            bytes_in: Some(self.bytes_in),
+            counters: os.counters().ok(),
+            notes: self.said.clone(),
+        }
     }
 }
 

@@ -23,6 +23,7 @@
 
 mod discard;
 mod pace;
+mod tally;
 mod trust;
 
 use std::fmt::Display;
@@ -36,6 +37,7 @@ use super::{SessionError, interrupt};
 
 use discard::Discards;
 use pace::Pace;
+pub(crate) use tally::Tally;
 use trust::Suspicion;
 pub(crate) use trust::{Benign, Harmless, Settled, nothing_benign};
 
@@ -72,12 +74,17 @@ pub(crate) struct Wire {
     /// Discarded bytes not yet written to the transcript.
     discarded: Vec<u8>,
     pace: Pace,
+    /// Requests and replies counted, for `:line`.
+    pub tally: Tally,
 }
 
 impl Wire {
-    pub(crate) fn new(link: Box<dyn Link>, transcript: Option<Transcript>) -> Self {
+    pub(crate) fn new(mut link: Box<dyn Link>, transcript: Option<Transcript>) -> Self {
         precise_timers();
-        Wire {
+        let state = link.line_state();
+        let tally = Tally::new(&state);
+        let mut wire = Wire {
+            tally,
             link,
             rx: Rx::default(),
             transcript,
@@ -89,7 +96,13 @@ impl Wire {
             discards: Discards::default(),
             discarded: Vec::new(),
             pace: Pace::default(),
+        };
+        // What the line said of itself on opening (a latency timer left high, modem lines a
+        // port lacks) belongs in the transcript too: a log shared later explains itself.
+        for note in &state.notes {
+            wire.note(note);
         }
+        wire
     }
 
     /// Starts an exchange with `peer`: takes what arrived since the last one (anything but line
@@ -109,14 +122,22 @@ impl Wire {
         }
         self.pace = Pace::default();
         self.in_flight = Some(peer);
+        self.tally.requests += 1;
         Ok(())
     }
 
     /// Ends the exchange started by [`Wire::begin`]: a failed one leaves its peer suspect; what
     /// was discarded becomes one notice per kind.
     pub(crate) fn finish(&mut self, ok: bool) {
-        if let (Some(peer), false) = (self.in_flight.take(), ok) {
-            self.suspect.add(peer);
+        match (self.in_flight.take(), ok) {
+            (Some(peer), false) => {
+                self.suspect.add(peer);
+                if let Some(notice) = self.tally.failed(self.link.as_mut()) {
+                    self.notices.push(notice);
+                }
+            }
+            (Some(_), true) => self.tally.replies += 1,
+            (None, _) => {}
         }
         self.flush_discarded();
         let summary = self.discards.summary();

@@ -36,6 +36,13 @@ pub const SHARED: &[Helper] = &[
         Section::Output,
     ),
     helper(
+        "line",
+        ":line",
+        "the link's state: rate, modem lines, latency timer, bytes and replies, error counters",
+        ArgKind::None,
+        Section::Output,
+    ),
+    helper(
         "raw",
         ":raw",
         "toggle showing replies exactly as received",

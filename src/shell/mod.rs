@@ -5,6 +5,7 @@ pub mod batch;
 pub mod commission;
 mod help;
 pub mod helpers;
+mod line;
 mod script;
 pub mod terminal;
 pub mod values;
@@ -108,6 +109,7 @@ impl Shell {
                 writeln!(out, "raw output {}", if self.raw { "on" } else { "off" })?;
             }
             "source" => self.source(arg, out)?,
+            "line" => line::write_line_state(self.session(), out)?,
             "snapshot" | "scan" | "watch" | "record" | "plot" => {
                 let session = self.session.as_deref_mut().expect("the session is back");
                 commission::helper(session, &mut self.commission, helper.name, arg, out)?

@@ -360,3 +360,47 @@ fn a_profile_is_a_built_in_name_or_a_file() {
         stderr(&out)
     );
 }
+
+#[test]
+fn the_serial_line_settings_come_from_the_project_file() {
+    let sim = crate::sim::Sim::start(&["--pty"]);
+    let place = Place::new();
+    place.project_file(&format!(
+        "port = \"{}\"\ndtr = \"off\"\nrts = \"keep\"\nrs485 = true\nrs485_delay = \"1,2\"\nkeep_latency = true\n",
+        sim.first
+    ));
+    let out = place.run(&["-c", "GAP 1, 0"], &[]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("--dtr off, --rts keep, --rs485 not applied"),
+        "{}",
+        stderr(&out)
+    );
+    let out = place.run(&["config"], &[]);
+    let report = stdout(&out);
+    assert!(
+        shown(&report, "dtr").starts_with("dtr = \"off\" "),
+        "{report}"
+    );
+    assert!(
+        shown(&report, "rs485").starts_with("rs485 = true "),
+        "{report}"
+    );
+    assert!(
+        shown(&report, "keep_latency").starts_with("keep_latency = true "),
+        "{report}"
+    );
+    // A flag's key is true or false.
+    place.project_file("rs485 = \"yes\"\n");
+    let out = place.run(&["config"], &[]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("rs485 must be true or false"),
+        "{}",
+        stderr(&out)
+    );
+    place.project_file("dtr = \"up\"\n");
+    let out = place.run(&["config"], &[]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(stderr(&out).contains("on, off or keep"), "{}", stderr(&out));
+}

@@ -1,11 +1,12 @@
 //! Serial ports: `tmclsh ports` shows what USB adapters say about themselves, `--port
 //! usb:VID:PID[:SERIAL]` finds the adapter whatever its device file, and the REPL waits for a port
 //! that is not there yet. Adapters cannot be plugged in on demand, so a made-up sysfs tree (read
-//! by debug builds from TMCLSH_TEST_SYSFS) stands for them, its device files symlinks to
+//! from TMCLSH_TEST_SYSFS, by release builds too) stands for them, its device files symlinks to
 //! simulators' pseudo-terminals.
 
 #![cfg(target_os = "linux")]
 
+use std::io::Write;
 use std::os::unix::fs::symlink;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -57,6 +58,66 @@ impl Machine {
         std::fs::create_dir_all(&class).unwrap();
         symlink(&port, class.join("device")).unwrap();
         symlink(device, self.root.join("dev").join(name)).unwrap();
+    }
+
+    /// The latency timer of the FTDI adapter `name`, as `ftdi_sio` shows it.
+    fn latency(&self, name: &str, ms: u32) {
+        let port = self
+            .root
+            .join(format!("sys/devices/usb1/{name}/1-0:1.0/{name}"));
+        std::fs::write(port.join("latency_timer"), format!("{ms}\n")).unwrap();
+        let devices = self.root.join("sys/bus/usb-serial/devices");
+        std::fs::create_dir_all(&devices).unwrap();
+        let _ = std::fs::remove_file(devices.join(name));
+        symlink(&port, devices.join(name)).unwrap();
+    }
+
+    /// A UUCP lock file for `name` naming `pid`.
+    fn lock(&self, name: &str, pid: u32) -> PathBuf {
+        let dir = self.root.join("var/lock");
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join(format!("LCK..{name}"));
+        std::fs::write(&file, format!("{pid:>10}\n")).unwrap();
+        file
+    }
+
+    /// A multi-port adapter (an FT4232H): one USB device, a tty per interface.
+    fn multi_port(&self, names: &[&str], serial: &str, device: &Path) {
+        let usb = self.root.join("sys/devices/usb1/1-2");
+        for (i, name) in names.iter().enumerate() {
+            let interface = usb.join(format!("1-2:1.{i}"));
+            let port = interface.join(name);
+            std::fs::create_dir_all(&port).unwrap();
+            std::fs::write(interface.join("bInterfaceNumber"), format!("{i:02x}\n")).unwrap();
+            symlink(self.root.join("sys/bus/usb"), interface.join("subsystem")).unwrap();
+            symlink(self.root.join("sys/bus/usb-serial"), port.join("subsystem")).unwrap();
+            let class = self.root.join("sys/class/tty").join(name);
+            std::fs::create_dir_all(&class).unwrap();
+            symlink(&port, class.join("device")).unwrap();
+            symlink(device, self.root.join("dev").join(name)).unwrap();
+        }
+        std::fs::write(usb.join("idVendor"), "0403\n").unwrap();
+        std::fs::write(usb.join("idProduct"), "6011\n").unwrap();
+        std::fs::write(usb.join("serial"), format!("{serial}\n")).unwrap();
+        std::fs::write(usb.join("product"), "Quad RS232-HS\n").unwrap();
+    }
+
+    /// A udev link to `name` under `dev/serial/DIR`, relative as udev writes it.
+    fn stable(&self, dir: &str, link: &str, name: &str) -> String {
+        let dir = self.root.join("dev/serial").join(dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        symlink(format!("../../{name}"), dir.join(link)).unwrap();
+        dir.join(link).to_string_lossy().into_owned()
+    }
+
+    /// A placeholder ttyS port: serial8250 reserves it, no UART behind it (type 0).
+    fn placeholder(&self, name: &str) {
+        self.builtin(name);
+        std::fs::write(
+            self.root.join("sys/class/tty").join(name).join("type"),
+            "0\n",
+        )
+        .unwrap();
     }
 
     /// A built-in port (pnp).
@@ -113,6 +174,8 @@ fn ports_shows_ids_serial_number_and_product() {
             "USB",
             "0403:6001",
             "A50285BI",
+            "0",
+            "-",
             "FT232R",
             "USB",
             "UART",
@@ -120,12 +183,76 @@ fn ports_shows_ids_serial_number_and_product() {
         ]
     );
     assert_eq!(row("ttyUSB1")[1..4], ["USB", "2e8a:000a", "-"]);
-    assert_eq!(row("ttyS0")[1..], ["other", "-", "-"]);
+    assert_eq!(row("ttyS0")[1..], ["other", "-", "-", "-", "-"]);
     assert!(
         !text.contains("tty0 "),
         "a virtual terminal is no serial port:\n{text}"
     );
     assert!(text.contains("--port usb:0403:6001:A50285BI"), "{text}");
+}
+
+#[test]
+fn ports_shows_stable_names_interfaces_and_latency_and_hides_placeholders() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    machine.usb_serial(
+        "ttyUSB0",
+        ("0403", "6001"),
+        Some("A1"),
+        Path::new(&sim.first),
+    );
+    machine.latency("ttyUSB0", 16);
+    let by_id = machine.stable("by-id", "usb-FTDI_FT232R_USB_UART_A1-if00-port0", "ttyUSB0");
+    let by_path = machine.stable("by-path", "pci-0000:00:14.0-usb-0:1:1.0-port0", "ttyUSB0");
+    machine.multi_port(
+        &["ttyUSB1", "ttyUSB2", "ttyUSB3", "ttyUSB4"],
+        "FT4232A",
+        Path::new(&sim.first),
+    );
+    machine.builtin("ttyS0");
+    machine.placeholder("ttyS1");
+    machine.placeholder("ttyS2");
+    let out = machine.run(&["ports"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    let lines: Vec<&str> = text.lines().collect();
+    let at = lines
+        .iter()
+        .position(|l| l.starts_with(&machine.dev("ttyUSB0")))
+        .unwrap_or_else(|| panic!("{text}"));
+    let row: Vec<&str> = lines[at].split_whitespace().collect();
+    assert_eq!(row[4..7], ["0", "16", "ms"], "{text}");
+    // The stable names under their port.
+    assert_eq!(lines[at + 1], format!("  also {by_id}"), "{text}");
+    assert_eq!(lines[at + 2], format!("  also {by_path}"), "{text}");
+    let interface = |name: &str| -> String {
+        let line = lines
+            .iter()
+            .find(|l| l.starts_with(&machine.dev(name)))
+            .unwrap();
+        line.split_whitespace().nth(4).unwrap().to_string()
+    };
+    assert_eq!(interface("ttyUSB3"), "2");
+    assert!(text.contains(&machine.dev("ttyS0")), "{text}");
+    assert!(!text.contains(&machine.dev("ttyS1")), "{text}");
+    assert!(text.contains("2 placeholder ports hidden"), "{text}");
+    assert!(text.contains("FTDI latency timer above 2 ms"), "{text}");
+    let out = machine.run(&["ports", "--all"]);
+    let text = stdout(&out);
+    assert!(text.contains(&machine.dev("ttyS1")), "{text}");
+    assert!(text.contains("placeholder: no UART behind it"), "{text}");
+
+    // One port of the quad adapter by its interface; the adapter alone is ambiguous.
+    let out = machine.run(&["--port", "usb:0403:6011:FT4232A:2", "-c", "GAP 1, 0", "-v"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let out = machine.run(&["--port", "usb:0403:6011", "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(err.contains("(serial FT4232A, interface 3)"), "{err}");
+    assert!(err.contains("e.g. usb:0403:6011:FT4232A:0"), "{err}");
+    // A stable name is a port like any other.
+    let out = machine.run(&["--port", &by_id, "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
 }
 
 #[test]
@@ -189,6 +316,161 @@ fn a_usb_name_finds_its_adapter_or_says_why_not() {
         "usb:dead:beef",
     ]);
     assert_eq!(code(&out), 3, "{}", stderr(&out));
+}
+
+#[test]
+fn a_high_latency_timer_is_explained_once_with_its_fix() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    machine.usb_serial(
+        "ttyUSB0",
+        ("0403", "6001"),
+        Some("A1"),
+        Path::new(&sim.first),
+    );
+    let port = machine.dev("ttyUSB0");
+    let lines = [
+        "--port", &port, "--baud", "115200", "-c", "GAP 1, 0", "-c", "GAP 2, 0",
+    ];
+
+    // 16 ms, the default: the low-latency flag cannot be set on the pty behind the made-up
+    // adapter, the timer read again is still 16 ms, so the cost and the fix are given, once.
+    machine.latency("ttyUSB0", 16);
+    let log = machine.root.join("session.log");
+    let mut logged = lines.to_vec();
+    logged.extend(["--log", log.to_str().unwrap()]);
+    let out = machine.run(&logged);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert_eq!(err.matches("latency timer, 16 ms").count(), 1, "{err}");
+    // The transcript has it too: a log shared later explains itself.
+    let transcript = std::fs::read_to_string(&log).unwrap();
+    assert!(transcript.contains("latency timer, 16 ms"), "{transcript}");
+    assert!(err.contains("1.6 ms on the wire at 115200 baud"), "{err}");
+    assert!(
+        err.contains("echo 1 > /sys/bus/usb-serial/devices/ttyUSB0/latency_timer"),
+        "{err}"
+    );
+    assert!(err.contains("ATTR{latency_timer}=\"1\""), "{err}");
+    assert!(stdout(&out).ends_with("BA 100 0\n"), "{}", stdout(&out));
+
+    // --keep-latency leaves it alone and says nothing of it.
+    let mut kept = lines.to_vec();
+    kept.push("--keep-latency");
+    let out = machine.run(&kept);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(!stderr(&out).contains("latency"), "{}", stderr(&out));
+
+    // A timer already at 1 ms costs nothing worth a word.
+    machine.latency("ttyUSB0", 1);
+    let out = machine.run(&lines);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(!stderr(&out).contains("latency"), "{}", stderr(&out));
+}
+
+#[test]
+fn line_shows_the_rate_the_timer_and_what_the_pty_lacks() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    machine.usb_serial("ttyUSB0", ("0403", "6001"), None, Path::new(&sim.first));
+    machine.latency("ttyUSB0", 16);
+    let port = machine.dev("ttyUSB0");
+    let out = machine.run(&[
+        "--port",
+        &port,
+        "--keep-latency",
+        "-c",
+        "GAP 1, 0",
+        "-c",
+        ":line",
+    ]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    let row = |name: &str| -> String {
+        text.lines()
+            .find_map(|l| l.strip_prefix(name))
+            .unwrap_or_else(|| panic!("no {name} row:\n{text}"))
+            .trim()
+            .to_string()
+    };
+    assert_eq!(row("rate"), "9600 baud, as read back from the driver");
+    assert!(row("modem lines").starts_with("none ("), "{text}");
+    assert!(row("latency").starts_with("16 ms: "), "{text}");
+    assert_eq!(row("echo strip"), "off");
+    // Identification, ASCII mode and the typed line: every request answered.
+    let sent = row("sent");
+    let received = row("received");
+    let requests = sent
+        .split(" in ")
+        .nth(1)
+        .unwrap()
+        .split(' ')
+        .next()
+        .unwrap();
+    let replies = received
+        .split(" in ")
+        .nth(1)
+        .unwrap()
+        .split(' ')
+        .next()
+        .unwrap();
+    assert_eq!(requests, replies, "{text}");
+    assert!(
+        sent.ends_with(" requests") && received.ends_with(" replies"),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_port_held_by_another_program_names_it() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    // Another tmclsh reading lines from a pipe: it holds the port until its input ends.
+    let mut holder = Command::new(bin())
+        .args(["--port", &sim.first])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let pid = holder.id();
+    let mut input = holder.stdin.take().unwrap();
+    let mut output = std::io::BufReader::new(holder.stdout.take().unwrap());
+    writeln!(input, "GAP 1, 0").unwrap();
+    let mut answer = String::new();
+    std::io::BufRead::read_line(&mut output, &mut answer).unwrap();
+    assert_eq!(answer, "BA 100 0\n", "the holder has the port open");
+    let out = machine.run(&["--port", &sim.first, "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 3, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(err.contains(&format!("in use by PID {pid} (")), "{err}");
+    assert!(err.contains("--port"), "the holder's command line: {err}");
+    assert!(!err.contains("plugged in"), "{err}");
+    drop(input);
+    assert!(holder.wait().unwrap().success());
+}
+
+#[test]
+fn a_live_uucp_lock_refuses_the_port_and_a_stale_one_is_noted() {
+    let sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    machine.usb_serial("ttyUSB0", ("0403", "6001"), None, Path::new(&sim.first));
+    let port = machine.dev("ttyUSB0");
+    // This test's own process: alive, and not the tmclsh that opens the port.
+    let file = machine.lock("ttyUSB0", std::process::id());
+    let out = machine.run(&["--port", &port, "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 3, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(
+        err.contains(&format!("locked by PID {} (", std::process::id())),
+        "{err}"
+    );
+    assert!(err.contains(&file.display().to_string()), "{err}");
+    // A PID no process has (above the kernel's pid_max).
+    machine.lock("ttyUSB0", 4_194_305);
+    let out = machine.run(&["--port", &port, "-c", "GAP 1, 0"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(stderr(&out).contains("stale lock file"), "{}", stderr(&out));
 }
 
 /// The REPL on `port`, its environment clean.
@@ -286,4 +568,37 @@ fn probe_names_the_module_on_each_port_and_says_which_are_silent() {
     // Without --probe nothing is probed.
     let out = machine.run(&["ports"]);
     assert!(!stdout(&out).contains("probing"), "{}", stdout(&out));
+
+    // A built-in port is probed only when named: what is wired to it may not expect bytes.
+    let builtin = machine.dev("ttyS0");
+    symlink(&six.first, &builtin).unwrap();
+    std::fs::create_dir_all(machine.root.join("sys/devices/pnp0/ttyS0")).unwrap();
+    symlink(
+        machine.root.join("sys/bus/pnp"),
+        machine.root.join("sys/devices/pnp0/ttyS0/subsystem"),
+    )
+    .unwrap();
+    std::fs::create_dir_all(machine.root.join("sys/class/tty/ttyS0")).unwrap();
+    symlink(
+        machine.root.join("sys/devices/pnp0/ttyS0"),
+        machine.root.join("sys/class/tty/ttyS0/device"),
+    )
+    .unwrap();
+    let out = machine.run(&["ports", "--probe"]);
+    assert!(
+        !stdout(&out).contains(&format!("{builtin}: ")),
+        "{}",
+        stdout(&out)
+    );
+    let out = machine.run(&["ports", "--probe", &builtin]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    assert!(
+        text.contains(&format!("{builtin}: TMCM-6110 (6110V131)")),
+        "{text}"
+    );
+    assert!(
+        !text.contains(&format!("{}: ", machine.dev("ttyUSB0"))),
+        "{text}"
+    );
 }

@@ -174,6 +174,8 @@ pub(super) struct Setup {
     pub(super) snapshot: Option<PathBuf>,
     /// Simulators serving this cell alone.
     pub(super) sims: Vec<Sim>,
+    /// Environment variables the cell runs with (a made-up sysfs tree).
+    pub(super) env: Vec<(String, String)>,
 }
 
 impl Setup {
@@ -184,6 +186,7 @@ impl Setup {
             base: Vec::new(),
             snapshot: None,
             sims: Vec::new(),
+            env: Vec::new(),
         }
     }
 
@@ -194,6 +197,7 @@ impl Setup {
             base: strings(&["--protocol", "smd4"]),
             snapshot: None,
             sims: Vec::new(),
+            env: Vec::new(),
         }
     }
 
@@ -224,6 +228,7 @@ pub(super) struct Call {
     pub(super) words: Vec<String>,
     pub(super) rest: Vec<String>,
     pub(super) stdin: Option<String>,
+    pub(super) env: Vec<(String, String)>,
 }
 
 pub(super) fn call(face: Face, setup: &Setup) -> Call {
@@ -271,6 +276,7 @@ pub(super) fn call(face: Face, setup: &Setup) -> Call {
         words: strings(words),
         rest,
         stdin,
+        env: setup.env.clone(),
     }
 }
 
@@ -295,8 +301,18 @@ pub(super) fn argv(call: &Call, option: &[String], position: Position) -> Vec<St
 /// Runs tmclsh with a hang guard: a cell that would serve or wait forever (an option dropped
 /// from `sim`, say) is killed after [`PATIENCE`] and reported.
 pub(super) fn run_guarded(args: &[String], stdin: Option<&str>) -> Result<Output, String> {
+    run_guarded_env(args, stdin, &[])
+}
+
+/// [`run_guarded`] with environment variables set.
+pub(super) fn run_guarded_env(
+    args: &[String],
+    stdin: Option<&str>,
+    env: &[(String, String)],
+) -> Result<Output, String> {
     let mut child = Command::new(bin())
         .args(args)
+        .envs(env.iter().map(|(k, v)| (k, v)))
         .stdin(if stdin.is_some() {
             Stdio::piped()
         } else {
@@ -362,7 +378,7 @@ pub(super) fn table(
             };
             let call = call(face, &setup);
             let args = argv(&call, &option, position);
-            let result = run_guarded(&args, call.stdin.as_deref()).and_then(|out| {
+            let result = run_guarded_env(&args, call.stdin.as_deref(), &call.env).and_then(|out| {
                 let cell = Cell { args: args.clone() };
                 if takes_effect {
                     check(face, &out, &cell)

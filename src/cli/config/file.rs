@@ -199,6 +199,17 @@ fn checked(
                 describe(other)
             ));
         }
+        (Kind::Bool, DeValue::Boolean(b)) => {
+            // A flag has no value to check: `true` turns it on.
+            return Ok(b.to_string());
+        }
+        (Kind::Bool, other) => {
+            return Err(format!(
+                "{name} must be true or false ({}), not {}",
+                key.example,
+                describe(other)
+            ));
+        }
         (_, DeValue::String(s)) if s.is_empty() => {
             return Err(format!("{name} is empty ({})", key.example));
         }

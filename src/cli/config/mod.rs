@@ -1,7 +1,8 @@
 //! Defaults that stick: a user file (`$XDG_CONFIG_HOME/tmclsh/config.toml`, else
 //! `~/.config/tmclsh/config.toml`) and a project file (`tmclsh.toml` in the working directory or
-//! the nearest one above it) give port, baud, protocol, profile, module, timeout, echo and a log
-//! directory. Precedence: command line > environment > project > user > built-in.
+//! the nearest one above it) give port, baud, protocol, profile, module, timeout, echo, a log
+//! directory and the serial line's settings (dtr, rts, rs485, rs485_delay, keep_latency).
+//! Precedence: command line > environment > project > user > built-in.
 //!
 //! A file's values become the defaults of the options (clap then ranks them below the command
 //! line and the environment by itself), so they count wherever the option does and, like
@@ -43,6 +44,8 @@ pub enum Kind {
     NameOrPath,
     /// A directory (relative to the configuration file's directory).
     Dir,
+    /// `true` or `false`, for a flag (`rs485 = true` is `--rs485`).
+    Bool,
 }
 
 /// A key of the configuration files and the option it sets.
@@ -117,6 +120,41 @@ pub const KEYS: &[Key] = &[
         kind: Kind::Dir,
         example: "log_dir = \"logs\"",
         unset: "no transcript",
+    },
+    Key {
+        name: "dtr",
+        id: "dtr",
+        kind: Kind::Text,
+        example: "dtr = \"off\" (on, off or keep)",
+        unset: "as opening the port sets it",
+    },
+    Key {
+        name: "rts",
+        id: "rts",
+        kind: Kind::Text,
+        example: "rts = \"keep\" (on, off or keep)",
+        unset: "as opening the port sets it",
+    },
+    Key {
+        name: "rs485",
+        id: "rs485",
+        kind: Kind::Bool,
+        example: "rs485 = true",
+        unset: "",
+    },
+    Key {
+        name: "rs485_delay",
+        id: "rs485_delay",
+        kind: Kind::Text,
+        example: "milliseconds, rs485_delay = \"1\" or \"1,2\"",
+        unset: "no delays (RS-485 only when rs485 = true)",
+    },
+    Key {
+        name: "keep_latency",
+        id: "keep_latency",
+        kind: Kind::Bool,
+        example: "keep_latency = true",
+        unset: "",
     },
 ];
 
@@ -321,7 +359,7 @@ pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults)
                 .map(|v| v.to_string_lossy().into_owned());
             let origin = origin(leaf, key, defaults);
             let value = raw.map(|raw| match key.kind {
-                Kind::Integer => raw,
+                Kind::Integer | Kind::Bool => raw,
                 _ => toml::Value::String(raw).to_string(),
             });
             let unused = value.as_ref().and_then(|_| unused(key));
@@ -403,7 +441,9 @@ mod tests {
                 .find(|a| a.get_id() == key.id)
                 .unwrap_or_else(|| panic!("{} sets no option", key.name));
             assert!(arg.get_long().is_some(), "{}", key.name);
-            assert!(arg.get_action().takes_values(), "{}", key.name);
+            let flag = matches!(arg.get_action(), clap::ArgAction::SetTrue);
+            assert_eq!(flag, key.kind == Kind::Bool, "{}", key.name);
+            assert!(flag || arg.get_action().takes_values(), "{}", key.name);
         }
     }
 

@@ -1,6 +1,8 @@
 //! `tmclsh ports`: the serial ports of this machine, with what USB adapters say about themselves
-//! (vendor and product id, serial number, product), and the `usb:VID:PID[:SERIAL]` names that
-//! `--port` resolves to them; with `--probe`, what module answers on each (`probe.rs`).
+//! (vendor and product id, serial number, interface, product), an FTDI adapter's latency timer,
+//! the stable names udev gives them, and the `usb:VID:PID[:SERIAL][:IF]` names that `--port`
+//! resolves to them; placeholder `ttyS` ports only with `--all`; with `--probe`, what module
+//! answers on each USB port or on the ports named (`probe.rs`).
 
 mod list;
 mod probe;
@@ -11,41 +13,86 @@ use std::path::Path;
 
 use crate::dialect::Configured;
 
-use list::{Kind, ports};
+use list::{Kind, Port, ports};
 
 /// Arguments of `ports`.
 #[derive(Debug, Clone, clap::Args)]
 pub(super) struct PortsArgs {
-    /// Ask each port which TMCL module is there: command 136 to address 1 at 9600 baud, each
-    /// reply awaited 100 ms (a port in use by another program is reported, not waited for).
+    /// Ask each USB port (or each PORT named) which TMCL module is there: command 136 to
+    /// address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is
+    /// reported, not waited for). Built-in ports are probed only when named: what is wired to
+    /// them may not expect the bytes.
     #[arg(long)]
     pub probe: bool,
+    /// List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them).
+    #[arg(long)]
+    pub all: bool,
+    /// The ports to probe (with --probe).
+    #[arg(value_name = "PORT", requires = "probe", value_hint = clap::ValueHint::FilePath)]
+    pub named: Vec<String>,
 }
 
-/// Prints one row per port: device file, kind, VID:PID, serial number, product (manufacturer);
-/// with `--probe`, then what answers on each.
+/// Prints one row per port: device file, kind, VID:PID, serial number, interface, latency timer,
+/// product (manufacturer), and its stable names under it; with `--probe`, then what answers.
 pub(super) fn run(args: &PortsArgs, configs: &Configured, out: &mut dyn Write) -> io::Result<()> {
-    list_ports(out)?;
+    let all = ports()?;
+    list_ports(&all, args.all, out)?;
     if args.probe {
-        let paths: Vec<String> = ports()?
-            .iter()
-            .map(|p| p.path.display().to_string())
-            .collect();
+        let paths: Vec<String> = if args.named.is_empty() {
+            all.iter()
+                .filter(|p| matches!(p.kind, Kind::Usb(_)))
+                .map(|p| p.path.display().to_string())
+                .collect()
+        } else {
+            args.named.clone()
+        };
         probe::probe_all(&paths, configs, out)?;
     }
     Ok(())
 }
 
-fn list_ports(out: &mut dyn Write) -> io::Result<()> {
-    let ports = ports()?;
-    if ports.is_empty() {
-        eprintln!("no serial ports found (USB adapters appear as /dev/ttyUSB* or /dev/ttyACM*)");
-        return Ok(());
+/// The `usb:` name of `port`, with its interface when its adapter has several ports.
+fn usb_name(port: &Port, all: &[Port]) -> Option<String> {
+    let Kind::Usb(usb) = &port.kind else {
+        return None;
+    };
+    let siblings = all
+        .iter()
+        .filter(|p| match &p.kind {
+            Kind::Usb(other) => {
+                (other.vid, other.pid, &other.serial) == (usb.vid, usb.pid, &usb.serial)
+            }
+            _ => false,
+        })
+        .count();
+    let mut name = format!("usb:{:04x}:{:04x}", usb.vid, usb.pid);
+    match (&usb.serial, usb.interface) {
+        (Some(serial), Some(i)) if siblings > 1 => name.push_str(&format!(":{serial}:{i}")),
+        (None, Some(i)) if siblings > 1 => name.push_str(&format!("::{i}")),
+        (Some(serial), _) => name.push_str(&format!(":{serial}")),
+        (None, _) => {}
     }
-    let rows: Vec<[String; 5]> = ports
+    Some(name)
+}
+
+fn list_ports(all: &[Port], placeholders: bool, out: &mut dyn Write) -> io::Result<()> {
+    let shown: Vec<&Port> = all
+        .iter()
+        .filter(|p| placeholders || !p.placeholder)
+        .collect();
+    let hidden = all.len() - shown.len();
+    if shown.is_empty() {
+        eprintln!("no serial ports found (USB adapters appear as /dev/ttyUSB* or /dev/ttyACM*)");
+    }
+    let dash = || "-".to_string();
+    let rows: Vec<[String; 7]> = shown
         .iter()
         .map(|port| {
             let path = port.path.display().to_string();
+            let latency = port
+                .latency
+                .map(|t| format!("{} ms", t.as_millis()))
+                .unwrap_or_else(dash);
             match &port.kind {
                 Kind::Usb(usb) => {
                     let product = match (&usb.product, &usb.manufacturer) {
@@ -58,7 +105,9 @@ fn list_ports(out: &mut dyn Write) -> io::Result<()> {
                         path,
                         "USB".into(),
                         format!("{:04x}:{:04x}", usb.vid, usb.pid),
-                        usb.serial.clone().unwrap_or_else(|| "-".into()),
+                        usb.serial.clone().unwrap_or_else(dash),
+                        usb.interface.map(|i| i.to_string()).unwrap_or_else(dash),
+                        latency,
                         product,
                     ]
                 }
@@ -66,46 +115,69 @@ fn list_ports(out: &mut dyn Write) -> io::Result<()> {
                     let kind = match kind {
                         Kind::Pci => "PCI",
                         Kind::Bluetooth => "Bluetooth",
+                        _ if port.placeholder => "none",
                         _ => "other",
                     };
-                    [path, kind.into(), "-".into(), "-".into(), String::new()]
+                    let product = if port.placeholder {
+                        "placeholder: no UART behind it".to_string()
+                    } else {
+                        String::new()
+                    };
+                    [path, kind.into(), dash(), dash(), dash(), latency, product]
                 }
             }
         })
         .collect();
-    let header = ["PORT", "TYPE", "VID:PID", "SERIAL", "PRODUCT"].map(String::from);
-    let widths: Vec<usize> = (0..4)
-        .map(|i| {
-            rows.iter()
-                .chain([&header])
-                .map(|r| r[i].len())
-                .max()
-                .unwrap_or(0)
-        })
-        .collect();
-    for row in [&header].into_iter().chain(&rows) {
-        let mut line = String::new();
-        for (cell, width) in row.iter().zip(&widths) {
-            line.push_str(&format!("{cell:<width$}  "));
+    if !rows.is_empty() {
+        let header = [
+            "PORT", "TYPE", "VID:PID", "SERIAL", "IF", "LATENCY", "PRODUCT",
+        ]
+        .map(String::from);
+        let widths: Vec<usize> = (0..6)
+            .map(|i| {
+                rows.iter()
+                    .chain([&header])
+                    .map(|r| r[i].chars().count())
+                    .max()
+                    .unwrap_or(0)
+            })
+            .collect();
+        let lines = std::iter::once((&header, None))
+            .chain(rows.iter().zip(&shown).map(|(r, p)| (r, Some(*p))));
+        for (row, port) in lines {
+            let mut line = String::new();
+            for (cell, width) in row.iter().zip(&widths) {
+                line.push_str(&format!("{cell:<width$}  "));
+            }
+            line.push_str(&row[6]);
+            writeln!(out, "{}", crate::escape::escape_control(line.trim_end()))?;
+            for link in port.map(|p| p.links.as_slice()).unwrap_or_default() {
+                let line = format!("  also {}", link.display());
+                writeln!(out, "{}", crate::escape::escape_control(&line))?;
+            }
         }
-        line.push_str(&row[4]);
-        writeln!(out, "{}", crate::escape::escape_control(line.trim_end()))?;
     }
-    if let Some(named) = ports.iter().find_map(|p| match &p.kind {
-        Kind::Usb(usb) => Some(format!(
-            "usb:{:04x}:{:04x}{}",
-            usb.vid,
-            usb.pid,
-            usb.serial
-                .as_ref()
-                .map(|s| format!(":{s}"))
-                .unwrap_or_default()
-        )),
-        _ => None,
-    }) {
+    if hidden > 0 {
+        writeln!(
+            out,
+            "({} hidden: ttyS ports the kernel reserves with no UART behind them; --all lists them)",
+            crate::count::counted(hidden, "placeholder port")
+        )?;
+    }
+    if let Some(named) = shown.iter().find_map(|p| usb_name(p, all)) {
         writeln!(
             out,
             "\n--port {named} names an adapter whatever device file it gets (its serial number may be left out)"
+        )?;
+    }
+    if shown.iter().any(|p| {
+        p.latency
+            .is_some_and(|t| t > crate::link::line::latency::LOW)
+    }) {
+        writeln!(
+            out,
+            "an FTDI latency timer above 2 ms delays every reply by up to that much; tmclsh lowers \
+             it on opening where the driver lets it (the README's \"On a real line\" has the fix)"
         )?;
     }
     Ok(())

@@ -1,5 +1,6 @@
-//! `--port usb:VID:PID[:SERIAL]`: a USB adapter named by what it is rather than by the device
-//! file it happens to get, resolved to that file when the port is opened.
+//! `--port usb:VID:PID[:SERIAL][:IF]`: a USB adapter named by what it is rather than by the
+//! device file it happens to get, resolved to that file when the port is opened; `IF` picks one
+//! port of a multi-port adapter (FT2232, FT4232) by its USB interface.
 
 use std::path::PathBuf;
 
@@ -16,16 +17,19 @@ pub(crate) struct UsbSpec {
     vid: u16,
     pid: u16,
     serial: Option<String>,
+    interface: Option<u8>,
 }
 
 impl UsbSpec {
-    /// `usb:VID:PID[:SERIAL]`, ids in hex; `None` when `port` is a path.
+    /// `usb:VID:PID[:SERIAL][:IF]`, ids in hex, the interface a decimal number (`usb:VID:PID::IF`
+    /// without a serial number); `None` when `port` is a path.
     pub(crate) fn parse(port: &str) -> Option<Result<UsbSpec, String>> {
         let rest = port.strip_prefix(PREFIX)?;
         let bad = || {
             format!(
-                "`{port}`: a USB adapter is named usb:VID:PID or usb:VID:PID:SERIAL, with the \
-                 ids in hex as `tmclsh ports` shows them (e.g. usb:0403:6001)"
+                "`{port}`: a USB adapter is named usb:VID:PID, usb:VID:PID:SERIAL or, for one \
+                 port of a multi-port adapter, usb:VID:PID:SERIAL:IF, with the ids in hex as \
+                 `tmclsh ports` shows them (e.g. usb:0403:6001)"
             )
         };
         let mut parts = rest.splitn(3, ':');
@@ -35,10 +39,27 @@ impl UsbSpec {
         };
         let vid = hex(parts.next());
         let pid = hex(parts.next());
-        let serial = parts.next().map(str::to_string);
-        Some(match (vid, pid, &serial) {
-            (Some(vid), Some(pid), Some(s)) if !s.is_empty() => Ok(UsbSpec { vid, pid, serial }),
-            (Some(vid), Some(pid), None) => Ok(UsbSpec { vid, pid, serial }),
+        let (serial, interface) = match parts.next() {
+            None => (None, None),
+            Some(tail) => match tail.rsplit_once(':') {
+                Some((serial, number))
+                    if (1..=2).contains(&number.len())
+                        && number.bytes().all(|b| b.is_ascii_digit()) =>
+                {
+                    let serial = (!serial.is_empty()).then(|| serial.to_string());
+                    (serial, number.parse::<u8>().ok())
+                }
+                _ if tail.is_empty() => return Some(Err(bad())),
+                _ => (Some(tail.to_string()), None),
+            },
+        };
+        Some(match (vid, pid) {
+            (Some(vid), Some(pid)) => Ok(UsbSpec {
+                vid,
+                pid,
+                serial,
+                interface,
+            }),
             _ => Err(bad()),
         })
     }
@@ -49,6 +70,7 @@ impl UsbSpec {
                 usb.vid == self.vid
                     && usb.pid == self.pid
                     && (self.serial.is_none() || self.serial == usb.serial)
+                    && (self.interface.is_none() || self.interface == usb.interface)
             }
             _ => false,
         }
@@ -58,9 +80,11 @@ impl UsbSpec {
 impl std::fmt::Display for UsbSpec {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{PREFIX}{:04x}:{:04x}", self.vid, self.pid)?;
-        match &self.serial {
-            Some(serial) => write!(f, ":{serial}"),
-            None => Ok(()),
+        match (&self.serial, self.interface) {
+            (Some(serial), Some(interface)) => write!(f, ":{serial}:{interface}"),
+            (None, Some(interface)) => write!(f, "::{interface}"),
+            (Some(serial), None) => write!(f, ":{serial}"),
+            (None, None) => Ok(()),
         }
     }
 }
@@ -100,14 +124,30 @@ pub(crate) fn find(spec: &UsbSpec) -> Found {
             let listed: Vec<String> = several
                 .iter()
                 .map(|p| match &p.kind {
-                    Kind::Usb(Usb {
-                        serial: Some(serial),
-                        ..
-                    }) => format!("{} (serial {serial})", p.path.display()),
-                    _ => format!("{} (no serial number)", p.path.display()),
+                    Kind::Usb(usb) => {
+                        let serial = match &usb.serial {
+                            Some(serial) => format!("serial {serial}"),
+                            None => "no serial number".into(),
+                        };
+                        match usb.interface {
+                            Some(i) if one_adapter(several) => {
+                                format!("{} ({serial}, interface {i})", p.path.display())
+                            }
+                            _ => format!("{} ({serial})", p.path.display()),
+                        }
+                    }
+                    _ => p.path.display().to_string(),
                 })
                 .collect();
             let example = several.iter().find_map(|p| match &p.kind {
+                Kind::Usb(usb) if one_adapter(several) => usb.interface.map(|i| {
+                    let named = UsbSpec {
+                        serial: usb.serial.clone(),
+                        interface: Some(i),
+                        ..spec.clone()
+                    };
+                    format!("; name one by its interface, e.g. {named}")
+                }),
                 Kind::Usb(Usb {
                     serial: Some(serial),
                     ..
@@ -126,6 +166,19 @@ pub(crate) fn find(spec: &UsbSpec) -> Found {
     }
 }
 
+/// Whether the ports are all of one adapter (the same serial number): the ports of a multi-port
+/// adapter, told apart by interface only.
+fn one_adapter(ports: &[&Port]) -> bool {
+    let serials: Vec<Option<&String>> = ports
+        .iter()
+        .map(|p| match &p.kind {
+            Kind::Usb(usb) => usb.serial.as_ref(),
+            _ => None,
+        })
+        .collect();
+    serials[0].is_some() && serials.iter().all(|s| *s == serials[0])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -137,6 +190,15 @@ mod tests {
         let spec = UsbSpec::parse("usb:2E8A:a:AB:CD").unwrap().unwrap();
         assert_eq!(spec.to_string(), "usb:2e8a:000a:AB:CD");
         assert!(UsbSpec::parse("/dev/ttyUSB0").is_none());
+        let spec = UsbSpec::parse("usb:0403:6011:FT4232A:2").unwrap().unwrap();
+        assert_eq!(spec.serial.as_deref(), Some("FT4232A"));
+        assert_eq!(spec.interface, Some(2));
+        assert_eq!(spec.to_string(), "usb:0403:6011:FT4232A:2");
+        let spec = UsbSpec::parse("usb:0403:6010::1").unwrap().unwrap();
+        assert_eq!((spec.serial, spec.interface), (None, Some(1)));
+        // A serial number with a colon in it stays whole unless it ends in a short number.
+        let spec = UsbSpec::parse("usb:0403:6001:AB:CD").unwrap().unwrap();
+        assert_eq!(spec.serial.as_deref(), Some("AB:CD"));
         for bad in [
             "usb:",
             "usb:0403",
