@@ -14,6 +14,7 @@ mod guard;
 mod identify;
 mod mode;
 mod probe;
+mod relink;
 mod stop;
 mod unanswered;
 
@@ -250,7 +251,16 @@ impl TmclSession {
         self.perform(module, Op::Command(instruction))
     }
 
+    /// One request; a link lost on the way is waited for where `--reconnect` asks for it
+    /// (`relink.rs`).
     fn perform(&mut self, module: u8, op: Op) -> Result<TmclExchange, SessionError> {
+        match self.perform_once(module, op) {
+            Err(SessionError::Lost(why)) => self.after_loss(module, op, why),
+            other => other,
+        }
+    }
+
+    fn perform_once(&mut self, module: u8, op: Op) -> Result<TmclExchange, SessionError> {
         let wire = self.contact(module)?;
         let mode = match wire {
             WireMode::Ascii => Mode::Ascii,
