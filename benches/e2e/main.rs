@@ -3,7 +3,8 @@
 //!
 //! `cargo bench --bench e2e -- --quick` runs fewer transactions and repetitions and only prints:
 //! for trying a change, not for publishing. `-- --soak` runs only the fault soak (row 7) and
-//! rewrites only its row and section; `-- --limit` likewise for the documented limit (row 8). Linux only: it uses ptys, wait4 and /proc.
+//! rewrites only its row and section; `-- --limit` likewise for the documented limit (row 8), and
+//! `-- --reconnect` for the reconnect time (row 9, its row only). Linux only: it uses ptys, wait4 and /proc.
 
 #[cfg(target_os = "linux")]
 #[path = "../pure/cases.rs"]
@@ -16,6 +17,8 @@ mod local;
 mod machine;
 #[cfg(target_os = "linux")]
 mod proc;
+#[cfg(target_os = "linux")]
+mod relink;
 #[cfg(target_os = "linux")]
 mod report;
 #[cfg(target_os = "linux")]
@@ -45,6 +48,7 @@ struct Plan {
     start_up_runs: usize,
     memory_n: u32,
     soak_reads: u64,
+    reconnects: usize,
 }
 
 #[cfg(target_os = "linux")]
@@ -70,6 +74,7 @@ impl Plan {
             start_up_runs: 51,
             memory_n: 100_000,
             soak_reads: 20_000,
+            reconnects: 7,
         }
     }
 
@@ -94,6 +99,7 @@ impl Plan {
             start_up_runs: 11,
             memory_n: 100_000,
             soak_reads: 1000,
+            reconnects: 3,
         }
     }
 }
@@ -123,6 +129,23 @@ fn main() {
             "the documented limit",
             soak::splice_limit,
         );
+        return;
+    }
+    if std::env::args().any(|a| a == "--reconnect") {
+        eprintln!("e2e: the reconnect time only");
+        let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("e2e");
+        std::fs::create_dir_all(&scratch).expect("scratch directory");
+        let row = relink::measure(plan.reconnects, &scratch);
+        println!("{}", report::text(std::slice::from_ref(&row)));
+        if quick {
+            eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
+            return;
+        }
+        let path = proc::repo_file("BENCHMARKS.md");
+        let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+        let new = relink::splice(&old, &report::markdown_line(&row));
+        std::fs::write(&path, new).expect("write BENCHMARKS.md");
+        eprintln!("e2e: wrote the reconnect row into {}", path.display());
         return;
     }
     if std::env::args().any(|a| a == "--soak") {
@@ -165,6 +188,8 @@ fn main() {
     step("the documented limit: replies later than the resync window (a few minutes)");
     let limit_cells = soak::measure_faults(&limit_plan, &soak::LIMIT_FAULTS);
     let limit_row = soak::limit_row(&limit_cells, &limit_plan);
+    step("the reconnect time: an adapter unplugged under an idle REPL");
+    let relink_row = relink::measure(plan.reconnects, &scratch);
     let load_after = machine::load();
     let date = date();
     let soak_section = soak::section(&soak_cells, &soak_plan, &date);
@@ -173,6 +198,7 @@ fn main() {
     let soak_line = report::markdown_line(rows.last().expect("the soak row"));
     let limit_line = report::markdown_line(&limit_row);
     rows.push(limit_row);
+    rows.push(relink_row);
     println!("{}", report::text(&rows));
     println!("{:<66} {:>12}", "pure part", "ns/op");
     for case in &pure {

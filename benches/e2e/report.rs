@@ -171,6 +171,12 @@ within the repetitions, so that a busy (or idle) spell of the machine hits both 
    method and every cell's counts.
 8. **The documented limit**: the soak's delay cells with replies later than the resync window;
    its own section above has the method and every cell's counts.
+9. **Reconnect**: `tmclsh --port LINK` at its idle prompt on a pseudo-terminal of its own, with
+   `tmclsh sim --pty --link LINK`; the console's `unplug S` (S from 0.25 s up, a different
+   outage each run, so the replug falls at different points of the pauses between tries) closes
+   the pty and serves a new one behind LINK after S. Timed from the simulator's `pty PATH` line
+   (the new pty is there) to the REPL's `reconnected` (136, 139 and GGP 67 sent again). Only this
+   row: `cargo bench --bench e2e -- --reconnect`.
 ";
 
 /// What the reader should know about targets that were missed.
