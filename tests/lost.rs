@@ -74,13 +74,25 @@ fn piped_until_in_flight(
     args: &[&str],
     line: &str,
 ) -> Child {
+    piped_after(sim, link, log, args, ("GAP 1, 0", "BA 100 0\n"), line)
+}
+
+/// [`piped_until_in_flight`] with a `first` line and what it prints.
+fn piped_after(
+    sim: &mut Sim,
+    link: &Path,
+    log: &Path,
+    args: &[&str],
+    first: (&str, &str),
+    line: &str,
+) -> Child {
     let mut child = spawn(link, log, args);
     let mut stdin = child.stdin.take().unwrap();
     let mut stdout = BufReader::new(child.stdout.take().unwrap());
-    writeln!(stdin, "GAP 1, 0").unwrap();
-    let mut first = String::new();
-    stdout.read_line(&mut first).unwrap();
-    assert_eq!(first, "BA 100 0\n");
+    writeln!(stdin, "{}", first.0).unwrap();
+    let mut printed = String::new();
+    stdout.read_line(&mut printed).unwrap();
+    assert_eq!(printed, first.1);
     assert_eq!(sim.console("silent on"), "ok silent");
     writeln!(stdin, "{line}").unwrap();
     drop(stdin);
@@ -236,4 +248,89 @@ fn with_reconnect_an_interrupted_motion_is_not_sent_again() {
     assert!(sim.console("motor").contains("velocity 0"), "{stderr}");
     let text = std::fs::read_to_string(&log).unwrap();
     assert!(!text.contains("sent again after the reconnect"), "{text}");
+}
+
+#[test]
+fn an_smd4_read_cut_short_is_sent_again_with_reconnect() {
+    let link = tempdir().join("smd4-by-id");
+    let mut sim = Sim::start(&[
+        "--pty",
+        "--protocol",
+        "smd4",
+        "--link",
+        link.to_str().unwrap(),
+    ]);
+    let log = tempdir().join("smd4.log");
+    let vmax = "0x0888,0x0000,1.0000E+03,1.0000E+03\n";
+    let child = piped_after(
+        &mut sim,
+        &link,
+        &log,
+        &[
+            "--protocol",
+            "smd4",
+            "--timeout",
+            "60000",
+            "--reconnect",
+            "20s",
+        ],
+        ("MOTOR:VMAX", vmax),
+        "MOTOR:VMAX",
+    );
+    assert_eq!(sim.console("silent off"), "ok talking");
+    unplug(&mut sim, "0.5");
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(String::from_utf8_lossy(&out.stdout), vmax);
+    let text = std::fs::read_to_string(&log).unwrap();
+    assert!(text.contains("sent again after the reconnect"), "{text}");
+}
+
+#[test]
+fn a_script_catches_the_error_of_a_motion_cut_short() {
+    let (mut sim, link) = linked();
+    let dir = tempdir();
+    let script = dir.join("cut.rhai");
+    // The pause only gives the test time to silence the module before the motion goes out.
+    std::fs::write(
+        &script,
+        "print(`ready ${gap(1, 0)}`);\nsleep(3000);\ntry {\n    ror(0, 500);\n} catch (e) {\n    \
+         print(`caught: ${e}`);\n}\nprint(`position ${gap(1, 0)}`);\n",
+    )
+    .unwrap();
+    let log = dir.join("script.log");
+    let mut child = Command::new(bin())
+        .args([
+            "--port",
+            link.to_str().unwrap(),
+            "--log",
+            log.to_str().unwrap(),
+        ])
+        .args(["--timeout", "60000", "--reconnect", "20s", "run"])
+        .arg(&script)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdout = BufReader::new(child.stdout.take().unwrap());
+    let mut ready = String::new();
+    stdout.read_line(&mut ready).unwrap();
+    assert_eq!(ready, "ready 0\n");
+    assert_eq!(sim.console("silent on"), "ok silent");
+    wait_for(&log, "ROR 0, 500", &mut child);
+    assert_eq!(sim.console("silent off"), "ok talking");
+    unplug(&mut sim, "0.5");
+    child.stdout = Some(stdout.into_inner());
+    let out = child.wait_with_output().unwrap();
+    let printed = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        printed.contains("caught: ") && printed.contains("never sent again"),
+        "{printed}{stderr}"
+    );
+    assert!(
+        printed.contains("position "),
+        "the script went on: {printed}{stderr}"
+    );
 }

@@ -341,6 +341,52 @@ pub trait DialectSession: AsAny {
         }
     }
 
+    /// A request (`what` to `whom`) was cut short by the lost link (`why`): the port is closed
+    /// and the request recorded. Without `--reconnect` (or while already reconnecting) the loss
+    /// is the answer; otherwise the link is waited for, and once it is back `Ok` lets a `read`
+    /// go out again, while anything else fails saying it was not sent again (whether the module
+    /// got it before the link went is unknown).
+    fn after_cut_short(
+        &mut self,
+        what: &str,
+        whom: &str,
+        read: bool,
+        why: String,
+    ) -> Result<(), SessionError> {
+        self.lose_link(&why);
+        let core = self.core_mut();
+        core.wire.note(&format!(
+            "request cut short by the lost link: {what} to {whom}"
+        ));
+        let wait = match core.options.reconnect {
+            Some(wait) if !core.relinking => wait,
+            _ => return Err(SessionError::Lost(why)),
+        };
+        core.wire.notices.push(format!(
+            "link lost ({why}) while `{what}` to {whom} was under way; waiting up to {} for it \
+             to come back",
+            crate::session::relink::say(wait)
+        ));
+        self.await_link(wait)?;
+        let describe = self.describe();
+        let core = self.core_mut();
+        core.wire.notices.push(format!("reconnected: {describe}"));
+        if read {
+            core.wire
+                .note(&format!("sent again after the reconnect: {what} (a read)"));
+            return Ok(());
+        }
+        Err(Failure::new(
+            crate::exit::Exit::Link,
+            format!(
+                "the link was lost while `{what}` to {whom} was under way; it is back, but a \
+                 motion or write is never sent again (the module may or may not have done it): \
+                 read the module's state and send it again if it is still wanted"
+            ),
+        )
+        .into())
+    }
+
     /// A descriptor of the open link to watch for its loss while nobody talks on it (see
     /// [`crate::link::Link::watch`]).
     #[cfg(unix)]

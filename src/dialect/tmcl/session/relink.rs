@@ -6,7 +6,6 @@
 use crate::dialect::DialectSession;
 use crate::dialect::tmcl::protocol::line::{Line, Op, format_line};
 use crate::dialect::tmcl::protocol::{ModuleName, Opcode};
-use crate::exit::{Exit, Failure};
 use crate::session::SessionError;
 
 use super::identify::Identity;
@@ -42,7 +41,6 @@ impl TmclSession {
     ) -> Result<TmclExchange, SessionError> {
         let what = self.request_text(module, op);
         let c = ModuleName(module);
-        self.lose_link(&why);
         // The module may have got it: what it may have set going is stopped on a failure.
         if let Op::Command(i) = op {
             let spec = self
@@ -57,38 +55,8 @@ impl TmclSession {
                 self.core.running.insert(Some(module.into()));
             }
         }
-        self.core.wire.note(&format!(
-            "request cut short by the lost link: {what} to {c}"
-        ));
-        let wait = match self.core.options.reconnect {
-            Some(wait) if !self.core.relinking => wait,
-            _ => return Err(SessionError::Lost(why)),
-        };
-        self.core.wire.notices.push(format!(
-            "link lost ({why}) while `{what}` to {c} was under way; waiting up to {} for it to \
-             come back",
-            crate::session::relink::say(wait)
-        ));
-        self.await_link(wait)?;
-        self.core
-            .wire
-            .notices
-            .push(format!("reconnected: {}", self.describe()));
-        if is_read(op) {
-            self.core
-                .wire
-                .note(&format!("sent again after the reconnect: {what} (a read)"));
-            return self.perform_once(module, op);
-        }
-        Err(Failure::new(
-            Exit::Link,
-            format!(
-                "the link was lost while `{what}` to {c} was under way; it is back, but a motion \
-                 or write is never sent again (the module may or may not have done it): read \
-                 the module's state and send it again if it is still wanted"
-            ),
-        )
-        .into())
+        self.after_cut_short(&what, &c.to_string(), is_read(op), why)?;
+        self.perform_once(module, op)
     }
 
     /// The request as a line, for messages.
