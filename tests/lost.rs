@@ -94,9 +94,23 @@ fn piped_after(
     stdout.read_line(&mut printed).unwrap();
     assert_eq!(printed, first.1);
     assert_eq!(sim.console("silent on"), "ok silent");
+    // The line may already be in the transcript (the first line): wait for one more.
+    let before = std::fs::read_to_string(log).unwrap_or_default();
+    let sent = before.matches(&format!("tx \"{line}")).count()
+        + before.matches(&format!("tx \"A{line}")).count();
     writeln!(stdin, "{line}").unwrap();
     drop(stdin);
-    wait_for(log, line, &mut child);
+    let deadline = Instant::now() + PATIENCE;
+    loop {
+        let now = wait_for(log, line, &mut child);
+        let count = now.matches(&format!("tx \"{line}")).count()
+            + now.matches(&format!("tx \"A{line}")).count();
+        if count > sent {
+            break;
+        }
+        assert!(Instant::now() < deadline, "{line} not sent: {now}");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
     child.stdout = Some(stdout.into_inner());
     child
 }
@@ -191,6 +205,7 @@ fn a_lost_link_mid_request_ends_a_c_run_with_exit_3_at_once() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(3), "{stderr}");
     assert!(stderr.contains("link lost"), "{stderr}");
+    assert!(stderr.contains("--reconnect WAIT"), "a hint: {stderr}");
     let text = std::fs::read_to_string(&log).unwrap();
     assert!(text.contains("GAP 1, 0 to module 1 (A)"), "{text}");
 }

@@ -96,7 +96,9 @@ fn typed_meanwhile(shell: &mut Shell, color: bool, out: &mut dyn Write) {
     let _ = out.flush();
     let mut answer = String::new();
     let _ = std::io::stdin().read_line(&mut answer);
-    let yes = matches!(answer.trim().to_lowercase().as_str(), "y" | "yes");
+    // Ctrl-C while asked is a no.
+    let interrupted = interrupt::take();
+    let yes = !interrupted && matches!(answer.trim().to_lowercase().as_str(), "y" | "yes");
     for line in &lines {
         let what = if yes { "sent after a yes" } else { "not sent" };
         shell
