@@ -75,6 +75,9 @@ pub struct TmclSession {
     /// A binary frame went out since the last ASCII line: modules in ASCII mode hold its bytes
     /// as the start of a line, which a CR must end before the next line.
     line_dirty: bool,
+    /// The echo this session set on each module (`--echo`, `:echo`), set again after a
+    /// reconnect.
+    echo_set: BTreeMap<u8, Echo>,
 }
 
 /// How the command line opens a session: what decides its profile and its mode.
@@ -135,6 +138,7 @@ impl TmclSession {
             core: SessionCore::new(link, options, transcript),
             fallback: profile.clone(),
             known: BTreeMap::new(),
+            echo_set: BTreeMap::new(),
             identified: None,
             profile_given: false,
             identify_each: false,

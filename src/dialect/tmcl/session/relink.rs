@@ -88,8 +88,27 @@ impl TmclSession {
             self.reidentify(module)?;
             if ascii {
                 self.enter_ascii(module)?;
+                self.echo_again(module)?;
             }
         }
+        Ok(())
+    }
+
+    /// Sets the echo this session had set on `module` again, where the module no longer has it
+    /// (it lost its RAM settings while the link was away).
+    fn echo_again(&mut self, module: u8) -> Result<(), SessionError> {
+        let Some(&echo) = self.echo_set.get(&module) else {
+            return Ok(());
+        };
+        if self.modules.get(&module).is_some_and(|m| m.echo == echo) {
+            return Ok(());
+        }
+        self.set_echo(module, echo)?;
+        self.core.wire.notices.push(format!(
+            "{} had lost the echo set before the link was lost; set to {} again",
+            ModuleName(module),
+            echo.name()
+        ));
         Ok(())
     }
 
