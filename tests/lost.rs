@@ -349,3 +349,23 @@ fn a_script_catches_the_error_of_a_motion_cut_short() {
         "the script went on: {printed}{stderr}"
     );
 }
+
+#[test]
+fn another_module_behind_the_port_after_the_outage_is_said() {
+    let (mut first, link) = linked();
+    let second = Sim::start(&["--pty", "--profile", "tmcm-1140"]);
+    let (mut p, _) = repl(&["--port", link.to_str().unwrap()]);
+    p.exp_string("A> ").unwrap();
+    // The first adapter goes for good; another one, with another module, takes its name.
+    let answer = first.console("unplug 600");
+    assert!(answer.starts_with("ok unplugged"), "{answer}");
+    p.exp_string("link lost").unwrap();
+    std::os::unix::fs::symlink(&second.first, &link).unwrap();
+    p.exp_string("now answers as TMCM-1140").unwrap();
+    p.exp_string("reconnected").unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_line("GAP 1, 0").unwrap();
+    p.exp_string("actual_position = 0").unwrap();
+    p.send_line(":quit").unwrap();
+    p.exp_eof().unwrap();
+}
