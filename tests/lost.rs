@@ -369,3 +369,24 @@ fn another_module_behind_the_port_after_the_outage_is_said() {
     p.send_line(":quit").unwrap();
     p.exp_eof().unwrap();
 }
+
+#[test]
+fn a_line_typed_after_giving_up_the_wait_is_not_sent_and_the_wait_starts_again() {
+    let (mut sim, link) = linked();
+    let (mut p, _) = repl(&["--port", link.to_str().unwrap()]);
+    p.exp_string("A> ").unwrap();
+    assert!(sim.console("unplug 600").starts_with("ok unplugged"));
+    p.exp_string("waiting for serial").unwrap();
+    p.send_control('c').unwrap();
+    p.exp_string("stopped waiting").unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_line("ROR 0, 500").unwrap();
+    p.exp_string("`ROR 0, 500` was not sent: the link is still away")
+        .unwrap();
+    p.exp_string("waiting for serial").unwrap();
+    p.send_control('c').unwrap();
+    p.exp_string("stopped waiting").unwrap();
+    p.exp_string("A> ").unwrap();
+    p.send_line(":quit").unwrap();
+    p.exp_eof().unwrap();
+}

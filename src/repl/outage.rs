@@ -5,6 +5,7 @@
 //! typed into a dead link must not start by itself when the link comes back.
 
 use std::io::Write;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use crate::escape::escape_control;
 use crate::session::interrupt;
@@ -13,6 +14,10 @@ use crate::shell::Shell;
 
 /// The most typed input gathered from the terminal after an outage.
 const MOST_TYPED: usize = 64 * 1024;
+
+/// Set while the link is known to be away (a wait was given up with Ctrl-C): a line that fails
+/// then was never sent.
+static AWAY: AtomicBool = AtomicBool::new(false);
 
 /// The link was lost (`why`); `cut_short` is the line that was under way, if one was.
 pub(super) fn lost(
@@ -29,15 +34,25 @@ pub(super) fn lost(
             .annotate(&format!("link lost while idle at the prompt: {why}"));
     }
     shell.session().lose_link(why);
-    if let Some(line) = cut_short {
-        let _ = writeln!(
-            out,
-            "`{}` was cut short: whether the module got it is unknown; it is not sent again",
-            escape_control(line)
-        );
-        shell
-            .session()
-            .annotate(&format!("cut short by the lost link: {line}"));
+    match cut_short {
+        Some(line) if AWAY.load(Ordering::SeqCst) => {
+            let _ = writeln!(
+                out,
+                "`{}` was not sent: the link is still away",
+                escape_control(line)
+            );
+        }
+        Some(line) => {
+            let _ = writeln!(
+                out,
+                "`{}` was cut short: whether the module got it is unknown; it is not sent again",
+                escape_control(line)
+            );
+            shell
+                .session()
+                .annotate(&format!("cut short by the lost link: {line}"));
+        }
+        None => {}
     }
     if wait(shell, color, out) {
         typed_meanwhile(shell, color, out);
@@ -60,14 +75,16 @@ fn wait(shell: &mut Shell, color: bool, out: &mut dyn Write) -> bool {
         if interrupt::take() {
             let _ = writeln!(
                 out,
-                "stopped waiting; commands will fail until the link is back"
+                "stopped waiting; the next line is not sent but starts the wait again"
             );
             shell
                 .session()
                 .annotate("stopped waiting for the link (Ctrl-C)");
+            AWAY.store(true, Ordering::SeqCst);
             return false;
         }
         if shell.session().reconnect().is_ok() {
+            AWAY.store(false, Ordering::SeqCst);
             super::show_notices(shell, color, out);
             let _ = writeln!(
                 out,
