@@ -53,8 +53,19 @@ fn point_link(link: &Path, target: &Path) -> io::Result<()> {
     fresh.push(format!(".new-{}", std::process::id()));
     let fresh = PathBuf::from(fresh);
     let _ = std::fs::remove_file(&fresh);
-    std::os::unix::fs::symlink(target, &fresh)?;
-    std::fs::rename(&fresh, link)
+    let named = |e: io::Error| {
+        io::Error::new(
+            e.kind(),
+            format!(
+                "cannot point --link {} at {}: {e} (does its directory exist, and may you write \
+                 there?)",
+                link.display(),
+                target.display()
+            ),
+        )
+    };
+    std::os::unix::fs::symlink(target, &fresh).map_err(named)?;
+    std::fs::rename(&fresh, link).map_err(named)
 }
 
 /// Removes the symlink `link` (the adapter is gone, and so is its udev name).
