@@ -15,6 +15,7 @@ mod hostile;
 mod identify;
 mod inputs;
 mod layers;
+mod lost;
 mod mixed_bus;
 mod options;
 mod profiles;

@@ -282,6 +282,24 @@ fn stay_ascii() {
 }
 
 #[test]
+fn reconnect() {
+    // The wait only shows when a link is lost (`tests/lost.rs`); the transcript says the policy.
+    table(
+        &["--reconnect", "5s"],
+        &SESSIONS,
+        &|_| Setup::tmcl().with(&["--log", &fresh("reconnect.log")]),
+        &|face, out, cell| {
+            finished(face, out)?;
+            let log = read(value_of(cell, "--log"));
+            expect(log.contains("a lost link is waited for up to 5 s"), || {
+                format!("no reconnect policy in the transcript:\n{log}")
+            })
+        },
+        &no_special,
+    );
+}
+
+#[test]
 fn binary() {
     table(
         &["--binary"],

@@ -56,21 +56,5 @@ pub fn measure(n: u32, reps: usize) -> Vec<Row> {
 
 /// `markdown` with the latency rows replaced, or added at the end of the results table.
 pub fn splice(markdown: &str, rows: &[String]) -> String {
-    let mut lines: Vec<String> = markdown
-        .lines()
-        .filter(|l| !l.starts_with("| 9. "))
-        .map(str::to_string)
-        .collect();
-    let header = lines
-        .iter()
-        .position(|l| l.starts_with("| row |"))
-        .expect("BENCHMARKS.md has a results table");
-    let end = lines[header..]
-        .iter()
-        .position(|l| !l.starts_with('|'))
-        .map_or(lines.len(), |i| header + i);
-    for (i, row) in rows.iter().enumerate() {
-        lines.insert(end + i, row.trim_end().to_string());
-    }
-    lines.join("\n") + "\n"
+    super::report::splice_rows(markdown, "9. Latency timer", rows)
 }

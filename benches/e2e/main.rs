@@ -4,9 +4,9 @@
 //! `cargo bench --bench e2e -- --quick` runs fewer transactions and repetitions and only prints:
 //! for trying a change, not for publishing. `-- --soak` runs only the fault soak (row 7) and
 //! rewrites only its row and section; `-- --limit` likewise for late replies (row 8);
-//! `-- --latency` for the latency timer rows (row 9). With `-- --reads N` the soak's and late
-//! replies' cells make N reads each instead of 20,000 (the table says how many). Linux only: it
-//! uses ptys, wait4 and /proc.
+//! `-- --latency` for the latency timer rows (row 9), `-- --reconnect` for the reconnect time
+//! (row 10, its row only). With `-- --reads N` the soak's and late replies' cells make N reads
+//! each instead of 20,000 (the table says how many). Linux only: it uses ptys, wait4 and /proc.
 
 #[cfg(target_os = "linux")]
 #[path = "../pure/cases.rs"]
@@ -21,6 +21,8 @@ mod local;
 mod machine;
 #[cfg(target_os = "linux")]
 mod proc;
+#[cfg(target_os = "linux")]
+mod relink;
 #[cfg(target_os = "linux")]
 mod report;
 #[cfg(target_os = "linux")]
@@ -52,6 +54,7 @@ struct Plan {
     soak_reads: u64,
     latency_n: u32,
     latency_reps: usize,
+    reconnects: usize,
 }
 
 #[cfg(target_os = "linux")]
@@ -79,6 +82,7 @@ impl Plan {
             soak_reads: 20_000,
             latency_n: 200,
             latency_reps: 3,
+            reconnects: 7,
         }
     }
 
@@ -105,6 +109,7 @@ impl Plan {
             soak_reads: 1000,
             latency_n: 50,
             latency_reps: 1,
+            reconnects: 3,
         }
     }
 }
@@ -144,6 +149,23 @@ fn main() {
             std::fs::write(&path, latency::splice(&old, &lines)).expect("write BENCHMARKS.md");
             eprintln!("e2e: wrote the latency rows into {}", path.display());
         }
+        return;
+    }
+    if std::env::args().any(|a| a == "--reconnect") {
+        eprintln!("e2e: the reconnect time only");
+        let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("e2e");
+        std::fs::create_dir_all(&scratch).expect("scratch directory");
+        let row = relink::measure(plan.reconnects, &scratch);
+        println!("{}", report::text(std::slice::from_ref(&row)));
+        if quick {
+            eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
+            return;
+        }
+        let path = proc::repo_file("BENCHMARKS.md");
+        let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+        let new = relink::splice(&old, &report::markdown_line(&row));
+        std::fs::write(&path, new).expect("write BENCHMARKS.md");
+        eprintln!("e2e: wrote the reconnect row into {}", path.display());
         return;
     }
     if std::env::args().any(|a| a == "--soak") {
@@ -188,6 +210,8 @@ fn main() {
     step("late replies: replies later than the resync window (a few minutes)");
     let limit_cells = soak::measure_faults(&limit_plan, &soak::LIMIT_FAULTS);
     let limit_row = soak::limit_row(&limit_cells, &limit_plan);
+    step("the reconnect time: an adapter unplugged under an idle REPL");
+    let relink_row = relink::measure(plan.reconnects, &scratch);
     let load_after = machine::load();
     let date = date();
     let soak_section = soak::section(&soak_cells, &soak_plan, &date);
@@ -197,6 +221,7 @@ fn main() {
     let limit_line = report::markdown_line(&limit_row);
     rows.push(limit_row);
     rows.extend(latency_rows);
+    rows.push(relink_row);
     println!("{}", report::text(&rows));
     println!("{:<66} {:>12}", "pure part", "ns/op");
     for case in &pure {

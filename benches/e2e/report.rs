@@ -125,6 +125,35 @@ pub fn markdown(run: &Run) -> String {
 }
 
 /// One row as a line of the markdown table.
+/// `markdown` with the rows whose name starts with `prefix` replaced by `lines`, where the first
+/// of them stood, or added at the end of the results table.
+pub fn splice_rows(markdown: &str, prefix: &str, lines: &[String]) -> String {
+    let start = format!("| {prefix}");
+    let mut kept: Vec<String> = Vec::new();
+    let mut at = None;
+    for line in markdown.lines() {
+        if line.starts_with(&start) {
+            at.get_or_insert(kept.len());
+        } else {
+            kept.push(line.to_string());
+        }
+    }
+    let at = at.unwrap_or_else(|| {
+        let header = kept
+            .iter()
+            .position(|l| l.starts_with("| row |"))
+            .expect("BENCHMARKS.md has a results table");
+        kept[header..]
+            .iter()
+            .position(|l| !l.starts_with('|'))
+            .map_or(kept.len(), |i| header + i)
+    });
+    for (i, line) in lines.iter().enumerate() {
+        kept.insert(at + i, line.trim_end().to_string());
+    }
+    kept.join("\n") + "\n"
+}
+
 pub fn markdown_line(row: &Row) -> String {
     table_row(&row.cells())
 }
@@ -176,6 +205,12 @@ within the repetitions, so that a busy (or idle) spell of the machine hits both 
    adapter does, against the same simulator without `--latency` (started first, in the same
    run). 16 ms is an untouched adapter's timer (what tmclsh's notice on opening says it costs
    where the low-latency flag does not lower it); 1 ms is the timer the flag sets.
+10. **Reconnect**: `tmclsh --port LINK` at its idle prompt on a pseudo-terminal of its own, with
+    `tmclsh sim --pty --link LINK`; the console's `unplug S` (S from 0.25 s up, a different
+    outage each run, so the replug falls at different points of the pauses between tries) closes
+    the pty and serves a new one behind LINK after S. Timed from the simulator's `pty PATH` line
+    (the new pty is there) to the REPL's `reconnected` (136, 139 and GGP 67 sent again). Only this
+    row: `cargo bench --bench e2e -- --reconnect`.
 ";
 
 /// What the reader should know about targets that were missed.

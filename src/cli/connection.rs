@@ -103,6 +103,12 @@ fn parse_baud(text: &str) -> Result<u32, String> {
     }
 }
 
+/// A `--reconnect` time: people's times (`30s`, `2m`, a bare number of milliseconds), at most
+/// 7 days.
+fn parse_wait(text: &str) -> Result<Duration, String> {
+    crate::duration::parse(text.trim())
+}
+
 /// Which protocol the module speaks: shared by the faces that talk to a module and by `params`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct DialectArgs {
@@ -197,6 +203,13 @@ pub struct SessionArgs {
     /// or not they have the ASCII interface.
     #[arg(long)]
     pub binary: bool,
+    /// Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of
+    /// ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always
+    /// waits): the port is found again by the name given (a symlink or usb: name follows an
+    /// adapter plugged back under another device name); an interrupted read is sent again, a
+    /// motion or write never.
+    #[arg(long, value_name = "WAIT", env = "TMCLSH_RECONNECT", value_parser = parse_wait)]
+    pub reconnect: Option<Duration>,
     /// Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131,
     /// profile tmcm-6110 (built in)).
     // Its own id: `tmclsh sim --verbose` logs traffic, and `-v` before `sim` is not that.
@@ -228,6 +241,7 @@ impl SessionArgs {
             validate: !self.no_validate,
             enter: !self.no_enter,
             stay_ascii: self.stay_ascii,
+            reconnect: self.reconnect,
         }
     }
 

@@ -30,6 +30,13 @@ pub(super) struct SimArgs {
     #[arg(long, conflicts_with = "listen")]
     pub pty: bool,
 
+    /// Keep the symlink PATH pointed at the current pseudo-terminal, as udev keeps
+    /// /dev/serial/by-id names pointed at an adapter: after the console's `unplug` it points at
+    /// the new one (and is gone during the outage). An existing file that is not a symlink is
+    /// refused.
+    #[arg(long, value_name = "PATH", conflicts_with = "listen", value_hint = clap::ValueHint::FilePath)]
+    pub link: Option<PathBuf>,
+
     /// Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free
     /// one); the bound address is the first line printed.
     #[arg(long, value_name = "ADDR")]
@@ -252,7 +259,10 @@ pub(super) fn run(
         }
         None => None,
     };
-    let console = Console::new(device, clock, manual, console_help());
+    let mut console = Console::new(device, clock, manual, console_help());
+    if listener.is_none() {
+        console = console.with_unplug(server.unplug_handle());
+    }
     std::thread::spawn(move || {
         for line in std::io::stdin().lock().lines() {
             let Ok(line) = line else { break };
@@ -268,7 +278,7 @@ pub(super) fn run(
         Some(listener) => server.serve_tcp(&listener),
         None => {
             let mut first = true;
-            server.serve_pty(&mut |path| {
+            server.serve_pty_linked(args.link.as_deref(), &mut |path| {
                 if first {
                     let _ = writeln!(out, "{}", path.display()).and_then(|()| out.flush());
                     first = false;

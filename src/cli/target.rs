@@ -7,7 +7,7 @@ use std::time::{Duration, SystemTime};
 
 use crate::dialect::{Dialect, DialectConfig};
 use crate::exit::{Exit, Failure};
-use crate::link::{LineOptions, Link, SerialLink, TcpLink};
+use crate::link::{LineOptions, Link, LinkError, SerialLink, TcpLink};
 
 use super::ports::usb::{UsbSpec, find};
 
@@ -16,8 +16,16 @@ use super::ports::usb::{UsbSpec, find};
 pub enum Target {
     /// A TCP address.
     Tcp(String),
-    /// A serial device file.
+    /// A serial device file (or a symlink to one, followed anew at each reopen).
     Serial(String),
+    /// A USB adapter named by its ids (`name`, `usb:VID:PID[:SERIAL]`), at `path` now; looked up
+    /// again at each reopen, since a replugged adapter comes back under another name.
+    Usb {
+        /// The name as given.
+        name: String,
+        /// The device file it has now.
+        path: String,
+    },
     /// The built-in simulated module.
     Builtin,
 }
@@ -40,7 +48,10 @@ impl Target {
                 let path = find(&spec)
                     .path()
                     .map_err(|(exit, why)| Failure::new(exit, why))?;
-                Ok(Target::Serial(path.to_string_lossy().into_owned()))
+                Ok(Target::Usb {
+                    name: port.to_string(),
+                    path: path.to_string_lossy().into_owned(),
+                })
             }
         }
     }
@@ -86,6 +97,29 @@ impl Target {
                 }
                 Box::new(link)
             }
+            Target::Usb { name, path } => {
+                let first = std::sync::Mutex::new(Some(path.clone()));
+                let spec = UsbSpec::parse(name).and_then(Result::ok);
+                let resolve = move || {
+                    // The path found a moment ago first, then the adapter looked up anew.
+                    if let Some(path) = first.lock().ok().and_then(|mut p| p.take()) {
+                        return Ok(path);
+                    }
+                    let spec = spec
+                        .as_ref()
+                        .ok_or_else(|| LinkError::Open("bad name".into()))?;
+                    find(spec)
+                        .path()
+                        .map(|p| p.to_string_lossy().into_owned())
+                        .map_err(|(_, why)| LinkError::Open(why))
+                };
+                let mut link = SerialLink::open_named(name, baud, line.clone(), Box::new(resolve))
+                    .map_err(failed)?;
+                for note in link.take_notes() {
+                    super::diagnose(&note);
+                }
+                Box::new(link)
+            }
             Target::Builtin => {
                 let name = format!("simulated {} (built-in)", config.simulated_module());
                 crate::sim::builtin_link(config.simulator(), name)
@@ -97,7 +131,7 @@ impl Target {
     pub fn file_name(&self, dialect: &Dialect) -> String {
         let name = match self {
             Target::Tcp(address) => format!("tcp-{address}"),
-            Target::Serial(path) => {
+            Target::Serial(path) | Target::Usb { path, .. } => {
                 let path = Path::new(path);
                 match path.strip_prefix("/dev") {
                     Ok(rest) => rest.to_string_lossy().into_owned(),

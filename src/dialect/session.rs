@@ -280,14 +280,118 @@ pub trait DialectSession: AsAny {
         result
     }
 
-    /// Reopens a lost link, and puts the modules back in the mode the session had them in.
+    /// Reopens a lost link (the port found again by the name given), and puts the modules back
+    /// in the mode the session had them in.
     fn reconnect(&mut self) -> Result<(), SessionError> {
         let wire = &mut self.core_mut().wire;
         wire.link.reopen()?;
         wire.reset();
         let reopened = format!("link reopened: {}", wire.link.describe());
         wire.note(&reopened);
-        self.reenter()
+        let core = self.core_mut();
+        let was = std::mem::replace(&mut core.relinking, true);
+        let result = self.reenter();
+        self.core_mut().relinking = was;
+        if result.is_ok() {
+            self.core_mut().wire.note("reconnected");
+        }
+        result
+    }
+
+    /// The link was found lost: closes it at once, so a port that went away is not held open
+    /// (the loss itself is in the transcript already, noted where it was seen).
+    fn lose_link(&mut self, why: &str) {
+        let wire = &mut self.core_mut().wire;
+        wire.link.close();
+        let describe = wire.link.describe();
+        wire.note(&format!("closed {describe} after losing it ({why})"));
+    }
+
+    /// Waits up to `wait` for the lost link to come back, trying to [`reconnect`] with growing
+    /// pauses; `Err(Lost)` when it did not come back in time, `Err(Interrupted)` on Ctrl-C.
+    ///
+    /// [`reconnect`]: Self::reconnect
+    fn await_link(&mut self, wait: Duration) -> Result<(), SessionError> {
+        let until = std::time::Instant::now() + wait;
+        let describe = self.describe();
+        self.core_mut().wire.note(&format!(
+            "waiting up to {} for the link to come back",
+            crate::session::relink::say(wait)
+        ));
+        let mut backoff = crate::session::relink::Backoff::default();
+        loop {
+            let tried = self.reconnect();
+            if tried.is_ok() {
+                return Ok(());
+            }
+            if std::time::Instant::now() >= until {
+                let why = format!(
+                    "{describe} did not come back within {} (--reconnect)",
+                    crate::session::relink::say(wait)
+                );
+                self.lose_link(&why);
+                return Err(SessionError::Lost(why));
+            }
+            if let Err(e) = backoff.pause(Some(until)) {
+                self.core_mut()
+                    .wire
+                    .note("stopped waiting for the link (Ctrl-C)");
+                return Err(e);
+            }
+        }
+    }
+
+    /// A request (`what` to `whom`) was cut short by the lost link (`why`): the port is closed
+    /// and the request recorded. Without `--reconnect` (or while already reconnecting) the loss
+    /// is the answer; otherwise the link is waited for, and once it is back `Ok` lets a `read`
+    /// go out again, while anything else fails saying it was not sent again (whether the module
+    /// got it before the link went is unknown).
+    fn after_cut_short(
+        &mut self,
+        what: &str,
+        whom: &str,
+        read: bool,
+        why: String,
+    ) -> Result<(), SessionError> {
+        self.lose_link(&why);
+        let core = self.core_mut();
+        core.wire.note(&format!(
+            "request cut short by the lost link: {what} to {whom}"
+        ));
+        let wait = match core.options.reconnect {
+            Some(wait) if !core.relinking => wait,
+            _ => return Err(SessionError::Lost(why)),
+        };
+        core.wire.notices.push(format!(
+            "link lost ({why}) while `{what}` to {whom} was under way; waiting up to {} for it \
+             to come back",
+            crate::session::relink::say(wait)
+        ));
+        self.await_link(wait)?;
+        let describe = self.describe();
+        let core = self.core_mut();
+        core.wire.notices.push(format!("reconnected: {describe}"));
+        if read {
+            core.wire
+                .note(&format!("sent again after the reconnect: {what} (a read)"));
+            return Ok(());
+        }
+        Err(Failure::new(
+            crate::exit::Exit::Link,
+            format!(
+                "the link was lost while `{what}` to {whom} was under way; it is back, but a \
+                 motion or write is never sent again (the module may or may not have done it): \
+                 read the module's state and send it again if it is still wanted"
+            ),
+        )
+        .into())
+    }
+
+    /// A descriptor of the open link to watch for its loss while nobody talks on it (see
+    /// [`crate::link::Link::watch`]).
+    #[cfg(unix)]
+    fn watch_link(&self) -> Option<std::os::fd::OwnedFd> {
+        self.core().wire.link.watch()
     }
 
     /// After Ctrl-C: stops the target's motors even if this session did not start them, and

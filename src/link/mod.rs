@@ -11,7 +11,7 @@ use std::io;
 use std::time::Instant;
 
 pub use line::{LineOptions, LineState};
-pub use serial::SerialLink;
+pub use serial::{Resolve, SerialLink};
 pub use tcp::TcpLink;
 
 /// Why a link operation failed.
@@ -61,6 +61,18 @@ pub trait Link: Send {
             "{} cannot be reopened",
             self.describe()
         )))
+    }
+
+    /// Closes the link after it was found lost, so the port is not held while it is away (the
+    /// next [`reopen`](Self::reopen) opens it again). The default keeps it.
+    fn close(&mut self) {}
+
+    /// A descriptor of the open link to watch while nobody talks on it (the REPL's prompt):
+    /// poll(2) on it with no events asked for reports only a hang-up or an error, so the link's
+    /// loss is seen without a byte read. `None` where the link has none to watch.
+    #[cfg(unix)]
+    fn watch(&self) -> Option<std::os::fd::OwnedFd> {
+        None
     }
 
     /// Seconds per byte on the wire, where the link knows it (serial: 10 bits per byte).

@@ -1,6 +1,10 @@
 //! Serial ports (USB adapters, RS-232/485) at 8N1 without flow control, with the line settings
 //! of `line/`: DTR and RTS as asked, RS-485 direction, an FTDI adapter's latency timer lowered,
 //! the rate read back; a port that cannot be opened says who holds it or what to do.
+//!
+//! A port that goes away (a USB adapter unplugged) is closed at once, and every reopen finds the
+//! device file anew through the link's [`Resolve`]: a replugged adapter usually comes back under
+//! another name (ttyUSB0 → ttyUSB1), which a `/dev/serial/by-id` link or a `usb:` name follows.
 
 use std::io::{Read, Write};
 use std::path::Path;
@@ -27,12 +31,21 @@ enum Direction {
     Software(Rs485),
 }
 
-/// An open serial port.
+/// Finds the device file a port name stands for now: the path as given (a symlink is followed
+/// when it is opened), or a `usb:` name looked up again. Run at every reopen.
+pub type Resolve = Box<dyn Fn() -> Result<String, LinkError> + Send>;
+
+/// A serial port, open or lost.
 pub struct SerialLink {
+    /// The name the user gave (a path, a symlink, a `usb:` name).
+    name: String,
+    /// The device file opened last.
     path: String,
     baud: u32,
     options: LineOptions,
-    port: Native,
+    /// `None` once the port went away: closed at once, not kept half dead.
+    port: Option<Open>,
+    resolve: Resolve,
     /// The rate the driver set, when it differs from `baud`.
     actual: Option<u32>,
     direction: Option<Direction>,
@@ -46,6 +59,13 @@ pub struct SerialLink {
     bytes_out: u64,
 }
 
+/// An open port, with a second descriptor of it to watch for a hang-up while nobody reads.
+struct Open {
+    port: Native,
+    #[cfg(unix)]
+    watch: Option<std::os::fd::OwnedFd>,
+}
+
 impl SerialLink {
     /// Opens `path` at `baud`, 8N1, no flow control, the line as the system leaves it.
     pub fn open(path: &str, baud: u32) -> Result<Self, LinkError> {
@@ -56,18 +76,32 @@ impl SerialLink {
     /// A rate of 0 is refused before the port is opened (the command line refuses it earlier; a
     /// byte would take for ever).
     pub fn open_with(path: &str, baud: u32, options: LineOptions) -> Result<Self, LinkError> {
+        let fixed = path.to_string();
+        Self::open_named(path, baud, options, Box::new(move || Ok(fixed.clone())))
+    }
+
+    /// Opens the port `name` stands for, found by `resolve` now and again at every reopen.
+    pub fn open_named(
+        name: &str,
+        baud: u32,
+        options: LineOptions,
+        resolve: Resolve,
+    ) -> Result<Self, LinkError> {
         if baud == 0 {
             return Err(LinkError::Open(format!(
-                "cannot open serial port {path} at 0 baud: a bit rate is a positive number"
+                "cannot open serial port {name} at 0 baud: a bit rate is a positive number"
             )));
         }
+        let path = resolve()?;
         let mut notes = Vec::new();
-        let port = open_port(path, baud, &mut notes)?;
+        let port = open_port(&path, baud, &mut notes)?;
         let mut link = SerialLink {
-            path: path.to_string(),
+            name: name.to_string(),
+            path,
             baud,
             options,
-            port,
+            port: Some(port),
+            resolve,
             actual: None,
             direction: None,
             modem: true,
@@ -97,12 +131,40 @@ impl SerialLink {
     }
 
     fn os(&self) -> Os {
-        os_of(&self.port)
+        os_of(self.port.as_ref().map(|open| &open.port))
+    }
+
+    /// The open port, or the loss it suffered.
+    fn port(&mut self) -> Result<&mut Native, LinkError> {
+        match &mut self.port {
+            Some(open) => Ok(&mut open.port),
+            None => Err(LinkError::Lost(format!(
+                "{} went away and is not open again yet",
+                self.path
+            ))),
+        }
+    }
+
+    /// Closes the port after a failure that means it is gone; passes the failure on, naming
+    /// the port.
+    fn lost(&mut self, error: LinkError) -> LinkError {
+        match error {
+            LinkError::Lost(why) => {
+                self.restore();
+                self.port = None;
+                LinkError::Lost(format!("{} went away ({why})", self.path))
+            }
+            other => other,
+        }
     }
 
     /// Applies the line settings to the port just opened.
     fn configure(&mut self) {
-        self.actual = self.port.baud_rate().ok().filter(|rate| *rate != self.baud);
+        let rate = self
+            .port
+            .as_ref()
+            .and_then(|open| open.port.baud_rate().ok());
+        self.actual = rate.filter(|rate| *rate != self.baud);
         if let Some(actual) = self.actual {
             self.note(format!(
                 "{}: asked for {} baud, the driver set {actual} (a rate it cannot make is \
@@ -123,17 +185,18 @@ impl SerialLink {
         let os = self.os();
         // Reading them first tells a port without modem lines before anything is changed.
         let mut failed = os.modem_lines().err();
-        if failed.is_none() {
+        if let (true, Some(open)) = (failed.is_none(), self.port.as_mut()) {
+            let port = &mut open.port;
             let mut results = Vec::new();
             match options.dtr {
-                Some(Modem::On) => results.push(self.port.write_data_terminal_ready(true)),
-                Some(Modem::Off) => results.push(self.port.write_data_terminal_ready(false)),
+                Some(Modem::On) => results.push(port.write_data_terminal_ready(true)),
+                Some(Modem::Off) => results.push(port.write_data_terminal_ready(false)),
                 _ => {}
             }
             match (options.rts, options.rs485) {
-                (_, Some(_)) => results.push(self.port.write_request_to_send(false)),
-                (Some(Modem::On), None) => results.push(self.port.write_request_to_send(true)),
-                (Some(Modem::Off), None) => results.push(self.port.write_request_to_send(false)),
+                (_, Some(_)) => results.push(port.write_request_to_send(false)),
+                (Some(Modem::On), None) => results.push(port.write_request_to_send(true)),
+                (Some(Modem::Off), None) => results.push(port.write_request_to_send(false)),
                 _ => {}
             }
             failed = results
@@ -222,16 +285,16 @@ impl SerialLink {
     /// Writes `bytes` with RTS raised around them and held until they have left the UART.
     fn send_rs485(&mut self, bytes: &[u8], mode: Rs485) -> Result<(), LinkError> {
         let lost = |e: serialport::Error| LinkError::Lost(e.to_string());
-        self.port.write_request_to_send(true).map_err(lost)?;
+        self.port()?.write_request_to_send(true).map_err(lost)?;
         if !mode.before.is_zero() {
             std::thread::sleep(mode.before);
         }
-        let written = self.port.write_all(bytes).map_err(LinkError::from_io);
+        let written = self.port()?.write_all(bytes).map_err(LinkError::from_io);
         let drained = self.os().drain().map_err(LinkError::Lost);
         if !mode.after.is_zero() {
             std::thread::sleep(mode.after);
         }
-        self.port.write_request_to_send(false).map_err(lost)?;
+        self.port()?.write_request_to_send(false).map_err(lost)?;
         written.and(drained)
     }
 }
@@ -244,11 +307,12 @@ impl Drop for SerialLink {
     }
 }
 
+/// The ioctls of the open port; on a port that went away (-1) each says so.
 #[cfg(unix)]
-fn os_of(port: &Native) -> Os {
+fn os_of(port: Option<&Native>) -> Os {
     #[cfg(target_os = "linux")]
     {
-        Os::new(std::os::fd::AsRawFd::as_raw_fd(port))
+        Os::new(port.map_or(-1, std::os::fd::AsRawFd::as_raw_fd))
     }
     #[cfg(not(target_os = "linux"))]
     {
@@ -258,11 +322,11 @@ fn os_of(port: &Native) -> Os {
 }
 
 #[cfg(windows)]
-fn os_of(_: &Native) -> Os {
+fn os_of(_: Option<&Native>) -> Os {
     Os
 }
 
-fn open_port(path: &str, baud: u32, notes: &mut Vec<String>) -> Result<Native, LinkError> {
+fn open_port(path: &str, baud: u32, notes: &mut Vec<String>) -> Result<Open, LinkError> {
     if let Some(lock) = holder::lock(&sysfs::root(), Path::new(path)) {
         let own = lock
             .holder
@@ -284,14 +348,27 @@ fn open_port(path: &str, baud: u32, notes: &mut Vec<String>) -> Result<Native, L
             _ => {}
         }
     }
-    serialport::new(path, baud)
+    let port = serialport::new(path, baud)
         .data_bits(DataBits::Eight)
         .parity(Parity::None)
         .stop_bits(StopBits::One)
         .flow_control(FlowControl::None)
         .timeout(Duration::from_millis(100))
         .open_native()
-        .map_err(|e| LinkError::Open(refusal::open_hint(path, &e)))
+        .map_err(|e| LinkError::Open(refusal::open_hint(path, &e)))?;
+    #[cfg(unix)]
+    {
+        use std::os::fd::{AsRawFd, BorrowedFd};
+        // SAFETY: the descriptor is the open port's, valid while `port` lives; it is only
+        // borrowed here to be duplicated (serialport's port has no `AsFd`).
+        let borrowed = unsafe { BorrowedFd::borrow_raw(port.as_raw_fd()) };
+        let watch = borrowed.try_clone_to_owned().ok();
+        Ok(Open { port, watch })
+    }
+    #[cfg(not(unix))]
+    {
+        Ok(Open { port })
+    }
 }
 
 impl Link for SerialLink {
@@ -302,7 +379,8 @@ impl Link for SerialLink {
             // The port writes straight to the kernel; flush() would be tcdrain, which waits
             // until the bytes have left the UART and so adds a wire time (or, on a pty, a
             // scheduler round trip) to every command for nothing.
-            self.port.write_all(bytes).map_err(LinkError::from_io)?;
+            let result = self.port()?.write_all(bytes).map_err(LinkError::from_io);
+            result.map_err(|e| self.lost(e))?;
         }
         self.bytes_out += bytes.len() as u64;
         Ok(())
@@ -312,32 +390,52 @@ impl Link for SerialLink {
         // A deadline already past still takes what has arrived (a zero-time poll), so the
         // session's drain before each request really empties the port.
         let wait = deadline.saturating_duration_since(Instant::now());
-        self.port
-            .set_timeout(wait)
-            .map_err(|e| LinkError::Lost(e.to_string()))?;
-        match self.port.read(buf) {
-            Ok(0) => Err(LinkError::Lost(format!("{} closed", self.path))),
-            Ok(n) => {
-                self.bytes_in += n as u64;
-                Ok(n)
-            }
-            Err(e) => Err(LinkError::from_io(e)),
-        }
+        let path = self.path.clone();
+        let port = self.port()?;
+        let result = match port.set_timeout(wait) {
+            Err(e) => Err(LinkError::Lost(e.to_string())),
+            Ok(()) => match port.read(buf) {
+                Ok(0) => Err(LinkError::Lost(format!("end of file on {path}"))),
+                Ok(n) => Ok(n),
+                Err(e) => Err(LinkError::from_io(e)),
+            },
+        };
+        let n = result.map_err(|e| self.lost(e))?;
+        self.bytes_in += n as u64;
+        Ok(n)
     }
 
     fn describe(&self) -> String {
-        format!("serial {} at {} baud", self.path, self.baud)
+        if self.name == self.path {
+            format!("serial {} at {} baud", self.path, self.baud)
+        } else {
+            format!("serial {} ({}) at {} baud", self.name, self.path, self.baud)
+        }
     }
 
     fn reopen(&mut self) -> Result<(), LinkError> {
         self.restore();
+        self.port = None;
+        let path = (self.resolve)()?;
         let mut notes = Vec::new();
-        self.port = open_port(&self.path, self.baud, &mut notes)?;
+        self.port = Some(open_port(&path, self.baud, &mut notes)?);
+        self.path = path;
         for note in notes {
             self.note(note);
         }
         self.configure();
         Ok(())
+    }
+
+    fn close(&mut self) {
+        self.restore();
+        self.port = None;
+    }
+
+    #[cfg(unix)]
+    fn watch(&self) -> Option<std::os::fd::OwnedFd> {
+        let open = self.port.as_ref()?;
+        open.watch.as_ref()?.try_clone().ok()
     }
 
     fn byte_time(&self) -> Option<Duration> {

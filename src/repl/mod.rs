@@ -7,9 +7,11 @@
 pub mod complete;
 pub mod editor;
 mod history;
+mod outage;
+#[cfg(unix)]
+mod watch;
 
 use std::io::{IsTerminal, Write};
-use std::time::{Duration, Instant};
 
 use crossterm::style::Stylize;
 use rustyline::error::ReadlineError;
@@ -57,6 +59,8 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         out,
         "Type :help for help, Tab to complete, Ctrl-D to leave."
     );
+    // The REPL always waits for a lost link, asking before it sends what was typed meanwhile.
+    shell.session().core_mut().options.reconnect = None;
     let mut exit = Exit::Success;
     loop {
         // SIGTERM or SIGHUP, during a command or at the prompt: the session ends here.
@@ -69,11 +73,28 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         if let Some(helper) = editor.helper_mut() {
             helper.grammar = shell.session_ref().grammar();
         }
+        #[cfg(unix)]
+        let watch = shell
+            .session_ref()
+            .watch_link()
+            .and_then(watch::LinkWatch::start);
         let line = {
             let _prompting = interrupt::Prompting::start();
             editor.readline(&shell.prompt())
         };
+        #[cfg(unix)]
+        let lost = watch.as_ref().is_some_and(watch::LinkWatch::lost);
+        #[cfg(not(unix))]
+        let lost = false;
+        #[cfg(unix)]
+        drop(watch);
         if interrupt::terminated().is_some() {
+            continue;
+        }
+        if lost && matches!(line, Err(ReadlineError::Interrupted)) {
+            interrupt::take();
+            let why = format!("{} went away", shell.session().describe());
+            outage::lost(shell, &why, None, color, &mut out);
             continue;
         }
         match line {
@@ -142,7 +163,8 @@ fn terminate(shell: &mut Shell, why: &str) {
     }
 }
 
-/// Runs one typed line and shows its outcome. What the session noticed while it waited for a
+/// Runs one typed line and shows its outcome (also for `outage`, the lines typed while the link
+/// was away and confirmed). What the session noticed while it waited for a
 /// reply (bytes it discarded before the reply, a position event, a transcript that failed) is
 /// shown before the reply or error it concerns.
 fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Flow {
@@ -156,7 +178,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
         // A helper writes as it goes, and some redraw what they wrote (`:watch`, `:plot`, a
         // progress bar): a line put between would break the drawing, so its notices follow.
         show_notices(shell, color, out);
-        return outcome(shell, result, color, out);
+        return outcome(shell, text, result, color, out);
     }
     let result = shell.session().execute(text);
     show_notices(shell, color, out);
@@ -177,7 +199,7 @@ fn handle(shell: &mut Shell, text: &str, color: bool, out: &mut dyn Write) -> Fl
         let _ = writeln!(out, "{}{shown}", stamp(shell));
         Flow::Continue
     });
-    outcome(shell, result, color, out)
+    outcome(shell, text, result, color, out)
 }
 
 /// Writes the session's notices, one line each.
@@ -196,6 +218,7 @@ fn show_notices(shell: &mut Shell, color: bool, out: &mut dyn Write) {
 /// Ends a line: an error is shown, Ctrl-C stops the motors, a lost link is waited for.
 fn outcome(
     shell: &mut Shell,
+    text: &str,
     result: Result<Flow, SessionError>,
     color: bool,
     out: &mut dyn Write,
@@ -208,8 +231,7 @@ fn outcome(
             Flow::Continue
         }
         Err(SessionError::Lost(message)) => {
-            let _ = writeln!(out, "link lost: {}", escape_control(&message));
-            wait_for_link(shell, out);
+            outage::lost(shell, &message, Some(text), color, out);
             Flow::Continue
         }
         Err(e) => {
@@ -235,34 +257,5 @@ fn stamp(shell: &Shell) -> String {
 fn stop_target(shell: &mut Shell, out: &mut dyn Write) {
     for line in shell.session().stop_target() {
         let _ = writeln!(out, "{}", escape_control(&line));
-    }
-}
-
-/// Waits for the port to come back, reopens it and re-enters ASCII mode; Ctrl-C gives up.
-fn wait_for_link(shell: &mut Shell, out: &mut dyn Write) {
-    let _ = writeln!(
-        out,
-        "waiting for {} to come back (Ctrl-C to stop waiting)…",
-        shell.session().describe()
-    );
-    let mut next_try = Instant::now();
-    loop {
-        if interrupt::take() {
-            let _ = writeln!(
-                out,
-                "stopped waiting; commands will fail until the link is back"
-            );
-            return;
-        }
-        if Instant::now() >= next_try {
-            match shell.session().reconnect() {
-                Ok(()) => {
-                    let _ = writeln!(out, "reconnected: {}", shell.session().describe());
-                    return;
-                }
-                Err(_) => next_try = Instant::now() + Duration::from_millis(500),
-            }
-        }
-        std::thread::sleep(interrupt::SLICE);
     }
 }

@@ -27,6 +27,9 @@ pub struct SessionCore {
     pub running: Addresses,
     /// Requests go out without waiting for a suspect line to go quiet (stops, mode restores).
     pub urgent: bool,
+    /// The session is bringing a lost link back: a loss now fails at once rather than waiting
+    /// inside the wait.
+    pub relinking: bool,
 }
 
 impl SessionCore {
@@ -36,12 +39,21 @@ impl SessionCore {
         options: SessionOptions,
         transcript: Option<Transcript>,
     ) -> Self {
+        let mut wire = Wire::new(link, transcript);
+        if let Some(wait) = options.reconnect {
+            wire.note(&format!(
+                "a lost link is waited for up to {} (--reconnect); only an interrupted read is \
+                 sent again",
+                super::relink::say(wait)
+            ));
+        }
         SessionCore {
-            wire: Wire::new(link, transcript),
+            wire,
             options,
             moved: Addresses::new(),
             running: Addresses::new(),
             urgent: false,
+            relinking: false,
         }
     }
 

@@ -127,6 +127,11 @@ pub fn terminated() -> Option<Termination> {
     Termination::from_number(TERMINATED.load(Ordering::SeqCst))
 }
 
+/// Whether the line editor waits at the prompt now.
+pub fn prompting() -> bool {
+    PROMPTING.load(Ordering::SeqCst)
+}
+
 /// Marks the time the line editor waits at the prompt (dropped when it returns), so a SIGTERM or
 /// SIGHUP reaches it.
 pub struct Prompting(());

@@ -7,6 +7,7 @@
 pub mod core;
 pub mod interrupt;
 pub mod notices;
+pub mod relink;
 pub(crate) mod rx;
 pub mod transcript;
 pub(crate) mod wire;
@@ -35,6 +36,9 @@ pub struct SessionOptions {
     pub enter: bool,
     /// Leave modules in ASCII mode on exit (`--stay-ascii`).
     pub stay_ascii: bool,
+    /// How long a run that is not interactive waits for a lost link to come back
+    /// (`--reconnect`); `None`: it fails at once (exit 3).
+    pub reconnect: Option<Duration>,
 }
 
 impl Default for SessionOptions {
@@ -45,6 +49,7 @@ impl Default for SessionOptions {
             validate: true,
             enter: true,
             stay_ascii: false,
+            reconnect: None,
         }
     }
 }

@@ -323,6 +323,13 @@ fn fail(
         Some((number, text)) => diagnose(err, &format!("line {number} ({text}): {error}")),
         None => diagnose(err, &error.to_string()),
     }
+    if matches!(error, SessionError::Lost(_)) && shell.session_ref().options().reconnect.is_none() {
+        diagnose(
+            err,
+            "the run stops at a lost link; --reconnect WAIT (e.g. 30s) waits for it to come \
+             back, sending an interrupted read again but never a motion or write",
+        );
+    }
     interrupt::take();
     if shell.session().may_be_moving() {
         for message in shell.session().stop_motion() {

@@ -2,7 +2,8 @@
 //! (`ok …` or `error: …`), so a test can change inputs and switches or trigger faults while the
 //! simulator runs, and wait for the answer before going on.
 
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
 
 use super::inprocess::SharedDevice;
 use crate::clock::{Clock, ManualClock};
@@ -18,6 +19,10 @@ const SHARED_HELP: &str = " Both:
   faults                             show the seed and the faults injected since it was set
   silent on|off                      stop or resume answering (commands still execute)
   hangup                             hang up the connection now
+  unplug SECS                        with --pty: the adapter goes away (the pty closes, the client
+                                     reads EOF or EIO) and comes back after SECS on a new pty, another
+                                     number, its path printed as `pty PATH` and behind --link; the
+                                     modules keep their state (only the adapter was unplugged)
   advance DURATION                   with --manual-clock: let time pass (2s, 250ms, 1.5s; plain = ms)
   time                               show the simulation time
   quit                               end the simulator";
@@ -56,6 +61,26 @@ impl Answer {
     }
 }
 
+/// The longest outage `unplug` simulates.
+const LONGEST_UNPLUG: Duration = Duration::from_secs(3600);
+
+/// An `unplug` asked for on the console and not yet acted on by the pty server: the adapter, not
+/// the module, goes away, so it is the server's business rather than the device's.
+#[derive(Debug, Default)]
+pub struct Unplug(Mutex<Option<Duration>>);
+
+impl Unplug {
+    /// Asks for an outage of `secs`.
+    fn ask(&self, outage: Duration) {
+        *self.0.lock().unwrap_or_else(|e| e.into_inner()) = Some(outage);
+    }
+
+    /// The outage asked for, once.
+    pub fn take(&self) -> Option<Duration> {
+        self.0.lock().unwrap_or_else(|e| e.into_inner()).take()
+    }
+}
+
 /// A console attached to a device and its clock.
 pub struct Console {
     device: SharedDevice,
@@ -63,6 +88,8 @@ pub struct Console {
     manual: Option<Arc<ManualClock>>,
     /// The text of [`help`], whose command names `help` lists.
     help: String,
+    /// Where `unplug` goes: the pty server's (none on TCP).
+    unplug: Option<Arc<Unplug>>,
 }
 
 impl Console {
@@ -79,7 +106,14 @@ impl Console {
             clock,
             manual,
             help,
+            unplug: None,
         }
+    }
+
+    /// Lets `unplug` reach the pty server.
+    pub fn with_unplug(mut self, unplug: Arc<Unplug>) -> Self {
+        self.unplug = Some(unplug);
+        self
     }
 
     /// Runs one line.
@@ -98,6 +132,19 @@ impl Console {
                     Answer::Ok(format!("{:.6} s", clock.now().as_secs_f64()))
                 }
             },
+            ["unplug", secs] => match (&self.unplug, unplug_time(secs)) {
+                (None, _) => Answer::Error(
+                    "unplug needs a pseudo-terminal (--pty); on TCP use hangup".into(),
+                ),
+                (_, Err(e)) => Answer::Error(e),
+                (Some(unplug), Ok(outage)) => {
+                    unplug.ask(outage);
+                    Answer::Ok(format!(
+                        "unplugged for {} s; the pty comes back on a new number",
+                        outage.as_secs_f64()
+                    ))
+                }
+            },
             _ => {
                 let now = self.clock.now();
                 let mut device = self.device.lock().unwrap_or_else(|e| e.into_inner());
@@ -109,6 +156,18 @@ impl Console {
             }
         }
     }
+}
+
+/// The outage of `unplug SECS`: seconds, fractions allowed, at most an hour.
+fn unplug_time(secs: &str) -> Result<Duration, String> {
+    secs.parse::<f64>()
+        .ok()
+        .filter(|s| s.is_finite() && *s >= 0.0)
+        .map(Duration::from_secs_f64)
+        .filter(|d| *d <= LONGEST_UNPLUG)
+        .ok_or_else(|| {
+            format!("'{secs}' is not a time in seconds from 0 to 3600 (unplug 2, unplug 0.5)")
+        })
 }
 
 /// The answer to `help`: the command names on one line (the console answers every command with
@@ -179,6 +238,28 @@ mod tests {
         assert!(matches!(console.run("advance 1s"), Answer::Error(_)));
     }
 
+    #[test]
+    fn unplug_hands_its_outage_to_the_server_once() {
+        let (console, _) = console(true);
+        let unplug = Arc::new(Unplug::default());
+        let console = console.with_unplug(unplug.clone());
+        assert!(
+            console
+                .run("unplug 1.5")
+                .line()
+                .starts_with("ok unplugged for 1.5 s")
+        );
+        assert_eq!(unplug.take(), Some(Duration::from_millis(1500)));
+        assert_eq!(unplug.take(), None);
+        for refused in ["-1", "soon", "NaN", "3601"] {
+            assert!(
+                matches!(console.run(&format!("unplug {refused}")), Answer::Error(_)),
+                "{refused}"
+            );
+        }
+        assert_eq!(unplug.take(), None);
+    }
+
     fn console_without_manual() -> (Console, Arc<ManualClock>) {
         console(false)
     }
@@ -222,6 +303,12 @@ mod tests {
                 "{name} in {help}"
             );
         }
+        assert!(
+            console
+                .run("unplug 2")
+                .line()
+                .starts_with("error: unplug needs a pseudo-terminal")
+        );
         assert_eq!(console.run("quit"), Answer::Quit);
         assert_eq!(console.run("").line(), "ok");
     }

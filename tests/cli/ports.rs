@@ -602,3 +602,39 @@ fn probe_names_the_module_on_each_port_and_says_which_are_silent() {
         "{text}"
     );
 }
+
+#[test]
+fn a_usb_name_is_looked_up_again_when_the_adapter_comes_back_under_another_name() {
+    let mut sim = Sim::start(&["--pty"]);
+    let machine = Machine::new();
+    machine.usb_serial(
+        "ttyUSB0",
+        ("0403", "6001"),
+        Some("A50285BI"),
+        Path::new(&sim.first),
+    );
+    let mut p = repl_on(&machine, "usb:0403:6001");
+    p.exp_string("A> ").unwrap();
+    // Pulled out: its tty goes from the tree, then from the line.
+    for gone in ["sys/class/tty/ttyUSB0", "sys/devices/usb1/ttyUSB0"] {
+        std::fs::remove_dir_all(machine.root.join(gone)).unwrap();
+    }
+    std::fs::remove_file(machine.root.join("dev/ttyUSB0")).unwrap();
+    assert!(sim.console("unplug 0.5").starts_with("ok unplugged"));
+    p.exp_string("link lost").unwrap();
+    let back = sim.line();
+    let path = back.strip_prefix("pty ").expect("a new pty");
+    // Plugged back in: the kernel names it ttyUSB1.
+    machine.usb_serial(
+        "ttyUSB1",
+        ("0403", "6001"),
+        Some("A50285BI"),
+        Path::new(path),
+    );
+    p.exp_string("reconnected: serial usb:0403:6001 (").unwrap();
+    p.exp_string("ttyUSB1) at 9600 baud").unwrap();
+    p.send_line("GAP 4, 0").unwrap();
+    p.exp_string("max_positioning_speed = 1000000").unwrap();
+    p.send_control('d').unwrap();
+    p.exp_eof().unwrap();
+}

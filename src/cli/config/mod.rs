@@ -108,6 +108,13 @@ pub const KEYS: &[Key] = &[
         unset: "",
     },
     Key {
+        name: "reconnect",
+        id: "reconnect",
+        kind: Kind::Text,
+        example: "reconnect = \"30s\"",
+        unset: "a lost link ends a run that is not interactive (exit 3)",
+    },
+    Key {
         name: "echo",
         id: "echo",
         kind: Kind::Text,

@@ -17,6 +17,7 @@ use nix::poll::{PollFd, PollFlags};
 use nix::poll::{PollTimeout, poll};
 
 use super::Device;
+use super::console::Unplug;
 use super::inprocess::SharedDevice;
 use crate::clock::Clock;
 
@@ -85,6 +86,8 @@ enum End {
     HungUp,
     /// The extra descriptor became readable (a new TCP client is waiting).
     Other,
+    /// The console unplugged the adapter for this long.
+    Unplugged(Duration),
 }
 
 /// A device, its clock and the means to serve it.
@@ -93,6 +96,8 @@ pub struct Server {
     clock: Arc<dyn Clock>,
     wake: WakeReceiver,
     log: Box<dyn FnMut(&str) + Send>,
+    /// An `unplug` from the console, acted on by the pty server.
+    unplug: Arc<Unplug>,
 }
 
 /// A byte stream that can be polled.
@@ -112,7 +117,13 @@ impl Server {
             clock,
             wake,
             log,
+            unplug: Arc::default(),
         }
+    }
+
+    /// Where the console's `unplug` reaches this server.
+    pub fn unplug_handle(&self) -> Arc<Unplug> {
+        self.unplug.clone()
     }
 
     fn with_device<R>(&self, f: impl FnOnce(&mut dyn Device, Duration) -> R) -> R {
@@ -153,6 +164,9 @@ impl Server {
             }
             if hung {
                 return Ok(End::HungUp);
+            }
+            if let Some(outage) = self.unplug.take() {
+                return Ok(End::Unplugged(outage));
             }
             let mut timeout = due.and_then(|d| self.clock.real_time_until(d));
             if timeout == Some(Duration::ZERO) && !wrote {

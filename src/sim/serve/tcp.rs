@@ -34,7 +34,8 @@ impl Server {
             (self.log)(&format!("client {peer} connected"));
             match self.pump(&mut stream, Some(listener.as_fd()))? {
                 End::Closed => (self.log)(&format!("client {peer} disconnected")),
-                End::HungUp => {
+                // The console refuses `unplug` on TCP; taken as a hang-up all the same.
+                End::HungUp | End::Unplugged(_) => {
                     let _ = stream.shutdown(Shutdown::Both);
                     (self.log)(&format!("hung up on client {peer}"));
                 }

@@ -19,7 +19,9 @@ mod receive;
 use std::time::Duration;
 
 use crate::dialect::session::{DialectSession, Refusal};
-use crate::dialect::smd4::protocol::{PrefixStyle, Request, Smd4Reply, Smd4Spec, validate};
+use crate::dialect::smd4::protocol::{
+    PrefixStyle, Request, Smd4Reply, Smd4Spec, commands, validate,
+};
 use crate::link::Link;
 use crate::session::core::SessionCore;
 use crate::session::transcript::Transcript;
@@ -178,11 +180,34 @@ impl Smd4Session {
             })
     }
 
-    /// Validates and sends a request (the session's address applies when it has none).
+    /// Validates and sends a request (the session's address applies when it has none). A link
+    /// lost on the way is waited for where `--reconnect` asks for it, and a read sent again.
     pub fn request(&mut self, mut request: Request) -> Result<Smd4Exchange, SessionError> {
         if request.address.is_none() {
             request.address = self.smd4.address;
         }
+        match self.request_once(request.clone()) {
+            Err(SessionError::Lost(why)) => {
+                let spec = self.spec.commands.get(&request.mnemonic);
+                if spec.is_some_and(|s| s.starts_motion) {
+                    // The drive may have got it: stopped on the way out of a failed run.
+                    self.core.moved.insert(request.address);
+                }
+                let read = request.args.is_empty()
+                    && spec.is_some_and(|s| {
+                        s.readable
+                            && matches!(s.kind, commands::Kind::Setting | commands::Kind::Query)
+                    });
+                let what = request.format(self.smd4.prefix);
+                let whom = DriveName(request.address).to_string();
+                self.after_cut_short(&what, &whom, read, why)?;
+                self.request_once(request)
+            }
+            other => other,
+        }
+    }
+
+    fn request_once(&mut self, request: Request) -> Result<Smd4Exchange, SessionError> {
         match validate(&request, &self.spec.commands) {
             Ok(_) => {}
             Err(error) if self.core.options.validate => {

@@ -149,18 +149,9 @@ impl DialectSession for TmclSession {
         (Box::new(session), result)
     }
 
-    /// Re-enters ASCII mode on the modules that were in it.
+    /// Asks every module again what it is and re-enters ASCII mode on those that were in it.
     fn reenter(&mut self) -> Result<(), SessionError> {
-        let ascii: Vec<u8> = self
-            .modules
-            .iter()
-            .filter(|(_, m)| m.mode == WireMode::Ascii)
-            .map(|(&a, _)| a)
-            .collect();
-        for module in ascii {
-            self.enter_ascii(module)?;
-        }
-        Ok(())
+        self.reenter_modules()
     }
 }
 

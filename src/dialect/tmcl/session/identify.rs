@@ -92,7 +92,7 @@ impl TmclSession {
     }
 
     /// Asks `module` for its firmware version (136 type 0) and records its profile and identity.
-    fn identify_module(&mut self, module: u8) -> Result<(), SessionError> {
+    pub(super) fn identify_module(&mut self, module: u8) -> Result<(), SessionError> {
         self.identify_each = true;
         if !self.core.options.enter {
             return Ok(());

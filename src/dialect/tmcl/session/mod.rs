@@ -15,6 +15,7 @@ mod guard;
 mod identify;
 mod mode;
 mod probe;
+mod relink;
 mod stop;
 mod unanswered;
 
@@ -77,6 +78,9 @@ pub struct TmclSession {
     /// A binary frame went out since the last ASCII line: modules in ASCII mode hold its bytes
     /// as the start of a line, which a CR must end before the next line.
     line_dirty: bool,
+    /// The echo this session set on each module (`--echo`, `:echo`), set again after a
+    /// reconnect.
+    echo_set: BTreeMap<u8, Echo>,
 }
 
 /// How the command line opens a session: what decides its profile and its mode.
@@ -137,6 +141,7 @@ impl TmclSession {
             core: SessionCore::new(link, options, transcript),
             fallback: profile.clone(),
             known: BTreeMap::new(),
+            echo_set: BTreeMap::new(),
             identified: None,
             profile_given: false,
             identify_each: false,
@@ -254,7 +259,16 @@ impl TmclSession {
         self.perform(module, Op::Command(instruction))
     }
 
+    /// One request; a link lost on the way is waited for where `--reconnect` asks for it
+    /// (`relink.rs`).
     fn perform(&mut self, module: u8, op: Op) -> Result<TmclExchange, SessionError> {
+        match self.perform_once(module, op) {
+            Err(SessionError::Lost(why)) => self.after_loss(module, op, why),
+            other => other,
+        }
+    }
+
+    fn perform_once(&mut self, module: u8, op: Op) -> Result<TmclExchange, SessionError> {
         let wire = self.contact(module)?;
         let mode = match wire {
             WireMode::Ascii => Mode::Ascii,

@@ -438,6 +438,7 @@ impl TmclSession {
         let current = read.value().unwrap_or(0);
         let write = Instruction::new(Opcode::Sgp, 67, 0, echo.apply(current));
         self.request(module, write)?.checked()?;
+        self.echo_set.insert(module, echo);
         Ok(self.modules.get(&module).map(|m| m.echo).unwrap_or(echo))
     }
 }
