@@ -175,10 +175,10 @@ pub fn bus_scan(
     })
 }
 
-/// How long the line stays quiet before binary frames follow ASCII lines: twice the frame timeout
-/// after which the module's receiver drops a partial frame (best knowledge, in the profile).
+/// How long the line stays quiet before binary frames follow ASCII lines, so that the module's
+/// receiver drops a partial frame (best knowledge, in the profile).
 pub fn quiet_time(profile: &crate::dialect::tmcl::profile::Profile) -> Duration {
-    Duration::from_millis(u64::from(profile.sim.frame_timeout_ms) * 2)
+    profile.sim.quiet_before_frame()
 }
 
 /// Whether an error means "nobody (usable) at this address" rather than "stop scanning".

@@ -15,6 +15,7 @@ mod guard;
 mod identify;
 mod mode;
 mod probe;
+mod reset;
 mod stop;
 mod unanswered;
 
@@ -77,6 +78,11 @@ pub struct TmclSession {
     /// A binary frame went out since the last ASCII line: modules in ASCII mode hold its bytes
     /// as the start of a line, which a CR must end before the next line.
     line_dirty: bool,
+    /// The echo the user set on each module (`:echo`), set again after a module restarted.
+    echo_set: BTreeMap<u8, Echo>,
+    /// A binary probe for a restarted module is under way (see `reset.rs`): its own failures
+    /// are not probed again.
+    probing_reset: bool,
 }
 
 /// How the command line opens a session: what decides its profile and its mode.
@@ -149,6 +155,8 @@ impl TmclSession {
             frames_aligned: false,
             ascii_sent: false,
             line_dirty: false,
+            echo_set: BTreeMap::new(),
+            probing_reset: false,
         };
         let opened = format!("session opened on {}", session.core.wire.link.describe());
         session.core.wire.note(&opened);
@@ -282,7 +290,8 @@ impl TmclSession {
             (WireMode::Ascii, Op::Ascii(AsciiWord::Bin)) => self.leave_ascii(module)?,
             (WireMode::Ascii, _) => {
                 let text = format_line(&line, self.target, &profile);
-                self.ascii_request(module, &text, Some(op))?
+                self.ascii_request(module, &text, Some(op))
+                    .map_err(|e| self.after_ascii_silence(module, e))?
             }
             (WireMode::Binary, Op::Command(instruction)) => {
                 self.binary_request(module, instruction)?

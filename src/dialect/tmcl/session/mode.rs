@@ -199,17 +199,15 @@ impl TmclSession {
         Ok(())
     }
 
-    /// How long the line stays quiet before a binary-mode receiver takes a new frame: the longest
-    /// frame time-out of the modules the session knows, and a tenth more.
+    /// How long the line stays quiet before a binary-mode receiver takes a new frame: long
+    /// enough for the module with the longest frame time-out the session knows.
     pub(super) fn resync_gap(&self) -> Duration {
-        let longest = self
-            .known
+        self.known
             .values()
-            .map(|k| k.profile.sim.frame_timeout_ms)
-            .chain([self.fallback.sim.frame_timeout_ms])
+            .map(|k| k.profile.sim.quiet_before_frame())
+            .chain([self.fallback.sim.quiet_before_frame()])
             .max()
-            .unwrap_or_default();
-        Duration::from_millis(u64::from(longest) * 11 / 10)
+            .unwrap_or_default()
     }
 
     /// Whether `module` has the ASCII interface (or may have it), as its profile says.
@@ -438,6 +436,7 @@ impl TmclSession {
         let current = read.value().unwrap_or(0);
         let write = Instruction::new(Opcode::Sgp, 67, 0, echo.apply(current));
         self.request(module, write)?.checked()?;
+        self.chose_echo(module, echo);
         Ok(self.modules.get(&module).map(|m| m.echo).unwrap_or(echo))
     }
 }
