@@ -16,6 +16,7 @@ mod identify;
 mod inputs;
 mod layers;
 mod mixed_bus;
+mod module_reset;
 mod options;
 mod profiles;
 mod program;
