@@ -25,6 +25,7 @@ mod repl;
 mod reply_noise;
 mod safety;
 mod script;
+mod shared_line;
 mod shell;
 mod sim;
 mod smd4;

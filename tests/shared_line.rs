@@ -1,0 +1,23 @@
+//! A host-address clash on a shared line (`tmclsh sim --shared-line`): module 2's address is the
+//! host address 2, so it takes module 1's replies for commands — as on a real RS-485 bus.
+
+use crate::sim::Sim;
+use crate::util::{code, run, stderr, stdout};
+
+#[test]
+fn a_module_at_the_host_address_answers_other_replies_and_garbles_the_line() {
+    let sim = Sim::start(&["--pty", "--shared-line", "--modules", "1,2:tmcm-6110"]);
+    let args = ["--binary", "--timeout", "400", "-c", "SAP 4, 0, 1000"];
+    let out = run(&[&["--port", sim.first.as_str()][..], &args[..]].concat());
+    // Module 1's answer to 136 reaches module 2 as a frame to itself; its own answer follows.
+    let err = stderr(&out);
+    assert_eq!(code(&out), 3, "{}\n{err}", stdout(&out));
+    assert!(
+        err.contains("line noise") && err.contains("followed by 02 02 "),
+        "{err}"
+    );
+    // Without the shared line (or with distinct addresses) the same line is answered.
+    let calm = Sim::start(&["--pty", "--modules", "1,2:tmcm-6110"]);
+    let out = run(&[&["--port", calm.first.as_str()][..], &args[..]].concat());
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+}
