@@ -21,3 +21,37 @@ fn a_module_at_the_host_address_answers_other_replies_and_garbles_the_line() {
     let out = run(&[&["--port", calm.first.as_str()][..], &args[..]].concat());
     assert_eq!(code(&out), 0, "{}", stderr(&out));
 }
+
+#[test]
+fn scan_warns_about_a_module_at_the_host_address_and_how_to_fix_it() {
+    let sim = Sim::start(&["--pty", "--modules", "1,2,4"]);
+    let out = run(&[
+        "--port",
+        &sim.first,
+        "--timeout",
+        "200",
+        "scan",
+        "--addresses",
+        "1-4",
+    ]);
+    let err = stderr(&out);
+    assert_eq!(code(&out), 0, "{}\n{err}", stdout(&out));
+    assert!(
+        err.contains("module 2 (B) is at the host address of module 1 (A) (2, ")
+            && err.contains("host address of module 4 (D)")
+            && err.contains("SGP 76, 0, N"),
+        "{err}"
+    );
+    // Distinct addresses: module 2 moved to 3, no warning.
+    let calm = Sim::start(&["--pty", "--modules", "1,3"]);
+    let out = run(&[
+        "--port",
+        &calm.first,
+        "--timeout",
+        "200",
+        "scan",
+        "--addresses",
+        "1-4",
+    ]);
+    assert!(!stderr(&out).contains("host address"), "{}", stderr(&out));
+}

@@ -10,6 +10,7 @@ mod grammar;
 mod help;
 pub mod helpers;
 pub mod hint;
+pub mod host_clash;
 mod output;
 pub mod params;
 pub mod ports;
