@@ -55,3 +55,26 @@ fn scan_warns_about_a_module_at_the_host_address_and_how_to_fix_it() {
     ]);
     assert!(!stderr(&out).contains("host address"), "{}", stderr(&out));
 }
+
+#[test]
+fn identification_warns_once_when_a_second_module_sits_at_the_host_address() {
+    let sim = Sim::start(&["--pty", "--modules", "1,2"]);
+    let out = run(&[
+        "--port",
+        &sim.first,
+        "-c",
+        "GAP 4, 0",
+        "-c",
+        "BGAP 4, 0",
+        "-c",
+        "BGAP 4, 0",
+    ]);
+    let err = stderr(&out);
+    assert_eq!(code(&out), 0, "{err}");
+    assert_eq!(
+        err.matches("module 2 (B) is at the host address of module 1 (A)")
+            .count(),
+        1,
+        "{err}"
+    );
+}

@@ -10,7 +10,6 @@ mod grammar;
 mod help;
 pub mod helpers;
 pub mod hint;
-pub mod host_clash;
 mod output;
 pub mod params;
 pub mod ports;

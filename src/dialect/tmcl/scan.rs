@@ -22,8 +22,8 @@ use std::collections::BTreeMap;
 use std::io::{self, Write};
 use std::time::Duration;
 
-use crate::dialect::tmcl::host_clash;
 use crate::dialect::tmcl::profile::catalogue::{self, Identified};
+use crate::dialect::tmcl::protocol::host_clash;
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 use crate::dialect::tmcl::session::{Echo, TmclReply, TmclSession, WireMode};

@@ -83,6 +83,10 @@ pub struct TmclSession {
     /// A binary probe for a restarted module is under way (see `reset.rs`): its own failures
     /// are not probed again.
     probing_reset: bool,
+    /// The host address (first byte) of the last answer to 136 type 0.
+    version_host: Option<u8>,
+    /// The host address each identified module replies with (see `protocol/host_clash.rs`).
+    hosts: BTreeMap<u8, u8>,
 }
 
 /// How the command line opens a session: what decides its profile and its mode.
@@ -157,6 +161,8 @@ impl TmclSession {
             line_dirty: false,
             echo_set: BTreeMap::new(),
             probing_reset: false,
+            version_host: None,
+            hosts: BTreeMap::new(),
         };
         let opened = format!("session opened on {}", session.core.wire.link.describe());
         session.core.wire.note(&opened);

@@ -4,7 +4,7 @@
 //! them, garbling the line (and acting on what it read). A scan reads each module's host address,
 //! where the module's profile has the parameter, and warns about such a pair.
 
-use crate::dialect::tmcl::protocol::ModuleName;
+use super::ModuleName;
 
 /// The host address parameter: global parameter 76 of bank 0.
 pub const HOST_ADDRESS: (u8, u8) = (0, 76);
