@@ -42,6 +42,7 @@ fn a_script_notices_a_module_restarted_and_its_next_read_is_answered() {
     let mut sim = Sim::start(&["--pty"]);
     let dir = tempdir();
     let script = dir.join("reads.rhai");
+    std::fs::create_dir(dir.join("logs")).unwrap();
     std::fs::write(
         &script,
         r#"
@@ -57,7 +58,9 @@ print(`after: ${gap(4, 0)}`);
     )
     .unwrap();
     let mut child = Command::new(bin())
-        .args(["--port", &sim.first, "--timeout", "400", "run"])
+        .args(["--port", &sim.first, "--timeout", "400", "--log"])
+        .arg(dir.join("logs"))
+        .arg("run")
         .arg(&script)
         .env("XDG_DATA_HOME", &dir)
         .env("XDG_CONFIG_HOME", &dir)
@@ -81,6 +84,11 @@ print(`after: ${gap(4, 0)}`);
         "{stderr}"
     );
     assert!(stderr.contains(RESTARTED), "{stderr}");
+    // The transcript records the restart too.
+    let logs: Vec<_> = std::fs::read_dir(dir.join("logs")).unwrap().collect();
+    assert_eq!(logs.len(), 1);
+    let transcript = std::fs::read_to_string(logs[0].as_ref().unwrap().path()).unwrap();
+    assert!(transcript.contains(RESTARTED), "{transcript}");
 }
 
 #[test]
