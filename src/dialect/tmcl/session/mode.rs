@@ -268,7 +268,7 @@ impl TmclSession {
     /// How long to wait for an optional reply when `bytes` must pass on the wire (out and back):
     /// the module's reaction time (no longer than the timeout, so scans stay quick) plus the
     /// bytes' wire time, whatever the timeout.
-    fn optional_wait(&self, bytes: u32) -> Duration {
+    pub(super) fn optional_wait(&self, bytes: u32) -> Duration {
         let wire = self
             .core
             .wire

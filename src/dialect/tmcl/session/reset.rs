@@ -2,11 +2,14 @@
 //! binary by default — and would leave the session with "no reply" for ever. When an ASCII
 //! request goes unanswered, the session asks once in binary (a read, 136 type 1, after the line
 //! was quiet for longer than the module's frame time-out, as every binary frame after ASCII
-//! lines); a module that answers there was reset: the session says so, enters ASCII mode again,
+//! lines; awaited as briefly as an optional reply, so a module that is simply gone costs little
+//! more than the timeout); a module that answers there was reset: the session says so, enters ASCII mode again,
 //! sets the echo it had set, and carries on. The request that failed stays failed and is not sent
 //! again: the module's RAM settings are back to their stored values, so even a read could now
 //! mean something else than when it was typed.
 
+use crate::dialect::session::DialectSession;
+use crate::dialect::tmcl::protocol::frame::FRAME_LEN;
 use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode, address_char};
 use crate::session::SessionError;
 
@@ -64,7 +67,12 @@ impl TmclSession {
     fn probe_reset(&mut self, module: u8) -> Result<bool, SessionError> {
         let probe = Instruction::new(Opcode::FirmwareVersion, 1, 0, 0);
         self.ascii_sent = true; // the quiet gap before the frame, whatever came before
-        if self.binary_request(module, probe).is_err() {
+        // A restarted module answers at once: the probe waits no longer than an optional reply.
+        let wait = self.optional_wait(2 * FRAME_LEN as u32);
+        if self
+            .with_timeout(wait, |s| s.binary_request(module, probe))
+            .is_err()
+        {
             return Ok(false);
         }
         let name = ModuleName(module);
