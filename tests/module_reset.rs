@@ -105,3 +105,40 @@ fn a_binary_session_carries_on_after_a_restart_with_stored_values() {
     type_in(&mut p, "exit\r");
     p.exp_eof().unwrap();
 }
+
+#[test]
+fn no_barrier_is_owed_after_a_restart_and_the_echo_stays_as_set() {
+    // Without an echo an unanswered line owes a barrier before the next one; after a restart
+    // nothing sent before can be answered, so the next line goes out by itself. The echo set
+    // with --echo stays: SGP 67 writes the EEPROM too (in the simulator, as bank 0's interface
+    // settings on the modules), so the restarted module has it already.
+    let mut sim = Sim::start(&["--pty"]);
+    let data = tempdir();
+    let log = data.join("session.log");
+    let log_arg = log.to_str().unwrap();
+    let args = [
+        "--port",
+        &sim.first,
+        "--timeout",
+        "400",
+        "--echo",
+        "none",
+        "--log",
+        log_arg,
+    ];
+    let mut p = terminal(&args, &[]);
+    p.exp_string("A> ").unwrap();
+    assert!(sim.console("reset").contains("restarted in binary mode"));
+    type_in(&mut p, "GAP 4, 0\r");
+    p.exp_string(RESTARTED).unwrap();
+    p.exp_string("A> ").unwrap();
+    type_in(&mut p, "GGP 67, 0\r");
+    p.exp_string("32").unwrap();
+    p.exp_string("A> ").unwrap();
+    type_in(&mut p, "exit\r");
+    p.exp_eof().unwrap();
+    let transcript = std::fs::read_to_string(&log).unwrap();
+    let after = &transcript[transcript.find(RESTARTED).expect("restart noted")..];
+    assert!(!after.contains("barrier:"), "{after}");
+    assert!(!after.contains("set again"), "{after}");
+}

@@ -85,8 +85,11 @@ impl TmclSession {
         // What it was doing ended with the power: motion, a program, unanswered lines.
         self.core.moved.remove(&Some(module.into()));
         self.core.running.remove(&Some(module.into()));
+        // Nothing sent before the restart can be answered any more, a barrier's refusal neither:
+        // no barrier is owed to it (see `barrier.rs`).
         if let Some(c) = address_char(module) {
             self.unanswered.forget(c);
+            self.unanswered.replied(c);
         }
         let found_in = self.modules.remove(&module).map(|m| m.found_in);
         self.enter_ascii(module)?;
