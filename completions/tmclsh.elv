@@ -372,6 +372,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --real-value-grid 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value'
             cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)'
             cand --pty 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
+            cand --shared-line 'The modules hear each other''s replies, as on a real RS-485 bus: a module whose address equals the host address (GP 76, 2 by default) takes the others'' replies for commands and answers them. Every module drops a partial binary frame after 5 ms of quiet (the UART time-out of Trinamic''s firmware), shared line or not'
             cand -v 'Log every frame and line received and sent, decoded, to stderr'
             cand --verbose 'Log every frame and line received and sent, decoded, to stderr'
             cand --manual-clock 'Let simulation time pass only on the console command `advance` (deterministic tests)'

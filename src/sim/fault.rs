@@ -236,6 +236,10 @@ impl<D: Device> Device for Faulty<D> {
         self.inner.reconnect();
     }
 
+    fn byte_time(&mut self, time: Duration) {
+        self.inner.byte_time(time);
+    }
+
     fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
         let words: Vec<&str> = command.split_whitespace().collect();
         let rate = |text: &str| -> Result<f64, String> {

@@ -86,6 +86,10 @@ impl<D: Device> Device for Latency<D> {
         self.inner.reconnect();
     }
 
+    fn byte_time(&mut self, time: Duration) {
+        self.inner.byte_time(time);
+    }
+
     fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
         self.inner.control(now, command)
     }

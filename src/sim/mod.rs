@@ -43,6 +43,12 @@ pub trait Device: Send {
     /// A new connection replaces one that hung up: a device that hung up may talk again.
     fn reconnect(&mut self) {}
 
+    /// The line in front is paced (`--baud`): each byte arrives this long after the one before
+    /// it, which a receiver that times out on quiet must not count as quiet.
+    fn byte_time(&mut self, time: Duration) {
+        let _ = time;
+    }
+
     /// Runs a control command (from the `tmclsh sim` console or a test): set an input, move a
     /// switch, trigger a fault. `None` when the device does not know the command, so that
     /// decorators can pass it on to the device they wrap.
@@ -71,6 +77,10 @@ impl<D: Device + ?Sized> Device for Box<D> {
 
     fn reconnect(&mut self) {
         (**self).reconnect()
+    }
+
+    fn byte_time(&mut self, time: Duration) {
+        (**self).byte_time(time)
     }
 
     fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {

@@ -25,10 +25,12 @@ pub struct Paced<D> {
 
 impl<D: Device> Paced<D> {
     /// Paces `inner` at `baud` bits per second (at least 1).
-    pub fn new(inner: D, baud: u32) -> Paced<D> {
+    pub fn new(mut inner: D, baud: u32) -> Paced<D> {
+        let baud = u64::from(baud.max(1));
+        inner.byte_time(Duration::from_nanos(10 * 1_000_000_000 / baud));
         Paced {
             inner,
-            baud: u64::from(baud.max(1)),
+            baud,
             incoming: VecDeque::new(),
             outgoing: VecDeque::new(),
             in_free: Duration::ZERO,

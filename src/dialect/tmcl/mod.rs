@@ -88,4 +88,7 @@ const CONSOLE_HELP: &str = " TMCL module bus (--protocol tmcl):
                                      microsteps) or disconnect it
   output PORT                        show an output (SIO bank 2)
   motor [M]                          show position, target, velocity, target reached of motor M
+  reset [N]                          power-cycle module N (factory address) or every module: RAM
+                                     back to the stored values, motion and program stopped, the
+                                     interface in the mode GP 67 bit 0 says (binary by default)
   @N COMMAND                         any of the above for the module with factory address N";

@@ -23,6 +23,7 @@ use std::io::{self, Write};
 use std::time::Duration;
 
 use crate::dialect::tmcl::profile::catalogue::{self, Identified};
+use crate::dialect::tmcl::protocol::host_clash;
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 use crate::dialect::tmcl::session::{Echo, TmclReply, TmclSession, WireMode};
@@ -43,6 +44,9 @@ pub struct FoundModule {
     pub firmware: Option<String>,
     /// Its echo setting (global parameter 67), where it could be read.
     pub echo: Option<Echo>,
+    /// The host address its replies start with (global parameter 76), where its profile has
+    /// the parameter and it could be read.
+    pub host: Option<u8>,
 }
 
 impl FoundModule {
@@ -140,8 +144,15 @@ pub fn scan(
         }
         for address in binary {
             let echo = session.with_timeout(per_reply, |s| read_echo_binary(s, address))?;
+            let firmware = found.get(&address).and_then(|m| m.firmware.clone());
+            let host = if has_host_address(session, address, firmware.as_deref()) {
+                session.with_timeout(per_reply, |s| read_host_binary(s, address))?
+            } else {
+                None
+            };
             if let Some(m) = found.get_mut(&address) {
                 m.echo = echo;
+                m.host = host;
             }
         }
         if ascii_modules {
@@ -150,6 +161,10 @@ pub fn scan(
     }
     if session.module_state(original).is_some() && session.target() != original {
         session.set_target(original)?;
+    }
+    let hosts: Vec<(u8, Option<u8>)> = found.values().map(|m| (m.address, m.host)).collect();
+    for warning in host_clash::warnings(&hosts) {
+        session.notice(warning);
     }
     Ok(TmclScan {
         scanned: addresses,
@@ -175,10 +190,10 @@ pub fn bus_scan(
     })
 }
 
-/// How long the line stays quiet before binary frames follow ASCII lines: twice the frame timeout
-/// after which the module's receiver drops a partial frame (best knowledge, in the profile).
+/// How long the line stays quiet before binary frames follow ASCII lines, so that the module's
+/// receiver drops a partial frame (best knowledge, in the profile).
 pub fn quiet_time(profile: &crate::dialect::tmcl::profile::Profile) -> Duration {
-    Duration::from_millis(u64::from(profile.sim.frame_timeout_ms) * 2)
+    profile.sim.quiet_before_frame()
 }
 
 /// Whether an error means "nobody (usable) at this address" rather than "stop scanning".
@@ -213,6 +228,7 @@ fn probe_binary(
         mode: WireMode::Binary,
         firmware,
         echo: None,
+        host: None,
     }))
 }
 
@@ -239,11 +255,23 @@ fn probe_ascii(
         Err(e) if absent(&e) => None,
         Err(e) => return Err(e),
     };
+    let host = if has_host_address(session, address, firmware.as_deref()) {
+        let (bank, number) = host_clash::HOST_ADDRESS;
+        match session.request(address, Instruction::new(Opcode::Ggp, number, bank, 0)) {
+            Ok(x) if x.ok() => x.value().and_then(|v| u8::try_from(v).ok()),
+            Ok(_) => None,
+            Err(e) if absent(&e) => None,
+            Err(e) => return Err(e),
+        }
+    } else {
+        None
+    };
     Ok(Some(FoundModule {
         address,
         mode,
         firmware,
         echo,
+        host,
     }))
 }
 
@@ -255,6 +283,29 @@ fn read_echo_binary(session: &mut TmclSession, address: u8) -> Result<Option<Ech
         Err(e) if absent(&e) => Ok(None),
         Err(e) => Err(e),
     }
+}
+
+/// Round 3: global parameter 76 over a binary frame.
+fn read_host_binary(session: &mut TmclSession, address: u8) -> Result<Option<u8>, SessionError> {
+    let (bank, number) = host_clash::HOST_ADDRESS;
+    match session.probe_binary(address, Instruction::new(Opcode::Ggp, number, bank, 0)) {
+        Ok(x) if x.ok() => Ok(x.value().and_then(|v| u8::try_from(v).ok())),
+        Ok(_) => Ok(None),
+        Err(e) if absent(&e) => Ok(None),
+        Err(e) => Err(e),
+    }
+}
+
+/// Whether the module's profile — the one its version string names, else the one the session
+/// takes it for — has the host address parameter.
+fn has_host_address(session: &TmclSession, address: u8, firmware: Option<&str>) -> bool {
+    let named = firmware.and_then(|f| match catalogue::identify(f) {
+        Ok(Identified::Known { profile, .. }) => Some(profile),
+        _ => None,
+    });
+    let profile = named.unwrap_or_else(|| session.profile_of(address));
+    let (bank, number) = host_clash::HOST_ADDRESS;
+    profile.global_param(bank, number).is_some()
 }
 
 fn version_text(answer: &TmclReply) -> Option<String> {
@@ -316,18 +367,21 @@ mod tests {
                     mode: WireMode::Binary,
                     firmware: Some("142V1.00".into()),
                     echo: Some(Echo::Character),
+                    host: None,
                 },
                 FoundModule {
                     address: 3,
                     mode: WireMode::Ascii,
                     firmware: None,
                     echo: Some(Echo::None),
+                    host: None,
                 },
                 FoundModule {
                     address: 30,
                     mode: WireMode::Binary,
                     firmware: Some("6110V131".into()),
                     echo: None,
+                    host: None,
                 },
             ],
             per_reply: Duration::from_millis(150),
@@ -356,6 +410,7 @@ mod tests {
             mode: WireMode::Binary,
             firmware: Some(firmware.into()),
             echo: None,
+            host: None,
         };
         assert_eq!(named("9999V100").module(), "TMCM-9999 (no profile)");
         assert_eq!(named("142B1.06").module(), "TMCM-142 (boot loader)");

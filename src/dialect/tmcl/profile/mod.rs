@@ -92,6 +92,13 @@ impl Param {
     }
 }
 
+/// How long a TMCL module's UART waits in quiet before it drops a partial binary frame: Trinamic's
+/// open firmware for its modules and evaluation boards sets a receive timeout of 10 ticks of
+/// 0.5 ms (`UART_TIMEOUT_VALUE 10 // timeout value in 0.5ms`, TMC-EvalSystem `hal/.../UART.c`).
+/// A profile may say otherwise (`[simulation] frame_timeout_ms`); the session keeps the line quiet
+/// for longer than this before a frame that follows other bytes.
+pub const UART_TIMEOUT_MS: u32 = 10 / 2;
+
 /// Constants the simulator needs that are not parameters.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SimConstants {
@@ -113,8 +120,9 @@ pub struct SimConstants {
     pub outputs: Vec<u8>,
     /// Full-scale ADC reading.
     pub adc_max: i32,
-    /// A partial binary frame older than this is discarded, so the receiver resynchronises
-    /// after line noise or a half-sent frame.
+    /// A partial binary frame followed by this much quiet is discarded, so the receiver
+    /// resynchronises after line noise or a half-sent frame ([`UART_TIMEOUT_MS`] unless the
+    /// profile says otherwise).
     pub frame_timeout_ms: u32,
     /// Characters kept per ASCII command line; further characters are dropped.
     pub ascii_line_max: usize,
@@ -479,6 +487,16 @@ fn parameters(file: &ProfileFile) -> (Vec<Param>, Vec<Param>) {
 }
 
 impl SimConstants {
+    /// How long the host keeps the line quiet before a binary frame that follows other bytes, so
+    /// that a module whose receiver holds a partial frame drops it: twice the frame time-out (the
+    /// manuals' advice, 10 ms for Trinamic's firmware) and 50 ms for the operating system and a
+    /// USB adapter, which may bunch bytes written some milliseconds apart, and for a receiver
+    /// that is not scheduled at once on a loaded machine (it costs only where a frame follows
+    /// ASCII lines or noise).
+    pub fn quiet_before_frame(&self) -> std::time::Duration {
+        std::time::Duration::from_millis(u64::from(self.frame_timeout_ms) * 2 + 50)
+    }
+
     /// The simulator's constants from a file's `[simulation]`, each missing one at its default.
     fn from_section(sim: Option<&SimulationRow>) -> SimConstants {
         SimConstants {
@@ -497,7 +515,9 @@ impl SimConstants {
             digital_inputs: sim.map(|s| s.digital_inputs.clone()).unwrap_or_default(),
             outputs: sim.map(|s| s.outputs.clone()).unwrap_or_default(),
             adc_max: sim.and_then(|s| s.adc_max).unwrap_or(1023),
-            frame_timeout_ms: sim.and_then(|s| s.frame_timeout_ms).unwrap_or(100),
+            frame_timeout_ms: sim
+                .and_then(|s| s.frame_timeout_ms)
+                .unwrap_or(UART_TIMEOUT_MS),
             ascii_line_max: sim.and_then(|s| s.ascii_line_max).unwrap_or(80),
             encoder_usteps_per_count: sim.and_then(|s| s.encoder_usteps_per_count).unwrap_or(1.0),
             instruction_us: sim.and_then(|s| s.instruction_us).unwrap_or(100),

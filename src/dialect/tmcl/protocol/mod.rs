@@ -5,6 +5,7 @@
 
 pub mod error;
 pub mod frame;
+pub mod host_clash;
 pub mod instruction;
 pub mod line;
 pub mod module_name;

@@ -107,7 +107,8 @@ impl TmclSession {
         deadline: Instant,
     ) -> Result<Option<(TmclReply, String)>, SessionError> {
         if instruction.command == Opcode::FirmwareVersion && instruction.type_ == 0 {
-            let (_, text) = decode_version_string(raw);
+            let (host, text) = decode_version_string(raw);
+            self.version_host = Some(host);
             self.settle_binary(module, raw, deadline)?;
             self.core
                 .wire

@@ -15,6 +15,7 @@ use std::sync::Arc;
 use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::catalogue::{self, GENERIC_NOTICE, Identified};
 use crate::dialect::tmcl::profile::version::FirmwareVersion;
+use crate::dialect::tmcl::protocol::host_clash;
 use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
 use crate::exit::{Exit, Failure};
 
@@ -163,6 +164,9 @@ impl TmclSession {
         let identified = match catalogue::identify(&text) {
             Ok(identified) => {
                 self.frames_aligned = true;
+                if let Some(host) = self.version_host.take() {
+                    self.learn_host(module, host);
+                }
                 identified
             }
             Err(e) => {
@@ -203,6 +207,29 @@ impl TmclSession {
         }
         self.identified = Some(named);
         Ok(identity)
+    }
+
+    /// Remembers the host address `module` replies with, and warns when it is the address of
+    /// another module the session knows, or `module`'s address is another's host address.
+    fn learn_host(&mut self, module: u8, host: u8) {
+        self.hosts.insert(module, host);
+        let mut pairs: Vec<(u8, Option<u8>)> =
+            self.hosts.iter().map(|(&m, &h)| (m, Some(h))).collect();
+        for &known in self.known.keys().chain([&module]) {
+            if !self.hosts.contains_key(&known) {
+                pairs.push((known, None));
+            }
+        }
+        pairs.sort_unstable();
+        pairs.dedup();
+        let mine = |w: &String| {
+            let name = ModuleName(module).to_string();
+            w.starts_with(&name) || w.contains(&format!("host address of {name}"))
+        };
+        for warning in host_clash::warnings(&pairs).into_iter().filter(mine) {
+            self.core.wire.note(&warning);
+            self.core.wire.notices.push(warning);
+        }
     }
 
     /// The given profile stays; a module it does not describe is one warning.

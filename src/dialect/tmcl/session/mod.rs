@@ -16,6 +16,7 @@ mod identify;
 mod mode;
 mod probe;
 mod relink;
+mod reset;
 mod stop;
 mod unanswered;
 
@@ -79,8 +80,15 @@ pub struct TmclSession {
     /// as the start of a line, which a CR must end before the next line.
     line_dirty: bool,
     /// The echo this session set on each module (`--echo`, `:echo`), set again after a
-    /// reconnect.
+    /// reconnect or after the module restarted.
     echo_set: BTreeMap<u8, Echo>,
+    /// A binary probe for a restarted module is under way (see `reset.rs`): its own failures
+    /// are not probed again.
+    probing_reset: bool,
+    /// The host address (first byte) of the last answer to 136 type 0.
+    version_host: Option<u8>,
+    /// The host address each identified module replies with (see `protocol/host_clash.rs`).
+    hosts: BTreeMap<u8, u8>,
 }
 
 /// How the command line opens a session: what decides its profile and its mode.
@@ -154,6 +162,9 @@ impl TmclSession {
             frames_aligned: false,
             ascii_sent: false,
             line_dirty: false,
+            probing_reset: false,
+            version_host: None,
+            hosts: BTreeMap::new(),
         };
         let opened = format!("session opened on {}", session.core.wire.link.describe());
         session.core.wire.note(&opened);
@@ -296,7 +307,8 @@ impl TmclSession {
             (WireMode::Ascii, Op::Ascii(AsciiWord::Bin)) => self.leave_ascii(module)?,
             (WireMode::Ascii, _) => {
                 let text = format_line(&line, self.target, &profile);
-                self.ascii_request(module, &text, Some(op))?
+                self.ascii_request(module, &text, Some(op))
+                    .map_err(|e| self.after_ascii_silence(module, e))?
             }
             (WireMode::Binary, Op::Command(instruction)) => {
                 self.binary_request(module, instruction)?

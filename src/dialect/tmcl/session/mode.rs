@@ -199,17 +199,15 @@ impl TmclSession {
         Ok(())
     }
 
-    /// How long the line stays quiet before a binary-mode receiver takes a new frame: the longest
-    /// frame time-out of the modules the session knows, and a tenth more.
+    /// How long the line stays quiet before a binary-mode receiver takes a new frame: long
+    /// enough for the module with the longest frame time-out the session knows.
     pub(super) fn resync_gap(&self) -> Duration {
-        let longest = self
-            .known
+        self.known
             .values()
-            .map(|k| k.profile.sim.frame_timeout_ms)
-            .chain([self.fallback.sim.frame_timeout_ms])
+            .map(|k| k.profile.sim.quiet_before_frame())
+            .chain([self.fallback.sim.quiet_before_frame()])
             .max()
-            .unwrap_or_default();
-        Duration::from_millis(u64::from(longest) * 11 / 10)
+            .unwrap_or_default()
     }
 
     /// Whether `module` has the ASCII interface (or may have it), as its profile says.
@@ -270,7 +268,7 @@ impl TmclSession {
     /// How long to wait for an optional reply when `bytes` must pass on the wire (out and back):
     /// the module's reaction time (no longer than the timeout, so scans stay quick) plus the
     /// bytes' wire time, whatever the timeout.
-    fn optional_wait(&self, bytes: u32) -> Duration {
+    pub(super) fn optional_wait(&self, bytes: u32) -> Duration {
         let wire = self
             .core
             .wire
@@ -438,7 +436,7 @@ impl TmclSession {
         let current = read.value().unwrap_or(0);
         let write = Instruction::new(Opcode::Sgp, 67, 0, echo.apply(current));
         self.request(module, write)?.checked()?;
-        self.echo_set.insert(module, echo);
+        self.chose_echo(module, echo);
         Ok(self.modules.get(&module).map(|m| m.echo).unwrap_or(echo))
     }
 }

@@ -9,6 +9,12 @@ use super::{TmclExchange, TmclSession, WireMode};
 use crate::session::SessionError;
 
 impl TmclSession {
+    /// Tells the user something found on the bus (with the next reply or error), and writes it
+    /// to the transcript.
+    pub fn notice(&mut self, text: String) {
+        self.core.wire.note(&text);
+        self.core.wire.notices.push(text);
+    }
     /// The mode a module was in when the session first reached it.
     pub fn found_in(&self, module: u8) -> Option<WireMode> {
         self.modules.get(&module).map(|m| m.found_in)

@@ -1,6 +1,8 @@
 //! Several simulated modules on one RS-485 line, each of its own profile (a TMCM-142 beside a
 //! TMCM-6110): every byte reaches every module, each answers only its own address, in binary and
-//! in ASCII mode. The bus is the [`Device`] that adapters serve.
+//! in ASCII mode. On a shared line (`tmclsh sim --shared-line`) the modules also hear each other's
+//! replies, so a module whose address is the host address misbehaves as on a real bus. The bus is
+//! the [`Device`] that adapters serve.
 
 use std::sync::Arc;
 use std::time::Duration;
@@ -33,6 +35,9 @@ pub struct BusOptions {
     pub boot_loader: Vec<u8>,
     /// Where to log decoded traffic; `None` logs nothing (and costs nothing).
     pub log: Option<LogSink>,
+    /// The modules hear each other's replies and echoes, as on a real RS-485 line: a module whose
+    /// address equals the host address then takes the others' replies for commands.
+    pub shared_line: bool,
 }
 
 impl Default for BusOptions {
@@ -46,6 +51,7 @@ impl Default for BusOptions {
             eeprom: None,
             boot_loader: Vec::new(),
             log: None,
+            shared_line: false,
         }
     }
 }
@@ -72,7 +78,15 @@ pub struct Bus {
     quirks: Quirks,
     eeprom: Option<Eeprom>,
     log: Option<LogSink>,
+    shared_line: bool,
+    /// Seconds a byte takes on a paced line (0 when the line is not paced).
+    byte_time: f64,
 }
+
+/// How many times on a shared line the modules may answer what other modules sent, after one
+/// write of the host: two modules that take each other's replies for commands would otherwise
+/// talk for ever.
+const ANSWERS_TO_ANSWERS: usize = 16;
 
 fn secs(now: Duration) -> f64 {
     now.as_secs_f64()
@@ -125,6 +139,8 @@ impl Bus {
             quirks: options.quirks,
             eeprom: options.eeprom,
             log: options.log,
+            shared_line: options.shared_line,
+            byte_time: 0.0,
         };
         bus.save_if_changed(true);
         bus
@@ -151,18 +167,80 @@ impl Bus {
     /// Handles events due by `now` and sends what they produce.
     fn advance(&mut self, now: Duration) {
         let t = secs(now);
-        for module in &mut self.modules {
+        let mut sent = Vec::new();
+        for (i, module) in self.modules.iter_mut().enumerate() {
             module.machine.advance(t);
             if !module.machine.due_events.is_empty() {
+                let mut out = Vec::new();
                 let mut sink = Sink {
-                    out: &mut self.out,
+                    out: &mut out,
                     quirks: &self.quirks,
                     log: self.log.as_deref_mut(),
                     t,
                 };
                 module.send_events(&mut sink);
+                self.out.extend_from_slice(&out);
+                sent.push((Some(i), out));
             }
         }
+        if self.shared_line {
+            self.deliver(t, sent);
+        }
+    }
+
+    /// Bytes on the line at `t`, each batch with the module that sent it (`None`: the host),
+    /// reach every other module; on a shared line what those send back reaches the others in
+    /// turn (at most [`ANSWERS_TO_ANSWERS`] times).
+    fn deliver(&mut self, t: f64, sent: Vec<(Option<usize>, Vec<u8>)>) {
+        let mut queue: std::collections::VecDeque<_> = sent.into();
+        let mut answers = 0;
+        while let Some((from, bytes)) = queue.pop_front() {
+            for (i, module) in self.modules.iter_mut().enumerate() {
+                if from == Some(i) {
+                    continue;
+                }
+                let mut out = Vec::new();
+                let mut sink = Sink {
+                    out: &mut out,
+                    quirks: &self.quirks,
+                    log: self.log.as_deref_mut(),
+                    t,
+                };
+                module.receive(t, self.byte_time, &bytes, &mut sink);
+                self.out.extend_from_slice(&out);
+                let heard = self.shared_line && answers < ANSWERS_TO_ANSWERS;
+                if heard && !out.is_empty() {
+                    answers += 1;
+                    queue.push_back((Some(i), out));
+                }
+            }
+        }
+    }
+
+    /// Power-cycles the module at factory address `slot`, or every module: RAM back to the
+    /// stored values, motors standing, program stopped, the interface in the mode GP 67 bit 0
+    /// says (binary unless set otherwise).
+    pub fn reset(&mut self, now: Duration, slot: Option<u8>) -> Result<String, String> {
+        self.advance(now);
+        if let Some(slot) = slot {
+            self.module(slot)?;
+        }
+        let t = secs(now);
+        let mut told = Vec::new();
+        for module in &mut self.modules {
+            if slot.is_some_and(|s| s != module.machine.slot) {
+                continue;
+            }
+            module.machine.boot(t);
+            module.power_up();
+            let mode = if module.is_ascii() { "ASCII" } else { "binary" };
+            told.push(format!(
+                "module {} restarted in {mode} mode",
+                module.machine.slot
+            ));
+        }
+        self.save_if_changed(false);
+        Ok(told.join("; "))
     }
 
     /// Saves the EEPROM image when a module's EEPROM changed (or when `force`d at start).
@@ -282,17 +360,12 @@ impl Bus {
 impl Device for Bus {
     fn receive(&mut self, now: Duration, bytes: &[u8]) {
         self.advance(now);
-        let t = secs(now);
-        for module in &mut self.modules {
-            let mut sink = Sink {
-                out: &mut self.out,
-                quirks: &self.quirks,
-                log: self.log.as_deref_mut(),
-                t,
-            };
-            module.receive(t, bytes, &mut sink);
-        }
+        self.deliver(secs(now), vec![(None, bytes.to_vec())]);
         self.save_if_changed(false);
+    }
+
+    fn byte_time(&mut self, time: Duration) {
+        self.byte_time = time.as_secs_f64();
     }
 
     fn poll_output(&mut self, now: Duration, out: &mut Vec<u8>) {

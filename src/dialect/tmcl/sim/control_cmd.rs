@@ -9,6 +9,7 @@
 //!                               microsteps) or disconnect it
 //! output PORT                   print an output's state (SIO bank 2)
 //! motor [M]                     print position, target, velocity, target reached of motor M
+//! reset [N]                     power-cycle module N (factory address) or every module
 //! ```
 
 use std::time::Duration;
@@ -19,6 +20,18 @@ use super::motion::Switch;
 /// Runs `command` if it is a bus command (`None` when it is not one).
 pub(crate) fn run(bus: &mut Bus, now: Duration, command: &str) -> Option<Result<String, String>> {
     let mut words: Vec<&str> = command.split_whitespace().collect();
+    match words.as_slice() {
+        ["reset"] => return Some(bus.reset(now, None)),
+        ["reset", n] | [n, "reset"] => {
+            let n = n.strip_prefix('@').unwrap_or(n);
+            return Some(
+                n.parse::<u8>()
+                    .map_err(|_| format!("'{n}' is not a module address"))
+                    .and_then(|slot| bus.reset(now, Some(slot))),
+            );
+        }
+        _ => {}
+    }
     let slot = match take_module(bus, &mut words)? {
         Ok(slot) => slot,
         Err(e) => return Some(Err(e)),

@@ -115,6 +115,13 @@ pub struct BusFlags {
         value_parser = boot_loaders
     )]
     pub boot_loader: Option<BootLoaders>,
+
+    /// The modules hear each other's replies, as on a real RS-485 bus: a module whose address
+    /// equals the host address (GP 76, 2 by default) takes the others' replies for commands and
+    /// answers them. Every module drops a partial binary frame after 5 ms of quiet (the UART
+    /// time-out of Trinamic's firmware), shared line or not.
+    #[arg(long)]
+    pub shared_line: bool,
 }
 
 /// The simulated motors' switches and the choices the manual leaves open.
@@ -218,6 +225,7 @@ pub fn given(matches: &ArgMatches) -> Option<&'static str> {
     [
         (!default_bus, "--modules"),
         (bus.boot_loader.is_some(), "--boot-loader"),
+        (bus.shared_line, "--shared-line"),
         (!module.left_switch.is_empty(), "--left-switch"),
         (!module.right_switch.is_empty(), "--right-switch"),
         (!module.home_switch.is_empty(), "--home-switch"),
@@ -295,6 +303,7 @@ pub fn served(
         eeprom,
         boot_loader,
         log,
+        shared_line: bus.shared_line,
     };
     Ok(Box::new(Bus::new(profile.clone(), options)))
 }

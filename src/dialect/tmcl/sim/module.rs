@@ -59,7 +59,7 @@ impl Module {
     }
 
     /// The interface after power-up: ASCII when GP 67 bit 0 says so.
-    fn power_up(&mut self) {
+    pub(super) fn power_up(&mut self) {
         self.ascii = self.machine.ascii_config() & 1 != 0;
         self.decoder.clear();
         self.line.clear();
@@ -70,10 +70,12 @@ impl Module {
         self.ascii
     }
 
-    /// Bytes from the line at `t` (the machine has been advanced to `t`).
-    pub(super) fn receive(&mut self, t: f64, bytes: &[u8], sink: &mut Sink) {
+    /// Bytes from the line at `t` (the machine has been advanced to `t`), each taking
+    /// `byte_time` seconds on a paced line. A partial binary frame followed by the profile's
+    /// frame time-out of quiet is dropped, as the firmware's UART does.
+    pub(super) fn receive(&mut self, t: f64, byte_time: f64, bytes: &[u8], sink: &mut Sink) {
         let timeout = f64::from(self.machine.profile.sim.frame_timeout_ms) / 1000.0;
-        if self.decoder.pending() > 0 && t - self.last_byte > timeout {
+        if self.decoder.pending() > 0 && t - self.last_byte - byte_time > timeout {
             self.decoder.clear();
         }
         self.last_byte = t;

@@ -7,6 +7,7 @@ mod binary;
 mod eeprom;
 mod moves;
 mod programs;
+mod real_line;
 mod two_modules;
 
 use std::time::Duration;
