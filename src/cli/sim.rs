@@ -13,6 +13,7 @@ use crate::dialect::{Configured, DIALECTS, Dialect, SimFlags, default_dialect, p
 use crate::exit::{Exit, Failure};
 use crate::sim::Device;
 use crate::sim::console::{self, Answer, Console};
+use crate::sim::echo::AdapterEcho;
 use crate::sim::fault::{Faults, Faulty};
 use crate::sim::inprocess::SharedDevice;
 use crate::sim::pacing::Paced;
@@ -46,6 +47,11 @@ pub(super) struct SimArgs {
     /// Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts.
     #[arg(long, value_name = "FILE")]
     pub state: Option<PathBuf>,
+
+    /// Hand every byte the host sends back to it, before the module's answer, as a 2-wire RS-485
+    /// adapter without echo suppression does (tmclsh strips it: --local-echo).
+    #[arg(long)]
+    pub adapter_echo: bool,
 
     /// Log every frame and line received and sent, decoded, to stderr.
     #[arg(long, short)]
@@ -185,8 +191,8 @@ fn foreign_flag(flag: &str, owner: &Dialect, chosen: &Dialect) -> String {
     )
 }
 
-/// Faults and line pacing around any simulated device (faults inside, so replies are judged
-/// whole).
+/// Faults, an echoing adapter and line pacing around any simulated device (faults inside, so
+/// replies are judged whole; the echo inside the pacing, so it comes back as bytes go out).
 fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
     let faults = Faults {
         drop_rate: args.drop_rate,
@@ -197,7 +203,10 @@ fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
         hangup_after: args.hangup_after,
         seed: args.seed,
     };
-    let device: Box<dyn Device> = Box::new(Faulty::new(device, faults));
+    let mut device: Box<dyn Device> = Box::new(Faulty::new(device, faults));
+    if args.adapter_echo {
+        device = Box::new(AdapterEcho::new(device));
+    }
     match args.baud {
         Some(baud) => Box::new(Paced::new(device, baud)),
         None => device,
