@@ -36,8 +36,10 @@ impl SessionCore {
         options: SessionOptions,
         transcript: Option<Transcript>,
     ) -> Self {
+        let mut wire = Wire::new(link, transcript);
+        wire.set_local_echo(options.local_echo);
         SessionCore {
-            wire: Wire::new(link, transcript),
+            wire,
             options,
             moved: Addresses::new(),
             running: Addresses::new(),

@@ -35,6 +35,21 @@ pub struct SessionOptions {
     pub enter: bool,
     /// Leave modules in ASCII mode on exit (`--stay-ascii`).
     pub stay_ascii: bool,
+    /// Whether the adapter hands back what is sent (`--local-echo`).
+    pub local_echo: LocalEcho,
+}
+
+/// Whether the adapter echoes what the host sends (a 2-wire RS-485 converter without echo
+/// suppression), so the session strips it (`--local-echo`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LocalEcho {
+    /// Found out at open, from the first request that can tell.
+    #[default]
+    Auto,
+    /// It does: strip it.
+    On,
+    /// It does not.
+    Off,
 }
 
 impl Default for SessionOptions {
@@ -45,6 +60,7 @@ impl Default for SessionOptions {
             validate: true,
             enter: true,
             stay_ascii: false,
+            local_echo: LocalEcho::Auto,
         }
     }
 }

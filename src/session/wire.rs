@@ -22,6 +22,7 @@
 //! - Whatever is discarded is counted and summarised in one notice per kind and exchange.
 
 mod discard;
+mod echo;
 mod pace;
 mod trust;
 
@@ -35,6 +36,7 @@ use super::transcript::{Entry, Transcript};
 use super::{SessionError, interrupt};
 
 use discard::Discards;
+use echo::{Echo, Taken};
 use pace::Pace;
 use trust::Suspicion;
 pub(crate) use trust::{Benign, Harmless, Settled, nothing_benign};
@@ -72,6 +74,8 @@ pub(crate) struct Wire {
     /// Discarded bytes not yet written to the transcript.
     discarded: Vec<u8>,
     pace: Pace,
+    /// The adapter's echo of what was sent, stripped (`--local-echo`).
+    echo: Echo,
 }
 
 impl Wire {
@@ -89,7 +93,13 @@ impl Wire {
             discards: Discards::default(),
             discarded: Vec::new(),
             pace: Pace::default(),
+            echo: Echo::default(),
         }
+    }
+
+    /// Sets whether the adapter echoes what is sent: yes, no, or to be found out at open.
+    pub(crate) fn set_local_echo(&mut self, mode: super::LocalEcho) {
+        self.echo = Echo::new(mode);
     }
 
     /// Starts an exchange with `peer`: takes what arrived since the last one (anything but line
@@ -130,6 +140,7 @@ impl Wire {
         self.log(Entry::Sent, bytes, meaning);
         self.link.send(bytes).map_err(SessionError::from)?;
         self.last_sent = Some(Instant::now());
+        self.sent_for_echo(bytes);
         Ok(())
     }
 
@@ -170,7 +181,7 @@ impl Wire {
                 Ok(n) => {
                     self.pace.record(n);
                     self.last_heard = Some(Instant::now());
-                    if self.rx.extend(&buf[..n]).is_err() {
+                    if let Taken::Overflow = self.take_in(&buf[..n])? {
                         let held = self.rx.clear();
                         self.log(Entry::Received, &held, "receive buffer full, discarded");
                         self.log(Entry::Received, &buf[..n], "receive buffer full, discarded");
@@ -236,6 +247,7 @@ impl Wire {
     /// reopened port may still answer what it was asked before.
     pub(crate) fn reset(&mut self) {
         self.rx.clear();
+        self.reset_echo();
         self.discarded.clear();
     }
 }

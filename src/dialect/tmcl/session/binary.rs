@@ -60,6 +60,9 @@ impl TmclSession {
             instruction,
         }
         .encode();
+        // No reply frame begins like its request: the first one tells whether the adapter
+        // echoes.
+        self.core.wire.probe_echo();
         self.core.wire.send(
             &frame,
             format_args!("{sent} to {} in binary", ModuleName(module)),
