@@ -181,7 +181,12 @@ impl Wire {
                 Ok(n) => {
                     self.pace.record(n);
                     self.last_heard = Some(Instant::now());
-                    if let Taken::Overflow = self.take_in(&buf[..n])? {
+                    let before = self.rx.len();
+                    let taken = self.take_in(&buf[..n])?;
+                    if matches!(taken, Taken::Kept) && self.rx.len() == before {
+                        continue; // only the adapter's echo: nothing new yet
+                    }
+                    if let Taken::Overflow = taken {
                         let held = self.rx.clear();
                         self.log(Entry::Received, &held, "receive buffer full, discarded");
                         self.log(Entry::Received, &buf[..n], "receive buffer full, discarded");
