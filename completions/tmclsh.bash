@@ -161,7 +161,7 @@ _tmclsh() {
 
     case "${cmd}" in
         tmclsh)
-            opts="-c -m -v -h -V --profile --value --json --keep-going --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --binary --verbose --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download snapshot scan transcript sim config help"
+            opts="-c -m -v -h -V --profile --value --json --keep-going --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --verbose --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -209,6 +209,10 @@ _tmclsh() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
                     return 0
                     ;;
                 --address)
@@ -271,7 +275,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__config)
-            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --binary --verbose --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --verbose --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -311,6 +315,10 @@ _tmclsh() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
                     return 0
                     ;;
                 --address)
@@ -351,7 +359,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__download)
-            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --binary --verbose --run --no-validate --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --verbose --run --no-validate --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -391,6 +399,10 @@ _tmclsh() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
                     return 0
                     ;;
                 --address)
@@ -769,7 +781,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__run)
-            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --binary --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --profile --help"
+            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -809,6 +821,10 @@ _tmclsh() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
                     return 0
                     ;;
                 --address)
@@ -851,7 +867,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__scan)
-            opts="-m -v -h --addresses --first --port --baud --tcp --protocol --timeout --log --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --addresses --first --port --baud --tcp --protocol --timeout --log --local-echo --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -883,6 +899,10 @@ _tmclsh() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
                     return 0
                     ;;
                 --module)
@@ -917,7 +937,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__sim)
-            opts="-v -h --protocol --pty --listen --modules --boot-loader --baud --state --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --profile --help"
+            opts="-v -h --protocol --pty --listen --modules --boot-loader --baud --state --adapter-echo --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1053,7 +1073,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__diff)
-            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --binary --verbose --address --prefix-comma --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --verbose --address --prefix-comma --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1093,6 +1113,10 @@ _tmclsh() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
                     return 0
                     ;;
                 --address)
@@ -1185,7 +1209,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__restore)
-            opts="-m -v -h --store --yes --dry-run --force --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --binary --verbose --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -v -h --store --yes --dry-run --force --port --baud --tcp --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --verbose --address --prefix-comma --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1225,6 +1249,10 @@ _tmclsh() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
                     return 0
                     ;;
                 --address)
@@ -1247,7 +1275,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__save)
-            opts="-m -v -h --force --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --binary --verbose --address --prefix-comma --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --force --port --baud --tcp --protocol --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --verbose --address --prefix-comma --no-validate --quiet-gap --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1287,6 +1315,10 @@ _tmclsh() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
                     return 0
                     ;;
                 --address)
@@ -1424,7 +1456,7 @@ _tmclsh_with_files() {
         esac
     done
     case "$prev" in
-        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--left-switch|--listen|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reply-end|--right-switch|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--left-switch|--listen|--local-echo|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reply-end|--right-switch|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
     esac
     if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
         compopt -o filenames 2>/dev/null

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_tmclsh_global_optspecs
-    string join \n profile= c= value json keep-going port= baud= tcp= protocol= m/module= timeout= echo= log= no-validate no-enter stay-ascii binary v/verbose address= prefix-comma quiet-gap= h/help V/version
+    string join \n profile= c= value json keep-going port= baud= tcp= protocol= m/module= timeout= echo= log= no-validate no-enter stay-ascii local-echo= binary v/verbose address= prefix-comma quiet-gap= h/help V/version
 end
 
 function __fish_tmclsh_needs_command
@@ -37,6 +37,9 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -l echo -d 'Set the target m
 line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l value -d 'With -c or piped lines: print only each reply\'s value (TMCL: -5000 of BA 100 -5000; SMD4: the data items), an empty line for a line that failed'
@@ -89,6 +92,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l echo -d 'Set the t
 line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-operations -d 'Operations after which a runaway script is stopped (0: no limit)' -r
@@ -122,6 +128,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l echo -d 'Set 
 line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
@@ -150,6 +159,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
@@ -172,6 +184,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
@@ -193,6 +208,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
@@ -219,6 +237,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l protocol -d 'The 
 smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
@@ -275,6 +296,7 @@ comma\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l real-value-grid -d 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l pty -d 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l adapter-echo -d 'Hand every byte the host sends back to it, before the module\'s answer, as a 2-wire RS-485 adapter without echo suppression does (tmclsh strips it: --local-echo)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s v -l verbose -d 'Log every frame and line received and sent, decoded, to stderr'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l manual-clock -d 'Let simulation time pass only on the console command `advance` (deterministic tests)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-to-139 -d 'Switch to ASCII mode on command 139 without a binary reply'
@@ -297,6 +319,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l echo -d 'Set th
 line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in the README)' -r -F

@@ -134,6 +134,14 @@ pub(crate) fn barrier_failed(barrier: &str, error: SessionError) -> SessionError
     }
 }
 
+impl SessionError {
+    /// An adapter's echo that differs from what was sent (`--local-echo`): the line is not
+    /// usable as it is, which a scan must not take for an empty address.
+    pub(crate) fn is_echo_mismatch(&self) -> bool {
+        matches!(self, SessionError::Link(message) if message.starts_with(wire::ECHO_MISMATCH))
+    }
+}
+
 impl ExitStatus for SessionError {
     fn exit(&self) -> Exit {
         match self {

@@ -36,6 +36,7 @@ use super::transcript::{Entry, Transcript};
 use super::{SessionError, interrupt};
 
 use discard::Discards;
+pub(crate) use echo::MISMATCH as ECHO_MISMATCH;
 use echo::{Echo, Taken};
 use pace::Pace;
 use trust::Suspicion;

@@ -17,6 +17,10 @@ use crate::session::transcript::Entry;
 /// What the transcript says of stripped bytes (replays skip what is "discarded").
 const STRIPPED: &str = "the adapter's echo of what was sent, discarded";
 
+/// How the error of an echo that differs from what was sent begins: a scan stops there rather
+/// than take the address for empty.
+pub(crate) const MISMATCH: &str = "line noise: the adapter's echo of what was sent";
+
 /// The notice of an echo found at open.
 pub(crate) const FOUND: &str =
     "the adapter echoes what it sends (2-wire RS-485?): stripping it (--local-echo)";
@@ -162,7 +166,7 @@ impl Wire {
         let held = self.rx.clear();
         self.log(Entry::Received, &held, "line noise, discarded");
         let message = format!(
-            "line noise: the adapter's echo of what was sent came back as {} instead of {}; \
+            "{MISMATCH} came back as {} instead of {}; \
              not taken (a collision on the line, or an adapter that does not echo: \
              --local-echo off)",
             hex(&got[..got.len().min(12)]),
