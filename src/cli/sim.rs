@@ -191,8 +191,9 @@ fn foreign_flag(flag: &str, owner: &Dialect, chosen: &Dialect) -> String {
     )
 }
 
-/// Faults, an echoing adapter and line pacing around any simulated device (faults inside, so
-/// replies are judged whole; the echo inside the pacing, so it comes back as bytes go out).
+/// Faults, line pacing and an echoing adapter around any simulated device (faults inside, so
+/// replies are judged whole; the echo outside the pacing, so the whole request comes back before
+/// anything the module sends, as on a half-duplex bus).
 fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
     let faults = Faults {
         drop_rate: args.drop_rate,
@@ -203,13 +204,15 @@ fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
         hangup_after: args.hangup_after,
         seed: args.seed,
     };
-    let mut device: Box<dyn Device> = Box::new(Faulty::new(device, faults));
-    if args.adapter_echo {
-        device = Box::new(AdapterEcho::new(device));
-    }
-    match args.baud {
+    let device: Box<dyn Device> = Box::new(Faulty::new(device, faults));
+    let device: Box<dyn Device> = match args.baud {
         Some(baud) => Box::new(Paced::new(device, baud)),
         None => device,
+    };
+    if args.adapter_echo {
+        Box::new(AdapterEcho::new(device))
+    } else {
+        device
     }
 }
 

@@ -2,8 +2,10 @@
 //! suppression hears its own transmitter, so every byte the host sends comes back to the host,
 //! before the module's answer to it. The host must strip those bytes itself (`--local-echo`).
 //!
-//! Wrap it inside line pacing, so each byte comes back as it goes out on the line, and outside
-//! faults, which judge the module's replies, not the adapter.
+//! Wrap it outside line pacing and faults: on a 2-wire bus nothing else can be on the line
+//! while the host sends, so the whole request comes back before anything the module sends (a
+//! module's own character echo included), and faults judge the module's replies, not the
+//! adapter. The echo comes back at once rather than at the line's pace.
 
 use std::time::Duration;
 

@@ -34,13 +34,16 @@ fn found_once(run: &Run, what: &str) {
 fn every_echo_mode_identifies_and_answers_through_an_echoing_adapter() {
     let pty = Sim::start(&["--pty", "--adapter-echo"]);
     let tcp = Sim::start(&["--listen", "127.0.0.1:0", "--adapter-echo"]);
+    // Paced like a serial line: the module's character echo must not mix with the adapter's.
+    let paced = Sim::start(&["--pty", "--adapter-echo", "--baud", "19200"]);
     let mut value = 1000;
-    for sim in [&pty, &tcp] {
+    for (sim, baud) in [(&pty, &[][..]), (&tcp, &[]), (&paced, &["--baud", "19200"])] {
         for mode in ["char", "line", "none"] {
             let what = format!("{mode} echo on {}", sim.first);
             value += 1;
             let set = format!("SAP 4, 0, {value}");
-            let run = at(sim, &["--echo", mode, "-v", "-c", &set, "-c", "GAP 4, 0"]);
+            let args = [baud, &["--echo", mode, "-v", "-c", &set, "-c", "GAP 4, 0"]].concat();
+            let run = at(sim, &args);
             run.expect(0, &what);
             let answer = format!("BA 100 {value}");
             assert_eq!(run.lines(), [&answer, &answer], "{what}");
