@@ -8,6 +8,7 @@
 //! more data, from another address, a flood, or a hang-up halfway. Everything else is the
 //! simulator's own behaviour. The binary under test is the real `tmclsh`.
 
+mod adapter_echo;
 mod fake;
 mod interrupt;
 mod modes;

@@ -171,6 +171,21 @@ fn echo() {
 }
 
 #[test]
+fn local_echo() {
+    // Said to strip an echo where nothing echoes: what comes back first is not the request.
+    table(
+        &["--local-echo", "on"],
+        &SESSIONS,
+        &|_| Setup::tmcl(),
+        &|_, out, _| {
+            exit(out, 3)?;
+            says(out, "line noise: the adapter's echo of what was sent")
+        },
+        &no_special,
+    );
+}
+
+#[test]
 fn timeout() {
     // Accepts connections (the backlog) and never answers.
     let silent = TcpListener::bind("127.0.0.1:0").unwrap();

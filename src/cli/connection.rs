@@ -15,7 +15,7 @@ use crate::exit::{Exit, Failure};
 use crate::link::Link;
 use crate::link::line::{LineOptions, Modem, Rs485};
 use crate::session::transcript::Header;
-use crate::session::{SessionOptions, Transcript};
+use crate::session::{LocalEcho, SessionOptions, Transcript};
 
 use super::target::{Target, is_log_dir, log_file};
 
@@ -199,6 +199,11 @@ pub struct SessionArgs {
     /// Leave the modules in ASCII mode on exit instead of restoring the mode they were found in.
     #[arg(long)]
     pub stay_ascii: bool,
+    /// Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo
+    /// suppression): on strips exactly those bytes from what comes back, comparing them; auto
+    /// (the default) finds out at open and says so; off never strips.
+    #[arg(long, value_enum, value_name = "WHEN", env = "TMCLSH_LOCAL_ECHO", num_args = 0..=1, default_value = "auto", default_missing_value = "on")]
+    pub local_echo: LocalEchoArg,
     /// Talk to the modules in binary direct mode (typed lines go out as binary frames), whether
     /// or not they have the ASCII interface.
     #[arg(long)]
@@ -229,6 +234,27 @@ pub enum EchoMode {
     None,
 }
 
+/// `--local-echo`: whether the adapter echoes what is sent.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum LocalEchoArg {
+    /// Find out at open: the first request that comes straight back, byte for byte.
+    Auto,
+    /// The adapter echoes: strip it.
+    On,
+    /// It does not.
+    Off,
+}
+
+impl From<LocalEchoArg> for LocalEcho {
+    fn from(arg: LocalEchoArg) -> LocalEcho {
+        match arg {
+            LocalEchoArg::Auto => LocalEcho::Auto,
+            LocalEchoArg::On => LocalEcho::On,
+            LocalEchoArg::Off => LocalEcho::Off,
+        }
+    }
+}
+
 /// How many files of one second a `--log` directory may get.
 const LOG_NAMES: u32 = 1000;
 
@@ -242,6 +268,7 @@ impl SessionArgs {
             enter: !self.no_enter,
             stay_ascii: self.stay_ascii,
             reconnect: self.reconnect,
+            local_echo: self.local_echo.into(),
         }
     }
 

@@ -13,6 +13,7 @@ use crate::dialect::{Configured, DIALECTS, Dialect, SimFlags, default_dialect, p
 use crate::exit::{Exit, Failure};
 use crate::sim::Device;
 use crate::sim::console::{self, Answer, Console};
+use crate::sim::echo::AdapterEcho;
 use crate::sim::fault::{Faults, Faulty};
 use crate::sim::inprocess::SharedDevice;
 use crate::sim::latency::Latency;
@@ -59,6 +60,11 @@ pub(super) struct SimArgs {
     /// Keep the simulated EEPROM (stored parameters, programs) in FILE across restarts.
     #[arg(long, value_name = "FILE")]
     pub state: Option<PathBuf>,
+
+    /// Hand every byte the host sends back to it, before the module's answer, as a 2-wire RS-485
+    /// adapter without echo suppression does (tmclsh strips it: --local-echo).
+    #[arg(long)]
+    pub adapter_echo: bool,
 
     /// Log every frame and line received and sent, decoded, to stderr.
     #[arg(long, short)]
@@ -198,8 +204,10 @@ fn foreign_flag(flag: &str, owner: &Dialect, chosen: &Dialect) -> String {
     )
 }
 
-/// Faults, line pacing and an adapter's latency timer around any simulated device (faults
-/// inside, so replies are judged whole).
+/// Faults, line pacing, an echoing adapter and an adapter's latency timer around any simulated
+/// device (faults inside, so replies are judged whole; the echo outside the pacing, so the whole
+/// request comes back before anything the module sends, as on a half-duplex bus; the latency
+/// timer outermost, holding what the adapter hands the host, echo included).
 fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
     let faults = Faults {
         drop_rate: args.drop_rate,
@@ -215,7 +223,12 @@ fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
         Some(baud) => Box::new(Paced::new(device, baud)),
         None => device,
     };
-    // The adapter sits between the line and the host: outermost.
+    let device: Box<dyn Device> = if args.adapter_echo {
+        Box::new(AdapterEcho::new(device))
+    } else {
+        device
+    };
+    // The adapter's timer sits between the line and the host: outermost.
     match args.latency {
         Some(ms) => Box::new(Latency::new(device, Duration::from_millis(ms))),
         None => device,

@@ -40,6 +40,7 @@ impl SessionCore {
         transcript: Option<Transcript>,
     ) -> Self {
         let mut wire = Wire::new(link, transcript);
+        wire.set_local_echo(options.local_echo);
         if let Some(wait) = options.reconnect {
             wire.note(&format!(
                 "a lost link is waited for up to {} (--reconnect); only an interrupted read is \

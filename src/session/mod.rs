@@ -39,6 +39,21 @@ pub struct SessionOptions {
     /// How long a run that is not interactive waits for a lost link to come back
     /// (`--reconnect`); `None`: it fails at once (exit 3).
     pub reconnect: Option<Duration>,
+    /// Whether the adapter hands back what is sent (`--local-echo`).
+    pub local_echo: LocalEcho,
+}
+
+/// Whether the adapter echoes what the host sends (a 2-wire RS-485 converter without echo
+/// suppression), so the session strips it (`--local-echo`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LocalEcho {
+    /// Found out at open, from the first request that can tell.
+    #[default]
+    Auto,
+    /// It does: strip it.
+    On,
+    /// It does not.
+    Off,
 }
 
 impl Default for SessionOptions {
@@ -50,6 +65,7 @@ impl Default for SessionOptions {
             enter: true,
             stay_ascii: false,
             reconnect: None,
+            local_echo: LocalEcho::Auto,
         }
     }
 }
@@ -120,6 +136,14 @@ pub(crate) fn barrier_failed(barrier: &str, error: SessionError) -> SessionError
             SessionError::Link(format!("{message} (the barrier '{barrier}', {AFTER})"))
         }
         other => other,
+    }
+}
+
+impl SessionError {
+    /// An adapter's echo that differs from what was sent (`--local-echo`): the line is not
+    /// usable as it is, which a scan must not take for an empty address.
+    pub(crate) fn is_echo_mismatch(&self) -> bool {
+        matches!(self, SessionError::Link(message) if message.starts_with(wire::ECHO_MISMATCH))
     }
 }
 

@@ -22,6 +22,7 @@
 //! - Whatever is discarded is counted and summarised in one notice per kind and exchange.
 
 mod discard;
+mod echo;
 mod pace;
 mod tally;
 mod trust;
@@ -36,6 +37,8 @@ use super::transcript::{Entry, Transcript};
 use super::{SessionError, interrupt};
 
 use discard::Discards;
+pub(crate) use echo::MISMATCH as ECHO_MISMATCH;
+use echo::{Echo, Taken};
 use pace::Pace;
 pub(crate) use tally::Tally;
 use trust::Suspicion;
@@ -76,6 +79,8 @@ pub(crate) struct Wire {
     pace: Pace,
     /// Requests and replies counted, for `:line`.
     pub tally: Tally,
+    /// The adapter's echo of what was sent, stripped (`--local-echo`).
+    echo: Echo,
 }
 
 impl Wire {
@@ -96,6 +101,7 @@ impl Wire {
             discards: Discards::default(),
             discarded: Vec::new(),
             pace: Pace::default(),
+            echo: Echo::default(),
         };
         // What the line said of itself on opening (a latency timer left high, modem lines a
         // port lacks) belongs in the transcript too: a log shared later explains itself.
@@ -103,6 +109,11 @@ impl Wire {
             wire.note(note);
         }
         wire
+    }
+
+    /// Sets whether the adapter echoes what is sent: yes, no, or to be found out at open.
+    pub(crate) fn set_local_echo(&mut self, mode: super::LocalEcho) {
+        self.echo = Echo::new(mode);
     }
 
     /// Starts an exchange with `peer`: takes what arrived since the last one (anything but line
@@ -151,6 +162,7 @@ impl Wire {
         self.log(Entry::Sent, bytes, meaning);
         self.link.send(bytes).map_err(SessionError::from)?;
         self.last_sent = Some(Instant::now());
+        self.sent_for_echo(bytes);
         Ok(())
     }
 
@@ -191,7 +203,12 @@ impl Wire {
                 Ok(n) => {
                     self.pace.record(n);
                     self.last_heard = Some(Instant::now());
-                    if self.rx.extend(&buf[..n]).is_err() {
+                    let before = self.rx.len();
+                    let taken = self.take_in(&buf[..n])?;
+                    if matches!(taken, Taken::Kept) && self.rx.len() == before {
+                        continue; // only the adapter's echo: nothing new yet
+                    }
+                    if let Taken::Overflow = taken {
                         let held = self.rx.clear();
                         self.log(Entry::Received, &held, "receive buffer full, discarded");
                         self.log(Entry::Received, &buf[..n], "receive buffer full, discarded");
@@ -257,6 +274,7 @@ impl Wire {
     /// reopened port may still answer what it was asked before.
     pub(crate) fn reset(&mut self) {
         self.rx.clear();
+        self.reset_echo();
         self.discarded.clear();
     }
 }

@@ -16,7 +16,8 @@ pub(super) fn write_line_state(
     let link = wire.link.describe();
     let state = wire.link.line_state();
     let (requests, replies) = (wire.tally.requests, wire.tally.replies);
-    for (name, value) in rows(&link, &state, requests, replies) {
+    let echo = wire.echo_state();
+    for (name, value) in rows(&link, &state, echo, requests, replies) {
         let line = format!("{name:<12} {value}");
         writeln!(out, "{}", crate::escape::escape_control(&line))?;
     }
@@ -24,7 +25,13 @@ pub(super) fn write_line_state(
 }
 
 /// The rows of `:line`.
-fn rows(link: &str, s: &LineState, requests: u64, replies: u64) -> Vec<(&'static str, String)> {
+fn rows(
+    link: &str,
+    s: &LineState,
+    echo: &str,
+    requests: u64,
+    replies: u64,
+) -> Vec<(&'static str, String)> {
     let none = |what: &str| format!("none ({what})");
     let rate = match (s.rate, s.asked_rate) {
         (Some(rate), Some(asked)) => {
@@ -59,7 +66,7 @@ fn rows(link: &str, s: &LineState, requests: u64, replies: u64) -> Vec<(&'static
         ("modem lines", modem),
         ("latency", latency),
         ("RS-485", s.rs485.clone().unwrap_or_else(|| "off".into())),
-        ("echo strip", "off".into()),
+        ("echo strip", echo.to_string()),
         (
             "sent",
             traffic(s.bytes_out, requests, "request", "requests"),
@@ -105,7 +112,7 @@ mod tests {
             bytes_in: Some(9),
             ..LineState::default()
         };
-        let shown = rows("serial /dev/ttyUSB0 at 9600 baud", &serial, 2, 1);
+        let shown = rows("serial /dev/ttyUSB0 at 9600 baud", &serial, "off", 2, 1);
         let row = |name: &str| shown.iter().find(|(n, _)| *n == name).unwrap().1.clone();
         assert_eq!(row("rate"), "9600 baud, as read back from the driver");
         assert!(row("modem lines").starts_with("DTR on, RTS off"));
@@ -116,6 +123,7 @@ mod tests {
         let pty = rows(
             "serial /dev/pts/3 at 9600 baud",
             &LineState::default(),
+            "off",
             0,
             0,
         );

@@ -3,10 +3,12 @@
 //!
 //! Each simulated bus is a pure state machine ([`Device`]): bytes in, bytes out, time as an input.
 //! Thin adapters serve a device on a pseudo-terminal, on loopback TCP, or in-process behind a
-//! [`crate::link::Link`]; decorators add line pacing, an adapter's latency timer and fault injection to any device.
+//! [`crate::link::Link`]; decorators add line pacing, an adapter that echoes, an adapter's latency
+//! timer and fault injection to any device.
 
 mod builtin;
 pub mod console;
+pub mod echo;
 pub mod fault;
 pub mod inprocess;
 pub mod latency;

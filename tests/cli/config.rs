@@ -183,6 +183,21 @@ fn every_key_takes_effect_from_a_file() {
     let transcript = std::fs::read_to_string(&log).unwrap();
     assert!(transcript.contains("SGP 67, 0, 16"), "{transcript}");
 
+    // Stripping an echo where nothing echoes: line noise, from the file and the environment.
+    place.project_file("local_echo = \"on\"\n");
+    let out = place.run(&["-c", "GAP 1, 0"], &[]);
+    assert_eq!(code(&out), 3, "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("line noise: the adapter's echo"),
+        "{}",
+        stderr(&out)
+    );
+    place.project_file("");
+    let out = place.run(&["-c", "GAP 1, 0"], &[("TMCLSH_LOCAL_ECHO", "on")]);
+    assert_eq!(code(&out), 3, "{}", stderr(&out));
+    let out = place.run(&["-c", "GAP 1, 0"], &[("TMCLSH_LOCAL_ECHO", "off")]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+
     // A log directory, relative to the file, made when missing; a transcript per session.
     place.project_file("log_dir = \"logs\"\n");
     for _ in 0..2 {

@@ -66,6 +66,9 @@ pub enum Act {
     },
     /// Sends the first `n` bytes of the answer and hangs up.
     HangUp(usize),
+    /// Behind an adapter that echoes ([`Fake::echoing`]): hands back the request changed by a
+    /// function (a collision), then the answer.
+    GarbleEcho(fn(&[u8]) -> Vec<u8>),
 }
 
 /// Changes an answer.
@@ -125,7 +128,21 @@ impl Fake {
         })
     }
 
+    /// A simulated TMCM-142 (`tmcl`) or SMD4 drive behind an adapter that hands back every byte
+    /// it is sent, before the answer (a 2-wire RS-485 converter), and behind `rule`.
+    pub fn echoing(dialect: &str, via: Via, rule: Rule) -> Fake {
+        let device: fn() -> Box<dyn Device> = match dialect {
+            "tmcl" => || Box::new(Bus::new(Profile::builtin(), BusOptions::default())),
+            _ => || Box::new(Smd4Sim::new(Smd4SimOptions::default())),
+        };
+        Fake::start_with(via, rule, device, true)
+    }
+
     fn start(via: Via, rule: Rule, device: fn() -> Box<dyn Device>) -> Fake {
+        Fake::start_with(via, rule, device, false)
+    }
+
+    fn start_with(via: Via, rule: Rule, device: fn() -> Box<dyn Device>, echo: bool) -> Fake {
         let (port, address) = match via {
             Via::Pty => {
                 let pair = nix::pty::openpty(None, None).unwrap();
@@ -177,6 +194,7 @@ impl Fake {
             held: None,
             flood: None,
             requests: requests.clone(),
+            echo,
         };
         let stopping = stop.clone();
         let thread = std::thread::spawn(move || server.run(&stopping));
@@ -226,6 +244,8 @@ struct Server {
     held: Option<Vec<u8>>,
     flood: Option<Flood>,
     requests: Arc<Mutex<Vec<String>>>,
+    /// Every byte received goes back first (an adapter that echoes).
+    echo: bool,
 }
 
 impl Server {
@@ -255,6 +275,11 @@ impl Server {
                 .map(|line| line.iter().map(|&b| char::from(b)).collect())
                 .collect();
             self.requests.lock().unwrap().extend(texts.iter().cloned());
+            let mut echo = if self.echo {
+                buf[..n].to_vec()
+            } else {
+                Vec::new()
+            };
             if let Some(text) = texts.last() {
                 // A device still busy with an earlier request answers this one a little later.
                 let mut busy = Duration::ZERO;
@@ -262,10 +287,20 @@ impl Server {
                     self.schedule(Duration::ZERO, held);
                     busy = BUSY;
                 }
-                let act = (self.rule)(text);
+                let act = match (self.rule)(text) {
+                    Act::GarbleEcho(f) => {
+                        echo = f(&echo);
+                        Act::Answer
+                    }
+                    act => act,
+                };
+                self.schedule(Duration::ZERO, echo);
                 self.act(act, out, busy);
-            } else if !out.is_empty() {
-                self.schedule(Duration::ZERO, out);
+            } else {
+                self.schedule(Duration::ZERO, echo);
+                if !out.is_empty() {
+                    self.schedule(Duration::ZERO, out);
+                }
             }
             self.write_due();
         }
@@ -316,6 +351,7 @@ impl Server {
                     until: Instant::now() + lasting,
                 });
             }
+            Act::GarbleEcho(_) => unreachable!("taken with the echo"),
             Act::HangUp(n) => {
                 let mut part = answer;
                 part.truncate(n);

@@ -122,6 +122,13 @@ pub const KEYS: &[Key] = &[
         unset: "each module's echo as found",
     },
     Key {
+        name: "local_echo",
+        id: "local_echo",
+        kind: Kind::Text,
+        example: "local_echo = \"on\" (or \"off\", \"auto\")",
+        unset: "",
+    },
+    Key {
         name: "log_dir",
         id: "log",
         kind: Kind::Dir,

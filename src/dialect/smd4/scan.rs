@@ -91,6 +91,7 @@ fn ask(
                 .then(|| r.data_strings().join(","))
                 .filter(|t| !t.is_empty())
         })),
+        Err(e) if e.is_echo_mismatch() => Err(e),
         Err(SessionError::Timeout { .. } | SessionError::Link(_)) => Ok(None),
         Err(e) => Err(e),
     }

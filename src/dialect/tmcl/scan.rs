@@ -198,10 +198,11 @@ pub fn quiet_time(profile: &crate::dialect::tmcl::profile::Profile) -> Duration 
 
 /// Whether an error means "nobody (usable) at this address" rather than "stop scanning".
 fn absent(error: &SessionError) -> bool {
-    matches!(
-        error,
-        SessionError::Timeout { .. } | SessionError::Link(_) | SessionError::Device { .. }
-    )
+    !error.is_echo_mismatch()
+        && matches!(
+            error,
+            SessionError::Timeout { .. } | SessionError::Link(_) | SessionError::Device { .. }
+        )
 }
 
 /// Round 1: a module in binary mode answers 136 type 1; then its version string.

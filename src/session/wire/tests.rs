@@ -348,3 +348,103 @@ fn the_quiet_gap_before_a_frame_counts_from_the_last_byte_heard_too() {
         start.elapsed()
     );
 }
+
+/// Sends `bytes` as the first request of a session, marked as the probe of echo detection.
+fn probe(w: &mut Wire, bytes: &[u8]) {
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
+    w.probe_echo();
+    w.send(bytes, "probe").unwrap();
+}
+
+#[test]
+fn an_echo_found_at_open_is_stripped_then_and_after() {
+    let (mut w, script) = wire();
+    probe(&mut w, b"REQ1");
+    arrive(&script, Duration::ZERO, b"RE");
+    arrive(&script, Duration::from_millis(2), b"Q1ANS1");
+    let deadline = Instant::now() + TIMEOUT;
+    while w.rx.len() < 4 && w.fill(deadline).unwrap() {}
+    assert_eq!(w.rx.bytes(), b"ANS1");
+    assert!(w.strips_echo());
+    assert_eq!(w.notices.len(), 1, "{:?}", w.notices);
+    w.rx.clear();
+    w.finish(true);
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
+    w.send(b"REQ2", "second").unwrap();
+    arrive(&script, Duration::ZERO, b"REQ2ANS2");
+    while w.rx.len() < 4 && w.fill(deadline).unwrap() {}
+    assert_eq!(w.rx.bytes(), b"ANS2");
+    assert_eq!(w.notices.len(), 1, "announced once");
+}
+
+#[test]
+fn no_echo_at_open_leaves_the_answer_whole() {
+    let (mut w, script) = wire();
+    // The answer begins like the request and then differs: held aside, then given back.
+    probe(&mut w, b"\x01REQ");
+    arrive(&script, Duration::ZERO, b"\x01RE");
+    arrive(&script, Duration::from_millis(2), b"PLY");
+    let deadline = Instant::now() + TIMEOUT;
+    while w.rx.len() < 6 && w.fill(deadline).unwrap() {}
+    assert_eq!(w.rx.bytes(), b"\x01REPLY");
+    assert!(!w.strips_echo());
+    w.rx.clear();
+    w.finish(true);
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
+    w.probe_echo();
+    w.send(b"AB", "second").unwrap();
+    arrive(&script, Duration::ZERO, b"AB");
+    while w.rx.len() < 2 && w.fill(deadline).unwrap() {}
+    assert_eq!(
+        w.rx.bytes(),
+        b"AB",
+        "decided once: an answer like the request is kept"
+    );
+    assert!(w.notices.is_empty());
+}
+
+#[test]
+fn an_echo_that_differs_is_line_noise() {
+    let (mut w, script) = wire();
+    w.set_local_echo(crate::session::LocalEcho::On);
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
+    w.send(b"SAP 4", "request").unwrap();
+    arrive(&script, Duration::ZERO, b"SAX 4 and more");
+    let deadline = Instant::now() + TIMEOUT;
+    let error = loop {
+        match w.fill(deadline) {
+            Ok(true) => continue,
+            Ok(false) => panic!("no error"),
+            Err(e) => break e,
+        }
+    };
+    assert!(
+        error
+            .to_string()
+            .starts_with("line noise: the adapter's echo"),
+        "{error}"
+    );
+    assert_eq!(w.rx.len(), 0, "nothing of it is kept");
+    w.finish(false);
+    // The next exchange begins on a clean line: nothing more is expected back.
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
+    w.send(b"GAP", "next").unwrap();
+    arrive(&script, Duration::ZERO, b"GAPok");
+    while w.rx.len() < 2 && w.fill(deadline).unwrap() {}
+    assert_eq!(w.rx.bytes(), b"ok");
+}
+
+#[test]
+fn an_echo_of_a_request_without_answer_is_stripped_between_exchanges() {
+    let (mut w, script) = wire();
+    w.set_local_echo(crate::session::LocalEcho::On);
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
+    w.send(b"RESET", "no answer").unwrap();
+    w.finish(true);
+    arrive(&script, Duration::ZERO, b"RESET");
+    std::thread::sleep(Duration::from_millis(2));
+    w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();
+    assert_eq!(w.rx.len(), 0);
+    assert!(w.notices.is_empty(), "{:?}", w.notices);
+    assert!(!w.suspect.covers(A), "an echo is no stray data");
+}

@@ -7,6 +7,7 @@ use crate::link::LinkError;
 
 use super::super::SessionError;
 use super::super::rx::{RX_CAP, is_line_break};
+use super::echo::Taken;
 use super::{MAX_LINE, Peer, Wire};
 
 /// The resync window is at least this many byte times, whatever the timeout.
@@ -197,9 +198,17 @@ impl Wire {
                 Ok(n) => {
                     read += n;
                     self.last_heard = Some(Instant::now());
-                    if self.rx.extend(&buf[..n]).is_err() {
-                        read = DRAIN_BUDGET;
-                        self.discard_unexpected(Some(&buf[..n]));
+                    match self.take_in(&buf[..n]) {
+                        Ok(Taken::Kept) => {}
+                        Ok(Taken::Overflow) => {
+                            read = DRAIN_BUDGET;
+                            self.discard_unexpected(Some(&buf[..n]));
+                        }
+                        // A wrong echo between exchanges: said, and the line is suspect.
+                        Err(e) => {
+                            self.notices.push(e.to_string());
+                            self.suspect.add(Peer::Any);
+                        }
                     }
                 }
                 Err(LinkError::Timeout) => break,

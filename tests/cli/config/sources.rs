@@ -89,6 +89,7 @@ fn an_empty_environment_variable_counts_as_unset_and_a_bad_one_is_named() {
         ("TMCLSH_TIMEOUT", "soon"),
         ("TMCLSH_MODULE", "0"),
         ("TMCLSH_PROTOCOL", "modbus"),
+        ("TMCLSH_LOCAL_ECHO", "maybe"),
     ] {
         let out = place.run(&["-c", "GAP 4, 0"], &[(name, value)]);
         let err = stderr(&out);

@@ -269,6 +269,9 @@ impl Smd4Session {
         request: &Request,
         silent: bool,
     ) -> Result<Option<Smd4Reply>, SessionError> {
+        // A drive has no echo, and no reply begins like its request: the first one tells
+        // whether the adapter echoes.
+        self.core.wire.probe_echo();
         self.core.wire.send(
             &request.wire(self.smd4.prefix),
             format_args!("to {}", DriveName(request.address)),

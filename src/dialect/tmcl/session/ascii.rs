@@ -137,6 +137,9 @@ impl TmclSession {
         let mut line = Vec::with_capacity(wire_text.len() + 1);
         line.extend_from_slice(wire_text.as_bytes());
         line.push(b'\r');
+        if let Some(Op::Command(instruction)) = op {
+            self.forget_host(&instruction);
+        }
         self.core.wire.send(&line, format_args!("to {name}"))?;
         let timeout = match wait {
             Wait::Optional(wait) => wait,

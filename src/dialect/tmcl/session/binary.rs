@@ -10,6 +10,9 @@ use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode, Status};
 
 use super::{TmclExchange, TmclReply, TmclSession, WireMode};
+
+/// Global parameter 76, the serial host address binary replies begin with.
+const HOST_ADDRESS: u8 = 76;
 use crate::session::SessionError;
 use crate::session::transcript::Entry;
 
@@ -60,6 +63,9 @@ impl TmclSession {
             instruction,
         }
         .encode();
+        // No reply frame begins like its request: the first one tells whether the adapter
+        // echoes.
+        self.core.wire.probe_echo();
         self.core.wire.send(
             &frame,
             format_args!("{sent} to {} in binary", ModuleName(module)),
@@ -106,10 +112,25 @@ impl TmclSession {
         raw: &[u8; FRAME_LEN],
         deadline: Instant,
     ) -> Result<Option<(TmclReply, String)>, SessionError> {
+        if !self.may_be_reply(module, instruction, raw) {
+            return Ok(None);
+        }
         if instruction.command == Opcode::FirmwareVersion && instruction.type_ == 0 {
             let (host, text) = decode_version_string(raw);
             self.version_host = Some(host);
+            if !raw[1..].iter().all(u8::is_ascii_graphic) {
+                return Err(self.binary_noise(
+                    "not a version string",
+                    format!(
+                        "line noise: {} answered command 136 with {}, which is not a firmware \
+                         version (8 printable characters, such as 142V1.06); not taken",
+                        ModuleName(module),
+                        hex(raw)
+                    ),
+                ));
+            }
             self.settle_binary(module, raw, deadline)?;
+            self.host = Some(raw[0]);
             self.core
                 .wire
                 .log_received(FRAME_LEN, format_args!("version {text}"));
@@ -147,6 +168,8 @@ impl TmclSession {
             ));
         }
         self.settle_binary(module, raw, deadline)?;
+        self.host = Some(reply.host);
+        self.forget_host(&instruction);
         self.core.wire.log_received(
             FRAME_LEN,
             format_args!(
@@ -161,6 +184,47 @@ impl TmclSession {
             value: reply.value,
         };
         Ok(Some((answer, binary_reply_text(&reply))))
+    }
+
+    /// Whether the frame at the front of the buffer can be a reply: it begins with the host
+    /// address (once known), and is not the request itself handed back by an adapter that
+    /// echoes. Any other frame is set aside with a note: taken for the reply, the echo of `SAP
+    /// 4, 5, 1000` to module 5 reads as "invalid value".
+    fn may_be_reply(
+        &mut self,
+        module: u8,
+        instruction: Instruction,
+        raw: &[u8; FRAME_LEN],
+    ) -> bool {
+        let sent = CommandFrame {
+            address: module,
+            instruction,
+        }
+        .encode();
+        let kind = match self.host {
+            _ if raw[..] == sent[..] => "the request itself, handed back (an adapter that \
+                                          echoes? --local-echo), not a reply"
+                .to_string(),
+            Some(host) if raw[0] != host => format!(
+                "a frame beginning with {} where a reply begins with the host address {host}, \
+                 not a reply",
+                raw[0]
+            ),
+            _ => return true,
+        };
+        self.core.wire.discard(FRAME_LEN, &kind);
+        false
+    }
+
+    /// A module told a new host address answers with it from now on (or already to this): the
+    /// next reply says which it is.
+    pub(super) fn forget_host(&mut self, instruction: &Instruction) {
+        if instruction.command == Opcode::Sgp
+            && instruction.type_ == HOST_ADDRESS
+            && instruction.motor == 0
+        {
+            self.host = None;
+        }
     }
 
     /// No whole answer before the deadline: what came is logged and named in the error.

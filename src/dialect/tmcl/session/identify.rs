@@ -159,6 +159,18 @@ impl TmclSession {
                 ));
                 return Ok(Identity::NoAnswer("no answer to 136".into()));
             }
+            // Something came back that is no version string: said, and no profile is
+            // picked from it.
+            Err(SessionError::Link(message)) if message.starts_with("line noise") => {
+                self.core
+                    .wire
+                    .note(&format!("not identified: {c}, no usable answer to 136"));
+                self.core.wire.notices.push(format!(
+                    "{message}; {c} not identified, using the profile {}",
+                    profile_label(&self.fallback)
+                ));
+                return Ok(Identity::NoAnswer("no usable answer to 136".into()));
+            }
             Err(e) => return Err(e),
         };
         let identified = match catalogue::identify(&text) {

@@ -73,6 +73,9 @@ pub struct TmclSession {
     /// The last exchange on the line was a complete binary one: every binary receiver is at a
     /// frame boundary, and the next frame needs no quiet line before it.
     frames_aligned: bool,
+    /// The host address binary replies begin with, from the last one taken (GP 76; unknown
+    /// until a module has answered, and again after it was set).
+    host: Option<u8>,
     /// ASCII bytes went out since the line was last kept quiet for a frame time-out: a module in
     /// binary mode may hold some of them as the start of a frame.
     ascii_sent: bool,
@@ -160,6 +163,7 @@ impl TmclSession {
             identity: Identity::NotAsked,
             binary_only: false,
             frames_aligned: false,
+            host: None,
             ascii_sent: false,
             line_dirty: false,
             probing_reset: false,

@@ -232,6 +232,7 @@ impl TmclSession {
             instruction: Instruction::new(Opcode::EnterAscii, 0, 0, 0),
         };
         let bytes = frame.encode();
+        self.core.wire.probe_echo();
         self.core.wire.send(
             &bytes,
             format_args!("enter ASCII mode (139) to {}", ModuleName(module)),

@@ -837,3 +837,40 @@ fn the_late_reply_of_an_echoed_request_is_known_for_what_it_is() {
         "reported"
     );
 }
+
+#[test]
+fn an_answer_to_136_that_is_no_version_string_picks_no_profile() {
+    // The scripted module answers 136 with an ordinary reply frame: eight bytes that are not
+    // printable characters ('????????' before the check).
+    let wire = Arc::new(Mutex::new(Wire::default()));
+    let module = FakeModule {
+        quirks: Quirks::default(),
+        wire: wire.clone(),
+        frames: FrameDecoder::new(),
+        line: Vec::new(),
+        position: -5000,
+        gaps: 0,
+        held: Vec::new(),
+        holding: false,
+    };
+    let mut s = TmclSession::connect(
+        Box::new(FakeLink { module }),
+        Profile::builtin(),
+        super::Connect::default(),
+        options(),
+        None,
+    )
+    .expect("the session opens");
+    assert!(
+        matches!(s.identity(), super::Identity::NoAnswer(_)),
+        "{:?}",
+        s.identity()
+    );
+    let notices = s.take_notices().join("\n");
+    assert!(
+        notices.contains("which is not a firmware version") && notices.contains("not identified"),
+        "{notices}"
+    );
+    assert_eq!(s.profile().name, "tmcm-142", "the profile it started with");
+    s.close();
+}
