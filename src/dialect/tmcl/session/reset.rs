@@ -67,6 +67,9 @@ impl TmclSession {
     fn probe_reset(&mut self, module: u8) -> Result<bool, SessionError> {
         let probe = Instruction::new(Opcode::FirmwareVersion, 1, 0, 0);
         self.ascii_sent = true; // the quiet gap before the frame, whatever came before
+        // A restarted module answers with its stored host address, which a host address set in
+        // RAM before the restart is not: the probe's reply names the one to expect.
+        self.host = None;
         // A restarted module answers at once: the probe waits no longer than an optional reply.
         let wait = self.optional_wait(2 * FRAME_LEN as u32);
         if self
