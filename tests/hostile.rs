@@ -37,6 +37,9 @@ pub struct Run {
     pub stderr: String,
     /// Peak resident memory of the process, KiB.
     pub peak_rss_kib: i64,
+    /// What `/proc` said of the process when it first passed the memory bound (its status and
+    /// the sum of its mappings), so that a rare spike can be explained from the failure alone.
+    pub over_bound: Option<String>,
 }
 
 impl Run {
@@ -49,8 +52,9 @@ impl Run {
         );
         assert!(
             self.peak_rss_kib < MEMORY_BOUND_KIB,
-            "{what}: peak RSS {} KiB",
-            self.peak_rss_kib
+            "{what}: peak RSS {} KiB\n{}",
+            self.peak_rss_kib,
+            self.over_bound.as_deref().unwrap_or("")
         );
         assert!(
             self.stderr.len() < 8 * 1024,
@@ -86,6 +90,7 @@ pub fn tmclsh(args: &[String]) -> Run {
     let err = collect(Box::new(child.stderr.take().unwrap()));
     let started = Instant::now();
     let mut peak_rss_kib = 0;
+    let mut over_bound = None;
     let status = loop {
         if let Some(status) = child.try_wait().expect("tmclsh can be waited for") {
             break status;
@@ -93,6 +98,14 @@ pub fn tmclsh(args: &[String]) -> Run {
         // The high-water mark of the process's own memory (getrusage of a child would count
         // the test process it was forked from).
         peak_rss_kib = peak_rss_kib.max(high_water_mark(pid).unwrap_or(0));
+        if peak_rss_kib >= MEMORY_BOUND_KIB && over_bound.is_none() {
+            let proc = |file: &str| std::fs::read_to_string(format!("/proc/{pid}/{file}"));
+            over_bound = Some(format!(
+                "/proc/{pid}/status:\n{}\nsmaps_rollup:\n{}",
+                proc("status").unwrap_or_default(),
+                proc("smaps_rollup").unwrap_or_default()
+            ));
+        }
         if started.elapsed() > HANG_GUARD {
             let _ = child.kill();
             let _ = child.wait();
@@ -108,6 +121,7 @@ pub fn tmclsh(args: &[String]) -> Run {
         stdout: out.join().unwrap(),
         stderr: err.join().unwrap(),
         peak_rss_kib,
+        over_bound,
     }
 }
 
