@@ -31,6 +31,19 @@ fn unplug(sim: &mut Sim, secs: &str) -> String {
         .to_string()
 }
 
+/// Unplugs the adapter while the module is silent and lets it talk again before the pty comes
+/// back after `secs`: the request in flight is cut short whether or not the simulator had read it
+/// yet (sent is not yet received), and the module answers what is sent after the reconnect.
+fn unplug_while_silent(sim: &mut Sim, secs: &str) -> String {
+    let answer = sim.console(&format!("unplug {secs}"));
+    assert!(answer.starts_with("ok unplugged"), "{answer}");
+    assert_eq!(sim.console("silent off"), "ok talking");
+    let back = sim.line();
+    back.strip_prefix("pty ")
+        .unwrap_or_else(|| panic!("the pty came back: {back}"))
+        .to_string()
+}
+
 /// Waits until `file` holds `text` (the transcript shows a request on its way) while `child`
 /// runs.
 fn wait_for(file: &Path, text: &str, child: &mut Child) -> String {
@@ -223,8 +236,7 @@ fn with_reconnect_an_interrupted_read_is_sent_again_and_answered() {
         "GIO 3, 0",
     );
     // The reply held back is dropped; once back, the module answers again.
-    assert_eq!(sim.console("silent off"), "ok talking");
-    unplug(&mut sim, "0.5");
+    unplug_while_silent(&mut sim, "1");
     let out = child.wait_with_output().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(0), "{stderr}");
@@ -253,8 +265,17 @@ fn with_reconnect_an_interrupted_motion_is_not_sent_again() {
         &["--timeout", "60000", "--reconnect", "20s"],
         "ROR 0, 500",
     );
-    assert_eq!(sim.console("silent off"), "ok talking");
-    unplug(&mut sim, "0.5");
+    // Sent is not yet received: the simulator must have run it (its reply silenced) before it
+    // talks again, or the reply would come and nothing would be cut short.
+    let deadline = Instant::now() + PATIENCE;
+    while !sim.console("motor").contains("reached 0") {
+        assert!(
+            Instant::now() < deadline,
+            "ROR 0, 500 never reached the module"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    unplug_while_silent(&mut sim, "1");
     let out = child.wait_with_output().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(3), "{stderr}");
@@ -292,8 +313,7 @@ fn an_smd4_read_cut_short_is_sent_again_with_reconnect() {
         ("MOTOR:VMAX", vmax),
         "MOTOR:VMAX",
     );
-    assert_eq!(sim.console("silent off"), "ok talking");
-    unplug(&mut sim, "0.5");
+    unplug_while_silent(&mut sim, "1");
     let out = child.wait_with_output().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(0), "{stderr}");
@@ -334,8 +354,7 @@ fn a_script_catches_the_error_of_a_motion_cut_short() {
     assert_eq!(ready, "ready 0\n");
     assert_eq!(sim.console("silent on"), "ok silent");
     wait_for(&log, "ROR 0, 500", &mut child);
-    assert_eq!(sim.console("silent off"), "ok talking");
-    unplug(&mut sim, "0.5");
+    unplug_while_silent(&mut sim, "1");
     child.stdout = Some(stdout.into_inner());
     let out = child.wait_with_output().unwrap();
     let printed = String::from_utf8_lossy(&out.stdout);
