@@ -290,6 +290,17 @@ fn open_with(
     )
 }
 
+/// How many times the frame of `instruction` to module 1 went out on `wire`.
+fn frames_sent(wire: &Mutex<Wire>, instruction: Instruction) -> usize {
+    let frame = CommandFrame {
+        address: 1,
+        instruction,
+    }
+    .encode();
+    let sent = wire.lock().unwrap().sent.clone();
+    sent.windows(9).filter(|w| *w == frame).count()
+}
+
 fn open(quirks: Quirks) -> (TmclSession, Arc<Mutex<Wire>>) {
     let (session, wire) = open_with(quirks, options());
     (session.expect("session opens"), wire)
@@ -697,17 +708,11 @@ fn in_binary_mode_a_late_frame_is_stopped_by_a_barrier_of_another_command() {
     // names another command) is sent first and its reply discards it.
     let x = s.exchange_line("GGP 4, 2").unwrap();
     assert_eq!(x.value(), Some(0), "not GGP 3, 2's 333");
-    let barrier = CommandFrame {
-        address: 1,
-        instruction: Instruction::new(136, 1, 0, 0),
-    }
-    .encode();
-    let sent = wire.lock().unwrap().sent.clone();
-    assert_eq!(sent.windows(9).filter(|w| *w == barrier).count(), 1);
+    let barrier = Instruction::new(136, 1, 0, 0);
+    assert_eq!(frames_sent(&wire, barrier), 1);
     // A request of a command not in doubt needs none; the line is clean again anyway.
     s.exchange_line("GGP 4, 2").unwrap();
-    let sent = wire.lock().unwrap().sent.clone();
-    assert_eq!(sent.windows(9).filter(|w| *w == barrier).count(), 1);
+    assert_eq!(frames_sent(&wire, barrier), 1);
 }
 
 #[test]
@@ -721,13 +726,7 @@ fn in_binary_mode_a_lost_barrier_fails_the_request_unsent_and_the_next_tries_ano
     wire.lock().unwrap().lagging = false;
     // GGP and 136 are in doubt: the next barrier is 135.
     assert_eq!(s.exchange_line("GGP 3, 2").unwrap().value(), Some(333));
-    let barrier = CommandFrame {
-        address: 1,
-        instruction: Instruction::new(135, 0, 0, 0),
-    }
-    .encode();
-    let sent = wire.lock().unwrap().sent.clone();
-    assert_eq!(sent.windows(9).filter(|w| *w == barrier).count(), 1);
+    assert_eq!(frames_sent(&wire, Instruction::new(135, 0, 0, 0)), 1);
 }
 
 #[test]
