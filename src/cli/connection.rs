@@ -34,6 +34,10 @@ pub struct ConnectionArgs {
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT")]
     pub tcp: Option<String>,
+    /// Talk to the built-in simulated module: the explicit choice a command run without a
+    /// terminal needs, so that no script passes against the simulator by accident.
+    #[arg(long)]
+    pub sim: bool,
     /// The serial line's settings: modem lines, RS-485, latency timer.
     #[command(flatten)]
     pub line: LineArgs,

@@ -171,6 +171,12 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
             }
         }
     }
+    if given("sim") && (given("port") || given("tcp")) {
+        refuse(
+            &["sim"],
+            "and a link to hardware name two modules; give one".into(),
+        );
+    }
     if given("port") && given("tcp") {
         refuse(&["tcp"], "and --port name two links; give one".into());
     }
