@@ -5,7 +5,7 @@
 //!
 //! The simulator runs on a manual clock, so "the motor stopped" is checked by letting ten
 //! simulated seconds pass and reading its velocity on the console, and "it was turning" the same
-//! way before. Crashes are injected through `TMCLSH_TEST_CRASH`, which only debug builds read.
+//! way before. Crashes are injected through `TMCLSH_TEST_CRASH`, which every build reads.
 
 use std::process::Command;
 
