@@ -19,6 +19,8 @@
 //!   targets and profiles the tree has).
 //! - A block of another kind (`sh`, `text`, none) must not hold a `$ ` line or start a line with
 //!   `tmclsh `, so no command example escapes the runner.
+//! - A `tmclsh …` code span in the prose is read by the real binary's parser (`tmclsh ARGS
+//!   --help`), placeholders such as SHELL, MS and N filled in, `[optional parts]` left out.
 
 use std::io::Read;
 use std::os::unix::process::CommandExt;
@@ -466,6 +468,88 @@ fn the_hardware_examples_run_against_a_simulator_standing_in() {
     let blocks = console_blocks(Some("hardware"));
     let failures = blocks.iter().flat_map(|b| run_block(b, true)).collect();
     report(failures, blocks.len());
+}
+
+/// The `tmclsh …` code spans of the prose (outside fenced blocks), with their file.
+fn prose_commands() -> Vec<(String, String)> {
+    let mut spans = Vec::new();
+    for path in documents() {
+        let name = path.strip_prefix(repo()).unwrap().display().to_string();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let mut prose = String::new();
+        let mut fenced = false;
+        for line in text.lines() {
+            if line.trim_start().starts_with("```") {
+                fenced = !fenced;
+            } else if !fenced {
+                prose.push_str(line);
+                prose.push(' ');
+            }
+        }
+        for (i, span) in prose.split('`').enumerate() {
+            if i % 2 == 1 && span.starts_with("tmclsh ") {
+                spans.push((name.clone(), span.to_string()));
+            }
+        }
+    }
+    spans
+}
+
+/// A prose command's words as the parser gets them: the placeholders a reader fills in given a
+/// value of their kind, optional parts (`[-- ARGS...]`) and shell redirections left out.
+fn filled_in(span: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for word in words(span).into_iter().skip(1) {
+        if word.starts_with('>') || word.starts_with('|') {
+            break;
+        }
+        if word.starts_with('[') || word.ends_with(']') || word == "ARGS..." {
+            continue;
+        }
+        out.push(
+            match word.as_str() {
+                "SHELL" => "bash",
+                "MS" | "N" => "1",
+                other => other,
+            }
+            .to_string(),
+        );
+    }
+    out
+}
+
+#[test]
+fn every_command_in_the_prose_is_one_the_parser_takes() {
+    // `tmclsh ARGS --help`: the real binary's parser reads ARGS (an unknown option, subcommand or
+    // a value of the wrong kind is an error) and stops at --help before anything is opened.
+    let spans = prose_commands();
+    let mut refused = Vec::new();
+    for (file, span) in &spans {
+        let args = filled_in(span);
+        let out = Command::new(bin())
+            .args(&args)
+            .arg("--help")
+            .env("NO_COLOR", "1")
+            .stdin(Stdio::null())
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        // A span naming an option of a command (`tmclsh asm -o`) lacks only its value.
+        let names_an_option =
+            args.last().is_some_and(|a| a.starts_with('-')) && err.contains("a value is required");
+        if out.status.code() != Some(0) && !names_an_option {
+            refused.push(format!(
+                "{file}: `{span}`: {}",
+                err.lines().next().unwrap_or("")
+            ));
+        }
+    }
+    assert!(
+        spans.len() > 40,
+        "only {} prose commands found",
+        spans.len()
+    );
+    assert!(refused.is_empty(), "{}", refused.join("\n"));
 }
 
 /// Text as rexpect shows it: it reads bytes as Latin-1.
