@@ -552,6 +552,33 @@ fn every_command_in_the_prose_is_one_the_parser_takes() {
     assert!(refused.is_empty(), "{}", refused.join("\n"));
 }
 
+#[test]
+fn the_readme_lists_every_page_of_docs_and_its_links_lead_somewhere() {
+    let readme = std::fs::read_to_string(repo().join("README.md")).unwrap();
+    for page in documents().iter().skip(1) {
+        let name = page.strip_prefix(repo()).unwrap().display().to_string();
+        assert!(
+            readme.contains(&format!("]({name})")),
+            "README.md does not list {name}"
+        );
+    }
+    // Links between the pages of docs/ (README.md lists pages still to be written as well).
+    for page in documents().iter().skip(1) {
+        let text = std::fs::read_to_string(page).unwrap();
+        for link in text.split("](").skip(1) {
+            let target = link.split([')', '#']).next().unwrap();
+            if target.ends_with(".md") && !target.contains("://") {
+                let path = page.parent().unwrap().join(target);
+                assert!(
+                    path.exists(),
+                    "{}: link to {target}, which does not exist",
+                    page.display()
+                );
+            }
+        }
+    }
+}
+
 /// Text as rexpect shows it: it reads bytes as Latin-1.
 fn latin1(text: &str) -> String {
     text.bytes().map(char::from).collect()
