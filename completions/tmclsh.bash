@@ -273,7 +273,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__completions)
-            opts="-h --profile --help bash elvish fish powershell zsh"
+            opts="-h --install --profile --help bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -753,7 +753,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__man)
-            opts="-h --profile --help"
+            opts="-h --install --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

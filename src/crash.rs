@@ -21,7 +21,7 @@ compile_error!(
     "tmclsh must be built with panic = \"unwind\": its crash guard runs while unwinding"
 );
 
-/// The exit code of a crash (the one Rust uses for a panic, documented in the README).
+/// The exit code of a crash (the one Rust uses for a panic, documented in docs/exit-codes.md).
 pub const EXIT_CODE: u8 = 101;
 
 /// The environment variable that injects a crash at a named point: present in every build, so the

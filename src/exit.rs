@@ -1,4 +1,4 @@
-//! The exit-code convention every face of tmclsh follows (documented in the README).
+//! The exit-code convention every face of tmclsh follows (documented in docs/exit-codes.md).
 
 /// What a run of tmclsh ended with.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

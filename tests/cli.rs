@@ -73,9 +73,7 @@ fn a_broken_profile_is_refused_with_exit_2() {
     let out = run(&["--profile", path.to_str().unwrap(), "params"]);
     assert_eq!(code(&out), 2);
     assert!(
-        stderr(&out).contains(
-            "refused (schema in the README, \"Module profiles\"):\n  line 2: invalid type"
-        ),
+        stderr(&out).contains("refused (schema in docs/profiles.md):\n  line 2: invalid type"),
         "{}",
         stderr(&out)
     );
@@ -124,18 +122,18 @@ fn committed_completions_match_what_the_binary_generates() {
 }
 
 #[test]
-fn the_readme_usage_block_is_the_real_help() {
+fn the_usage_block_in_the_docs_is_the_real_help() {
     let out = run(&["-h"]);
     assert_eq!(code(&out), 0);
-    let readme = std::fs::read_to_string(repo().join("README.md")).unwrap();
-    let block = readme
+    let usage = std::fs::read_to_string(repo().join("docs/usage.md")).unwrap();
+    let block = usage
         .split("<!-- usage: the output of `tmclsh -h`, checked by the test suite -->\n```text\n")
         .nth(1)
         .and_then(|rest| rest.split("```").next())
-        .expect("README has the usage block");
+        .expect("docs/usage.md has the usage block");
     assert!(
         block == stdout(&out),
-        "README usage block is stale; paste the output of `tmclsh -h`"
+        "docs/usage.md's usage block is stale; regenerate it from `tmclsh -h`"
     );
 }
 
@@ -189,10 +187,12 @@ fn usage_errors_show_escape_sequences_from_arguments_escaped() {
 }
 
 mod config;
+mod doc_examples;
 mod examples;
 mod forgiving;
 mod helper_text;
 mod history;
+mod install;
 mod log;
 mod output;
 mod ports;

@@ -272,7 +272,7 @@ pub fn limit_section(cells: &[Cell], plan: &Plan, date: &str) -> String {
          TMCL binary, SMD4) nothing in a reply names its request (a binary frame names its \
          command, not the type or bank): after a failure the next request is preceded by a \
          barrier, a read-only request whose reply no earlier request can send, and everything \
-         before that reply is discarded (README, \"The guarantee\"); with an echo the reply must \
+         before that reply is discarded (docs/guarantee.md); with an echo the reply must \
          follow the echo of its own request. \"Silent wrong per 100 late\" divides the silent \
          wrong values by the replies the simulator delayed.\n\n",
         rate = plan.rate * 100.0,

@@ -13,7 +13,7 @@ pub(super) struct AsmArgs {
     /// TMCL source file (as the TMCL-IDE writes it).
     #[arg(value_name = "FILE.tmc")]
     pub file: PathBuf,
-    /// Write the program file (format in the README); without it the source is only checked.
+    /// Write the program file (format in docs/programs.md); without it the source is only checked.
     #[arg(short, long, value_name = "FILE.bin")]
     pub output: Option<PathBuf>,
     /// Print the listing: address, the 7 instruction bytes and the source line.

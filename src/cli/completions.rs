@@ -15,6 +15,11 @@ use clap_complete::Shell;
 pub(super) struct CompletionsArgs {
     /// The shell to generate for.
     pub shell: Shell,
+    /// Write the script where the shell loads it from (bash: bash-completion's directory under
+    /// $XDG_DATA_HOME; zsh: $XDG_DATA_HOME/zsh/site-functions; fish: $XDG_CONFIG_HOME/fish)
+    /// instead of printing it, and say where.
+    #[arg(long)]
+    pub install: bool,
 }
 
 pub(super) fn run(args: &CompletionsArgs, out: &mut dyn Write) -> io::Result<()> {

@@ -8,6 +8,7 @@ pub mod config;
 pub mod connection;
 mod disasm;
 pub mod download;
+mod install;
 pub mod man;
 pub(crate) mod params;
 mod ports;
@@ -40,7 +41,7 @@ use crate::exit::{Exit, Failure};
 pub struct Cli {
     /// Module profile instead of the TMCM-142's: a built-in name, alias or module number
     /// (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema
-    /// in the README).
+    /// in docs/profiles.md).
     #[arg(long, global = true, value_name = "NAME|FILE", env = "TMCLSH_PROFILE")]
     pub profile: Option<PathBuf>,
 
@@ -66,7 +67,7 @@ enum Command {
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
     /// Print the manual page (roff; man/tmclsh.1 in the source).
-    Man,
+    Man(install::ManArgs),
     /// Run a Rhai script against the module (exit code: 0 passed, 1 failed, 2 refused, 3 link).
     Run(run::RunArgs),
     /// Assemble a stand-alone TMCL program (check it, list it, write FILE.bin).
@@ -240,8 +241,11 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports(args)) => ports::run(&args, &configs, out),
         Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),
+        Some(Command::Completions(args)) if args.install => {
+            return install::completions(args.shell, out);
+        }
         Some(Command::Completions(args)) => completions::run(&args, out),
-        Some(Command::Man) => man::run(out),
+        Some(Command::Man(args)) => return install::man(&args, out),
         Some(Command::Run(args)) => return run::run(args, &configs),
         Some(Command::Asm(args)) => return asm::run(&args, tmcl_profile(&configs), out),
         Some(Command::Disasm(args)) => return disasm::run(&args, tmcl_profile(&configs), out),

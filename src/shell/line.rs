@@ -46,7 +46,7 @@ fn rows(
         .unwrap_or_else(|| none("a pseudo-terminal or not a serial port"));
     let latency = match s.latency {
         Some(t) if t > crate::link::line::latency::LOW => format!(
-            "{} ms: each reply may wait that long in the adapter (see the README's \"On a real line\")",
+            "{} ms: each reply may wait that long in the adapter (see docs/real-line.md)",
             t.as_millis()
         ),
         Some(t) => format!("{} ms", t.as_millis()),

@@ -177,7 +177,7 @@ fn list_ports(all: &[Port], placeholders: bool, out: &mut dyn Write) -> io::Resu
         writeln!(
             out,
             "an FTDI latency timer above 2 ms delays every reply by up to that much; tmclsh lowers \
-             it on opening where the driver lets it (the README's \"On a real line\" has the fix)"
+             it on opening where the driver lets it (docs/real-line.md has the fix)"
         )?;
     }
     Ok(())

@@ -48,7 +48,7 @@ use error::Diagnostics;
 use parse::{Body, Statement, parse_line};
 use symbols::Symbols;
 
-/// The `.bin` program file contents for `instructions` (format in the README and [`MAGIC`]).
+/// The `.bin` program file contents for `instructions` (format in docs/programs.md and [`MAGIC`]).
 pub fn write_binary(instructions: &[Instruction]) -> Result<Vec<u8>, BinaryError> {
     binary::write(instructions)
 }

@@ -451,9 +451,8 @@ fn windows_sources_assemble_too() {
 }
 
 #[test]
-fn the_readme_example_assembles() {
-    let readme = include_str!("../../../../README.md");
-    let section = &readme[readme.find("## Stand-alone TMCL programs").unwrap()..];
+fn the_documented_example_assembles() {
+    let section = include_str!("../../../../docs/programs.md");
     let start = section.find("```text\n").unwrap() + "```text\n".len();
     let example = &section[start..start + section[start..].find("```").unwrap()];
     assert_eq!(

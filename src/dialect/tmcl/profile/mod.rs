@@ -177,7 +177,7 @@ pub enum ProfileError {
     Read(crate::file::FileError),
     /// The file is not valid TOML, does not follow the schema, or has rows that cannot be right.
     #[error(
-        "profile {path} refused (schema in the README, \"Module profiles\"):\n  {}",
+        "profile {path} refused (schema in docs/profiles.md):\n  {}",
         problems.join("\n  ")
     )]
     Schema {
