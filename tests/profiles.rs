@@ -179,6 +179,21 @@ fn check_data(t: &Table, builtin: &Table) -> Vec<String> {
         }
     }
 
+    // Commands the module has beside the built-in table, and its own ranges: each with a source.
+    for (table, key) in [("extra_command", "mnemonic"), ("command_range", "mnemonic")] {
+        for row in rows(t, table) {
+            let name = format!("{table} {}", text(row, key).unwrap_or("?"));
+            if text(row, "source").is_none_or(str::is_empty) {
+                problems.push(format!("{name}: no source"));
+            }
+            if row.get("uncertain").and_then(Value::as_bool) == Some(true)
+                && text(row, "uncertain_reason").is_none_or(str::is_empty)
+            {
+                problems.push(format!("{name}: uncertain without a reason"));
+            }
+        }
+    }
+
     // Identification: the 136 prefix is the module number, the version string has its format.
     let number = int(m, "module_number").unwrap_or(-1);
     if !module.ends_with(&format!("-{number}")) {

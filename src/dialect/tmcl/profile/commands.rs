@@ -392,6 +392,15 @@ impl CommandTable {
         self.commands.sort_by_key(|c| c.number);
     }
 
+    /// Gives command `number` the module's own value range: the built-in table's conditional
+    /// ranges (the TMCM-142's unit mode) do not apply to it.
+    pub(crate) fn set_value_range(&mut self, number: u8, range: (i64, i64)) {
+        if let Some(command) = self.commands.iter_mut().find(|c| c.number == number) {
+            command.value_range = Some(range);
+            command.range_when.clear();
+        }
+    }
+
     /// Keeps the commands' conditional ranges whose condition `keep` accepts.
     pub(crate) fn keep_range_when(&mut self, keep: impl Fn(&super::family::Condition) -> bool) {
         for command in &mut self.commands {

@@ -285,7 +285,7 @@ pub(crate) fn identity(file: &ProfileFile) -> Identity {
 }
 
 /// The command table of a file without `[[command]]` rows: the built-in one less `[commands]
-/// absent`, plus `[[extra_command]]`. The checker has passed the numbers and mnemonics.
+/// absent`, plus `[[extra_command]]`, with the ranges of `[[command_range]]`. The checker has passed the numbers and mnemonics.
 pub(crate) fn compose(base: &CommandTable, file: &ProfileFile) -> Result<CommandTable, String> {
     let mut table = base.clone();
     // The built-in table's conditions name the TMCM-142's parameters: they hold for a module
@@ -297,6 +297,9 @@ pub(crate) fn compose(base: &CommandTable, file: &ProfileFile) -> Result<Command
     if !file.extra_command.is_empty() {
         let extra = CommandTable::from_rows(&file.extra_command, Vec::new())?;
         table.extend(extra);
+    }
+    for row in &file.command_range {
+        table.set_value_range(row.number, (row.value_range[0], row.value_range[1]));
     }
     if let Some(words) = file.ascii.as_ref().map(|a| &a.ascii_only_commands) {
         if !words.is_empty() {

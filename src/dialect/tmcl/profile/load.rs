@@ -25,6 +25,9 @@ pub(crate) struct ProfileFile {
     /// Commands the built-in table lacks, in the `[[command]]` schema.
     #[serde(default)]
     pub extra_command: Vec<CommandRow>,
+    /// The module's own value range of a command of the built-in table (ROR/ROL speeds).
+    #[serde(default)]
+    pub command_range: Vec<CommandRangeRow>,
     #[serde(default)]
     pub io_port: Vec<IoPortRow>,
     #[serde(default)]
@@ -110,6 +113,15 @@ pub(crate) struct CommandRow {
     /// The manual makes the type byte "don't care".
     #[serde(default)]
     pub type_ignored: bool,
+}
+
+/// A command of the built-in table whose value range the module's own manual gives differently
+/// (the TMCM-142's ROR 0…2147483647 is 0…2047 on a TMC429 module and signed on later ones).
+#[derive(Debug, Deserialize)]
+pub(crate) struct CommandRangeRow {
+    pub number: u8,
+    pub mnemonic: String,
+    pub value_range: [i64; 2],
 }
 
 /// A range that applies instead of the usual one while a parameter has a value.

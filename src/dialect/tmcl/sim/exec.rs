@@ -155,7 +155,8 @@ impl Machine {
         }
         match i.command {
             Opcode::Ror => self.rotate(t, m, value),
-            Opcode::Rol => self.rotate(t, m, -value),
+            // A signed range (later modules) lets a negative speed turn the other way.
+            Opcode::Rol => self.rotate(t, m, value.saturating_neg()),
             Opcode::Mst => self.stop_motor(t, m),
             Opcode::Mvp => return self.move_to(t, i),
             Opcode::Sap => self.write_axis(t, m, i.type_, value)?,

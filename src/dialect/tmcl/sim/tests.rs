@@ -5,6 +5,7 @@ mod ascii_mode;
 mod axes;
 mod binary;
 mod eeprom;
+mod fidelity;
 mod moves;
 mod programs;
 mod real_line;

@@ -257,6 +257,42 @@ fn check_command_set(file: &ProfileFile, base: Option<&CommandTable>, problems: 
         return;
     };
     check_extra_commands_are_new(file, base, problems);
+    check_command_ranges(file, base, problems);
+}
+
+/// A `[[command_range]]` row names a command the module has, by its number and mnemonic, with
+/// a range from low to high.
+fn check_command_ranges(file: &ProfileFile, base: &CommandTable, problems: &mut Vec<Problem>) {
+    let absent: &[u8] = file.commands.as_ref().map_or(&[], |c| &c.absent);
+    for (i, row) in file.command_range.iter().enumerate() {
+        let at = |key| vec![Step::Key("command_range"), Step::Row(i), Step::Key(key)];
+        match base.by_number(row.number) {
+            Some(spec) if !absent.contains(&row.number) => {
+                if !spec.mnemonic.eq_ignore_ascii_case(&row.mnemonic) {
+                    problems.push(Problem::at(
+                        at("mnemonic"),
+                        format!(
+                            "command {} is {}, not {}",
+                            row.number,
+                            spec.display_name(),
+                            row.mnemonic.escape_debug()
+                        ),
+                    ));
+                }
+            }
+            _ => problems.push(Problem::at(
+                at("number"),
+                format!("command {} is not in this module's table", row.number),
+            )),
+        }
+        let [lo, hi] = row.value_range;
+        if lo > hi {
+            problems.push(Problem::at(
+                at("value_range"),
+                format!("value_range [{lo}, {hi}] runs backwards"),
+            ));
+        }
+    }
 }
 
 /// `[commands]` changes the built-in table (not a file's own rows): its `base` and the
