@@ -46,3 +46,31 @@ fn tmc429_modules_take_0_to_2047_and_the_tmcm_142_0_to_2147483647() {
         }
     }
 }
+
+#[test]
+fn a_search_mode_the_module_lacks_is_refused_and_mode_4_ends_on_the_left_switch() {
+    use crate::dialect::tmcl::profile::catalogue;
+    use crate::dialect::tmcl::sim::{Bus, BusOptions, Switch};
+    const SAP: u8 = 5;
+    const RFS: u8 = 13;
+    let options = BusOptions {
+        motor_switches: vec![(0, Switch::Left, -2_000)],
+        ..BusOptions::default()
+    };
+    let mut sim = Sim {
+        bus: Bus::new(catalogue::by_name("tmcm-1140").unwrap(), options),
+        now: std::time::Duration::ZERO,
+    };
+    // AP193 has no range on the TMCM-1140, so SAP takes 7; its values list 1…4.
+    sim.ok(SAP, 193, 0, 7);
+    assert_eq!(sim.status(RFS, 0, 0, 0), Status::InvalidValue);
+    assert_eq!(sim.ok(RFS, 2, 0, 0), 0, "nothing was started");
+    sim.ok(SAP, 193, 0, 4);
+    sim.ok(RFS, 0, 0, 0);
+    sim.wait(20.0);
+    assert_eq!(sim.ok(RFS, 2, 0, 0), 0, "mode 4 ends");
+    assert_eq!(sim.ok(GAP, 1, 0, 0), 0, "at the left switch's edge");
+    // The TMCM-142 has modes 1…3 only (its p39): SAP refuses 4 by the range already.
+    let mut sim = Sim::of("tmcm-142");
+    assert_eq!(sim.status(SAP, 193, 0, 4), Status::InvalidValue);
+}
