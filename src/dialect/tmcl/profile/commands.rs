@@ -164,6 +164,9 @@ pub struct CommandSpec {
     pub range_when: Vec<RangeWhen>,
     /// The manual makes the type byte "don't care" (134, 135).
     pub type_ignored: bool,
+    /// The manual makes the motor/bank byte "don't care" (128–139): any value is taken, whatever
+    /// the module's axes.
+    pub motor_ignored: bool,
 }
 
 impl CommandSpec {
@@ -316,6 +319,7 @@ impl CommandTable {
                 banks_note: row.banks_note.clone(),
                 range_when: RangeWhen::from_rows(&row.range_when),
                 type_ignored: row.type_ignored,
+                motor_ignored: row.motor_bank.starts_with("don't care"),
             });
         }
         let ascii_words = ascii_words.iter().map(|w| w.to_ascii_uppercase()).collect();

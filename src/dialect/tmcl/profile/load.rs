@@ -113,6 +113,9 @@ pub(crate) struct CommandRow {
     /// The manual makes the type byte "don't care".
     #[serde(default)]
     pub type_ignored: bool,
+    /// What the manual says the motor/bank byte is (`"don't care"` for 128–139).
+    #[serde(default)]
+    pub motor_bank: String,
 }
 
 /// A command of the built-in table whose value range the module's own manual gives differently

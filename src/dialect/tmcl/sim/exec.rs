@@ -115,7 +115,7 @@ impl Machine {
     /// coordinate numbers.
     fn precheck(&self, spec: &CommandSpec, i: &Instruction) -> Result<(), Status> {
         let has = |kind: OperandKind| spec.operands.iter().any(|o| o.kind == kind);
-        if has(OperandKind::Motor) && i.motor >= self.profile.axes {
+        if has(OperandKind::Motor) && !spec.motor_ignored && i.motor >= self.profile.axes {
             return Err(Status::InvalidValue);
         }
         if has(OperandKind::Keyword)

@@ -74,3 +74,17 @@ fn a_search_mode_the_module_lacks_is_refused_and_mode_4_ends_on_the_left_switch(
     let mut sim = Sim::of("tmcm-142");
     assert_eq!(sim.status(SAP, 193, 0, 4), Status::InvalidValue);
 }
+
+#[test]
+fn control_functions_take_any_motor_byte() {
+    // Seed §6.5: "don't care"; the TMCM-1140 has one motor.
+    let mut sim = Sim::of("tmcm-1140");
+    assert_eq!(sim.ok(135, 0, 5, 0), 0);
+    assert_eq!(sim.ok(131, 0, 200, 0), 0);
+    sim.ok(136, 1, 9, 0);
+    assert_eq!(
+        sim.status(GAP, 1, 1, 0),
+        Status::InvalidValue,
+        "GAP's motor is one"
+    );
+}
