@@ -229,6 +229,18 @@ fn check_data(t: &Table, builtin: &Table) -> Vec<String> {
         ));
     }
 
+    // 136 type 1: the module number in the upper 16 bits (TMCM-1310 p63), the version below; the
+    // TMCM-142's own manual (p92) leaves the upper bytes unused.
+    let binary = simulation
+        .and_then(|s| int(s, "version_binary"))
+        .unwrap_or(0);
+    let type_number = if number == 142 { 0 } else { number };
+    if binary >> 16 != type_number {
+        problems.push(format!(
+            "136 type 1 value {binary} does not carry the type number {type_number}"
+        ));
+    }
+
     // ASCII: an allow-list exactly when the module has (or may have) the interface, naming known
     // commands only; binary-only modules lack 139.
     let ascii = text(m, "ascii_interface").unwrap_or("");

@@ -256,8 +256,8 @@ fn a_boot_loader_names_itself_and_refuses_the_rest() {
     );
     assert_eq!(
         port.transact(1, 136, 1, 0, 0).value,
-        287,
-        "136 type 1 still answers"
+        (6110 << 16) | 287,
+        "136 type 1 still answers: module number and version 1.31"
     );
 }
 

@@ -88,3 +88,13 @@ fn control_functions_take_any_motor_byte() {
         "GAP's motor is one"
     );
 }
+
+#[test]
+fn version_136_type_1_carries_the_module_number_where_the_family_s_manuals_show_it() {
+    // TMCM-1310 p63: the type number 1310 = 0x051E in the upper bytes; version 1.31 below.
+    let mut sim = Sim::of("tmcm-6110");
+    let value = sim.ok(136, 1, 0, 0);
+    assert_eq!((value >> 16, value & 0xFFFF), (6110, 0x011F));
+    // The TMCM-142's own manual (p92): "type number … currently not used".
+    assert_eq!(Sim::of("tmcm-142").ok(136, 1, 0, 0), 0x0106);
+}
