@@ -98,3 +98,23 @@ fn version_136_type_1_carries_the_module_number_where_the_family_s_manuals_show_
     // The TMCM-142's own manual (p92): "type number … currently not used".
     assert_eq!(Sim::of("tmcm-142").ok(136, 1, 0, 0), 0x0106);
 }
+
+#[test]
+fn user_variables_follow_each_module_s_bank_2() {
+    const SGP: u8 = 9;
+    const GGP: u8 = 10;
+    const STGP: u8 = 11;
+    // The TMC5xxx modules' manual template (TMCM-1690 §5.2): 256 variables, 0…55 in EEPROM.
+    let mut sim = Sim::of("tmcm-6214");
+    sim.ok(SGP, 200, 2, -5);
+    assert_eq!(sim.ok(GGP, 200, 2, 0), -5);
+    sim.ok(STGP, 55, 2, 0);
+    assert_ne!(
+        sim.status(STGP, 56, 2, 0),
+        Status::Ok,
+        "56… live in RAM only"
+    );
+    // The TMCM-142 has 56 (its 2009 firmware header).
+    let mut sim = Sim::of("tmcm-142");
+    assert_ne!(sim.status(SGP, 200, 2, 1), Status::Ok);
+}
