@@ -118,3 +118,19 @@ fn user_variables_follow_each_module_s_bank_2() {
     let mut sim = Sim::of("tmcm-142");
     assert_ne!(sim.status(SGP, 200, 2, 1), Status::Ok);
 }
+
+#[test]
+fn the_generic_profile_serves_as_a_simulated_module() {
+    const MVP: u8 = 4;
+    const SAP: u8 = 5;
+    let mut sim = Sim::of("generic");
+    // The TMCM-142's numbering and defaults, so a motor moves; six motors.
+    assert_eq!(sim.ok(GAP, 1, 0, 0), 0);
+    sim.ok(MVP, 0, 5, 3000);
+    sim.wait(10.0);
+    assert_eq!(sim.ok(GAP, 1, 5, 0), 3000);
+    // Numbers no table names are plain memory, as the profile sends them unchecked.
+    sim.ok(SAP, 200, 3, 17);
+    assert_eq!(sim.ok(GAP, 200, 3, 0), 17);
+    assert_eq!(sim.status(GAP, 1, 6, 0), Status::InvalidValue, "no motor 6");
+}
