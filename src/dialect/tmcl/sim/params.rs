@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::profile::{Param, Profile};
 use crate::dialect::tmcl::protocol::Status;
 
@@ -61,15 +62,24 @@ impl Values {
     }
 }
 
+/// GP 67: ASCII start-up and echo.
+const ASCII_MODE: u8 = 67;
+
 /// The profile, with the bank-0 interface settings (GP 64..127: address, host address, ASCII
-/// mode, EEPROM magic …) the simulated firmware works by. A custom profile that leaves them out
+/// mode, EEPROM magic …) the simulated firmware works by (GP 67 only where the module has an
+/// ASCII interface). A custom profile that leaves them out
 /// gets the built-in profile's rows: without them the module would answer to no address at all.
 ///
 /// The generic profile has no parameter rows at all: its simulated module takes every row of the
 /// built-in profile (the numbering its motion roles follow, with defaults a motor can move by).
 fn with_interface_settings(profile: Arc<Profile>) -> Arc<Profile> {
     let builtin = Profile::builtin();
-    let wanted = |p: &&Param| profile.generic || eeprom_only(Slot::Global(p.bank(), p.number));
+    // A binary-only module has no ASCII start-up setting to be locked out by.
+    let binary_only = profile.identity.ascii_interface() == AsciiInterface::No;
+    let wanted = |p: &&Param| {
+        (profile.generic || eeprom_only(Slot::Global(p.bank(), p.number)))
+            && !(binary_only && (p.bank(), p.number) == (0, ASCII_MODE))
+    };
     let missing: Vec<Param> = builtin
         .global
         .iter()

@@ -134,3 +134,20 @@ fn the_generic_profile_serves_as_a_simulated_module() {
     assert_eq!(sim.ok(GAP, 200, 3, 0), 17);
     assert_eq!(sim.status(GAP, 1, 6, 0), Status::InvalidValue, "no motor 6");
 }
+
+#[test]
+fn a_binary_only_module_has_no_gp_67_to_be_locked_into_ascii_mode_by() {
+    const SGP: u8 = 9;
+    const GGP: u8 = 10;
+    let mut sim = Sim::of("tmcm-6214");
+    assert_eq!(sim.status(SGP, 67, 0, 1), Status::WrongType);
+    assert_eq!(sim.status(GGP, 67, 0, 0), Status::WrongType);
+    sim.bus.reset(sim.now, Some(1)).unwrap();
+    assert_eq!(sim.bus.is_ascii(1), Some(false));
+    assert_eq!(sim.ok(GAP, 1, 0, 0), 0, "still binary after a restart");
+    assert!(sim.bus.images()[0].global.iter().all(|g| g.1 != 67));
+    // A module with the interface keeps it.
+    let mut sim = Sim::of("tmcm-6110");
+    sim.ok(SGP, 67, 0, 0x20);
+    assert_eq!(sim.ok(GGP, 67, 0, 0), 0x20);
+}
