@@ -194,6 +194,27 @@ fn check_data(t: &Table, builtin: &Table) -> Vec<String> {
         }
     }
 
+    // Commands left out as unconfirmed: said why and where, and really left out.
+    let section = t.get("commands").and_then(Value::as_table);
+    let unconfirmed = section
+        .and_then(|c| c.get("unconfirmed"))
+        .and_then(Value::as_array);
+    if let (Some(section), Some(numbers)) = (section, unconfirmed) {
+        for key in ["unconfirmed_reason", "unconfirmed_source"] {
+            if text(section, key).is_none_or(str::is_empty) {
+                problems.push(format!("[commands] unconfirmed without {key}"));
+            }
+        }
+        for number in numbers.iter().filter_map(Value::as_integer) {
+            if rows(t, "extra_command")
+                .iter()
+                .any(|c| int(c, "number") == Some(number))
+            {
+                problems.push(format!("unconfirmed command {number} is in the table"));
+            }
+        }
+    }
+
     // Identification: the 136 prefix is the module number, the version string has its format.
     let number = int(m, "module_number").unwrap_or(-1);
     if !module.ends_with(&format!("-{number}")) {
