@@ -30,6 +30,9 @@ pub(crate) struct ProfileFile {
     pub command_range: Vec<CommandRangeRow>,
     #[serde(default)]
     pub io_port: Vec<IoPortRow>,
+    /// The interrupt vectors of the program runner (EI, DI, VECT, RETI).
+    #[serde(default)]
+    pub interrupt: Vec<InterruptRow>,
     #[serde(default)]
     pub source_doc: Vec<SourceDocRow>,
 }
@@ -189,6 +192,22 @@ pub(crate) struct CommandsSection {
     pub absent: Vec<u8>,
     #[serde(default)]
     pub absent_reason: String,
+}
+
+/// One interrupt vector: its number (the type byte of EI, DI, VECT), what raises it, and the
+/// bank-3 global parameter that configures it (a timer's period in ms, a trigger condition).
+#[derive(Debug, Deserialize)]
+pub(crate) struct InterruptRow {
+    pub number: u8,
+    pub name: String,
+    /// `timer`, `stop_left`, `stop_right`, `input` or `position_reached`.
+    pub kind: String,
+    #[serde(default)]
+    pub motor: u8,
+    #[serde(default)]
+    pub port: u8,
+    /// The bank-3 global parameter that configures it.
+    pub config: Option<u8>,
 }
 
 /// One GIO/SIO address, or (without bank and port) a signal documented only.

@@ -370,7 +370,12 @@ impl Machine {
                 self.params.set(slot, value);
                 self.eeprom_changed |= self.params.set_stored(slot, value);
             }
-            _ => self.params.set(slot, value),
+            _ => {
+                self.params.set(slot, value);
+                if bank == 3 {
+                    self.configure_interrupt(t, number, value);
+                }
+            }
         }
         Ok(())
     }

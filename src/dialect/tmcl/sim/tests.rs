@@ -6,6 +6,7 @@ mod axes;
 mod binary;
 mod eeprom;
 mod fidelity;
+mod interrupts;
 mod moves;
 mod programs;
 mod real_line;

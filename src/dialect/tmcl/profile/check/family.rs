@@ -38,6 +38,51 @@ pub(super) fn check(file: &ProfileFile, base: Option<&CommandTable>, problems: &
     }
     check_ascii(file, base, problems);
     io::check_io(file, problems);
+    check_interrupts(file, problems);
+}
+
+/// `[[interrupt]]`: a known kind, each number once (255 is EI/DI's "all"), configured by a
+/// bank-3 parameter the file has.
+fn check_interrupts(file: &ProfileFile, problems: &mut Vec<Problem>) {
+    let mut seen = BTreeSet::new();
+    for (i, row) in file.interrupt.iter().enumerate() {
+        let at = |key| vec![Step::Key("interrupt"), Step::Row(i), Step::Key(key)];
+        if family::InterruptKind::parse(&row.kind).is_none() {
+            problems.push(Problem::at(
+                at("kind"),
+                format!(
+                    "interrupt kind '{}' is none of timer, stop_left, stop_right, input, \
+                     position_reached",
+                    row.kind.escape_debug()
+                ),
+            ));
+        }
+        if row.number == family::ALL_INTERRUPTS || !seen.insert(row.number) {
+            problems.push(Problem::at(
+                at("number"),
+                format!(
+                    "interrupt {} is given twice or is 255 (all interrupts)",
+                    row.number
+                ),
+            ));
+        }
+        if let Some(number) = row.config {
+            let condition = Condition {
+                kind: crate::dialect::tmcl::profile::ParamKind::Global { bank: 3 },
+                number,
+                equals: 0,
+            };
+            if !family::defines(file, &condition) {
+                problems.push(Problem::at(
+                    at("config"),
+                    format!(
+                        "interrupt {}: no bank-3 global parameter {number}",
+                        row.number
+                    ),
+                ));
+            }
+        }
+    }
 }
 
 fn meta(key: &'static str) -> Vec<Step> {

@@ -536,3 +536,29 @@ fn a_command_range_gives_a_builtin_command_the_modules_own_range() {
         assert!(error.contains(message), "{bad}: {error}");
     }
 }
+
+#[test]
+fn an_interrupt_has_a_known_kind_and_a_bank_3_parameter_of_the_file() {
+    let config = "[[global_parameter]]\nbank = 3\nnumber = 0\nname = \"Timer 0 period\"\nident = \"timer_0\"\naccess = \"RW\"\n";
+    let row = "[[interrupt]]\nnumber = 0\nname = \"Timer 0\"\nkind = \"timer\"\nconfig = 0\n";
+    let p = load(&format!("{GOOD}{config}{row}")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(p.interrupts.len(), 1);
+    assert_eq!(p.interrupts[0].config, Some(0));
+    for (bad, message) in [
+        (
+            row.replace("\"timer\"", "\"alarm\""),
+            "interrupt kind 'alarm' is none of",
+        ),
+        (
+            row.replace("config = 0", "config = 9"),
+            "no bank-3 global parameter 9",
+        ),
+        (
+            row.replace("number = 0", "number = 255"),
+            "is given twice or is 255",
+        ),
+    ] {
+        let error = load(&format!("{GOOD}{config}{bad}")).expect_err(&bad);
+        assert!(error.contains(message), "{bad}: {error}");
+    }
+}
