@@ -8,8 +8,10 @@
 //! Choices the manuals leave open: an event of an interrupt that is not enabled is dropped; one
 //! that comes while a handler runs, or while interrupts are off globally, waits, and several of
 //! one interrupt count once; a WAIT the program was in goes on after RETI; timers and their events
-//! count only while the program runs. Timers and input changes are modelled; stop switch and
-//! position interrupts have vectors but never fire.
+//! count only while the program runs. An input interrupt's bank-3 parameter is its trigger
+//! (1 rising, 2 falling, 3 both edges, 0 off: inferred from the parameters' names, "trigger
+//! transition"); inputs change on the simulator's console. Timers, input changes and "target
+//! position reached" are modelled; stop switch interrupts have vectors but never fire.
 
 use std::cmp::Ordering;
 
@@ -152,6 +154,46 @@ impl Machine {
             .config?;
         let ms = self.params.get(Slot::Global(CONFIG_BANK, config));
         (ms > 0).then(|| f64::from(ms) / 1000.0)
+    }
+
+    /// A digital input set from outside: an input interrupt on the port raises when the edge
+    /// is one its trigger (bank-3 parameter) asks for.
+    pub(super) fn set_input(&mut self, port: u8, high: bool) -> Result<(), String> {
+        let before = self.io.read(port, 0).map(|v| v != 0).unwrap_or(high);
+        self.io.set_input(port, high)?;
+        if before == high {
+            return Ok(());
+        }
+        let edge = if high { 1 } else { 2 };
+        let raised: Vec<u8> = self
+            .profile
+            .interrupts
+            .iter()
+            .filter(|v| v.kind == InterruptKind::Input && v.port == port)
+            .filter(|v| {
+                v.config
+                    .is_some_and(|c| self.params.get(Slot::Global(CONFIG_BANK, c)) & edge != 0)
+            })
+            .map(|v| v.number)
+            .collect();
+        for number in raised {
+            self.raise(number);
+        }
+        Ok(())
+    }
+
+    /// Motor `motor` reached its target: its position interrupt raises.
+    pub(super) fn arrived(&mut self, motor: u8) {
+        let raised: Vec<u8> = self
+            .profile
+            .interrupts
+            .iter()
+            .filter(|v| v.kind == InterruptKind::PositionReached && v.motor == motor)
+            .map(|v| v.number)
+            .collect();
+        for number in raised {
+            self.raise(number);
+        }
     }
 
     /// Raises interrupt `number` (dropped unless it is enabled).

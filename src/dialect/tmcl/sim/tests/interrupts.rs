@@ -3,6 +3,7 @@
 
 use super::Sim;
 
+const GAP: u8 = 6;
 const SGP: u8 = 9;
 const GGP: u8 = 10;
 const CALC: u8 = 19;
@@ -86,4 +87,51 @@ fn di_stops_the_timer_s_interrupts_and_a_module_without_vectors_refuses_them() {
     assert_eq!(sim.ok(135, 0, 0, 0), 0, "stopped");
     assert_eq!(sim.ok(135, 1, 0, 0), 1, "on an invalid instruction");
     assert_eq!(sim.ok(GGP, 130, 0, 0), 0, "at EI");
+}
+
+/// Counting in user variable 0 on interrupt `vector`, after `setup` (from address 1).
+fn counting_on(vector: u8, setup: &[(u8, u8, u8, i32)]) -> Vec<(u8, u8, u8, i32)> {
+    let main = 3 + setup.len() as i32;
+    let handler = main + 1;
+    let mut program = vec![(VECT, vector, 0, handler)];
+    program.extend_from_slice(setup);
+    program.extend_from_slice(&[(EI, vector, 0, 0), (EI, 255, 0, 0), (JA, 0, 0, main)]);
+    program.extend_from_slice(&[
+        (GGP, 0, 2, 0),
+        (CALC, 0, 0, 1),
+        (AGP, 0, 2, 0),
+        (RETI, 0, 0, 0),
+    ]);
+    program
+}
+
+#[test]
+fn an_input_interrupt_fires_on_the_edges_its_trigger_asks_for() {
+    let mut sim = Sim::of("tmcm-1140");
+    // Input 1 (vector 40), rising edges only (SGP 40, 3, 1).
+    sim.download(&counting_on(40, &[(SGP, 40, 3, 1)]));
+    sim.ok(129, 0, 0, 0);
+    sim.wait(0.1);
+    assert_eq!(sim.ok(GGP, 0, 2, 0), 0);
+    for (high, count) in [(true, 1), (false, 1), (true, 2)] {
+        sim.bus.set_input(sim.now, 1, 1, high).unwrap();
+        sim.wait(0.1);
+        assert_eq!(sim.ok(GGP, 0, 2, 0), count, "input 1 {high}");
+    }
+    // Another input has no effect.
+    sim.bus.set_input(sim.now, 1, 2, true).unwrap();
+    sim.wait(0.1);
+    assert_eq!(sim.ok(GGP, 0, 2, 0), 2);
+}
+
+#[test]
+fn the_position_reached_interrupt_fires_when_the_motor_arrives() {
+    const MVP: u8 = 4;
+    let mut sim = Sim::of("tmcm-1140");
+    sim.download(&counting_on(3, &[(MVP, 0, 0, 500)]));
+    sim.ok(129, 0, 0, 0);
+    sim.wait(10.0);
+    assert_eq!(sim.ok(GAP, 1, 0, 0), 500);
+    assert_eq!(sim.ok(GGP, 0, 2, 0), 1, "arrived once");
+    assert_eq!(sim.ok(135, 0, 0, 0), 1, "the main loop goes on");
 }
