@@ -10,8 +10,9 @@
 //! one interrupt count once; a WAIT the program was in goes on after RETI; timers and their events
 //! count only while the program runs. An input interrupt's bank-3 parameter is its trigger
 //! (1 rising, 2 falling, 3 both edges, 0 off: inferred from the parameters' names, "trigger
-//! transition"); inputs change on the simulator's console. Timers, input changes and "target
-//! position reached" are modelled; stop switch interrupts have vectors but never fire.
+//! transition"); inputs change on the simulator's console. A stop switch interrupt raises when a
+//! limit switch stops its motor (reaching the switch taken as the rising edge); a switch passed
+//! with its limit disabled, or left again, raises nothing.
 
 use std::cmp::Ordering;
 
@@ -19,6 +20,7 @@ use crate::dialect::tmcl::profile::family::{ALL_INTERRUPTS, InterruptKind};
 use crate::dialect::tmcl::protocol::Instruction;
 
 use super::machine::Machine;
+use super::motion::Switch;
 use super::params::Slot;
 use super::vm::{ProgramError, Wait};
 
@@ -189,6 +191,34 @@ impl Machine {
             .interrupts
             .iter()
             .filter(|v| v.kind == InterruptKind::PositionReached && v.motor == motor)
+            .map(|v| v.number)
+            .collect();
+        for number in raised {
+            self.raise(number);
+        }
+    }
+
+    /// A limit switch stopped motor `motor` at `t`: the stop switch interrupt of the switch it
+    /// stands on raises, if its trigger (bank-3 parameter) takes a rising edge (reaching the
+    /// switch).
+    pub(super) fn stopped_at_switch(&mut self, motor: u8, t: f64) {
+        let axis = &self.axes[usize::from(motor)];
+        let left = axis.switch_active(t, Switch::Left);
+        let right = axis.switch_active(t, Switch::Right);
+        let raised: Vec<u8> = self
+            .profile
+            .interrupts
+            .iter()
+            .filter(|v| v.motor == motor)
+            .filter(|v| match v.kind {
+                InterruptKind::StopLeft => left,
+                InterruptKind::StopRight => right,
+                _ => false,
+            })
+            .filter(|v| {
+                v.config
+                    .is_some_and(|c| self.params.get(Slot::Global(CONFIG_BANK, c)) & 1 != 0)
+            })
             .map(|v| v.number)
             .collect();
         for number in raised {

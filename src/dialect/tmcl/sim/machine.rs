@@ -270,7 +270,8 @@ impl Machine {
                 }
             }
             Happened::SearchDone => self.set_role(motor, self.roles.target_position, 0),
-            Happened::LimitStop | Happened::SearchLeg => {}
+            Happened::LimitStop => self.stopped_at_switch(motor, at),
+            Happened::SearchLeg => {}
         }
     }
 

@@ -135,3 +135,28 @@ fn the_position_reached_interrupt_fires_when_the_motor_arrives() {
     assert_eq!(sim.ok(GGP, 0, 2, 0), 1, "arrived once");
     assert_eq!(sim.ok(135, 0, 0, 0), 1, "the main loop goes on");
 }
+
+#[test]
+fn a_limit_switch_stopping_the_motor_raises_its_stop_switch_interrupt() {
+    use crate::dialect::tmcl::profile::catalogue;
+    use crate::dialect::tmcl::sim::{Bus, BusOptions, Switch};
+    const ROR: u8 = 1;
+    let options = BusOptions {
+        motor_switches: vec![(0, Switch::Right, 3_000)],
+        ..BusOptions::default()
+    };
+    let mut sim = Sim {
+        bus: Bus::new(catalogue::by_name("tmcm-1140").unwrap(), options),
+        now: std::time::Duration::ZERO,
+    };
+    // Right stop switch 0 is vector 28, its trigger SGP 28, 3, 1.
+    sim.download(&counting_on(28, &[(SGP, 28, 3, 1), (ROR, 0, 0, 1000)]));
+    sim.ok(129, 0, 0, 0);
+    sim.wait(30.0);
+    assert_eq!(
+        sim.ok(GAP, 3, 0, 0),
+        0,
+        "the right switch stopped the motor"
+    );
+    assert_eq!(sim.ok(GGP, 0, 2, 0), 1);
+}
