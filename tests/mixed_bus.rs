@@ -198,7 +198,7 @@ fn ctrl_c_stops_every_motor_the_session_moved_on_every_module() {
     p.exp_string("C[bin]> ").unwrap();
     p.send_line(":target 2").unwrap();
     p.exp_string("B> ").unwrap();
-    p.send_line("ROR 5, 200000").unwrap();
+    p.send_line("ROR 5, 2000").unwrap();
     p.exp_string("B> ").unwrap();
     let turning = [("@1", "0"), ("@3", "0"), ("@2", "5")];
     for (module, motor) in turning {

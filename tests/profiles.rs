@@ -179,6 +179,42 @@ fn check_data(t: &Table, builtin: &Table) -> Vec<String> {
         }
     }
 
+    // Commands the module has beside the built-in table, and its own ranges: each with a source.
+    for (table, key) in [("extra_command", "mnemonic"), ("command_range", "mnemonic")] {
+        for row in rows(t, table) {
+            let name = format!("{table} {}", text(row, key).unwrap_or("?"));
+            if text(row, "source").is_none_or(str::is_empty) {
+                problems.push(format!("{name}: no source"));
+            }
+            if row.get("uncertain").and_then(Value::as_bool) == Some(true)
+                && text(row, "uncertain_reason").is_none_or(str::is_empty)
+            {
+                problems.push(format!("{name}: uncertain without a reason"));
+            }
+        }
+    }
+
+    // Commands left out as unconfirmed: said why and where, and really left out.
+    let section = t.get("commands").and_then(Value::as_table);
+    let unconfirmed = section
+        .and_then(|c| c.get("unconfirmed"))
+        .and_then(Value::as_array);
+    if let (Some(section), Some(numbers)) = (section, unconfirmed) {
+        for key in ["unconfirmed_reason", "unconfirmed_source"] {
+            if text(section, key).is_none_or(str::is_empty) {
+                problems.push(format!("[commands] unconfirmed without {key}"));
+            }
+        }
+        for number in numbers.iter().filter_map(Value::as_integer) {
+            if rows(t, "extra_command")
+                .iter()
+                .any(|c| int(c, "number") == Some(number))
+            {
+                problems.push(format!("unconfirmed command {number} is in the table"));
+            }
+        }
+    }
+
     // Identification: the 136 prefix is the module number, the version string has its format.
     let number = int(m, "module_number").unwrap_or(-1);
     if !module.ends_with(&format!("-{number}")) {
@@ -211,6 +247,18 @@ fn check_data(t: &Table, builtin: &Table) -> Vec<String> {
     if !fits(version, format) || !version.starts_with(&number.to_string()) {
         problems.push(format!(
             "simulated version {version:?} does not fit {format} for {number}"
+        ));
+    }
+
+    // 136 type 1: the module number in the upper 16 bits (TMCM-1310 p63), the version below; the
+    // TMCM-142's own manual (p92) leaves the upper bytes unused.
+    let binary = simulation
+        .and_then(|s| int(s, "version_binary"))
+        .unwrap_or(0);
+    let type_number = if number == 142 { 0 } else { number };
+    if binary >> 16 != type_number {
+        problems.push(format!(
+            "136 type 1 value {binary} does not carry the type number {type_number}"
         ));
     }
 

@@ -171,3 +171,45 @@ fn the_built_in_module_runs_programs_too() {
     assert!(text.contains("running (1)"), "{text}");
     assert!(text.contains("program stopped on module 1 (A)"), "{text}");
 }
+
+/// Timer 0 every 100 ms counts in user variable 0 (`VECT`, `SGP n, 3, ms`, `EI`, `RETI`).
+const TIMER_PROGRAM: &str = "\
+      VECT 0, Tick
+      SGP 0, 3, 100
+      EI 0
+      EI 255
+Loop: JA Loop
+
+Tick: GGP 0, 2
+      CALC ADD, 1
+      AGP 0, 2
+      RETI
+";
+
+#[test]
+fn a_timer_interrupt_program_counts_on_a_module_with_interrupts() {
+    let mut sim = Sim::start(&["--pty", "--manual-clock", "--profile", "tmcm-1140"]);
+    let dir = tempdir();
+    let file = dir.join("timer.tmc");
+    std::fs::write(&file, TIMER_PROGRAM).unwrap();
+    let file = file.display().to_string();
+    let out = run(&[
+        "download",
+        &file,
+        "--port",
+        &sim.first,
+        "--profile",
+        "tmcm-1140",
+    ]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(
+        stdout(&out).starts_with("downloaded 9 instructions to module 1 (A), verified"),
+        "{}",
+        stdout(&out)
+    );
+    lines(&sim, &[":run"]);
+    sim.console("advance 1050ms");
+    assert_eq!(lines(&sim, &["GGP 0, 2"]), ["BA 100 10"]);
+    sim.console("advance 1s");
+    assert_eq!(lines(&sim, &["GGP 0, 2"]), ["BA 100 20"]);
+}

@@ -4,7 +4,8 @@ TMCM-6214 at address 3).
 
 Usage: python3 pytrinamic_family_peer.py PTY_PATH
 
-Moves motors through the classes' move_to/rotate/stop, reads positions and speeds back through
+Moves motors through the classes' move_to/rotate/stop (rotate with a negative speed on the
+TMCM-6214, whose range is signed), reads positions and speeds back through
 their motor objects, and sets per-axis parameters through their feature properties; prints one
 line per step ("ok STEP ..."). Any mismatch raises, so the exit status tells the test what
 happened.
@@ -91,6 +92,16 @@ def tmcm6214(interface):
     until("6214 move_to axis 5", lambda: module.motors[5].get_axis_parameter(8))
     check("6214 axis 5 position", module.motors[5].actual_position, -8000)
     check("6214 axis 0 unmoved", module.motors[0].actual_position, 0)
+    # A signed speed range (the manuals of its generation): rotate(axis, -v) turns left.
+    module.rotate(2, -3000)
+    motor2 = module.motors[2]
+    until("6214 rotate axis 2 left", lambda: motor2.actual_velocity == -3000)
+    check("6214 axis 2 turning left", motor2.actual_velocity, -3000)
+    module.stop(2)
+    until("6214 stop axis 2", lambda: motor2.actual_velocity == 0)
+    if motor2.actual_position >= 0:
+        raise AssertionError(f"6214 axis 2 ran right: {motor2.actual_position}")
+    print(f"ok 6214 axis 2 ran left {motor2.actual_position < 0}", flush=True)
 
 
 def main(port):

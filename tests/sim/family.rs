@@ -256,8 +256,8 @@ fn a_boot_loader_names_itself_and_refuses_the_rest() {
     );
     assert_eq!(
         port.transact(1, 136, 1, 0, 0).value,
-        287,
-        "136 type 1 still answers"
+        (6110 << 16) | 287,
+        "136 type 1 still answers: module number and version 1.31"
     );
 }
 
@@ -382,4 +382,17 @@ fn no_ascii_makes_a_module_refuse_139() {
     assert_eq!(port.transact(1, GAP, 4, 2, 0).value, 1000, "still binary");
     let out = run(&["sim", "--protocol", "smd4", "--no-ascii"]);
     assert_eq!(code(&out), 2, "a TMCL-only flag: {}", stderr(&out));
+}
+
+#[test]
+fn a_module_of_the_generic_profile_answers_and_moves_on_a_bus() {
+    let sim = Sim::start(&["--pty", "--modules", "1:tmcm-1140,2:generic"]);
+    let mut port = sim.pty();
+    assert_eq!(port.transact(2, GAP, 1, 0, 0).status, Status::Ok);
+    // Six motors, each moving; a number no table names is plain memory.
+    assert_eq!(port.transact(2, MVP, 0, 5, 2000).status, Status::Ok);
+    await_gap(&mut port, 2, 1, 5, 2000);
+    assert_eq!(port.transact(2, 5, 200, 3, 9).status, Status::Ok);
+    assert_eq!(port.transact(2, GAP, 200, 3, 0).value, 9);
+    assert_eq!(port.transact(2, GAP, 1, 6, 0).status, Status::InvalidValue);
 }

@@ -94,6 +94,8 @@ fn pytrinamics_tmcm1140_tmcm6110_and_tmcm6214_classes_drive_a_mixed_bus() {
         "6214 version '6214V117'",
         "6214 axis 5 position -8000",
         "6214 axis 0 unmoved 0",
+        "6214 axis 2 turning left -3000",
+        "6214 axis 2 ran left True",
     ] {
         assert!(
             stdout.contains(&format!("ok {step}")),

@@ -164,6 +164,9 @@ pub struct CommandSpec {
     pub range_when: Vec<RangeWhen>,
     /// The manual makes the type byte "don't care" (134, 135).
     pub type_ignored: bool,
+    /// The manual makes the motor/bank byte "don't care" (128–139): any value is taken, whatever
+    /// the module's axes.
+    pub motor_ignored: bool,
 }
 
 impl CommandSpec {
@@ -316,6 +319,7 @@ impl CommandTable {
                 banks_note: row.banks_note.clone(),
                 range_when: RangeWhen::from_rows(&row.range_when),
                 type_ignored: row.type_ignored,
+                motor_ignored: row.motor_bank.starts_with("don't care"),
             });
         }
         let ascii_words = ascii_words.iter().map(|w| w.to_ascii_uppercase()).collect();
@@ -390,6 +394,15 @@ impl CommandTable {
     pub(crate) fn extend(&mut self, other: CommandTable) {
         self.commands.extend(other.commands);
         self.commands.sort_by_key(|c| c.number);
+    }
+
+    /// Gives command `number` the module's own value range: the built-in table's conditional
+    /// ranges (the TMCM-142's unit mode) do not apply to it.
+    pub(crate) fn set_value_range(&mut self, number: u8, range: (i64, i64)) {
+        if let Some(command) = self.commands.iter_mut().find(|c| c.number == number) {
+            command.value_range = Some(range);
+            command.range_when.clear();
+        }
     }
 
     /// Keeps the commands' conditional ranges whose condition `keep` accepts.

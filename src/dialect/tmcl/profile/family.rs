@@ -285,7 +285,7 @@ pub(crate) fn identity(file: &ProfileFile) -> Identity {
 }
 
 /// The command table of a file without `[[command]]` rows: the built-in one less `[commands]
-/// absent`, plus `[[extra_command]]`. The checker has passed the numbers and mnemonics.
+/// absent`, plus `[[extra_command]]`, with the ranges of `[[command_range]]`. The checker has passed the numbers and mnemonics.
 pub(crate) fn compose(base: &CommandTable, file: &ProfileFile) -> Result<CommandTable, String> {
     let mut table = base.clone();
     // The built-in table's conditions name the TMCM-142's parameters: they hold for a module
@@ -297,6 +297,9 @@ pub(crate) fn compose(base: &CommandTable, file: &ProfileFile) -> Result<Command
     if !file.extra_command.is_empty() {
         let extra = CommandTable::from_rows(&file.extra_command, Vec::new())?;
         table.extend(extra);
+    }
+    for row in &file.command_range {
+        table.set_value_range(row.number, (row.value_range[0], row.value_range[1]));
     }
     if let Some(words) = file.ascii.as_ref().map(|a| &a.ascii_only_commands) {
         if !words.is_empty() {
@@ -338,4 +341,70 @@ pub(crate) fn apply_ascii(table: &mut CommandTable, file: &ProfileFile) {
         (_, Some(list)) => table.set_ascii_allowed(list),
         _ => {}
     }
+}
+
+/// What raises an interrupt of the program runner.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum InterruptKind {
+    /// A timer whose period (ms) is its bank-3 parameter.
+    Timer,
+    /// The left stop switch of a motor.
+    StopLeft,
+    /// The right stop switch of a motor.
+    StopRight,
+    /// A change of a digital input.
+    Input,
+    /// A motor reached its target position.
+    PositionReached,
+}
+
+impl InterruptKind {
+    /// The kind a profile row names.
+    pub fn parse(word: &str) -> Option<InterruptKind> {
+        Some(match word {
+            "timer" => InterruptKind::Timer,
+            "stop_left" => InterruptKind::StopLeft,
+            "stop_right" => InterruptKind::StopRight,
+            "input" => InterruptKind::Input,
+            "position_reached" => InterruptKind::PositionReached,
+            _ => return None,
+        })
+    }
+}
+
+/// One interrupt vector of a module (`[[interrupt]]`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Interrupt {
+    /// The interrupt number: the type byte of EI, DI and VECT.
+    pub number: u8,
+    /// As the manual names it (`Timer 0`).
+    pub name: String,
+    /// What raises it.
+    pub kind: InterruptKind,
+    /// The motor of a stop switch or position interrupt.
+    pub motor: u8,
+    /// The input port of an input interrupt.
+    pub port: u8,
+    /// The bank-3 global parameter that configures it (a timer's period in ms).
+    pub config: Option<u8>,
+}
+
+/// The EI/DI number that switches every interrupt at once (TMCL reference: "EI 255").
+pub const ALL_INTERRUPTS: u8 = 255;
+
+/// The interrupt vectors of a file (rows of an unknown kind were refused by the checker).
+pub(crate) fn interrupts(file: &ProfileFile) -> Vec<Interrupt> {
+    file.interrupt
+        .iter()
+        .filter_map(|row| {
+            Some(Interrupt {
+                number: row.number,
+                name: row.name.clone(),
+                kind: InterruptKind::parse(&row.kind)?,
+                motor: row.motor,
+                port: row.port,
+                config: row.config,
+            })
+        })
+        .collect()
 }

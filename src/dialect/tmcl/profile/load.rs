@@ -25,8 +25,14 @@ pub(crate) struct ProfileFile {
     /// Commands the built-in table lacks, in the `[[command]]` schema.
     #[serde(default)]
     pub extra_command: Vec<CommandRow>,
+    /// The module's own value range of a command of the built-in table (ROR/ROL speeds).
+    #[serde(default)]
+    pub command_range: Vec<CommandRangeRow>,
     #[serde(default)]
     pub io_port: Vec<IoPortRow>,
+    /// The interrupt vectors of the program runner (EI, DI, VECT, RETI).
+    #[serde(default)]
+    pub interrupt: Vec<InterruptRow>,
     #[serde(default)]
     pub source_doc: Vec<SourceDocRow>,
 }
@@ -110,6 +116,18 @@ pub(crate) struct CommandRow {
     /// The manual makes the type byte "don't care".
     #[serde(default)]
     pub type_ignored: bool,
+    /// What the manual says the motor/bank byte is (`"don't care"` for 128–139).
+    #[serde(default)]
+    pub motor_bank: String,
+}
+
+/// A command of the built-in table whose value range the module's own manual gives differently
+/// (the TMCM-142's ROR 0…2147483647 is 0…2047 on a TMC429 module and signed on later ones).
+#[derive(Debug, Deserialize)]
+pub(crate) struct CommandRangeRow {
+    pub number: u8,
+    pub mnemonic: String,
+    pub value_range: [i64; 2],
 }
 
 /// A range that applies instead of the usual one while a parameter has a value.
@@ -174,6 +192,22 @@ pub(crate) struct CommandsSection {
     pub absent: Vec<u8>,
     #[serde(default)]
     pub absent_reason: String,
+}
+
+/// One interrupt vector: its number (the type byte of EI, DI, VECT), what raises it, and the
+/// bank-3 global parameter that configures it (a timer's period in ms, a trigger condition).
+#[derive(Debug, Deserialize)]
+pub(crate) struct InterruptRow {
+    pub number: u8,
+    pub name: String,
+    /// `timer`, `stop_left`, `stop_right`, `input` or `position_reached`.
+    pub kind: String,
+    #[serde(default)]
+    pub motor: u8,
+    #[serde(default)]
+    pub port: u8,
+    /// The bank-3 global parameter that configures it.
+    pub config: Option<u8>,
 }
 
 /// One GIO/SIO address, or (without bank and port) a signal documented only.

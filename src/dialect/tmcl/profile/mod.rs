@@ -167,6 +167,8 @@ pub struct Profile {
     pub io_ports: Vec<IoPort>,
     /// No parameter tables: parameters are known by number only (the generic profile).
     pub generic: bool,
+    /// The interrupt vectors of its program runner (empty: the module has none).
+    pub interrupts: Vec<family::Interrupt>,
 }
 
 /// Why a profile could not be loaded.
@@ -315,6 +317,7 @@ impl Profile {
             identity: family::identity(&file),
             io_ports: family::io_ports(&file),
             generic: file.meta.generic,
+            interrupts: family::interrupts(&file),
         })
     }
 

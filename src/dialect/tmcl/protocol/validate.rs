@@ -129,7 +129,7 @@ fn check_motor(
     let names_motor = spec
         .operand_for(Field::Motor)
         .is_some_and(|o| o.kind == OperandKind::Motor);
-    if names_motor && instruction.motor >= profile.axes {
+    if names_motor && !spec.motor_ignored && instruction.motor >= profile.axes {
         return Err(InputError::BadMotor {
             motor: instruction.motor,
             module: profile.module.clone(),

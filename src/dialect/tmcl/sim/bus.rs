@@ -273,7 +273,7 @@ impl Bus {
         high: bool,
     ) -> Result<(), String> {
         self.advance(now);
-        self.module(slot)?.machine.io.set_input(port, high)
+        self.module(slot)?.machine.set_input(port, high)
     }
 
     /// Sets an analog input of a module (0..adc_max).

@@ -6,6 +6,7 @@
 //! keyword number (the type byte) answers 3 (wrong type); a value out of range or a motor the
 //! module does not have answers 4 (invalid value).
 
+use crate::dialect::tmcl::profile::Param;
 use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
@@ -114,7 +115,7 @@ impl Machine {
     /// coordinate numbers.
     fn precheck(&self, spec: &CommandSpec, i: &Instruction) -> Result<(), Status> {
         let has = |kind: OperandKind| spec.operands.iter().any(|o| o.kind == kind);
-        if has(OperandKind::Motor) && i.motor >= self.profile.axes {
+        if has(OperandKind::Motor) && !spec.motor_ignored && i.motor >= self.profile.axes {
             return Err(Status::InvalidValue);
         }
         if has(OperandKind::Keyword)
@@ -155,7 +156,8 @@ impl Machine {
         }
         match i.command {
             Opcode::Ror => self.rotate(t, m, value),
-            Opcode::Rol => self.rotate(t, m, -value),
+            // A signed range (later modules) lets a negative speed turn the other way.
+            Opcode::Rol => self.rotate(t, m, value.saturating_neg()),
             Opcode::Mst => self.stop_motor(t, m),
             Opcode::Mvp => return self.move_to(t, i),
             Opcode::Sap => self.write_axis(t, m, i.type_, value)?,
@@ -172,7 +174,7 @@ impl Machine {
                 self.params.check_read(Slot::Global(i.motor, i.type_))?;
                 return Ok(self.global_value(i.motor, i.type_, t));
             }
-            Opcode::Rfs => return Ok(self.reference_search(t, m, i.type_)),
+            Opcode::Rfs => return self.reference_search(t, m, i.type_),
             Opcode::Sio => self.io.write(i.type_, i.motor, value != 0)?,
             Opcode::Gio => return self.io.read(i.type_, i.motor),
             Opcode::Sco => self.set_coordinate(m, i.type_, value)?,
@@ -247,11 +249,17 @@ impl Machine {
         Ok(if i.type_ == 1 { target } else { i.value })
     }
 
-    fn reference_search(&mut self, t: f64, m: u8, type_: u8) -> i32 {
+    /// RFS START, STOP, STATUS. START refuses (4, invalid value) a search mode (AP193) the
+    /// module does not have, rather than running some other mode that may never end.
+    fn reference_search(&mut self, t: f64, m: u8, type_: u8) -> Result<i32, Status> {
         let axis = m as usize;
-        match type_ {
+        Ok(match type_ {
             0 => {
-                let mode = self.role(m, self.roles.search_mode).clamp(1, 3) as u8;
+                let mode = self.role(m, self.roles.search_mode);
+                if !self.has_search_mode(mode) {
+                    return Err(Status::InvalidValue);
+                }
+                let mode = mode as u8;
                 let fast = self.pps(m, self.role(m, self.roles.search_speed));
                 let slow = self.pps(m, self.role(m, self.roles.switch_speed));
                 let accel = self.move_limits(m).1;
@@ -263,6 +271,27 @@ impl Machine {
                 0
             }
             _ => self.axes[axis].search_status(),
+        })
+    }
+
+    /// Whether the module has search mode `mode`: one of the values its AP193 row lists, or in
+    /// its range, or (a profile that says neither) one of the modes the simulator runs.
+    fn has_search_mode(&self, mode: i32) -> bool {
+        let row = self
+            .roles
+            .search_mode
+            .and_then(|n| self.profile.axis_param(n));
+        let mode = i64::from(mode);
+        let runs = (1..=super::motion::SEARCH_MODES).contains(&mode);
+        match row {
+            Some(p) if !p.decoding.values.is_empty() => {
+                runs && p.decoding.values.iter().any(|(v, _)| *v == mode)
+            }
+            Some(Param {
+                range: Some((lo, hi)),
+                ..
+            }) => runs && (*lo..=*hi).contains(&mode),
+            _ => runs,
         }
     }
 
@@ -341,7 +370,12 @@ impl Machine {
                 self.params.set(slot, value);
                 self.eeprom_changed |= self.params.set_stored(slot, value);
             }
-            _ => self.params.set(slot, value),
+            _ => {
+                self.params.set(slot, value);
+                if bank == 3 {
+                    self.configure_interrupt(t, number, value);
+                }
+            }
         }
         Ok(())
     }

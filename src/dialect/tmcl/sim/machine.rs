@@ -255,6 +255,7 @@ impl Machine {
     fn on_axis(&mut self, motor: u8, at: f64, happened: Happened) {
         match happened {
             Happened::Arrived => {
+                self.arrived(motor);
                 let Some(request) = self.event else { return };
                 let waiting = self.event_motors(request.mask);
                 let others_moving = waiting
@@ -269,7 +270,8 @@ impl Machine {
                 }
             }
             Happened::SearchDone => self.set_role(motor, self.roles.target_position, 0),
-            Happened::LimitStop | Happened::SearchLeg => {}
+            Happened::LimitStop => self.stopped_at_switch(motor, at),
+            Happened::SearchLeg => {}
         }
     }
 

@@ -14,6 +14,7 @@ mod control_cmd;
 mod exec;
 #[cfg(feature = "cli")]
 pub mod flags;
+mod interrupts;
 mod io;
 mod live;
 mod machine;

@@ -82,7 +82,11 @@ struct Leg {
     fast: bool,
 }
 
-/// The legs of the reference search modes of AP193.
+/// The highest search mode the simulator runs (AP193 1…4).
+pub(super) const SEARCH_MODES: i64 = 4;
+
+/// The legs of the reference search modes of AP193. Mode 4 (the TMC429 modules' "left switch,
+/// from both sides") ends on the left switch like mode 1.
 fn legs(mode: u8) -> &'static [Leg] {
     const fn leg(dir: f64, switch: Switch, fast: bool) -> Leg {
         Leg { dir, switch, fast }

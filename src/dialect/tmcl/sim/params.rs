@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::profile::{Param, Profile};
 use crate::dialect::tmcl::protocol::Status;
 
@@ -61,24 +62,43 @@ impl Values {
     }
 }
 
+/// GP 67: ASCII start-up and echo.
+const ASCII_MODE: u8 = 67;
+
 /// The profile, with the bank-0 interface settings (GP 64..127: address, host address, ASCII
-/// mode, EEPROM magic …) the simulated firmware works by. A custom profile that leaves them out
+/// mode, EEPROM magic …) the simulated firmware works by (GP 67 only where the module has an
+/// ASCII interface). A custom profile that leaves them out
 /// gets the built-in profile's rows: without them the module would answer to no address at all.
+///
+/// The generic profile has no parameter rows at all: its simulated module takes every row of the
+/// built-in profile (the numbering its motion roles follow, with defaults a motor can move by).
 fn with_interface_settings(profile: Arc<Profile>) -> Arc<Profile> {
     let builtin = Profile::builtin();
+    // A binary-only module has no ASCII start-up setting to be locked out by.
+    let binary_only = profile.identity.ascii_interface() == AsciiInterface::No;
+    let wanted = |p: &&Param| {
+        (profile.generic || eeprom_only(Slot::Global(p.bank(), p.number)))
+            && !(binary_only && (p.bank(), p.number) == (0, ASCII_MODE))
+    };
     let missing: Vec<Param> = builtin
         .global
         .iter()
-        .filter(|p| eeprom_only(Slot::Global(p.bank(), p.number)))
-        .filter(|p| profile.global_param(0, p.number).is_none())
+        .filter(wanted)
+        .filter(|p| profile.global_param(p.bank(), p.number).is_none())
         .cloned()
         .collect();
-    if missing.is_empty() {
+    let axis: Vec<Param> = if profile.generic && profile.axis.is_empty() {
+        builtin.axis.clone()
+    } else {
+        Vec::new()
+    };
+    if missing.is_empty() && axis.is_empty() {
         return profile;
     }
     let mut profile = Profile::clone(&profile);
     profile.global.extend(missing);
     profile.global.sort_by_key(|p| (p.bank(), p.number));
+    profile.axis.extend(axis);
     Arc::new(profile)
 }
 
@@ -134,11 +154,24 @@ impl Params {
     }
 
     /// Checks that GAP/GGP may read the parameter: unknown or unreadable answers wrong type.
+    /// A module of the generic profile has every number, as plain memory where the built-in
+    /// table has no row.
     pub(super) fn check_read(&self, slot: Slot) -> Result<(), Status> {
         match self.spec(slot) {
             Some(p) if p.access.read => Ok(()),
+            None if self.open(slot) => Ok(()),
             _ => Err(Status::WrongType),
         }
+    }
+
+    /// A parameter a module of the generic profile keeps in plain memory (any number the
+    /// built-in table lacks, in the banks the module has).
+    fn open(&self, slot: Slot) -> bool {
+        self.profile.generic
+            && match slot {
+                Slot::Axis(m, _) => m < self.profile.axes.max(1),
+                Slot::Global(bank, _) => usize::from(bank) < BANKS,
+            }
     }
 
     /// Checks that SAP/SGP may write `value`: unknown or read-only answers wrong type (as
@@ -152,6 +185,7 @@ impl Params {
                     Err(Status::InvalidValue)
                 }
             }
+            None if self.open(slot) => Ok(()),
             _ => Err(Status::WrongType),
         }
     }
@@ -160,6 +194,7 @@ impl Params {
     pub(super) fn check_store(&self, slot: Slot) -> Result<(), Status> {
         match self.spec(slot) {
             Some(p) if p.access.store => Ok(()),
+            None if self.open(slot) => Ok(()),
             _ => Err(Status::WrongType),
         }
     }

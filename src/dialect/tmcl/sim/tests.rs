@@ -5,6 +5,8 @@ mod ascii_mode;
 mod axes;
 mod binary;
 mod eeprom;
+mod fidelity;
+mod interrupts;
 mod moves;
 mod programs;
 mod real_line;

@@ -18,6 +18,7 @@ use std::cmp::Ordering;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
 use super::exec::{Reply, Source};
+use super::interrupts::Interrupts;
 use super::machine::Machine;
 use super::motion::Switch;
 use super::program::Program;
@@ -61,7 +62,7 @@ enum Until {
 }
 
 #[derive(Debug, Clone, Copy)]
-struct Wait {
+pub(super) struct Wait {
     until: Until,
     /// The motor waited for.
     motor: u8,
@@ -77,14 +78,16 @@ pub(crate) struct Vm {
     /// The X register.
     pub x: i32,
     status: AppStatus,
-    pc: i32,
+    pub(super) pc: i32,
     stack: Vec<i32>,
-    compared: Option<Ordering>,
-    timeout_flag: bool,
+    pub(super) compared: Option<Ordering>,
+    pub(super) timeout_flag: bool,
     error: ProgramError,
     /// When the next instruction (or the next look at a wait) is due.
-    next_at: f64,
-    wait: Option<Wait>,
+    pub(super) next_at: f64,
+    pub(super) wait: Option<Wait>,
+    /// Vectors, switches and pending interrupts ([`super::interrupts`]).
+    pub(super) interrupts: Interrupts,
     /// In step mode: one instruction still to run.
     step_pending: bool,
 }
@@ -104,6 +107,7 @@ impl Vm {
             next_at: 0.0,
             wait: None,
             step_pending: false,
+            interrupts: Interrupts::new(),
         }
     }
 
@@ -133,6 +137,7 @@ impl Vm {
         self.pc = address;
         self.stack.clear();
         self.wait = None;
+        self.interrupts.saved = None;
         self.resume(t, program)
     }
 
@@ -221,7 +226,8 @@ impl Machine {
         f64::from(self.profile.sim.instruction_us) / 1e6
     }
 
-    /// When the program runner next has something to do.
+    /// When the program runner next has something to do: its next instruction, a look at its
+    /// wait, or a timer's tick.
     pub(crate) fn program_due(&self) -> Option<f64> {
         if !self.vm.running() {
             return None;
@@ -234,13 +240,23 @@ impl Machine {
             (Until::Position, Some(arrival)) => arrival,
             _ => self.vm.next_at,
         };
-        Some(wait.deadline.map_or(look, |d| d.min(look)))
+        let due = wait.deadline.map_or(look, |d| d.min(look));
+        Some(match self.vm.interrupts.next_tick() {
+            Some(tick) if self.vm.status == AppStatus::Run => due.min(tick),
+            _ => due,
+        })
     }
 
     /// Runs the program's next instruction, or looks at its wait, at `t`.
     pub(crate) fn run_program(&mut self, t: f64) {
         if !self.vm.running() {
             return;
+        }
+        if self.vm.status == AppStatus::Run {
+            self.tick_timers(t);
+            if self.take_interrupt(t) {
+                return;
+            }
         }
         if let Some(wait) = self.vm.wait {
             self.look_at_wait(t, wait);
@@ -278,7 +294,7 @@ impl Machine {
         }
     }
 
-    fn jump_target(&self, address: i32) -> Result<i32, ProgramError> {
+    pub(super) fn jump_target(&self, address: i32) -> Result<i32, ProgramError> {
         if (0..self.program.size() as i64).contains(&i64::from(address)) {
             Ok(address)
         } else {
@@ -346,6 +362,16 @@ impl Machine {
                 return Ok(());
             }
             Opcode::Wait => return self.start_wait(t, i),
+            // EI, DI, VECT, RETI on a module whose table has them.
+            Opcode::Other(25 | 26 | 37 | 38)
+                if self
+                    .profile
+                    .commands
+                    .by_number(i.command)
+                    .is_some_and(|spec| spec.standalone) =>
+            {
+                self.interrupt_instruction(i, &mut next_pc)?;
+            }
             _ => {
                 let outcome = self.execute(t, i, Source::Program);
                 match outcome.reply {

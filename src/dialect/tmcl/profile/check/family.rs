@@ -38,6 +38,51 @@ pub(super) fn check(file: &ProfileFile, base: Option<&CommandTable>, problems: &
     }
     check_ascii(file, base, problems);
     io::check_io(file, problems);
+    check_interrupts(file, problems);
+}
+
+/// `[[interrupt]]`: a known kind, each number once (255 is EI/DI's "all"), configured by a
+/// bank-3 parameter the file has.
+fn check_interrupts(file: &ProfileFile, problems: &mut Vec<Problem>) {
+    let mut seen = BTreeSet::new();
+    for (i, row) in file.interrupt.iter().enumerate() {
+        let at = |key| vec![Step::Key("interrupt"), Step::Row(i), Step::Key(key)];
+        if family::InterruptKind::parse(&row.kind).is_none() {
+            problems.push(Problem::at(
+                at("kind"),
+                format!(
+                    "interrupt kind '{}' is none of timer, stop_left, stop_right, input, \
+                     position_reached",
+                    row.kind.escape_debug()
+                ),
+            ));
+        }
+        if row.number == family::ALL_INTERRUPTS || !seen.insert(row.number) {
+            problems.push(Problem::at(
+                at("number"),
+                format!(
+                    "interrupt {} is given twice or is 255 (all interrupts)",
+                    row.number
+                ),
+            ));
+        }
+        if let Some(number) = row.config {
+            let condition = Condition {
+                kind: crate::dialect::tmcl::profile::ParamKind::Global { bank: 3 },
+                number,
+                equals: 0,
+            };
+            if !family::defines(file, &condition) {
+                problems.push(Problem::at(
+                    at("config"),
+                    format!(
+                        "interrupt {}: no bank-3 global parameter {number}",
+                        row.number
+                    ),
+                ));
+            }
+        }
+    }
 }
 
 fn meta(key: &'static str) -> Vec<Step> {
@@ -257,6 +302,42 @@ fn check_command_set(file: &ProfileFile, base: Option<&CommandTable>, problems: 
         return;
     };
     check_extra_commands_are_new(file, base, problems);
+    check_command_ranges(file, base, problems);
+}
+
+/// A `[[command_range]]` row names a command the module has, by its number and mnemonic, with
+/// a range from low to high.
+fn check_command_ranges(file: &ProfileFile, base: &CommandTable, problems: &mut Vec<Problem>) {
+    let absent: &[u8] = file.commands.as_ref().map_or(&[], |c| &c.absent);
+    for (i, row) in file.command_range.iter().enumerate() {
+        let at = |key| vec![Step::Key("command_range"), Step::Row(i), Step::Key(key)];
+        match base.by_number(row.number) {
+            Some(spec) if !absent.contains(&row.number) => {
+                if !spec.mnemonic.eq_ignore_ascii_case(&row.mnemonic) {
+                    problems.push(Problem::at(
+                        at("mnemonic"),
+                        format!(
+                            "command {} is {}, not {}",
+                            row.number,
+                            spec.display_name(),
+                            row.mnemonic.escape_debug()
+                        ),
+                    ));
+                }
+            }
+            _ => problems.push(Problem::at(
+                at("number"),
+                format!("command {} is not in this module's table", row.number),
+            )),
+        }
+        let [lo, hi] = row.value_range;
+        if lo > hi {
+            problems.push(Problem::at(
+                at("value_range"),
+                format!("value_range [{lo}, {hi}] runs backwards"),
+            ));
+        }
+    }
 }
 
 /// `[commands]` changes the built-in table (not a file's own rows): its `base` and the

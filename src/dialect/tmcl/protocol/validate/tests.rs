@@ -178,3 +178,12 @@ fn unknown_parameter_numbers_pass_with_a_warning() {
             .contains("global parameter 3 in bank 1")
     );
 }
+
+#[test]
+fn a_control_function_takes_any_motor_byte() {
+    // Seed §6.5: the motor/bank byte of 128–139 is "don't care"; the TMCM-142 has one motor.
+    for line in ["135 0, 5, 0", "136 1, 255, 0", "128 0, 1, 0"] {
+        assert!(check(line, Mode::Binary).is_ok(), "{line}");
+    }
+    assert!(refused("GAP 1, 1", Mode::Binary).contains("motor"));
+}

@@ -500,3 +500,65 @@ fn an_io_port_is_addressed_by_bank_and_port_together() {
         "the unit of I/O port 0 of bank 0 has a control character",
     );
 }
+
+#[test]
+fn a_command_range_gives_a_builtin_command_the_modules_own_range() {
+    let row = "[[command_range]]\nnumber = 1\nmnemonic = \"ROR\"\nvalue_range = [-2047, 2047]\n";
+    let p = load(&format!("{GOOD}{row}")).unwrap_or_else(|e| panic!("{e}"));
+    let ror = p.commands.by_mnemonic("ROR").unwrap();
+    assert_eq!(ror.value_range, Some((-2047, 2047)));
+    // The TMCM-142's unit-mode range is the TMCM-142's: not this module's.
+    assert!(ror.range_when.is_empty());
+    assert_eq!(
+        p.commands.by_mnemonic("ROL").unwrap().value_range,
+        Some((0, 2147483647))
+    );
+    for (bad, message) in [
+        (
+            "mnemonic = \"ROR\"",
+            "mnemonic = \"ROL\"",
+            "command 1 is ROR, not ROL",
+        ),
+        (
+            "number = 1",
+            "number = 29",
+            "command 29 is not in this module's table",
+        ),
+        (
+            "value_range = [-2047, 2047]",
+            "value_range = [2047, 0]",
+            "value_range [2047, 0] runs backwards",
+        ),
+    ]
+    .map(|(from, to, message)| (row.replace(from, to), message))
+    {
+        let error = load(&format!("{GOOD}{bad}")).expect_err(&bad);
+        assert!(error.contains(message), "{bad}: {error}");
+    }
+}
+
+#[test]
+fn an_interrupt_has_a_known_kind_and_a_bank_3_parameter_of_the_file() {
+    let config = "[[global_parameter]]\nbank = 3\nnumber = 0\nname = \"Timer 0 period\"\nident = \"timer_0\"\naccess = \"RW\"\n";
+    let row = "[[interrupt]]\nnumber = 0\nname = \"Timer 0\"\nkind = \"timer\"\nconfig = 0\n";
+    let p = load(&format!("{GOOD}{config}{row}")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(p.interrupts.len(), 1);
+    assert_eq!(p.interrupts[0].config, Some(0));
+    for (bad, message) in [
+        (
+            row.replace("\"timer\"", "\"alarm\""),
+            "interrupt kind 'alarm' is none of",
+        ),
+        (
+            row.replace("config = 0", "config = 9"),
+            "no bank-3 global parameter 9",
+        ),
+        (
+            row.replace("number = 0", "number = 255"),
+            "is given twice or is 255",
+        ),
+    ] {
+        let error = load(&format!("{GOOD}{config}{bad}")).expect_err(&bad);
+        assert!(error.contains(message), "{bad}: {error}");
+    }
+}
