@@ -149,8 +149,8 @@ impl Args for CommandLine {
 }
 
 /// The session flags of every dialect (`--address` …), each dialect's under the help heading it
-/// sets (which, as with any flattened group, stays for the options after it). Their values are
-/// read by the dialect from the [`CommandLine`].
+/// sets; the heading is reset after them, so that a subcommand's own options declared after the
+/// group stay under "Options". Their values are read by the dialect from the [`CommandLine`].
 #[derive(Debug, Clone)]
 pub struct DialectFlags;
 
@@ -166,7 +166,10 @@ impl FromArgMatches for DialectFlags {
 
 impl Args for DialectFlags {
     fn augment_args(cmd: Command) -> Command {
-        DIALECTS.iter().fold(cmd, |cmd, d| (d.session_flags)(cmd))
+        DIALECTS
+            .iter()
+            .fold(cmd, |cmd, d| (d.session_flags)(cmd))
+            .next_help_heading(None::<&str>)
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {
@@ -353,6 +356,9 @@ pub struct ModuleArgs {
     /// The protocol it speaks.
     #[command(flatten)]
     pub dialect: DialectArgs,
+    /// The module's tables.
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
     /// How requests are sent and checked.
     #[command(flatten)]
     pub session: SessionArgs,

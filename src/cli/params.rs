@@ -17,6 +17,9 @@ pub(crate) struct ParamsArgs {
     /// Whose tables to print.
     #[command(flatten)]
     pub dialect: DialectArgs,
+    /// The module's tables.
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
 }
 
 /// Prints the table; a filter that matches nothing says so on stderr and exits 1 (as `grep`

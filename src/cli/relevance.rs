@@ -74,9 +74,6 @@ const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl")];
 /// The subcommand that takes every shared option to show what it would set (`tmclsh config`).
 const SHOWS_ALL: &str = "config";
 
-/// Subcommands that read no module tables (`--profile` is global, so every one receives it).
-const NO_TABLES: &[&str] = &["ports", "completions", "man", "profiles"];
-
 /// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
 /// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).
 pub(super) fn hide_unused(mut cmd: Command) -> Command {
@@ -193,15 +190,12 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
         let offline: Vec<&str> = ids
             .iter()
             .map(String::as_str)
-            .filter(|id| *id != "protocol")
+            .filter(|id| !["protocol", "profile"].contains(id))
             .collect();
         refuse(
             &offline,
             "does not apply to comparing two snapshot files".into(),
         );
-    }
-    if NO_TABLES.contains(&words) {
-        refuse(&["profile"], format!("does not apply to {named}"));
     }
     refusals
 }
@@ -269,9 +263,6 @@ mod tests {
         let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
         for id in DIALECTS.iter().flat_map(|d| own_options(d)) {
             assert!(cmd.get_arguments().any(|a| a.get_id() == &id), "{id}");
-        }
-        for path in NO_TABLES {
-            assert!(cmd.find_subcommand(path).is_some(), "{path}");
         }
     }
 

@@ -27,6 +27,10 @@ pub(super) struct SimArgs {
     #[arg(long, value_parser = protocol_parser(), default_value = default_dialect().name)]
     pub protocol: &'static Dialect,
 
+    /// The simulated modules' tables (TMCL).
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
+
     /// Serve on a new pseudo-terminal (the default); its path is the first line printed.
     #[arg(long, conflicts_with = "listen")]
     pub pty: bool,
