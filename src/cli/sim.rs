@@ -276,7 +276,9 @@ pub(super) fn run(
         }
         None => None,
     };
-    let mut console = Console::new(device, clock, manual, console_help());
+    // Its `help` names only the commands of the simulator it drives.
+    let help = console::help([args.protocol.console_help]);
+    let mut console = Console::new(device, clock, manual, help);
     if listener.is_none() {
         console = console.with_unplug(server.unplug_handle());
     }
