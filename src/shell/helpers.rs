@@ -23,8 +23,8 @@ pub const SHARED: &[Helper] = &[
     ),
     helper(
         "target",
-        ":target N|CHAR",
-        "address another module on the bus (TMCL: 2 or B; SMD4: @N, none for no prefix)",
+        ":target [N|CHAR]",
+        "show the module addressed, or address another (TMCL: 2 or B; SMD4: @N, none for no prefix)",
         ArgKind::Module,
         Section::Session,
     ),
