@@ -75,14 +75,47 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "transcript" -d 'Turn 
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "sim" -d 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "config" -d 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user\'s config.toml, or built in'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l motor -d 'With --values: only motor N\'s axis parameters' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
+line\t'The whole line echoed after its end'
+none\t'No echo, only the reply'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l reconnect -d 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l values -d 'Read the readable parameters (those whose name contains FILTER) from the module, with what each value means; the link is given as for any command (--port, --tcp, --sim)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l keep-latency -d 'Leave an FTDI adapter\'s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -s h -l help -d 'Print help'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l probe -d 'Ask each USB port (or each PORT named) which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l baud -d 'With --probe: the bit rate to probe at (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s m -l module -d 'With --probe: the address to ask (TMCL: 1 = address character A; SMD4: @N)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l probe -d 'Ask each USB port (or each PORT named) which module is there: address --module at --baud in --protocol (TMCL: command 136 to address 1 at 9600 baud by default), each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l all -d 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l install -d 'Write the script where the shell loads it from (bash: bash-completion\'s directory under $XDG_DATA_HOME; zsh: $XDG_DATA_HOME/zsh/site-functions; fish: $XDG_CONFIG_HOME/fish) instead of printing it, and say where'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand man" -l install -d 'Write the page to $XDG_DATA_HOME/man/man1/tmclsh.1 (~/.local/share/man/man1) instead of printing it, and say where'

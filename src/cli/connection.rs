@@ -95,7 +95,7 @@ pub const BAUD_RANGE: std::ops::RangeInclusive<u32> = 50..=12_000_000;
 /// A `--baud` value (also `baud` in a configuration file, `TMCLSH_BAUD`): a whole number in
 /// [`BAUD_RANGE`], refused otherwise before anything is opened (0 used to reach the serial link
 /// after the module had been put into ASCII mode).
-fn parse_baud(text: &str) -> Result<u32, String> {
+pub(super) fn parse_baud(text: &str) -> Result<u32, String> {
     let hint = format!(
         "a bit rate is a whole number from {} to {}, such as 9600 or 115200",
         BAUD_RANGE.start(),

@@ -52,6 +52,11 @@ pub const EXAMPLES: &[Example] = &[
         batch: true,
     },
     Example {
+        command: "tmclsh --sim params --values --motor 0 speed",
+        what: "Read motor 0's parameters whose names contain speed from the module.",
+        batch: true,
+    },
+    Example {
         command: "tmclsh --sim run scripts/back_and_forth.rhai -- 2 2000 200000 4000000",
         what: "Run a Rhai script; exit code 0 when it passed, 1 when an assertion failed.",
         batch: true,
@@ -67,8 +72,8 @@ pub const EXAMPLES: &[Example] = &[
         batch: false,
     },
     Example {
-        command: "tmclsh ports --probe",
-        what: "List the serial ports and ask each USB port which module answers.",
+        command: "tmclsh ports --probe --baud 115200",
+        what: "List the serial ports and ask each USB port which module answers at 115200 baud.",
         batch: false,
     },
 ];

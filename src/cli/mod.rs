@@ -239,6 +239,9 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Failure::new(Exit::Refused, message)
     })?;
     let result = match cli.command {
+        Some(Command::Params(args)) if args.values => {
+            return params::read_values(&args, &configs, out);
+        }
         Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports(args)) => ports::run(&args, &configs, out),
         Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),

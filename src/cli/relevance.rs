@@ -52,6 +52,11 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
         "it sends no typed lines",
     ),
     (
+        "params",
+        &["no_validate", "quiet_gap"],
+        "it sends no typed lines",
+    ),
+    (
         "snapshot save",
         &["no_validate", "quiet_gap"],
         "it sends no typed lines",
@@ -177,6 +182,12 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
     if given("port") && given("tcp") {
         refuse(&["tcp"], "and --port name two links; give one".into());
     }
+    if words == "ports" {
+        if !given("probe") {
+            refuse(&["baud", "protocol", "module"], "goes with --probe".into());
+        }
+        return refusals;
+    }
     if !has_value(leaf, "port") || given("tcp") {
         let why = "is the bit rate of a serial port; give it with --port";
         refuse(&["baud"], why.into());
@@ -184,6 +195,17 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
     if !has_value(leaf, "port") && !has_value(leaf, "tcp") {
         let why = "is a setting of a serial line; give it with --port";
         refuse(&LINE_IDS, why.into());
+    }
+    if words == "params" && !given("values") {
+        let ids = module_ids();
+        let linked: Vec<&str> = ids
+            .iter()
+            .map(String::as_str)
+            .filter(|id| !["protocol", "profile"].contains(id))
+            .collect();
+        let why =
+            "does not apply to `tmclsh params` without --values: the table comes from the profile";
+        refuse(&linked, why.into());
     }
     if words == "snapshot diff" && has_value(leaf, "other") {
         let ids = module_ids();

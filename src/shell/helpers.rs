@@ -16,7 +16,7 @@ pub const SHARED: &[Helper] = &[
     ),
     helper(
         "params",
-        ":params [--values] [filter]",
+        ":params [--values [--motor N]] [filter]",
         "list the module's parameters or settings (matching filter); --values reads them",
         ArgKind::Param,
         Section::Session,
