@@ -127,7 +127,7 @@ pub const BAUD_RANGE: std::ops::RangeInclusive<u32> = 50..=12_000_000;
 /// A `--baud` value (also `baud` in a configuration file, `TMCLSH_BAUD`): a whole number in
 /// [`BAUD_RANGE`], refused otherwise before anything is opened (0 used to reach the serial link
 /// after the module had been put into ASCII mode).
-fn parse_baud(text: &str) -> Result<u32, String> {
+pub(super) fn parse_baud(text: &str) -> Result<u32, String> {
     let hint = format!(
         "a bit rate is a whole number from {} to {}, such as 9600 or 115200",
         BAUD_RANGE.start(),
@@ -181,8 +181,8 @@ impl Args for CommandLine {
 }
 
 /// The session flags of every dialect (`--address` …), each dialect's under the help heading it
-/// sets (which, as with any flattened group, stays for the options after it). Their values are
-/// read by the dialect from the [`CommandLine`].
+/// sets; the heading is reset after them, so that a subcommand's own options declared after the
+/// group stay under "Options". Their values are read by the dialect from the [`CommandLine`].
 #[derive(Debug, Clone)]
 pub struct DialectFlags;
 
@@ -198,7 +198,10 @@ impl FromArgMatches for DialectFlags {
 
 impl Args for DialectFlags {
     fn augment_args(cmd: Command) -> Command {
-        DIALECTS.iter().fold(cmd, |cmd, d| (d.session_flags)(cmd))
+        DIALECTS
+            .iter()
+            .fold(cmd, |cmd, d| (d.session_flags)(cmd))
+            .next_help_heading(None::<&str>)
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {
@@ -362,6 +365,9 @@ pub struct ModuleArgs {
     /// The protocol it speaks.
     #[command(flatten)]
     pub dialect: DialectArgs,
+    /// The module's tables.
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
     /// How requests are sent and checked.
     #[command(flatten)]
     pub session: SessionArgs,

@@ -14,6 +14,7 @@ pub mod man;
 pub(crate) mod params;
 mod ports;
 mod position;
+mod profile_option;
 mod profiles;
 mod progress;
 mod relevance;
@@ -40,10 +41,9 @@ use crate::exit::{Exit, Failure};
 #[derive(Debug, Parser)]
 #[command(name = "tmclsh", version, about, long_about = None, max_term_width = 100)]
 pub struct Cli {
-    /// Module profile instead of the TMCM-142's: a built-in name, alias or module number
-    /// (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema
-    /// in docs/profiles.md).
-    #[arg(long, global = true, value_name = "NAME|FILE", env = "TMCLSH_PROFILE")]
+    /// The module profile given to the command that runs (`--profile`, declared by each command
+    /// that reads module tables), filled in after parsing.
+    #[arg(skip)]
     pub profile: Option<PathBuf>,
 
     #[command(flatten)]
@@ -241,6 +241,7 @@ pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cl
     let matches = cmd.try_get_matches_from_mut(argv)?;
     relevance::check(&mut cmd, &matches)?;
     let mut cli = Cli::from_arg_matches(&matches)?;
+    cli.profile = profile_option::given(position::leaf_matches(&matches));
     cli.profile_origin = config::origin_of(&matches, "profile", defaults);
     if let Some(Command::Config(args)) = &mut cli.command {
         config::explain(args, &matches, defaults);
@@ -266,6 +267,9 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Failure::new(Exit::Refused, message)
     })?;
     let result = match cli.command {
+        Some(Command::Params(args)) if args.values => {
+            return params::read_values(&args, &configs, out);
+        }
         Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports(args)) => ports::run(&args, &configs, out),
         Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),
