@@ -19,7 +19,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
     var completions = [
         &'tmclsh'= {
             cand -c 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal'
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
@@ -71,7 +71,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         }
         &'tmclsh;params'= {
             cand --motor 'With --values: only motor N''s axis parameters'
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
@@ -127,7 +127,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help'
         }
         &'tmclsh;run'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
@@ -177,7 +177,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help'
         }
         &'tmclsh;download'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
@@ -217,7 +217,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;snapshot;save'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
@@ -249,7 +249,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;snapshot;diff'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
@@ -280,7 +280,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;snapshot;restore'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
@@ -330,7 +330,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         }
         &'tmclsh;scan'= {
             cand --addresses 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each. Each reply is awaited 100 ms unless --timeout is set'
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
@@ -430,7 +430,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;config'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'

@@ -9,6 +9,7 @@ pub mod connection;
 mod disasm;
 pub mod download;
 mod install;
+mod link_kinds;
 pub mod man;
 pub(crate) mod params;
 mod ports;
@@ -92,17 +93,18 @@ enum Command {
 /// Parses the process arguments and runs; returns the exit code.
 pub fn main() -> Exit {
     crate::progress::install(Box::new(progress::TerminalProgress));
-    let defaults = match config::Defaults::load() {
-        Ok(defaults) => defaults,
-        Err(message) => {
-            diagnose(&format!("configuration refused: {message}"));
-            return Exit::Refused;
-        }
-    };
+    // What a broken file holds is left out; `--help` and `--version` (clap's errors here) need
+    // none of it.
+    let defaults = config::Defaults::load();
     let cli = match parse_with(std::env::args_os().collect(), &defaults) {
         Ok(cli) => cli,
         Err(e) => {
             let use_stderr = e.use_stderr();
+            if use_stderr {
+                for error in defaults.errors() {
+                    diagnose(&format!("configuration refused: {error}"));
+                }
+            }
             print_usage_error(e);
             return if use_stderr {
                 Exit::Refused
@@ -111,6 +113,21 @@ pub fn main() -> Exit {
             };
         }
     };
+    if !cli.describes_itself() {
+        let unknown = config::unknown_variables(&command());
+        let said_by_config = matches!(cli.command, Some(Command::Config(_)));
+        let warnings = defaults.warnings().iter().filter(|_| !said_by_config);
+        for warning in unknown.iter().chain(warnings) {
+            diagnose(&format!("warning: {warning}"));
+        }
+        for error in defaults.errors() {
+            diagnose(&format!("configuration refused: {error}"));
+        }
+        // `config` goes on to show what it could read, and fails after.
+        if !said_by_config && !defaults.errors().is_empty() {
+            return Exit::Refused;
+        }
+    }
     // Not locked for the whole run: `sim` prints from its console thread too.
     let mut stdout = std::io::stdout();
     let exit = match run(cli, &mut stdout) {
@@ -121,6 +138,17 @@ pub fn main() -> Exit {
         }
     };
     signalled(exit)
+}
+
+impl Cli {
+    /// Whether the command only describes tmclsh itself (completions, the manual page), so
+    /// neither the configuration nor the environment is any business of it.
+    fn describes_itself(&self) -> bool {
+        matches!(
+            self.command,
+            Some(Command::Completions(_) | Command::Man(_))
+        )
+    }
 }
 
 /// A run SIGTERM or SIGHUP ended (its waits end as for Ctrl-C, its motors stopped on the way)
