@@ -2,6 +2,7 @@
 //! identified before it is talked to, whatever the line held before; a module that does not
 //! identify itself is sent nothing on a guess; binary-only modules stay binary.
 
+mod binary_only;
 mod identify;
 
 use std::process::Output;

@@ -349,7 +349,7 @@ fn a_scan_names_a_boot_loader_and_an_unknown_module_and_asks_the_loader_nothing_
     ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(
-        stdout(&out).contains("142B1.06  ?     TMCM-142 (boot loader)"),
+        stdout(&out).contains("142B1.06  ?       TMCM-142 (boot loader)"),
         "{}",
         stdout(&out)
     );
@@ -374,7 +374,7 @@ fn a_scan_names_a_boot_loader_and_an_unknown_module_and_asks_the_loader_nothing_
     ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(
-        stdout(&out).contains("9999V100  char  TMCM-9999 (no profile)"),
+        stdout(&out).contains("9999V100  char    TMCM-9999 (no profile)"),
         "{}",
         stdout(&out)
     );
