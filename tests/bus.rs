@@ -4,6 +4,7 @@
 
 mod binary_only;
 mod identify;
+mod scan_pause;
 
 use std::process::Output;
 
