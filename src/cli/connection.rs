@@ -17,6 +17,7 @@ use crate::link::line::{LineOptions, Modem, Rs485};
 use crate::session::transcript::Header;
 use crate::session::{LocalEcho, SessionOptions, Transcript};
 
+use super::can::{CanSettings, CanSpec, DEFAULT_BITRATE, DEFAULT_REPLY_ID};
 use super::target::{Target, is_log_dir, log_file};
 
 /// Where the module is: a serial port, a TCP address, or (neither) the built-in simulator.
@@ -34,6 +35,17 @@ pub struct ConnectionArgs {
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT")]
     pub tcp: Option<String>,
+    /// CAN adapter of the modules' bus: slcan:PATH (a serial-line CAN adapter: CANable,
+    /// USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module's CAN ID is --module.
+    #[arg(long, value_name = "slcan:PATH|socketcan:IFACE", env = "TMCLSH_CAN", value_parser = parse_can)]
+    pub can: Option<CanSpec>,
+    /// The CAN bus's bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN's is set
+    /// with `ip link`) [default: 1000000, the modules' default]
+    #[arg(long, value_name = "BPS", value_parser = parse_can_bitrate)]
+    pub can_bitrate: Option<u32>,
+    /// The CAN ID the modules send their replies to (the modules' reply ID setting).
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_REPLY_ID, value_parser = clap::value_parser!(u16).range(0..=0x7FF))]
+    pub can_reply_id: u16,
     /// Talk to the built-in simulated module: the explicit choice a command run without a
     /// terminal needs, so that no script passes against the simulator by accident.
     #[arg(long)]
@@ -65,6 +77,23 @@ pub struct LineArgs {
     /// flag, which lowers a 16 ms timer to 1 ms where the driver honours it).
     #[arg(long, env = "TMCLSH_KEEP_LATENCY")]
     pub keep_latency: bool,
+}
+
+fn parse_can(text: &str) -> Result<CanSpec, String> {
+    CanSpec::parse(text)
+}
+
+/// A bit rate slcan has a code for (`S0`…`S8`).
+fn parse_can_bitrate(text: &str) -> Result<u32, String> {
+    let rates = crate::link::can::slcan::BITRATES;
+    text.trim()
+        .parse::<u32>()
+        .ok()
+        .filter(|bps| rates.contains(bps))
+        .ok_or_else(|| {
+            let list: Vec<String> = rates.iter().map(u32::to_string).collect();
+            format!("a CAN bit rate is one of {}", list.join(", "))
+        })
 }
 
 fn modem(text: &str) -> Result<Modem, String> {
@@ -320,11 +349,21 @@ impl SessionArgs {
 impl ConnectionArgs {
     /// Whether the built-in simulator is meant.
     pub fn is_builtin(&self) -> bool {
-        self.port.is_none() && self.tcp.is_none()
+        self.port.is_none() && self.tcp.is_none() && self.can.is_none()
     }
 
     /// Where the link goes (a `usb:` name resolved to its device file).
     pub fn target(&self) -> Result<Target, Failure> {
+        if let Some(spec) = &self.can {
+            return Ok(Target::Can {
+                spec: spec.clone(),
+                settings: CanSettings {
+                    bitrate: self.can_bitrate.unwrap_or(DEFAULT_BITRATE),
+                    reply_id: self.can_reply_id,
+                    baud: self.baud,
+                },
+            });
+        }
         Target::of(self.port.as_deref(), self.tcp.as_deref())
     }
 

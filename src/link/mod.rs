@@ -85,6 +85,12 @@ pub trait Link: Send {
         None
     }
 
+    /// Whether the link carries only whole binary frames (CAN): a dialect with a text mode
+    /// never enters it there.
+    fn frames_only(&self) -> bool {
+        false
+    }
+
     /// The state of the line for `:line`: rate, modem lines, latency timer, byte counts, the
     /// driver's error counters — what the link has of them. The default knows nothing.
     fn line_state(&mut self) -> LineState {

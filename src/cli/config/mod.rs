@@ -73,6 +73,13 @@ pub const KEYS: &[Key] = &[
         unset: "the built-in simulated module",
     },
     Key {
+        name: "can",
+        id: "can",
+        kind: Kind::Text,
+        example: "can = \"slcan:/dev/ttyACM0\" or \"socketcan:can0\"",
+        unset: "no CAN link",
+    },
+    Key {
         name: "baud",
         id: "baud",
         kind: Kind::Integer,

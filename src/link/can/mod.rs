@@ -6,12 +6,16 @@
 pub mod frame;
 pub mod slcan;
 mod slcan_link;
+#[cfg(target_os = "linux")]
+pub mod socketcan;
 
 use std::collections::VecDeque;
 use std::time::Instant;
 
 pub use frame::CanFrame;
 pub use slcan_link::SlcanLink;
+#[cfg(target_os = "linux")]
+pub use socketcan::SocketCanLink;
 
 use super::{LineState, Link, LinkError};
 
@@ -133,6 +137,10 @@ impl Link for CanLink {
     #[cfg(unix)]
     fn watch(&self) -> Option<std::os::fd::OwnedFd> {
         self.bus.watch()
+    }
+
+    fn frames_only(&self) -> bool {
+        true
     }
 
     fn line_state(&mut self) -> LineState {

@@ -13,9 +13,6 @@ use super::frame::{FRAME_LEN, checksum};
 /// Data bytes of a request or reply: a serial frame without its first and last byte.
 pub const CAN_DATA: usize = FRAME_LEN - 2;
 
-/// The host's reply ID unless told otherwise (the modules' default, as the serial host address).
-pub const DEFAULT_REPLY_ID: u16 = 2;
-
 /// The CAN request for a serial command frame: its module address as the ID.
 pub fn request(frame: &[u8; FRAME_LEN]) -> CanFrame {
     CanFrame::new(u16::from(frame[0]), &frame[1..8]).expect("7 bytes, an 8-bit ID")

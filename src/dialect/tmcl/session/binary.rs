@@ -57,6 +57,11 @@ impl TmclSession {
         module: u8,
         instruction: Instruction,
     ) -> Result<TmclExchange, SessionError> {
+        if self.frames_only && instruction.command == Opcode::EnterAscii {
+            return Err(SessionError::Refused(
+                "command 139 is not sent over CAN: TMCL over CAN has no ASCII mode".into(),
+            ));
+        }
         let sent = self.describe_instruction(&instruction);
         let frame = CommandFrame {
             address: module,
