@@ -59,33 +59,34 @@ pub fn reply_frame(frame: &CanFrame, host: u8) -> Option<[u8; FRAME_LEN]> {
 
 /// A TMCL session's frames over CAN: each 9-byte command goes to the CAN ID of its module
 /// address; frames to the host's reply ID come back as serial replies; frames to any other ID
-/// (other nodes, heartbeats, other masters' requests) are not the host's.
+/// (other nodes, heartbeats, other masters' requests) are not the host's. Bytes that are not
+/// whole command frames (ASCII text, a lone CR) have no CAN form: they are dropped, not cut
+/// into frames that would reach modules as requests.
 #[derive(Debug)]
 pub struct TmclFramer {
     reply_id: u16,
-    pending: Vec<u8>,
 }
 
 impl TmclFramer {
     /// A framer taking replies sent to `reply_id`.
     pub fn new(reply_id: u16) -> TmclFramer {
-        TmclFramer {
-            reply_id,
-            pending: Vec::new(),
-        }
+        TmclFramer { reply_id }
     }
 }
 
 impl Framer for TmclFramer {
     fn frames(&mut self, bytes: &[u8]) -> Vec<CanFrame> {
-        self.pending.extend_from_slice(bytes);
-        let whole = self.pending.len() / FRAME_LEN * FRAME_LEN;
-        let frames = self.pending[..whole]
+        let whole = bytes.len() % FRAME_LEN == 0
+            && bytes
+                .chunks_exact(FRAME_LEN)
+                .all(|c| checksum(&c[..8]) == c[8]);
+        if !whole {
+            return Vec::new();
+        }
+        bytes
             .chunks_exact(FRAME_LEN)
             .map(|c| request(c.try_into().expect("chunks of 9")))
-            .collect();
-        self.pending.drain(..whole);
-        frames
+            .collect()
     }
 
     /// The reply's first byte is the reply ID's low byte: a session learns the host address
@@ -151,7 +152,7 @@ mod tests {
     }
 
     #[test]
-    fn the_framer_keeps_partial_frames_and_ignores_other_ids() {
+    fn the_framer_sends_whole_frames_only_and_ignores_other_ids() {
         let frame = CommandFrame {
             address: 1,
             instruction: Instruction::new(Opcode::Gap, 1, 0, 0),
@@ -159,7 +160,9 @@ mod tests {
         .encode();
         let mut framer = TmclFramer::new(5);
         assert!(framer.frames(&frame[..4]).is_empty());
-        let sent = framer.frames(&[&frame[4..], &frame[..]].concat());
+        assert!(framer.frames(b"AGAP 1, 0\r").is_empty(), "ASCII");
+        assert!(framer.frames(b"\r").is_empty());
+        let sent = framer.frames(&[&frame[..], &frame[..]].concat());
         assert_eq!(sent, vec![request(&frame); 2]);
         let answer = CanFrame::new(5, &[1, 100, 6, 0, 0, 0, 9]).unwrap();
         let bytes = framer.bytes(&answer).unwrap();

@@ -188,6 +188,11 @@ impl TmclSession {
         &self.profile
     }
 
+    /// Whether the link carries binary frames only (CAN): no ASCII mode, no ASCII probes.
+    pub fn frames_only(&self) -> bool {
+        self.frames_only
+    }
+
     /// The module lines without an address character go to.
     pub fn target(&self) -> u8 {
         self.target
