@@ -3,6 +3,7 @@
 //! nothing are refused (`relevance`).
 
 mod asm;
+pub mod can;
 mod completions;
 pub mod config;
 pub mod connection;
