@@ -14,6 +14,9 @@ pub(crate) struct ParamsArgs {
     /// Show parameters whose identifier or name contains FILTER, or whose number is FILTER
     /// (SMD4: commands whose mnemonic contains FILTER).
     pub filter: Option<String>,
+    /// Print one JSON document instead of the table (fields in docs/machine-output.md).
+    #[arg(long)]
+    pub json: bool,
     /// Whose tables to print.
     #[command(flatten)]
     pub dialect: DialectArgs,
@@ -27,9 +30,25 @@ pub(crate) fn run(
     out: &mut dyn Write,
 ) -> io::Result<Exit> {
     let filter = args.filter.as_deref().unwrap_or("");
-    let matched = configs
-        .of(args.dialect.protocol)
-        .write_params(filter, out)?;
+    let config = configs.of(args.dialect.protocol);
+    let matched = if args.json {
+        match config.params_json(filter) {
+            Ok(rows) => {
+                let document = crate::json::json!({
+                    "protocol": args.dialect.protocol.name,
+                    "parameters": rows,
+                });
+                crate::json::write(&document, out)?;
+                true
+            }
+            Err(message) => {
+                super::diagnose(&message);
+                false
+            }
+        }
+    } else {
+        config.write_params(filter, out)?
+    };
     Ok(if matched {
         Exit::Success
     } else {

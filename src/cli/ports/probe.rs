@@ -38,7 +38,7 @@ pub(super) fn probe_all(
 }
 
 /// What answers on one port, in a few words.
-fn probe(path: &str, configs: &Configured) -> String {
+pub(super) fn probe(path: &str, configs: &Configured) -> String {
     let config = configs.of(default_dialect());
     let options = SessionOptions {
         module: ADDRESS,
