@@ -829,7 +829,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__run)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --profile --help"
+            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --junit --profile --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -917,6 +917,21 @@ _tmclsh() {
                     ;;
                 --allow-dir)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --junit)
+                    local oldifs
+                    if [ -n "${IFS+x}" ]; then
+                        oldifs="$IFS"
+                    fi
+                    IFS=$'\n'
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    if [ -n "${oldifs+x}" ]; then
+                        IFS="$oldifs"
+                    fi
+                    if [[ "${BASH_VERSINFO[0]}" -ge 4 ]]; then
+                        compopt -o filenames
+                    fi
                     return 0
                     ;;
                 --profile)
@@ -1603,7 +1618,7 @@ _tmclsh_with_files() {
         esac
     done
     case "$prev" in
-        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--latency|--left-switch|--link|--listen|--local-echo|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--junit|--latency|--left-switch|--link|--listen|--local-echo|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
     esac
     if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
         compopt -o filenames 2>/dev/null

@@ -124,6 +124,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --max-memory 'Memory the script may hold, in MiB (0: no limit)'
             cand --max-time 'Wall-clock time after which the script is stopped, its motors too (exit code 1): 500ms, 30s, 2m, or milliseconds'
             cand --allow-dir 'A directory the script''s file functions may also reach (repeatable); by default they reach only the script''s directory and the working directory'
+            cand --junit 'Write a JUnit XML report to FILE: one test case per `test("name", || …)` block of the script (the whole script as one case when it has none), failures with their message and script position. Written whatever the outcome; a failed block does not end the run'
             cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'

@@ -254,3 +254,130 @@ fn ports_json_describes_a_usb_adapter() {
     );
     assert!(doc.get("probes").is_none());
 }
+
+/// The JUnit report at `path`, checked against the schema's required elements and attributes:
+/// `testsuites` holding `testsuite` elements with name, tests, failures and errors that add up,
+/// each `testcase` with name and classname. Returns (case name, failure or error element name,
+/// its message) for each case.
+fn junit_cases(path: &Path) -> Vec<(String, Option<(String, String)>)> {
+    let text = std::fs::read_to_string(path).expect("the JUnit file is written");
+    let doc = roxmltree::Document::parse(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+    let root = doc.root_element();
+    assert_eq!(root.tag_name().name(), "testsuites", "{text}");
+    let number = |node: roxmltree::Node, attribute: &str| -> usize {
+        node.attribute(attribute)
+            .unwrap_or_else(|| panic!("{attribute} on {}", node.tag_name().name()))
+            .parse()
+            .unwrap()
+    };
+    let suites: Vec<_> = root.children().filter(|n| n.is_element()).collect();
+    assert_eq!(suites.len(), 1, "{text}");
+    let suite = suites[0];
+    assert_eq!(suite.tag_name().name(), "testsuite");
+    assert!(!suite.attribute("name").unwrap_or_default().is_empty());
+    let mut cases = Vec::new();
+    let (mut failures, mut errors) = (0, 0);
+    for case in suite.children().filter(|n| n.is_element()) {
+        assert_eq!(case.tag_name().name(), "testcase");
+        let name = case.attribute("name").expect("testcase name").to_string();
+        assert!(!case.attribute("classname").expect("classname").is_empty());
+        let problem = case.children().find(|n| n.is_element()).map(|n| {
+            let kind = n.tag_name().name().to_string();
+            match kind.as_str() {
+                "failure" => failures += 1,
+                "error" => errors += 1,
+                other => panic!("unexpected <{other}>"),
+            }
+            (kind, n.attribute("message").expect("message").to_string())
+        });
+        cases.push((name, problem));
+    }
+    for node in [root, suite] {
+        assert_eq!(number(node, "tests"), cases.len(), "{text}");
+        assert_eq!(number(node, "failures"), failures, "{text}");
+        assert_eq!(number(node, "errors"), errors, "{text}");
+    }
+    cases
+}
+
+#[test]
+fn run_junit_reports_each_block_and_runs_every_block_after_a_failure() {
+    let dir = tempdir();
+    std::fs::write(
+        dir.join("check.rhai"),
+        r#"test("moves", || {
+    mvp_abs(0, 1000);
+    wait_pos(0, 5000);
+    assert_eq(gap(1, 0), 1000);
+});
+test("speed <& \"quoted\">", || {
+    ror(0, 500);
+    assert(gap(1, 0) == 42, "never 42");
+});
+test("stopped after the failure", || {
+    assert_eq(gap(3, 0), 0, "the motor the failed block started was stopped");
+});
+test("a refused call", || {
+    gap(1, 300);
+});
+"#,
+    )
+    .unwrap();
+    let out = run_in(
+        &dir,
+        &["run", "check.rhai", "--sim", "--junit", "report.xml"],
+        &[],
+    );
+    assert_eq!(code(&out), 1, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(err.contains("4 tests failed"), "{err}");
+    let cases = junit_cases(&dir.join("report.xml"));
+    let names: Vec<&str> = cases.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "moves",
+            "speed <& \"quoted\">",
+            "stopped after the failure",
+            "a refused call"
+        ]
+    );
+    assert_eq!(cases[0].1, None);
+    let (kind, message) = cases[1].1.clone().unwrap();
+    assert_eq!(kind, "failure");
+    assert!(
+        message.starts_with("check.rhai:8:5: assertion failed: never 42"),
+        "{message}"
+    );
+    assert_eq!(cases[2].1, None, "the next block ran, its motor stopped");
+    let (kind, message) = cases[3].1.clone().unwrap();
+    assert_eq!(kind, "error", "a refusal (exit 2) is an error");
+    assert!(message.starts_with("check.rhai:14:5:"), "{message}");
+}
+
+#[test]
+fn run_junit_is_written_when_the_script_passes_or_does_not_compile() {
+    let dir = tempdir();
+    std::fs::write(dir.join("plain.rhai"), "assert_eq(gap(1, 0), 0);\n").unwrap();
+    let out = run_in(
+        &dir,
+        &["run", "plain.rhai", "--sim", "--junit", "a.xml"],
+        &[],
+    );
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert_eq!(
+        junit_cases(&dir.join("a.xml")),
+        [("plain".to_string(), None)]
+    );
+    std::fs::write(dir.join("broken.rhai"), "test(\"x\", || { let = 1 });\n").unwrap();
+    let out = run_in(
+        &dir,
+        &["run", "broken.rhai", "--sim", "--junit", "b.xml"],
+        &[],
+    );
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    let cases = junit_cases(&dir.join("b.xml"));
+    let (kind, message) = cases[0].1.clone().unwrap();
+    assert_eq!(kind, "error");
+    assert!(message.contains("does not compile"), "{message}");
+}
