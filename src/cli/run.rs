@@ -14,6 +14,7 @@ use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `run`.
 #[derive(Debug, Clone, clap::Args)]
+#[command(after_long_help = script_functions())]
 pub struct RunArgs {
     /// The Rhai script to run.
     #[arg(value_name = "SCRIPT")]
@@ -157,6 +158,14 @@ fn run_reporting(args: &RunArgs, configs: &Configured, blocks: &Blocks) -> Resul
         }
     }
     Ok(exit)
+}
+
+/// The functions scripts can call, for `run --help` (`:help NAME` in the shell shows one).
+fn script_functions() -> String {
+    format!(
+        "Script functions (besides Rhai's own; docs/script-functions.md):\n\n{}",
+        crate::script::registry::listing(&crate::dialect::functions::tables())
+    )
 }
 
 /// A time for `--max-time`: `500ms`, `30s`, `2m`, or a number of milliseconds; at least 1 ms.

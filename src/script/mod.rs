@@ -26,6 +26,7 @@ pub mod failure;
 pub mod junit;
 pub mod limits;
 pub mod memory;
+pub mod registry;
 pub mod sandbox;
 pub(crate) mod waiting;
 

@@ -381,3 +381,31 @@ fn run_junit_is_written_when_the_script_passes_or_does_not_compile() {
     assert_eq!(kind, "error");
     assert!(message.contains("does not compile"), "{message}");
 }
+
+#[test]
+fn script_functions_have_help_from_the_registry() {
+    let out = run(&["--sim", "-c", ":help wait_pos"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    assert!(
+        text.starts_with("wait_pos(motor, timeout_ms) — waits until"),
+        "{text}"
+    );
+    let out = run(&["--sim", "--protocol", "smd4", "-c", ":help wait_standby"]);
+    assert!(
+        stdout(&out).starts_with("wait_standby(timeout_ms) — "),
+        "{}",
+        stdout(&out)
+    );
+    let out = run(&["run", "--help"]);
+    assert_eq!(code(&out), 0);
+    let help = stdout(&out);
+    for signature in [
+        "test(name, || { … })",
+        "wait_pos(motor, timeout_ms)",
+        "wait_standby(timeout_ms)",
+        "snapshot_save(path) -> int",
+    ] {
+        assert!(help.contains(signature), "{signature} in {help}");
+    }
+}
