@@ -19,7 +19,7 @@ fn run(n: u64, dir: &std::path::Path) -> Duration {
             let status = Command::new(env!("CARGO_BIN_EXE_tmclsh"))
                 .arg("run")
                 .arg(&script)
-                .args(["--max-operations", "0"])
+                .args(["--sim", "--max-operations", "0"])
                 .status()
                 .expect("tmclsh runs");
             assert!(status.success(), "the push loop of {n} succeeds");

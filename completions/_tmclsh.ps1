@@ -21,15 +21,15 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
 
     $completions = @(switch ($command) {
         'tmclsh' {
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-c', '-c', [CompletionResultType]::ParameterName, 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
             [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
             [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
             [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
@@ -74,51 +74,79 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;params' {
-            [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON document instead of the table (fields in docs/machine-output.md)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            break
-        }
-        'tmclsh;profiles' {
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON document instead (fields in docs/machine-output.md)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
-            break
-        }
-        'tmclsh;ports' {
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
-            [CompletionResult]::new('--probe', '--probe', [CompletionResultType]::ParameterName, 'Ask each USB port (or each PORT named) which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes')
-            [CompletionResult]::new('--all', '--all', [CompletionResultType]::ParameterName, 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON document instead (fields in docs/machine-output.md)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
-            break
-        }
-        'tmclsh;completions' {
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
-            [CompletionResult]::new('--install', '--install', [CompletionResultType]::ParameterName, 'Write the script where the shell loads it from (bash: bash-completion''s directory under $XDG_DATA_HOME; zsh: $XDG_DATA_HOME/zsh/site-functions; fish: $XDG_CONFIG_HOME/fish) instead of printing it, and say where')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
-            break
-        }
-        'tmclsh;man' {
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
-            [CompletionResult]::new('--install', '--install', [CompletionResultType]::ParameterName, 'Write the page to $XDG_DATA_HOME/man/man1/tmclsh.1 (~/.local/share/man/man1) instead of printing it, and say where')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
-            break
-        }
-        'tmclsh;run' {
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--motor', '--motor', [CompletionResultType]::ParameterName, 'With --values: only motor N''s axis parameters')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
             [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
             [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
             [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
+            [CompletionResult]::new('--echo', '--echo', [CompletionResultType]::ParameterName, 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)')
+            [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date')
+            [CompletionResult]::new('--local-echo', '--local-echo', [CompletionResultType]::ParameterName, 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips')
+            [CompletionResult]::new('--reconnect', '--reconnect', [CompletionResultType]::ParameterName, 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never')
+            [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
+            [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON document instead of the table; not with --values (fields in docs/machine-output.md)')
+            [CompletionResult]::new('--values', '--values', [CompletionResultType]::ParameterName, 'Read the readable parameters (those whose name contains FILTER) from the module, with what each value means; the link is given as for any command (--port, --tcp, --sim)')
+            [CompletionResult]::new('--sim', '--sim', [CompletionResultType]::ParameterName, 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident')
+            [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)')
+            [CompletionResult]::new('--keep-latency', '--keep-latency', [CompletionResultType]::ParameterName, 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)')
+            [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
+            [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')
+            [CompletionResult]::new('--binary', '--binary', [CompletionResultType]::ParameterName, 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))')
+            [CompletionResult]::new('--prefix-comma', '--prefix-comma', [CompletionResultType]::ParameterName, 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP')
+            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'tmclsh;profiles' {
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON document instead (fields in docs/machine-output.md)')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
+            break
+        }
+        'tmclsh;ports' {
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'With --probe: the bit rate to probe at (8N1)')
+            [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'With --probe: the address to ask (TMCL: 1 = address character A; SMD4: @N)')
+            [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'With --probe: the address to ask (TMCL: 1 = address character A; SMD4: @N)')
+            [CompletionResult]::new('--probe', '--probe', [CompletionResultType]::ParameterName, 'Ask each USB port (or each PORT named) which module is there: address --module at --baud in --protocol (TMCL: command 136 to address 1 at 9600 baud by default), each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes')
+            [CompletionResult]::new('--all', '--all', [CompletionResultType]::ParameterName, 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON document instead (fields in docs/machine-output.md)')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'tmclsh;completions' {
+            [CompletionResult]::new('--install', '--install', [CompletionResultType]::ParameterName, 'Write the script where the shell loads it from (bash: bash-completion''s directory under $XDG_DATA_HOME; zsh: $XDG_DATA_HOME/zsh/site-functions; fish: $XDG_CONFIG_HOME/fish) instead of printing it, and say where')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
+            break
+        }
+        'tmclsh;man' {
+            [CompletionResult]::new('--install', '--install', [CompletionResultType]::ParameterName, 'Write the page to $XDG_DATA_HOME/man/man1/tmclsh.1 (~/.local/share/man/man1) instead of printing it, and say where')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
+            break
+        }
+        'tmclsh;run' {
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
+            [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
+            [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
+            [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
+            [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
+            [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
@@ -134,7 +162,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--max-time', '--max-time', [CompletionResultType]::ParameterName, 'Wall-clock time after which the script is stopped, its motors too (exit code 1): 500ms, 30s, 2m, or milliseconds')
             [CompletionResult]::new('--allow-dir', '--allow-dir', [CompletionResultType]::ParameterName, 'A directory the script''s file functions may also reach (repeatable); by default they reach only the script''s directory and the working directory')
             [CompletionResult]::new('--junit', '--junit', [CompletionResultType]::ParameterName, 'Write a JUnit XML report to FILE: one test case per `test("name", || …)` block of the script (the whole script as one case when it has none), failures with their message and script position. Written whatever the outcome; a failed block does not end the run')
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--sim', '--sim', [CompletionResultType]::ParameterName, 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)')
             [CompletionResult]::new('--keep-latency', '--keep-latency', [CompletionResultType]::ParameterName, 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)')
@@ -166,13 +193,14 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;download' {
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
             [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
             [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
             [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
@@ -182,7 +210,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--reconnect', '--reconnect', [CompletionResultType]::ParameterName, 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never')
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--sim', '--sim', [CompletionResultType]::ParameterName, 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)')
             [CompletionResult]::new('--keep-latency', '--keep-latency', [CompletionResultType]::ParameterName, 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)')
@@ -199,7 +226,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;snapshot' {
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('save', 'save', [CompletionResultType]::ParameterValue, 'Read every readable parameter into FILE (TOML, keyed by parameter name)')
@@ -209,13 +235,14 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;snapshot;save' {
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
             [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
             [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
             [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
@@ -225,7 +252,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--reconnect', '--reconnect', [CompletionResultType]::ParameterName, 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never')
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--force', '--force', [CompletionResultType]::ParameterName, 'Replace FILE if it exists')
             [CompletionResult]::new('--sim', '--sim', [CompletionResultType]::ParameterName, 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)')
@@ -242,13 +268,14 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;snapshot;diff' {
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
             [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
             [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
             [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
@@ -258,7 +285,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--reconnect', '--reconnect', [CompletionResultType]::ParameterName, 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never')
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON document instead of the table (fields in docs/machine-output.md)')
             [CompletionResult]::new('--sim', '--sim', [CompletionResultType]::ParameterName, 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)')
@@ -275,13 +301,14 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;snapshot;restore' {
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
             [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
             [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
             [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
@@ -291,7 +318,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--reconnect', '--reconnect', [CompletionResultType]::ParameterName, 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never')
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--store', '--store', [CompletionResultType]::ParameterName, 'Afterwards make the written parameters permanent, after a confirmation: EEPROM (STAP/STGP) on TMCL modules; STORE on an SMD4, which saves its whole working configuration')
             [CompletionResult]::new('--yes', '--yes', [CompletionResultType]::ParameterName, 'Confirm --store without asking (for scripts)')
             [CompletionResult]::new('--dry-run', '--dry-run', [CompletionResultType]::ParameterName, 'Only print the lines that would be sent')
@@ -331,13 +357,14 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
         }
         'tmclsh;scan' {
             [CompletionResult]::new('--addresses', '--addresses', [CompletionResultType]::ParameterName, 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each. Each reply is awaited 100 ms unless --timeout is set')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
             [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
             [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
             [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
             [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date')
             [CompletionResult]::new('--local-echo', '--local-echo', [CompletionResultType]::ParameterName, 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips')
@@ -347,7 +374,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--echo', '--echo', [CompletionResultType]::ParameterName, 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--first', '--first', [CompletionResultType]::ParameterName, 'Stop at the first module found, trying the addresses in ascending order')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'Print one JSON document instead of the table (fields in docs/machine-output.md), also when nothing answered')
             [CompletionResult]::new('--sim', '--sim', [CompletionResultType]::ParameterName, 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident')
@@ -365,7 +391,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;transcript' {
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('to-rhai', 'to-rhai', [CompletionResultType]::ParameterValue, 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received')
@@ -394,6 +419,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
         }
         'tmclsh;sim' {
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol of the simulated module: a bus of TMCL modules (tmcl) or an SMD4 drive (smd4)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--link', '--link', [CompletionResultType]::ParameterName, 'Keep the symlink PATH pointed at the current pseudo-terminal, as udev keeps /dev/serial/by-id names pointed at an adapter: after the console''s `unplug` it points at the new one (and is gone during the outage). An existing file that is not a symlink is refused')
             [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed')
             [CompletionResult]::new('--modules', '--modules', [CompletionResultType]::ParameterName, 'Modules on the simulated RS-485 bus: addresses, each optionally with its own profile (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`)')
@@ -420,7 +446,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--error-spelling', '--error-spelling', [CompletionResultType]::ParameterName, 'Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic) or bare (-103)')
             [CompletionResult]::new('--prefix-only', '--prefix-only', [CompletionResultType]::ParameterName, 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)')
             [CompletionResult]::new('--real-value-grid', '--real-value-grid', [CompletionResultType]::ParameterName, 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value')
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--pty', '--pty', [CompletionResultType]::ParameterName, 'Serve on a new pseudo-terminal (the default); its path is the first line printed')
             [CompletionResult]::new('--shared-line', '--shared-line', [CompletionResultType]::ParameterName, 'The modules hear each other''s replies, as on a real RS-485 bus: a module whose address equals the host address (GP 76, 2 by default) takes the others'' replies for commands and answers them. Every module drops a partial binary frame after 5 ms of quiet (the UART time-out of Trinamic''s firmware), shared line or not')
             [CompletionResult]::new('--adapter-echo', '--adapter-echo', [CompletionResultType]::ParameterName, 'Hand every byte the host sends back to it, before the module''s answer, as a 2-wire RS-485 adapter without echo suppression does (tmclsh strips it: --local-echo)')
@@ -440,13 +465,14 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;config' {
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
             [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
             [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
             [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
             [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
             [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
             [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
@@ -456,7 +482,6 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--reconnect', '--reconnect', [CompletionResultType]::ParameterName, 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never')
             [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
             [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
-            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
             [CompletionResult]::new('--sim', '--sim', [CompletionResultType]::ParameterName, 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)')
             [CompletionResult]::new('--keep-latency', '--keep-latency', [CompletionResultType]::ParameterName, 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)')

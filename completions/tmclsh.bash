@@ -161,16 +161,12 @@ _tmclsh() {
 
     case "${cmd}" in
         tmclsh)
-            opts="-c -m -v -h -V --profile --value --json --keep-going --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download snapshot scan transcript sim config help"
+            opts="-c -m -v -h -V --value --json --keep-going --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 -c)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -201,6 +197,10 @@ _tmclsh() {
                     ;;
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --module)
@@ -273,16 +273,12 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__completions)
-            opts="-h --install --profile --help bash elvish fish powershell zsh"
+            opts="-h --install --help bash elvish fish powershell zsh"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -291,7 +287,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__config)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --json --profile --help"
+            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -323,6 +319,10 @@ _tmclsh() {
                     ;;
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --module)
@@ -358,10 +358,6 @@ _tmclsh() {
                     return 0
                     ;;
                 --quiet-gap)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --profile)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -391,7 +387,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__download)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --run --no-validate --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --run --no-validate --address --prefix-comma --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -423,6 +419,10 @@ _tmclsh() {
                     ;;
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --module)
@@ -458,10 +458,6 @@ _tmclsh() {
                     return 0
                     ;;
                 --quiet-gap)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --profile)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -753,16 +749,12 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__man)
-            opts="-h --install --profile --help"
+            opts="-h --install --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -771,17 +763,81 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__params)
-            opts="-h --json --protocol --profile --help"
+            opts="-m -v -h --json --values --motor --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
+                --motor)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --dtr)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
                     return 0
                     ;;
                 --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --module)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
+                    return 0
+                    ;;
+                --log)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
+                    return 0
+                    ;;
+                --reconnect)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --address)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --quiet-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -793,13 +849,25 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__ports)
-            opts="-h --probe --all --json --profile --help"
+            opts="-m -h --probe --baud --protocol --module --all --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
-                --profile)
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --protocol)
+                    COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --module)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -m)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -811,16 +879,12 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__profiles)
-            opts="-h --json --profile --help"
+            opts="-h --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -829,7 +893,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__run)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --junit --profile --help"
+            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --junit --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -861,6 +925,10 @@ _tmclsh() {
                     ;;
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --module)
@@ -934,10 +1002,6 @@ _tmclsh() {
                     fi
                     return 0
                     ;;
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -946,7 +1010,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__scan)
-            opts="-m -v -h --addresses --first --json --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --timeout --log --local-echo --reconnect --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --addresses --first --json --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --timeout --log --local-echo --reconnect --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -982,6 +1046,10 @@ _tmclsh() {
                     ;;
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --timeout)
@@ -1020,10 +1088,6 @@ _tmclsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1032,7 +1096,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__sim)
-            opts="-v -h --protocol --pty --link --listen --modules --boot-loader --shared-line --baud --latency --state --adapter-echo --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --profile --help"
+            opts="-v -h --protocol --profile --pty --link --listen --modules --boot-loader --shared-line --baud --latency --state --adapter-echo --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1040,6 +1104,10 @@ _tmclsh() {
             case "${prev}" in
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --link)
@@ -1157,10 +1225,6 @@ _tmclsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1169,16 +1233,12 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot)
-            opts="-h --profile --help save diff restore help"
+            opts="-h --help save diff restore help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1187,7 +1247,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__diff)
-            opts="-m -v -h --json --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --json --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1219,6 +1279,10 @@ _tmclsh() {
                     ;;
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --module)
@@ -1254,10 +1318,6 @@ _tmclsh() {
                     return 0
                     ;;
                 --quiet-gap)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --profile)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1339,7 +1399,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__restore)
-            opts="-m -v -h --store --yes --dry-run --force --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --profile --help"
+            opts="-m -v -h --store --yes --dry-run --force --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1371,6 +1431,10 @@ _tmclsh() {
                     ;;
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --module)
@@ -1406,10 +1470,6 @@ _tmclsh() {
                     return 0
                     ;;
                 --quiet-gap)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
-                --profile)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1421,7 +1481,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__save)
-            opts="-m -v -h --force --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --profile --help"
+            opts="-m -v -h --force --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1453,6 +1513,10 @@ _tmclsh() {
                     ;;
                 --protocol)
                     COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --module)
@@ -1491,10 +1555,6 @@ _tmclsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1503,16 +1563,12 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__transcript)
-            opts="-h --profile --help to-rhai help"
+            opts="-h --help to-rhai help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
-                --profile)
-                    COMPREPLY=($(compgen -f "${cur}"))
-                    return 0
-                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1618,7 +1674,7 @@ _tmclsh_with_files() {
         esac
     done
     case "$prev" in
-        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--junit|--latency|--left-switch|--link|--listen|--local-echo|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--junit|--latency|--left-switch|--link|--listen|--local-echo|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--motor|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
     esac
     if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
         compopt -o filenames 2>/dev/null

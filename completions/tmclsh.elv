@@ -18,15 +18,15 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
     }
     var completions = [
         &'tmclsh'= {
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -c 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal'
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
             cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
             cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
@@ -70,46 +70,74 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;params'= {
-            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
-            cand --json 'Print one JSON document instead of the table (fields in docs/machine-output.md)'
-            cand -h 'Print help (see more with ''--help'')'
-            cand --help 'Print help (see more with ''--help'')'
-        }
-        &'tmclsh;profiles'= {
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
-            cand --json 'Print one JSON document instead (fields in docs/machine-output.md)'
-            cand -h 'Print help'
-            cand --help 'Print help'
-        }
-        &'tmclsh;ports'= {
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
-            cand --probe 'Ask each USB port (or each PORT named) which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
-            cand --all 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)'
-            cand --json 'Print one JSON document instead (fields in docs/machine-output.md)'
-            cand -h 'Print help'
-            cand --help 'Print help'
-        }
-        &'tmclsh;completions'= {
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
-            cand --install 'Write the script where the shell loads it from (bash: bash-completion''s directory under $XDG_DATA_HOME; zsh: $XDG_DATA_HOME/zsh/site-functions; fish: $XDG_CONFIG_HOME/fish) instead of printing it, and say where'
-            cand -h 'Print help'
-            cand --help 'Print help'
-        }
-        &'tmclsh;man'= {
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
-            cand --install 'Write the page to $XDG_DATA_HOME/man/man1/tmclsh.1 (~/.local/share/man/man1) instead of printing it, and say where'
-            cand -h 'Print help'
-            cand --help 'Print help'
-        }
-        &'tmclsh;run'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --motor 'With --values: only motor N''s axis parameters'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
             cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
             cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
+            cand --local-echo 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips'
+            cand --reconnect 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --json 'Print one JSON document instead of the table; not with --values (fields in docs/machine-output.md)'
+            cand --values 'Read the readable parameters (those whose name contains FILTER) from the module, with what each value means; the link is given as for any command (--port, --tcp, --sim)'
+            cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
+            cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
+            cand --keep-latency 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --binary 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+            cand -v 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
+            cand --verbose 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;profiles'= {
+            cand --json 'Print one JSON document instead (fields in docs/machine-output.md)'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
+        &'tmclsh;ports'= {
+            cand --baud 'With --probe: the bit rate to probe at (8N1)'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand -m 'With --probe: the address to ask (TMCL: 1 = address character A; SMD4: @N)'
+            cand --module 'With --probe: the address to ask (TMCL: 1 = address character A; SMD4: @N)'
+            cand --probe 'Ask each USB port (or each PORT named) which module is there: address --module at --baud in --protocol (TMCL: command 136 to address 1 at 9600 baud by default), each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
+            cand --all 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)'
+            cand --json 'Print one JSON document instead (fields in docs/machine-output.md)'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;completions'= {
+            cand --install 'Write the script where the shell loads it from (bash: bash-completion''s directory under $XDG_DATA_HOME; zsh: $XDG_DATA_HOME/zsh/site-functions; fish: $XDG_CONFIG_HOME/fish) instead of printing it, and say where'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
+        &'tmclsh;man'= {
+            cand --install 'Write the page to $XDG_DATA_HOME/man/man1/tmclsh.1 (~/.local/share/man/man1) instead of printing it, and say where'
+            cand -h 'Print help'
+            cand --help 'Print help'
+        }
+        &'tmclsh;run'= {
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
+            cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
+            cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
@@ -125,7 +153,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --max-time 'Wall-clock time after which the script is stopped, its motors too (exit code 1): 500ms, 30s, 2m, or milliseconds'
             cand --allow-dir 'A directory the script''s file functions may also reach (repeatable); by default they reach only the script''s directory and the working directory'
             cand --junit 'Write a JUnit XML report to FILE: one test case per `test("name", || …)` block of the script (the whole script as one case when it has none), failures with their message and script position. Written whatever the outcome; a failed block does not end the run'
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
             cand --keep-latency 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -154,13 +181,14 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help'
         }
         &'tmclsh;download'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
             cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
             cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
@@ -170,7 +198,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --reconnect 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
             cand --keep-latency 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -186,7 +213,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;snapshot'= {
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -h 'Print help'
             cand --help 'Print help'
             cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
@@ -195,13 +221,14 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'tmclsh;snapshot;save'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
             cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
             cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
@@ -211,7 +238,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --reconnect 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --force 'Replace FILE if it exists'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
@@ -227,13 +253,14 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;snapshot;diff'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
             cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
             cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
@@ -243,7 +270,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --reconnect 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --json 'Print one JSON document instead of the table (fields in docs/machine-output.md)'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
@@ -259,13 +285,14 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;snapshot;restore'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
             cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
             cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
@@ -275,7 +302,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --reconnect 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --store 'Afterwards make the written parameters permanent, after a confirmation: EEPROM (STAP/STGP) on TMCL modules; STORE on an SMD4, which saves its whole working configuration'
             cand --yes 'Confirm --store without asking (for scripts)'
             cand --dry-run 'Only print the lines that would be sent'
@@ -309,13 +335,14 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         }
         &'tmclsh;scan'= {
             cand --addresses 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each. Each reply is awaited 100 ms unless --timeout is set'
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
             cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
             cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
             cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
             cand --local-echo 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips'
@@ -325,7 +352,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --first 'Stop at the first module found, trying the addresses in ascending order'
             cand --json 'Print one JSON document instead of the table (fields in docs/machine-output.md), also when nothing answered'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
@@ -342,7 +368,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;transcript'= {
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -h 'Print help'
             cand --help 'Print help'
             cand to-rhai 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
@@ -366,6 +391,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         }
         &'tmclsh;sim'= {
             cand --protocol 'The protocol of the simulated module: a bus of TMCL modules (tmcl) or an SMD4 drive (smd4)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --link 'Keep the symlink PATH pointed at the current pseudo-terminal, as udev keeps /dev/serial/by-id names pointed at an adapter: after the console''s `unplug` it points at the new one (and is gone during the outage). An existing file that is not a symlink is refused'
             cand --listen 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed'
             cand --modules 'Modules on the simulated RS-485 bus: addresses, each optionally with its own profile (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`)'
@@ -392,7 +418,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --error-spelling 'Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic) or bare (-103)'
             cand --prefix-only 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)'
             cand --real-value-grid 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value'
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --pty 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
             cand --shared-line 'The modules hear each other''s replies, as on a real RS-485 bus: a module whose address equals the host address (GP 76, 2 by default) takes the others'' replies for commands and answers them. Every module drops a partial binary frame after 5 ms of quiet (the UART time-out of Trinamic''s firmware), shared line or not'
             cand --adapter-echo 'Hand every byte the host sends back to it, before the module''s answer, as a 2-wire RS-485 adapter without echo suppression does (tmclsh strips it: --local-echo)'
@@ -411,13 +436,14 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;config'= {
-            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
             cand --baud 'Serial bit rate (8N1)'
             cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
             cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
             cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
             cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
             cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand -m 'Address of the target module (1 = address character A)'
             cand --module 'Address of the target module (1 = address character A)'
             cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
@@ -427,7 +453,6 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --reconnect 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
-            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
             cand --keep-latency 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_tmclsh_global_optspecs
-    string join \n profile= c= value json keep-going port= baud= tcp= sim dtr= rts= rs485 rs485-delay= keep-latency protocol= m/module= timeout= echo= log= no-validate no-enter stay-ascii local-echo= binary reconnect= v/verbose address= prefix-comma quiet-gap= h/help V/version
+    string join \n c= value json keep-going port= baud= tcp= sim dtr= rts= rs485 rs485-delay= keep-latency protocol= profile= m/module= timeout= echo= log= no-validate no-enter stay-ascii local-echo= binary reconnect= v/verbose address= prefix-comma quiet-gap= h/help V/version
 end
 
 function __fish_tmclsh_needs_command
@@ -24,9 +24,8 @@ function __fish_tmclsh_using_subcommand
     contains -- $cmd[1] $argv
 end
 
-complete -c tmclsh -n "__fish_tmclsh_needs_command" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s c -d 'Execute LINE and exit (repeatable; executed in order). Without -c, lines are read from stdin when it is not a terminal' -r
-complete -c tmclsh -n "__fish_tmclsh_needs_command" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
@@ -34,6 +33,7 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -l rts -d 'RTS on opening th
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
@@ -75,26 +75,55 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "transcript" -d 'Turn 
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "sim" -d 'Serve the simulated module on a pseudo-terminal or TCP, with a control console on stdin'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "config" -d 'Show the settings in effect (port, baud, protocol, …) and where each comes from: the command line, the environment, tmclsh.toml, the user\'s config.toml, or built in'
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l motor -d 'With --values: only motor N\'s axis parameters' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l baud -d 'Serial bit rate (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l json -d 'Print one JSON document instead of the table (fields in docs/machine-output.md)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s m -l module -d 'Address of the target module (1 = address character A)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
+line\t'The whole line echoed after its end'
+none\t'No echo, only the reply'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
+on\t'The adapter echoes: strip it'
+off\t'It does not'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l reconnect -d 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l json -d 'Print one JSON document instead of the table; not with --values (fields in docs/machine-output.md)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l values -d 'Read the readable parameters (those whose name contains FILTER) from the module, with what each value means; the link is given as for any command (--port, --tcp, --sim)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l keep-latency -d 'Leave an FTDI adapter\'s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l no-enter -d 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l stay-ascii -d 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -l json -d 'Print one JSON document instead (fields in docs/machine-output.md)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -s h -l help -d 'Print help'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l probe -d 'Ask each USB port (or each PORT named) which TMCL module is there: command 136 to address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l baud -d 'With --probe: the bit rate to probe at (8N1)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
+smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s m -l module -d 'With --probe: the address to ask (TMCL: 1 = address character A; SMD4: @N)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l probe -d 'Ask each USB port (or each PORT named) which module is there: address --module at --baud in --protocol (TMCL: command 136 to address 1 at 9600 baud by default), each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l all -d 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l json -d 'Print one JSON document instead (fields in docs/machine-output.md)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l install -d 'Write the script where the shell loads it from (bash: bash-completion\'s directory under $XDG_DATA_HOME; zsh: $XDG_DATA_HOME/zsh/site-functions; fish: $XDG_CONFIG_HOME/fish) instead of printing it, and say where'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -s h -l help -d 'Print help'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand man" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand man" -l install -d 'Write the page to $XDG_DATA_HOME/man/man1/tmclsh.1 (~/.local/share/man/man1) instead of printing it, and say where'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand man" -s h -l help -d 'Print help'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
@@ -102,6 +131,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l rts -d 'RTS on ope
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
@@ -120,7 +150,6 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-memory -d 'Mem
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-time -d 'Wall-clock time after which the script is stopped, its motors too (exit code 1): 500ms, 30s, 2m, or milliseconds' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l allow-dir -d 'A directory the script\'s file functions may also reach (repeatable); by default they reach only the script\'s directory and the working directory' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l junit -d 'Write a JUnit XML report to FILE: one test case per `test("name", || …)` block of the script (the whole script as one case when it has none), failures with their message and script position. Written whatever the outcome; a failed block does not end the run' -r -F
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l keep-latency -d 'Leave an FTDI adapter\'s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -138,7 +167,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -l list -d 'Print the
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand asm" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -s h -l help -d 'Print help'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
@@ -146,6 +175,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l rts -d 'RTS o
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
@@ -158,7 +188,6 @@ off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l reconnect -d 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l keep-latency -d 'Leave an FTDI adapter\'s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -170,13 +199,12 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l run -d 'Start
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -f -a "save" -d 'Read every readable parameter into FILE (TOML, keyed by parameter name)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -f -a "diff" -d 'Show the settings that differ between FILE and the module, or between FILE and FILE2 (exit code 1 when they differ)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -f -a "restore" -d 'Write FILE\'s settings back (unit mode and limits first; SMD4: resolution, currents and frequencies first, the mode last, only while the motor stands still), verifying each by reading it back; read-only, live and link settings are skipped and listed'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_seen_subcommand_from save diff restore help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
@@ -184,6 +212,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
@@ -196,7 +225,6 @@ off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l reconnect -d 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l force -d 'Replace FILE if it exists'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
@@ -208,7 +236,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
@@ -216,6 +244,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
@@ -228,7 +257,6 @@ off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l reconnect -d 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l json -d 'Print one JSON document instead of the table (fields in docs/machine-output.md)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
@@ -240,7 +268,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
@@ -248,6 +276,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
@@ -260,7 +289,6 @@ off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l reconnect -d 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l store -d 'Afterwards make the written parameters permanent, after a confirmation: EEPROM (STAP/STGP) on TMCL modules; STORE on an SMD4, which saves its whole working configuration'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l yes -d 'Confirm --store without asking (for scripts)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l dry-run -d 'Only print the lines that would be sent'
@@ -280,7 +308,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "restore" -d 'Write FILE\'s settings back (unit mode and limits first; SMD4: resolution, currents and frequencies first, the mode last, only while the motor stands still), verifying each by reading it back; read-only, live and link settings are skipped and listed'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l addresses -d 'Addresses to try: numbers and (TMCL) letters A..Z, single or as ranges (1-26, A,C,30-40). TMCL: 1-26 by default; addresses above 26 have no ASCII character and are tried with binary frames. SMD4: 1-247 by default, one @N SYS:FW each. Each reply is awaited 100 ms unless --timeout is set' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
@@ -288,6 +316,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l rts -d 'RTS on op
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l log -d 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l local-echo -d 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips' -r -f -a "auto\t'Find out at open: the first request that comes straight back, byte for byte'
@@ -300,7 +329,6 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l echo -d 'Set the 
 line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l first -d 'Stop at the first module found, trying the addresses in ascending order'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l json -d 'Print one JSON document instead of the table (fields in docs/machine-output.md), also when nothing answered'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
@@ -313,7 +341,6 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l binary -d 'Talk t
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -f -a "to-rhai" -d 'Write a Rhai script replaying the commands of LOG, with assert_eq on the values received'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and not __fish_seen_subcommand_from to-rhai help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
@@ -325,6 +352,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_see
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand transcript; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l protocol -d 'The protocol of the simulated module: a bus of TMCL modules (tmcl) or an SMD4 drive (smd4)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l link -d 'Keep the symlink PATH pointed at the current pseudo-terminal, as udev keeps /dev/serial/by-id names pointed at an adapter: after the console\'s `unplug` it points at the new one (and is gone during the outage). An existing file that is not a symlink is refused' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l listen -d 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l modules -d 'Modules on the simulated RS-485 bus: addresses, each optionally with its own profile (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`)' -r
@@ -354,7 +382,6 @@ bare\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l prefix-only -d 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)' -r -f -a "attached\t''
 comma\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l real-value-grid -d 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l pty -d 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l shared-line -d 'The modules hear each other\'s replies, as on a real RS-485 bus: a module whose address equals the host address (GP 76, 2 by default) takes the others\' replies for commands and answers them. Every module drops a partial binary frame after 5 ms of quiet (the UART time-out of Trinamic\'s firmware), shared line or not'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l adapter-echo -d 'Hand every byte the host sends back to it, before the module\'s answer, as a 2-wire RS-485 adapter without echo suppression does (tmclsh strips it: --local-echo)'
@@ -369,7 +396,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-prefix -d
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l scientific-positions -d 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l tzw-reply-ms -d 'Report MOTOR:TZW in milliseconds, as its example does (its argument is in seconds)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to its built-in simulated module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
@@ -377,6 +404,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l rts -d 'RTS on 
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
 smd4\t'AML SMD4 text protocol'"
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -s m -l module -d 'Address of the target module (1 = address character A)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l timeout -d 'Milliseconds to wait for a reply before giving up (exit code 3)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l echo -d 'Set the target module\'s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)' -r -f -a "char\t'Every character echoed as it arrives'
@@ -389,7 +417,6 @@ off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l reconnect -d 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l keep-latency -d 'Leave an FTDI adapter\'s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'

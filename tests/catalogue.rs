@@ -118,11 +118,13 @@ fn profiles_shows_one_in_full_by_name_alias_or_file() {
     assert!(ok(&["profiles", "generic"]).contains("I/O (bank/port) none: no port map"));
     let said = refused(&["profiles", "tmcm-611"]);
     assert!(said.contains("did you mean tmcm-6110?"), "{said}");
-    let said = refused(&["profiles", "--profile", "tmcm-6110"]);
+    let said = refused(&["--profile", "tmcm-6110", "profiles"]);
     assert!(
         said.contains("does not apply to `tmclsh profiles`"),
         "{said}"
     );
+    let said = refused(&["profiles", "--profile", "tmcm-6110"]);
+    assert!(said.contains("'--profile'"), "{said}");
 }
 
 #[test]
@@ -164,7 +166,7 @@ fn params_of_each_built_in_profile_by_name_are_those_of_its_file() {
 
 #[test]
 fn an_unknown_profile_name_is_refused_with_the_nearest() {
-    let said = refused(&["--profile", "pd-1114", "-c", "GAP 1, 0"]);
+    let said = refused(&["--sim", "--profile", "pd-1114", "-c", "GAP 1, 0"]);
     assert!(
         said.contains("no built-in profile or file 'pd-1114'"),
         "{said}"
@@ -179,7 +181,7 @@ fn an_unknown_profile_name_is_refused_with_the_nearest() {
 
 #[test]
 fn an_alias_drives_its_module() {
-    let out = run(&["--profile", "pd-1141", "-c", "GAP 1, 0"]);
+    let out = run(&["--sim", "--profile", "pd-1141", "-c", "GAP 1, 0"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(stdout(&out), "BA 100 0\n");
     assert!(
@@ -191,20 +193,21 @@ fn an_alias_drives_its_module() {
 
 #[test]
 fn motor_numbers_are_the_modules_own() {
-    ok(&["--profile", "tmcm-6110", "-c", "GAP 4, 5"]);
-    let said = refused(&["--profile", "tmcm-6110", "-c", "GAP 4, 6"]);
+    ok(&["--sim", "--profile", "tmcm-6110", "-c", "GAP 4, 5"]);
+    let said = refused(&["--sim", "--profile", "tmcm-6110", "-c", "GAP 4, 6"]);
     assert!(
         said.contains("motor 6 does not exist: the TMCM-6110 has 6 motors (0..5)"),
         "{said}"
     );
-    ok(&["--profile", "tmcm-3110", "-c", "ROR 2, 0"]);
-    let said = refused(&["--profile", "tmcm-1141", "-c", "MVP ABS, 1, 100"]);
+    ok(&["--sim", "--profile", "tmcm-3110", "-c", "ROR 2, 0"]);
+    let said = refused(&["--sim", "--profile", "tmcm-1141", "-c", "MVP ABS, 1, 100"]);
     assert!(said.contains("the TMCM-1141 has one motor"), "{said}");
 }
 
 #[test]
 fn io_ports_and_banks_come_from_the_profile() {
     ok(&[
+        "--sim",
         "--profile",
         "tmcm-6110",
         "-c",
@@ -212,18 +215,26 @@ fn io_ports_and_banks_come_from_the_profile() {
         "-c",
         "GIO 8, 1",
     ]);
-    let said = refused(&["--profile", "tmcm-6110", "-c", "SIO 8, 2, 1"]);
+    let said = refused(&["--sim", "--profile", "tmcm-6110", "-c", "SIO 8, 2, 1"]);
     assert!(
         said.contains("the TMCM-6110 has no I/O port 8 in bank 2; it has bank 2 ports 0..7"),
         "{said}"
     );
-    let said = refused(&["-c", "SIO 3, 0, 1"]);
+    let said = refused(&["--sim", "-c", "SIO 3, 0, 1"]);
     assert!(said.contains("port 3 of bank 0 is IN3, an input"), "{said}");
-    let said = refused(&["-c", "GIO 0, 0"]);
+    let said = refused(&["--sim", "-c", "GIO 0, 0"]);
     assert!(said.contains("bank 0 ports 3..8"), "{said}");
     // STGP and RSGP store user variables (bank 2) only; bank-0 settings are SGP's.
-    ok(&["-c", "SGP 0, 2, 7", "-c", "STGP 0, 2", "-c", "RSGP 0, 2"]);
-    let said = refused(&["-c", "STGP 67, 0"]);
+    ok(&[
+        "--sim",
+        "-c",
+        "SGP 0, 2, 7",
+        "-c",
+        "STGP 0, 2",
+        "-c",
+        "RSGP 0, 2",
+    ]);
+    let said = refused(&["--sim", "-c", "STGP 67, 0"]);
     assert!(
         said.contains("STGP accepts bank 2 only on the TMCM-142, not bank 0"),
         "{said}"
@@ -232,17 +243,25 @@ fn io_ports_and_banks_come_from_the_profile() {
 
 #[test]
 fn the_ascii_allow_list_is_the_modules() {
-    let said = refused(&["--profile", "tmcm-1140", "-c", "SAC 0, 0, 0"]);
+    let said = refused(&["--sim", "--profile", "tmcm-1140", "-c", "SAC 0, 0, 0"]);
     assert!(
         said.contains("SAC (29) is not a command of the TMCM-1140"),
         "{said}"
     );
-    let said = refused(&["--profile", "tmcm-1140", "-c", "CALC ADD, 1"]);
+    let said = refused(&["--sim", "--profile", "tmcm-1140", "-c", "CALC ADD, 1"]);
     assert!(
         said.contains("the TMCM-1140's ASCII command list lacks it") && said.contains(":bin"),
         "{said}"
     );
-    ok(&["--profile", "tmcm-1140", "-c", ":bin", "-c", "CALC ADD, 1"]);
+    ok(&[
+        "--sim",
+        "--profile",
+        "tmcm-1140",
+        "-c",
+        ":bin",
+        "-c",
+        "CALC ADD, 1",
+    ]);
     // A profile file's own list: SIO left out is refused in ASCII mode, sent in binary.
     let dir = tempdir();
     let file = dir.join("no-sio.toml");
@@ -253,17 +272,25 @@ fn the_ascii_allow_list_is_the_modules() {
     )
     .unwrap();
     let file = file.to_str().unwrap();
-    let said = refused(&["--profile", file, "-c", "SIO 0, 2, 1"]);
+    let said = refused(&["--sim", "--profile", file, "-c", "SIO 0, 2, 1"]);
     assert!(
         said.contains("the TMCM-9's ASCII command list lacks it"),
         "{said}"
     );
-    ok(&["--profile", file, "-c", ":bin", "-c", "SIO 0, 2, 1"]);
+    ok(&[
+        "--sim",
+        "--profile",
+        file,
+        "-c",
+        ":bin",
+        "-c",
+        "SIO 0, 2, 1",
+    ]);
 }
 
 #[test]
 fn a_conditional_range_sends_with_a_notice() {
-    let out = run(&["-c", "SAP max_positioning_speed, 0, 40000000"]);
+    let out = run(&["--sim", "-c", "SAP max_positioning_speed, 0, 40000000"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(stdout(&out), "BA 100 40000000\n");
     assert!(
@@ -272,14 +299,15 @@ fn a_conditional_range_sends_with_a_notice() {
         "{}",
         stderr(&out)
     );
-    let out = run(&["-c", "SAP max_positioning_speed, 0, 4000"]);
+    let out = run(&["--sim", "-c", "SAP max_positioning_speed, 0, 4000"]);
     assert!(!stderr(&out).contains("outside"), "{}", stderr(&out));
-    refused(&["-c", "ROR 0, -1"]);
+    refused(&["--sim", "-c", "ROR 0, -1"]);
 }
 
 #[test]
 fn the_generic_profile_checks_commands_and_sends_parameter_numbers() {
     let out = run(&[
+        "--sim",
         "--profile",
         "generic",
         "-c",
@@ -304,12 +332,18 @@ fn the_generic_profile_checks_commands_and_sends_parameter_numbers() {
         said.contains("refused 'ASAP 200, 0, 5': status 3"),
         "{said}"
     );
-    let said = refused(&["--profile", "generic", "-c", "GAP max_positioning_speed, 0"]);
+    let said = refused(&[
+        "--sim",
+        "--profile",
+        "generic",
+        "-c",
+        "GAP max_positioning_speed, 0",
+    ]);
     assert!(
         said.contains("the generic TMCL module profile has no parameter names"),
         "{said}"
     );
-    let said = refused(&["--profile", "generic", "-c", "GAP 4, 6"]);
+    let said = refused(&["--sim", "--profile", "generic", "-c", "GAP 4, 6"]);
     assert!(said.contains("motor 6 does not exist"), "{said}");
 }
 
@@ -387,7 +421,7 @@ fn a_binary_only_module_is_talked_to_in_binary_frames() {
 
 #[test]
 fn help_on_ascii_mode_names_the_modules_own_list() {
-    let help = |profile: &str| ok(&["--profile", profile, "-c", ":help ascii"]);
+    let help = |profile: &str| ok(&["--sim", "--profile", profile, "-c", ":help ascii"]);
     let own = help("tmcm-142");
     assert!(
         own.contains("The TMCM-142 takes only ROR ROL") && own.contains(" SAC "),

@@ -140,14 +140,14 @@ fn the_usage_block_in_the_docs_is_the_real_help() {
 #[test]
 fn a_transposition_is_suggested_wherever_names_are() {
     for (args, suggestion) in [
-        (&["-c", "GPA 1, 0"][..], "did you mean GAP?"),
+        (&["--sim", "-c", "GPA 1, 0"][..], "did you mean GAP?"),
         (
-            &["-c", "GAP acutal_position, 0"],
+            &["--sim", "-c", "GAP acutal_position, 0"],
             "did you mean actual_position?",
         ),
-        (&["-c", ":prmas"], "did you mean :params?"),
+        (&["--sim", "-c", ":prmas"], "did you mean :params?"),
         (
-            &["--protocol", "smd4", "-c", "MOTRO:VMAX"],
+            &["--sim", "--protocol", "smd4", "-c", "MOTRO:VMAX"],
             "did you mean MOTOR:VMAX?",
         ),
     ] {
@@ -189,6 +189,7 @@ fn usage_errors_show_escape_sequences_from_arguments_escaped() {
 mod config;
 mod doc_examples;
 mod examples;
+mod first_hour_shell;
 mod forgiving;
 mod helper_text;
 mod history;

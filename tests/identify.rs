@@ -85,7 +85,7 @@ fn every_built_in_profile_s_module_is_identified_and_talked_to_with_its_tables()
 #[test]
 fn without_an_identified_module_the_default_profile_refuses_a_six_axis_motor() {
     // The control for the test above: motor 5 needs the TMCM-6110's own profile.
-    let out = run(&["-c", "GAP 1, 5"]);
+    let out = run(&["--sim", "-c", "GAP 1, 5"]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));
 }
 

@@ -411,7 +411,7 @@ fn prefix_comma() {
 #[test]
 fn quiet_gap() {
     // The reply's last line, as the built-in drive sends it.
-    let whole = run(&["--protocol", "smd4", "-c", "COMS:NET:IPCONF"]);
+    let whole = run(&["--sim", "--protocol", "smd4", "-c", "COMS:NET:IPCONF"]);
     assert!(stdout(&whole).contains("DHCP State"), "{}", stdout(&whole));
     // A drive on a slow line: a byte every 8 ms, so a 1 ms quiet gap ends the reply after its
     // first line. One drive per cell: the rest of a cut reply is still on its way afterwards.

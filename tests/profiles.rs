@@ -403,10 +403,10 @@ fn every_profile_drives_exactly_its_declared_axes() {
         let axes = int(meta(&t), "axes").unwrap_or(1);
         let file = path.to_str().unwrap();
         let last = format!("GAP 1, {}", axes - 1);
-        let out = run(&["--profile", file, "-c", &last]);
+        let out = run(&["--sim", "--profile", file, "-c", &last]);
         assert_eq!(code(&out), 0, "{file} {last}: {}", stderr(&out));
         let beyond = format!("GAP 1, {axes}");
-        let out = run(&["--profile", file, "-c", &beyond]);
+        let out = run(&["--sim", "--profile", file, "-c", &beyond]);
         assert_eq!(code(&out), 2, "{file} {beyond} must be refused");
         let count = if axes == 1 {
             "has one motor".to_string()
@@ -506,8 +506,20 @@ fn the_checks_catch_a_doctored_profile() {
     let dir = tempdir();
     let file = dir.join("doctored.toml");
     std::fs::write(&file, &doctored).unwrap();
-    let out = run(&["--profile", file.to_str().unwrap(), "-c", "GAP 1, 2"]);
+    let out = run(&[
+        "--sim",
+        "--profile",
+        file.to_str().unwrap(),
+        "-c",
+        "GAP 1, 2",
+    ]);
     assert_eq!(code(&out), 2, "{}", stdout(&out));
-    let out = run(&["--profile", path.to_str().unwrap(), "-c", "GAP 1, 2"]);
+    let out = run(&[
+        "--sim",
+        "--profile",
+        path.to_str().unwrap(),
+        "-c",
+        "GAP 1, 2",
+    ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
 }

@@ -150,7 +150,7 @@ fn download_refuses_bad_programs_before_touching_the_module() {
     ]);
     assert_eq!(code(&out), 2, "refused, not a timeout: {}", stderr(&out));
     assert!(stderr(&out).contains("bad.tmc:1:"), "{}", stderr(&out));
-    let out = run(&["download", &test2(), "--protocol", "smd4"]);
+    let out = run(&["--sim", "download", &test2(), "--protocol", "smd4"]);
     assert_eq!(code(&out), 2);
     assert!(stderr(&out).contains("TMCL modules only"));
 }
@@ -158,6 +158,7 @@ fn download_refuses_bad_programs_before_touching_the_module() {
 #[test]
 fn the_built_in_module_runs_programs_too() {
     let out = run(&[
+        "--sim",
         "-c",
         &format!(":download {} --run", test2()),
         "-c",

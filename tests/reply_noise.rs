@@ -465,7 +465,7 @@ fn script_print_escapes_what_it_is_given() {
          debug(\"nul\\x00\");\n",
     )
     .unwrap();
-    let out = client(&[], &["run", &script.display().to_string()], "");
+    let out = client(&[], &["--sim", "run", &script.display().to_string()], "");
     assert_exit(&out, 0);
     assert_nothing_raw(&out);
     assert_eq!(

@@ -390,7 +390,7 @@ fn absurd_times_are_refused_before_any_clock_sees_them() {
         ":watch actual_position 300000000000y",
         record.as_str(),
     ] {
-        let out = run(&["-c", line]);
+        let out = run(&["--sim", "-c", line]);
         assert_eq!(code(&out), 2, "{line}: {}", stderr(&out));
         assert!(
             stderr(&out).contains("'300000000000y' is longer than 7 days"),

@@ -105,7 +105,7 @@ fn every_api_function_against_a_simulated_module() {
 #[test]
 fn a_failed_assertion_names_file_line_column_and_both_values() {
     let path = script("fail.rhai", "let x = 1;\n\nassert_eq(gap(4, 0), 200);\n");
-    let out = run(&["run", &path]);
+    let out = run(&["--sim", "run", &path]);
     assert_eq!(code(&out), 1);
     let err = stderr(&out);
     assert!(
@@ -115,7 +115,7 @@ fn a_failed_assertion_names_file_line_column_and_both_values() {
         "{err}"
     );
     let path = script("near.rhai", "assert_near(10, 20, 3);");
-    let err = stderr(&run(&["run", &path]));
+    let err = stderr(&run(&["--sim", "run", &path]));
     assert!(
         err.contains(
             ":1:1: assert_near failed: left = 10, right = 20, tolerance = 3 (difference 10)"
@@ -123,7 +123,7 @@ fn a_failed_assertion_names_file_line_column_and_both_values() {
         "{err}"
     );
     let path = script("msg.rhai", "\n  assert(false, \"the door is open\");");
-    let err = stderr(&run(&["run", &path]));
+    let err = stderr(&run(&["--sim", "run", &path]));
     assert!(
         err.contains(":2:3: assertion failed: the door is open"),
         "{err}"
@@ -163,11 +163,11 @@ fn each_exit_code() {
     ];
     for (name, source, expected, message) in cases {
         let path = script(name, source);
-        let out = run(&["run", &path]);
+        let out = run(&["--sim", "run", &path]);
         assert_eq!(code(&out), expected, "{name}: {}", stderr(&out));
         assert!(stderr(&out).contains(message), "{name}: {}", stderr(&out));
     }
-    let missing = run(&["run", "/no/such/script.rhai"]);
+    let missing = run(&["--sim", "run", "/no/such/script.rhai"]);
     assert_eq!(code(&missing), 2);
     assert!(stderr(&missing).contains("cannot read script /no/such/script.rhai"));
 }
@@ -265,7 +265,7 @@ fn signal_a_sleeping_script(signal: nix::sys::signal::Signal, expected: i32) -> 
 #[test]
 fn a_runaway_loop_hits_the_operation_cap() {
     let path = script("loop.rhai", "let n = 0;\nloop { n += 1; }\n");
-    let out = run(&["run", &path, "--max-operations", "10000"]);
+    let out = run(&["--sim", "run", &path, "--max-operations", "10000"]);
     assert_eq!(code(&out), 1);
     assert!(
         stderr(&out)
@@ -274,7 +274,7 @@ fn a_runaway_loop_hits_the_operation_cap() {
         stderr(&out)
     );
     let path = script("deep.rhai", "fn f(n) { f(n + 1) }\nf(0);\n");
-    let out = run(&["run", &path, "--max-call-depth", "20"]);
+    let out = run(&["--sim", "run", &path, "--max-call-depth", "20"]);
     assert_eq!(code(&out), 1);
     assert!(
         stderr(&out).contains("calls nested too deeply"),
@@ -295,7 +295,7 @@ fn a_value_of_the_wrong_type_is_named_with_its_article() {
             "a parameter is a number or a name, not a map",
         ),
     ] {
-        let out = run(&["run", &script("type.rhai", source)]);
+        let out = run(&["--sim", "run", &script("type.rhai", source)]);
         assert_eq!(code(&out), 2, "{}", stderr(&out));
         assert!(stderr(&out).contains(said), "{}", stderr(&out));
     }
@@ -304,16 +304,16 @@ fn a_value_of_the_wrong_type_is_named_with_its_article() {
 #[test]
 fn scripts_cannot_import_or_eval() {
     let path = script("import.rhai", "import \"os\" as os;");
-    let out = run(&["run", &path]);
+    let out = run(&["--sim", "run", &path]);
     assert_ne!(code(&out), 0);
     let path = script("eval.rhai", "eval(\"1\");");
-    let out = run(&["run", &path]);
+    let out = run(&["--sim", "run", &path]);
     assert_eq!(code(&out), 2, "eval is not even a symbol: {}", stderr(&out));
 }
 
 #[test]
 fn example_commission() {
-    let out = run(&["run", &example("commission.rhai"), "--", "7", "3"]);
+    let out = run(&["--sim", "run", &example("commission.rhai"), "--", "7", "3"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(stdout(&out).contains("max_current = 7 (stored)"));
     assert!(stdout(&out).contains("commissioned: stored values verified after restore"));
@@ -347,7 +347,7 @@ fn example_homing_in_each_mode() {
             stdout(&out)
         );
     }
-    let out = run(&["run", &example("homing.rhai"), "--", "1", "300"]);
+    let out = run(&["--sim", "run", &example("homing.rhai"), "--", "1", "300"]);
     assert_eq!(code(&out), 1, "no switch connected: the search times out");
     assert!(
         stderr(&out).contains(
@@ -361,6 +361,7 @@ fn example_homing_in_each_mode() {
 #[test]
 fn example_back_and_forth() {
     let out = run(&[
+        "--sim",
         "run",
         &example("back_and_forth.rhai"),
         "--",
@@ -438,6 +439,7 @@ fn example_multi_axis_homes_and_moves_three_axes_of_a_tmcm_6110() {
     }
     // Without switches the search finds nothing, and says where to look.
     let out = run(&[
+        "--sim",
         "run",
         &example("multi_axis.rhai"),
         "--profile",

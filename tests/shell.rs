@@ -417,7 +417,7 @@ fn binary_direct_mode_after_bin() {
 
 #[test]
 fn the_built_in_simulator_needs_no_port() {
-    let out = run(&["-c", "GAP 4, 0", "-c", "MVP ABS, 0, 1000"]);
+    let out = run(&["--sim", "-c", "GAP 4, 0", "-c", "MVP ABS, 0, 1000"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(lines(&out), ["BA 100 1000000", "BA 100 1000"]);
 }

@@ -178,7 +178,7 @@ fn a_refusal_the_module_sends_is_counted_as_a_device_error() {
     let script = dir.join("refused.rhai");
     let reader = "let names = [];\nfn read(names, i) { send(\"GAP 200, 0\") }\n";
     std::fs::write(&script, script_reading(reader, 1)).unwrap();
-    let out = run(&["run", script.to_str().unwrap(), "--", "7", "1"]);
+    let out = run(&["--sim", "run", script.to_str().unwrap(), "--", "7", "1"]);
     let _ = std::fs::remove_dir_all(&dir);
     let mut counts = Counts::default();
     let truth = ["0".to_string()];

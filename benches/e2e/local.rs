@@ -11,7 +11,8 @@ fn gap_loop(n: u32, log: Option<&std::path::Path>) -> crate::proc::Finished {
     let mut command = Command::new(tmclsh());
     command
         .arg("run")
-        .arg(repo_file("benches/e2e/gap_loop.rhai"));
+        .arg(repo_file("benches/e2e/gap_loop.rhai"))
+        .arg("--sim");
     if let Some(log) = log {
         command.arg("--log").arg(log);
     }

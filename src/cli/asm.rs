@@ -19,6 +19,9 @@ pub(super) struct AsmArgs {
     /// Print the listing: address, the 7 instruction bytes and the source line.
     #[arg(long)]
     pub list: bool,
+    /// The module's tables (its program memory, its commands).
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
 }
 
 pub(super) fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {

@@ -17,22 +17,24 @@ use crate::link::line::{LineOptions, Modem, Rs485};
 use crate::session::transcript::Header;
 use crate::session::{LocalEcho, SessionOptions, Transcript};
 
+use super::link_kinds::{self, SIM};
 use super::target::{Target, is_log_dir, log_file};
 
-/// Where the module is: a serial port, a TCP address, or (neither) the built-in simulator.
+/// Where the module is: a serial port, a TCP address, or the built-in simulator (`--sim`; the
+/// interactive shell's when nothing is given). The kinds of link are listed in `link_kinds`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ConnectionArgs {
-    /// Serial port of the module (e.g. /dev/ttyUSB0); without --port or --tcp, tmclsh talks to
-    /// its built-in simulated module.
+    /// Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the
+    /// interactive shell starts (on the built-in simulated module).
     // Not `conflicts_with = "tcp"`: clap would count TMCLSH_PORT as given and refuse every --tcp
     // while it is set; `relevance` refuses the two on one command line instead.
-    #[arg(long, value_name = "PATH", env = "TMCLSH_PORT")]
+    #[arg(long, value_name = "PATH", env = "TMCLSH_PORT", value_parser = parse_port)]
     pub port: Option<String>,
     /// Serial bit rate (8N1).
     #[arg(long, value_name = "N", env = "TMCLSH_BAUD", default_value_t = 9600, value_parser = parse_baud)]
     pub baud: u32,
     /// TCP address of the module or of a serial server (HOST:PORT).
-    #[arg(long, value_name = "HOST:PORT")]
+    #[arg(long, value_name = "HOST:PORT", env = "TMCLSH_TCP")]
     pub tcp: Option<String>,
     /// Talk to the built-in simulated module: the explicit choice a command run without a
     /// terminal needs, so that no script passes against the simulator by accident.
@@ -67,6 +69,36 @@ pub struct LineArgs {
     pub keep_latency: bool,
 }
 
+/// A `--port` value (also `port` in a configuration file, `TMCLSH_PORT`): a device, never a
+/// TCP address, which would otherwise be opened as a file of that name.
+fn parse_port(text: &str) -> Result<String, String> {
+    if looks_like_tcp(text) {
+        return Err(format!(
+            "{text} is a TCP address (HOST:PORT), not a serial port: give it with --tcp (or \
+             TMCLSH_TCP, or tcp = \"{text}\" in tmclsh.toml)"
+        ));
+    }
+    Ok(text.to_string())
+}
+
+/// Whether `text` has the shape `HOST:PORT` (a name or IPv4 address, or `[IPv6]`, then a port
+/// number), which no device path or `usb:` name has.
+fn looks_like_tcp(text: &str) -> bool {
+    let Some((host, port)) = text.rsplit_once(':') else {
+        return false;
+    };
+    let bracketed = host.starts_with('[') && host.ends_with(']') && host.len() > 2;
+    let named = !host.is_empty()
+        && host
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '.' || c == '-' || c == '_');
+    !port.is_empty()
+        && port.len() <= 5
+        && port.chars().all(|c| c.is_ascii_digit())
+        && !host.eq_ignore_ascii_case("usb")
+        && (bracketed || named)
+}
+
 fn modem(text: &str) -> Result<Modem, String> {
     text.parse()
         .map_err(|e: crate::link::line::SettingError| e.to_string())
@@ -95,7 +127,7 @@ pub const BAUD_RANGE: std::ops::RangeInclusive<u32> = 50..=12_000_000;
 /// A `--baud` value (also `baud` in a configuration file, `TMCLSH_BAUD`): a whole number in
 /// [`BAUD_RANGE`], refused otherwise before anything is opened (0 used to reach the serial link
 /// after the module had been put into ASCII mode).
-fn parse_baud(text: &str) -> Result<u32, String> {
+pub(super) fn parse_baud(text: &str) -> Result<u32, String> {
     let hint = format!(
         "a bit rate is a whole number from {} to {}, such as 9600 or 115200",
         BAUD_RANGE.start(),
@@ -149,8 +181,8 @@ impl Args for CommandLine {
 }
 
 /// The session flags of every dialect (`--address` …), each dialect's under the help heading it
-/// sets (which, as with any flattened group, stays for the options after it). Their values are
-/// read by the dialect from the [`CommandLine`].
+/// sets; the heading is reset after them, so that a subcommand's own options declared after the
+/// group stay under "Options". Their values are read by the dialect from the [`CommandLine`].
 #[derive(Debug, Clone)]
 pub struct DialectFlags;
 
@@ -166,7 +198,10 @@ impl FromArgMatches for DialectFlags {
 
 impl Args for DialectFlags {
     fn augment_args(cmd: Command) -> Command {
-        DIALECTS.iter().fold(cmd, |cmd, d| (d.session_flags)(cmd))
+        DIALECTS
+            .iter()
+            .fold(cmd, |cmd, d| (d.session_flags)(cmd))
+            .next_help_heading(None::<&str>)
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {
@@ -317,29 +352,6 @@ impl SessionArgs {
     }
 }
 
-impl ConnectionArgs {
-    /// Whether the built-in simulator is meant.
-    pub fn is_builtin(&self) -> bool {
-        self.port.is_none() && self.tcp.is_none()
-    }
-
-    /// Where the link goes (a `usb:` name resolved to its device file).
-    pub fn target(&self) -> Result<Target, Failure> {
-        Target::of(self.port.as_deref(), self.tcp.as_deref())
-    }
-
-    /// Opens the link: the TCP connection (--tcp, which only the command line gives, wins over a
-    /// TMCLSH_PORT), the serial port, or the built-in simulator of `config`'s dialect.
-    pub fn open(
-        &self,
-        config: &dyn DialectConfig,
-        timeout: Duration,
-    ) -> Result<Box<dyn Link>, Failure> {
-        self.target()?
-            .open_line(self.baud, &self.line.options(), config, timeout)
-    }
-}
-
 /// Everything that says which module to talk to and how: flattened, the same way, into the shell
 /// and every subcommand that opens a session in either dialect.
 #[derive(Debug, Clone, clap::Args)]
@@ -353,6 +365,9 @@ pub struct ModuleArgs {
     /// The protocol it speaks.
     #[command(flatten)]
     pub dialect: DialectArgs,
+    /// The module's tables.
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
     /// How requests are sent and checked.
     #[command(flatten)]
     pub session: SessionArgs,
@@ -361,8 +376,9 @@ pub struct ModuleArgs {
     pub flags: DialectFlags,
 }
 
-/// Who learns that the built-in simulator answers: a command run without a terminal says so on
-/// stderr, the REPL in its banner.
+/// Who the session is for: a command run without a terminal needs a link chosen (the built-in
+/// simulator only by `--sim`), the REPL opens on the simulator when none is, saying so in its
+/// banner.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Audience {
     /// A command that runs to its end: the notice goes to stderr.
@@ -385,16 +401,37 @@ impl ModuleArgs {
         self.dialect.protocol
     }
 
-    /// Opens the link, saying on stderr when a batch command is served by the built-in
-    /// simulator (so nobody mistakes its answers for hardware's).
-    pub fn link(
-        &self,
-        config: &dyn DialectConfig,
-        timeout: Duration,
-        audience: Audience,
-    ) -> Result<Box<dyn Link>, Failure> {
-        let target = self.connection.target()?;
-        self.link_to(&target, config, timeout, audience)
+    /// The link chosen (see `link_kinds`): the id of its kind, `sim`, or `None`; exit 2 when
+    /// two of one source name different links.
+    fn chosen(&self) -> Result<Option<&'static str>, Failure> {
+        link_kinds::chosen(&self.command_line.0).map_err(|why| Failure::new(Exit::Refused, why))
+    }
+
+    /// Whether the built-in simulator answers: chosen, or (for the interactive shell) nothing
+    /// else was.
+    pub fn is_builtin(&self) -> bool {
+        matches!(self.chosen(), Ok(None | Some(SIM)))
+    }
+
+    /// The serial port chosen, if a serial port is the link.
+    pub fn chosen_port(&self) -> Option<&str> {
+        match self.chosen() {
+            Ok(Some("port")) => self.connection.port.as_deref(),
+            _ => None,
+        }
+    }
+
+    /// Where the link goes (a `usb:` name resolved to its device file). A command run without
+    /// a terminal must be told: with no link chosen it is refused (exit 2), so that no script or
+    /// CI job passes against the simulator by accident; the interactive shell opens on it.
+    pub fn target(&self, audience: Audience) -> Result<Target, Failure> {
+        match self.chosen()? {
+            Some(SIM) => Ok(Target::Builtin),
+            Some("tcp") => Target::of(None, self.connection.tcp.as_deref()),
+            Some(_) => Target::of(self.connection.port.as_deref(), None),
+            None if audience == Audience::Interactive => Ok(Target::Builtin),
+            None => Err(Failure::new(Exit::Refused, link_kinds::no_link())),
+        }
     }
 
     /// Opens the transcript (named by the target in a `--log` directory), then the link.
@@ -404,7 +441,7 @@ impl ModuleArgs {
         timeout: Duration,
         audience: Audience,
     ) -> Result<(Option<Transcript>, Box<dyn Link>), Failure> {
-        let target = self.connection.target()?;
+        let target = self.target(audience)?;
         let device = target.file_name(self.protocol());
         let transcript = self.session.transcript(&config.header(), &device)?;
         let link = self.link_to(&target, config, timeout, audience)?;
@@ -425,9 +462,18 @@ impl ModuleArgs {
             timeout,
         )?;
         if *target == Target::Builtin && audience == Audience::Batch {
+            // `sim = true` in a file may be forgotten: it is named.
+            let written = self.command_line.0.value_source(SIM)
+                == Some(clap::parser::ValueSource::CommandLine);
+            let from = if written {
+                ""
+            } else {
+                " (sim = true in a configuration file)"
+            };
             eprintln!(
-                "tmclsh: using the built-in simulated {}; give --port or --tcp for hardware",
-                config.simulated_module()
+                "tmclsh: using the built-in simulated {}{from}; give {} for hardware",
+                config.simulated_module(),
+                link_kinds::hardware_flags()
             );
         }
         Ok(link)

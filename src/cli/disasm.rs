@@ -13,6 +13,9 @@ pub(super) struct DisasmArgs {
     /// Program file written by `tmclsh asm -o`.
     #[arg(value_name = "FILE.bin")]
     pub file: PathBuf,
+    /// The module's tables (its commands).
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
 }
 
 pub(super) fn run(

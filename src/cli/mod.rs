@@ -9,10 +9,12 @@ pub mod connection;
 mod disasm;
 pub mod download;
 mod install;
+mod link_kinds;
 pub mod man;
 pub(crate) mod params;
 mod ports;
 mod position;
+mod profile_option;
 mod profiles;
 mod progress;
 mod relevance;
@@ -39,10 +41,9 @@ use crate::exit::{Exit, Failure};
 #[derive(Debug, Parser)]
 #[command(name = "tmclsh", version, about, long_about = None, max_term_width = 100)]
 pub struct Cli {
-    /// Module profile instead of the TMCM-142's: a built-in name, alias or module number
-    /// (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema
-    /// in docs/profiles.md).
-    #[arg(long, global = true, value_name = "NAME|FILE", env = "TMCLSH_PROFILE")]
+    /// The module profile given to the command that runs (`--profile`, declared by each command
+    /// that reads module tables), filled in after parsing.
+    #[arg(skip)]
     pub profile: Option<PathBuf>,
 
     #[command(flatten)]
@@ -92,17 +93,18 @@ enum Command {
 /// Parses the process arguments and runs; returns the exit code.
 pub fn main() -> Exit {
     crate::progress::install(Box::new(progress::TerminalProgress));
-    let defaults = match config::Defaults::load() {
-        Ok(defaults) => defaults,
-        Err(message) => {
-            diagnose(&format!("configuration refused: {message}"));
-            return Exit::Refused;
-        }
-    };
+    // What a broken file holds is left out; `--help` and `--version` (clap's errors here) need
+    // none of it.
+    let defaults = config::Defaults::load();
     let cli = match parse_with(std::env::args_os().collect(), &defaults) {
         Ok(cli) => cli,
         Err(e) => {
             let use_stderr = e.use_stderr();
+            if use_stderr {
+                for error in defaults.errors() {
+                    diagnose(&format!("configuration refused: {error}"));
+                }
+            }
             print_usage_error(e);
             return if use_stderr {
                 Exit::Refused
@@ -111,6 +113,21 @@ pub fn main() -> Exit {
             };
         }
     };
+    if !cli.describes_itself() {
+        let unknown = config::unknown_variables(&command());
+        let said_by_config = matches!(cli.command, Some(Command::Config(_)));
+        let warnings = defaults.warnings().iter().filter(|_| !said_by_config);
+        for warning in unknown.iter().chain(warnings) {
+            diagnose(&format!("warning: {warning}"));
+        }
+        for error in defaults.errors() {
+            diagnose(&format!("configuration refused: {error}"));
+        }
+        // `config` goes on to show what it could read, and fails after.
+        if !said_by_config && !defaults.errors().is_empty() {
+            return Exit::Refused;
+        }
+    }
     // Not locked for the whole run: `sim` prints from its console thread too.
     let mut stdout = std::io::stdout();
     let exit = match run(cli, &mut stdout) {
@@ -121,6 +138,17 @@ pub fn main() -> Exit {
         }
     };
     signalled(exit)
+}
+
+impl Cli {
+    /// Whether the command only describes tmclsh itself (completions, the manual page), so
+    /// neither the configuration nor the environment is any business of it.
+    fn describes_itself(&self) -> bool {
+        matches!(
+            self.command,
+            Some(Command::Completions(_) | Command::Man(_))
+        )
+    }
 }
 
 /// A run SIGTERM or SIGHUP ended (its waits end as for Ctrl-C, its motors stopped on the way)
@@ -213,6 +241,7 @@ pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cl
     let matches = cmd.try_get_matches_from_mut(argv)?;
     relevance::check(&mut cmd, &matches)?;
     let mut cli = Cli::from_arg_matches(&matches)?;
+    cli.profile = profile_option::given(position::leaf_matches(&matches));
     cli.profile_origin = config::origin_of(&matches, "profile", defaults);
     if let Some(Command::Config(args)) = &mut cli.command {
         config::explain(args, &matches, defaults);
@@ -238,6 +267,9 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Failure::new(Exit::Refused, message)
     })?;
     let result = match cli.command {
+        Some(Command::Params(args)) if args.values => {
+            return params::read_values(&args, &configs, out);
+        }
         Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports(args)) => ports::run(&args, &configs, out),
         Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),

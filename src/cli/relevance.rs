@@ -52,6 +52,11 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
         "it sends no typed lines",
     ),
     (
+        "params",
+        &["no_validate", "quiet_gap"],
+        "it sends no typed lines",
+    ),
+    (
         "snapshot save",
         &["no_validate", "quiet_gap"],
         "it sends no typed lines",
@@ -73,9 +78,6 @@ const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl")];
 
 /// The subcommand that takes every shared option to show what it would set (`tmclsh config`).
 const SHOWS_ALL: &str = "config";
-
-/// Subcommands that read no module tables (`--profile` is global, so every one receives it).
-const NO_TABLES: &[&str] = &["ports", "completions", "man", "profiles"];
 
 /// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
 /// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).
@@ -180,6 +182,12 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
     if given("port") && given("tcp") {
         refuse(&["tcp"], "and --port name two links; give one".into());
     }
+    if words == "ports" {
+        if !given("probe") {
+            refuse(&["baud", "protocol", "module"], "goes with --probe".into());
+        }
+        return refusals;
+    }
     if !has_value(leaf, "port") || given("tcp") {
         let why = "is the bit rate of a serial port; give it with --port";
         refuse(&["baud"], why.into());
@@ -188,20 +196,28 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
         let why = "is a setting of a serial line; give it with --port";
         refuse(&LINE_IDS, why.into());
     }
+    if words == "params" && !given("values") {
+        let ids = module_ids();
+        let linked: Vec<&str> = ids
+            .iter()
+            .map(String::as_str)
+            .filter(|id| !["protocol", "profile"].contains(id))
+            .collect();
+        let why =
+            "does not apply to `tmclsh params` without --values: the table comes from the profile";
+        refuse(&linked, why.into());
+    }
     if words == "snapshot diff" && has_value(leaf, "other") {
         let ids = module_ids();
         let offline: Vec<&str> = ids
             .iter()
             .map(String::as_str)
-            .filter(|id| *id != "protocol")
+            .filter(|id| !["protocol", "profile"].contains(id))
             .collect();
         refuse(
             &offline,
             "does not apply to comparing two snapshot files".into(),
         );
-    }
-    if NO_TABLES.contains(&words) {
-        refuse(&["profile"], format!("does not apply to {named}"));
     }
     refusals
 }
@@ -269,9 +285,6 @@ mod tests {
         let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
         for id in DIALECTS.iter().flat_map(|d| own_options(d)) {
             assert!(cmd.get_arguments().any(|a| a.get_id() == &id), "{id}");
-        }
-        for path in NO_TABLES {
-            assert!(cmd.find_subcommand(path).is_some(), "{path}");
         }
     }
 

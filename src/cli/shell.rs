@@ -124,7 +124,7 @@ enum Waited {
 /// name no adapter answers to), as tio does; Ctrl-C gives up. Runs to an end never wait: they
 /// fail at once with exit 3.
 fn wait_for_port(module: &ModuleArgs) -> Result<Waited, Failure> {
-    let (Some(port), None) = (&module.connection.port, &module.connection.tcp) else {
+    let Some(port) = module.chosen_port() else {
         return Ok(Waited::No);
     };
     let present = || ports::present(port).map_err(|why| Failure::new(Exit::Refused, why));
@@ -174,7 +174,7 @@ fn open_when_ready(
 fn banner(module: &ModuleArgs, shell: &Shell, configs: &Configured) -> String {
     let version = env!("CARGO_PKG_VERSION");
     let talking_to = shell.session_ref().banner();
-    if module.connection.is_builtin() {
+    if module.is_builtin() {
         let simulated = configs.of(module.protocol()).simulated_module();
         let what = if talking_to == simulated {
             String::new()

@@ -27,6 +27,10 @@ pub(super) struct SimArgs {
     #[arg(long, value_parser = protocol_parser(), default_value = default_dialect().name)]
     pub protocol: &'static Dialect,
 
+    /// The simulated modules' tables (TMCL).
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
+
     /// Serve on a new pseudo-terminal (the default); its path is the first line printed.
     #[arg(long, conflicts_with = "listen")]
     pub pty: bool,
@@ -272,7 +276,9 @@ pub(super) fn run(
         }
         None => None,
     };
-    let mut console = Console::new(device, clock, manual, console_help());
+    // Its `help` names only the commands of the simulator it drives.
+    let help = console::help([args.protocol.console_help]);
+    let mut console = Console::new(device, clock, manual, help);
     if listener.is_none() {
         console = console.with_unplug(server.unplug_handle());
     }

@@ -122,7 +122,7 @@ fn precedence_is_command_line_environment_project_user_built_in() {
         }
         if value != "1000" {
             // Module C is not on the bus: the session waits the timeout in effect.
-            let mut shell = vec!["-c", "CGAP 1, 0"];
+            let mut shell = vec!["--sim", "-c", "CGAP 1, 0"];
             shell.extend(&args);
             let out = place.run(&shell, &env);
             let waited = format!("within {value} ms");
@@ -161,13 +161,13 @@ fn every_key_takes_effect_from_a_file() {
         stderr(&out)
     );
 
-    place.project_file("protocol = \"smd4\"\n");
+    place.project_file("protocol = \"smd4\"\nsim = true\n");
     let out = place.run(&["-c", "SYS:FW"], &[]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(stderr(&out).contains("simulated SMD4"), "{}", stderr(&out));
 
     place.project_file("module = 2\ntimeout = 100\n");
-    let out = place.run(&["-c", "GAP 1, 0"], &[]);
+    let out = place.run(&["--sim", "-c", "GAP 1, 0"], &[]);
     assert_eq!(code(&out), 3, "{}", stderr(&out));
     assert!(
         stderr(&out).contains("no reply from module 2 (B) within 100 ms"),
@@ -177,7 +177,10 @@ fn every_key_takes_effect_from_a_file() {
 
     let log = place.cwd.join("echo.log");
     place.project_file("echo = \"line\"\n");
-    let out = place.run(&["-c", "GGP 67, 0", "--log", log.to_str().unwrap()], &[]);
+    let out = place.run(
+        &["--sim", "-c", "GGP 67, 0", "--log", log.to_str().unwrap()],
+        &[],
+    );
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(stdout(&out).trim(), "BA 100 16", "GP 67 bit 4: line echo");
     let transcript = std::fs::read_to_string(&log).unwrap();
@@ -185,7 +188,7 @@ fn every_key_takes_effect_from_a_file() {
 
     // Stripping an echo where nothing echoes: line noise, from the file and the environment.
     place.project_file("local_echo = \"on\"\n");
-    let out = place.run(&["-c", "GAP 1, 0"], &[]);
+    let out = place.run(&["--sim", "-c", "GAP 1, 0"], &[]);
     assert_eq!(code(&out), 3, "{}", stderr(&out));
     assert!(
         stderr(&out).contains("line noise: the adapter's echo"),
@@ -193,15 +196,18 @@ fn every_key_takes_effect_from_a_file() {
         stderr(&out)
     );
     place.project_file("");
-    let out = place.run(&["-c", "GAP 1, 0"], &[("TMCLSH_LOCAL_ECHO", "on")]);
+    let out = place.run(&["--sim", "-c", "GAP 1, 0"], &[("TMCLSH_LOCAL_ECHO", "on")]);
     assert_eq!(code(&out), 3, "{}", stderr(&out));
-    let out = place.run(&["-c", "GAP 1, 0"], &[("TMCLSH_LOCAL_ECHO", "off")]);
+    let out = place.run(
+        &["--sim", "-c", "GAP 1, 0"],
+        &[("TMCLSH_LOCAL_ECHO", "off")],
+    );
     assert_eq!(code(&out), 0, "{}", stderr(&out));
 
     // A log directory, relative to the file, made when missing; a transcript per session.
     place.project_file("log_dir = \"logs\"\n");
     for _ in 0..2 {
-        let out = place.run(&["-c", "GAP 1, 0"], &[]);
+        let out = place.run(&["--sim", "-c", "GAP 1, 0"], &[]);
         assert_eq!(code(&out), 0, "{}", stderr(&out));
     }
     let logs: Vec<_> = std::fs::read_dir(place.project.join("logs"))
@@ -212,7 +218,10 @@ fn every_key_takes_effect_from_a_file() {
         "no transcript in the configured directory"
     );
     // --log on the command line wins.
-    let out = place.run(&["-c", "GAP 1, 0", "--log", log.to_str().unwrap()], &[]);
+    let out = place.run(
+        &["--sim", "-c", "GAP 1, 0", "--log", log.to_str().unwrap()],
+        &[],
+    );
     assert_eq!(code(&out), 0, "{}", stderr(&out));
 }
 
@@ -254,11 +263,6 @@ fn configured_values_are_never_refused_where_they_have_no_use() {
 fn a_bad_file_is_refused_with_its_file_and_line() {
     let place = Place::new();
     for (text, line, says) in [
-        (
-            "port = \"/dev/ttyUSB0\"\nprotcol = \"smd4\"\n",
-            2,
-            "); did you mean `protocol`?",
-        ),
         ("\n\nbaud = \"fast\"\n", 3, "baud must be a number"),
         (
             "module = 27\n",
@@ -275,7 +279,7 @@ fn a_bad_file_is_refused_with_its_file_and_line() {
         ("port = /dev/ttyUSB0\n", 1, ""),
     ] {
         let file = place.project_file(text);
-        let out = place.run(&["-c", "GAP 1, 0"], &[]);
+        let out = place.run(&["--sim", "-c", "GAP 1, 0"], &[]);
         let err = stderr(&out);
         assert_eq!(code(&out), 2, "{text:?}: {err}");
         let place_of = format!("{}:{line}: ", file.display());
@@ -291,10 +295,29 @@ fn a_bad_file_is_refused_with_its_file_and_line() {
     }
     // The user's file too.
     std::fs::remove_file(place.project.join("tmclsh.toml")).unwrap();
-    let file = place.user_file("speed = 5\n");
+    let file = place.user_file("baud = \"fast\"\n");
     let out = place.run(&["config"], &[]);
     assert_eq!(code(&out), 2);
-    assert!(stderr(&out).contains(&format!("{}:1: unknown key `speed`", file.display())));
+    let said = format!("# error: {}:1: baud must be a number", file.display());
+    assert!(stdout(&out).contains(&said), "{}", stdout(&out));
+}
+
+#[test]
+fn an_unknown_key_is_a_warning_with_the_nearest() {
+    let place = Place::new();
+    let file = place.project_file("sim = true\nprotcol = \"smd4\"\n");
+    let out = place.run(&["-c", "GAP 1, 0"], &[]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let said = format!(
+        "tmclsh: warning: {}:2: unknown key `protcol`, ignored",
+        file.display()
+    );
+    assert!(stderr(&out).contains(&said), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("did you mean `protocol`?"),
+        "{}",
+        stderr(&out)
+    );
 }
 
 #[test]
@@ -313,7 +336,7 @@ fn config_names_the_files_and_what_is_not_set() {
         baud.starts_with("baud = 9600 ") && baud.ends_with("# built-in"),
         "{baud}"
     );
-    assert!(shown(&report, "port").contains("not set: the built-in simulated module"));
+    assert!(shown(&report, "port").contains("not set: no serial port"));
     let file = place.project_file("baud = 115200\n");
     let report = stdout(&place.run(
         &["--port", "/dev/ttyUSB3", "config"],
@@ -342,7 +365,7 @@ fn config_names_the_files_and_what_is_not_set() {
 fn a_profile_is_a_built_in_name_or_a_file() {
     let place = Place::new();
     // A name stays a name (no file beside the configuration needed).
-    place.project_file("profile = \"tmcm-6110\"\n");
+    place.project_file("profile = \"tmcm-6110\"\nsim = true\n");
     let out = place.run(&["-c", "GAP 4, 5"], &[]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(

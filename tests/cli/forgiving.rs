@@ -29,31 +29,31 @@ fn a_line_of_the_other_dialect_names_its_protocol_in_c_and_piped_input() {
         "@3MOTOR:STOP",
         "SYS:FW",
     ] {
-        refused_saying(run(&["-c", line]), TO_SMD4);
-        refused_saying(run_with_stdin(&[], &format!("{line}\n")), TO_SMD4);
+        refused_saying(run(&["--sim", "-c", line]), TO_SMD4);
+        refused_saying(run_with_stdin(&["--sim"], &format!("{line}\n")), TO_SMD4);
     }
     for line in ["GAP 1, 0", "AGAP 4 0", "mvp abs, 0, 1000", "MST", "136 1"] {
-        refused_saying(run(&["--protocol", "smd4", "-c", line]), TO_TMCL);
+        refused_saying(run(&["--sim", "--protocol", "smd4", "-c", line]), TO_TMCL);
         refused_saying(
-            run_with_stdin(&["--protocol", "smd4"], &format!("{line}\n")),
+            run_with_stdin(&["--sim", "--protocol", "smd4"], &format!("{line}\n")),
             TO_TMCL,
         );
     }
     // Its own mistakes and lines of no dialect keep their own message.
-    let err = stderr(&run(&["-c", "GAP 4, 9"]));
+    let err = stderr(&run(&["--sim", "-c", "GAP 4, 9"]));
     assert!(!err.contains("looks like"), "{err}");
-    let err = stderr(&run(&["-c", "XYZ:ABC"]));
+    let err = stderr(&run(&["--sim", "-c", "XYZ:ABC"]));
     assert!(
         !err.contains("looks like") && err.contains("column"),
         "{err}"
     );
-    let err = stderr(&run(&["--protocol", "smd4", "-c", "MOTOR:FOO"]));
+    let err = stderr(&run(&["--sim", "--protocol", "smd4", "-c", "MOTOR:FOO"]));
     assert!(!err.contains("looks like"), "{err}");
 }
 
 #[test]
 fn a_keep_going_run_reports_each_foreign_line_and_goes_on() {
-    let out = run_with_stdin(&["--keep-going"], "MOTOR:STOP\nGAP 4, 0\nSYS:FW\n");
+    let out = run_with_stdin(&["--sim", "--keep-going"], "MOTOR:STOP\nGAP 4, 0\nSYS:FW\n");
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     assert_eq!(stderr(&out).matches(TO_SMD4).count(), 2, "{}", stderr(&out));
     assert!(stdout(&out).contains("BA 100"), "{}", stdout(&out));
@@ -65,7 +65,13 @@ fn a_script_of_the_other_dialect_names_its_protocol() {
     let tmcl_script = dir.join("tmcl.rhai");
     std::fs::write(&tmcl_script, "let v = gap(4, 0);\nprint(v);\n").unwrap();
     let err = refused_saying(
-        run(&["--protocol", "smd4", "run", tmcl_script.to_str().unwrap()]),
+        run(&[
+            "--sim",
+            "--protocol",
+            "smd4",
+            "run",
+            tmcl_script.to_str().unwrap(),
+        ]),
         "this looks like a TMCL script — add `--protocol tmcl`",
     );
     assert!(err.contains("tmcl.rhai:1:"), "{err}");
@@ -73,14 +79,17 @@ fn a_script_of_the_other_dialect_names_its_protocol() {
     let smd4_script = dir.join("smd4.rhai");
     std::fs::write(&smd4_script, "wait_standby(1000);\n").unwrap();
     refused_saying(
-        run(&["run", smd4_script.to_str().unwrap()]),
+        run(&["--sim", "run", smd4_script.to_str().unwrap()]),
         "this looks like an SMD4 script — add `--protocol smd4`",
     );
     std::fs::write(&smd4_script, "send(\"MOTOR:STOP\");\n").unwrap();
-    refused_saying(run(&["run", smd4_script.to_str().unwrap()]), TO_SMD4);
+    refused_saying(
+        run(&["--sim", "run", smd4_script.to_str().unwrap()]),
+        TO_SMD4,
+    );
     // The shipped SMD4 example run without --protocol.
     let example = crate::util::repo().join("scripts/smd4_commission.rhai");
-    refused_saying(run(&["run", example.to_str().unwrap()]), TO_SMD4);
+    refused_saying(run(&["--sim", "run", example.to_str().unwrap()]), TO_SMD4);
 }
 
 #[test]
@@ -88,16 +97,17 @@ fn a_misspelt_script_function_gets_the_nearest_name() {
     let dir = tempdir();
     let script = dir.join("typo.rhai");
     std::fs::write(&script, "let v = gapp(4, 0);\n").unwrap();
-    let err = stderr(&run(&["run", script.to_str().unwrap()]));
+    let err = stderr(&run(&["--sim", "run", script.to_str().unwrap()]));
     assert!(
         err.contains("gapp") && err.contains("did you mean gap?"),
         "{err}"
     );
     std::fs::write(&script, "fn settle(m) { mst(m) }\nsettel(0);\n").unwrap();
-    let err = stderr(&run(&["run", script.to_str().unwrap()]));
+    let err = stderr(&run(&["--sim", "run", script.to_str().unwrap()]));
     assert!(err.contains("did you mean settle?"), "{err}");
     std::fs::write(&script, "wait_standbi(10);\n").unwrap();
     let err = stderr(&run(&[
+        "--sim",
         "--protocol",
         "smd4",
         "run",
@@ -129,15 +139,21 @@ fn in_the_repl_a_line_of_the_other_dialect_names_its_protocol() {
 
 #[test]
 fn a_trailing_comment_is_accepted_in_typed_and_piped_lines() {
-    let out = run(&["-c", "GAP 4, 0 // top speed", "-c", "SAP 4, 0, 1500//new"]);
+    let out = run(&[
+        "--sim",
+        "-c",
+        "GAP 4, 0 // top speed",
+        "-c",
+        "SAP 4, 0, 1500//new",
+    ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(stdout(&out), "BA 100 1000000\nBA 100 1500\n");
     let input = "// commissioning\nSAP 4, 0, 1200 // slower\n  GAP 4, 0  // check\n";
-    let out = run_with_stdin(&[], input);
+    let out = run_with_stdin(&["--sim"], input);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(stdout(&out), "BA 100 1200\nBA 100 1200\n");
     let out = run_with_stdin(
-        &["--protocol", "smd4", "--value"],
+        &["--sim", "--protocol", "smd4", "--value"],
         "MOTOR:VMAX,1500 // slower\nMOTOR:VMAX // check\n// only a note\n",
     );
     assert_eq!(code(&out), 0, "{}", stderr(&out));
@@ -147,7 +163,13 @@ fn a_trailing_comment_is_accepted_in_typed_and_piped_lines() {
     // What is sent carries no comment: the transcript shows the line as sent.
     let dir = tempdir();
     let log = dir.join("t.log");
-    let out = run(&["--log", log.to_str().unwrap(), "-c", "GAP 4, 0 // x"]);
+    let out = run(&[
+        "--sim",
+        "--log",
+        log.to_str().unwrap(),
+        "-c",
+        "GAP 4, 0 // x",
+    ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     let transcript = std::fs::read_to_string(&log).unwrap();
     assert!(!transcript.contains("//"), "{transcript}");
@@ -156,7 +178,7 @@ fn a_trailing_comment_is_accepted_in_typed_and_piped_lines() {
 #[test]
 fn smd4_near_misses_are_judged_by_the_segment_that_differs() {
     let smd4 = |line: &str| {
-        let out = run(&["--protocol", "smd4", "-c", line]);
+        let out = run(&["--sim", "--protocol", "smd4", "-c", line]);
         assert_eq!(code(&out), 2, "{line}: {}", stderr(&out));
         stderr(&out)
     };
@@ -230,10 +252,10 @@ fn a_suggestion_ends_its_message() {
     let csv = tempdir().join("r.csv");
     let record = format!(":record {} MOTOR:VMXA 10ms 20ms", csv.display());
     for args in [
-        &["-c", ":prams"][..],
-        &["-c", "GPA 4, 0"],
-        &["--protocol", "smd4", "-c", "MOTOR:VMXA"],
-        &["--protocol", "smd4", "-c", &record],
+        &["--sim", "-c", ":prams"][..],
+        &["--sim", "-c", "GPA 4, 0"],
+        &["--sim", "--protocol", "smd4", "-c", "MOTOR:VMXA"],
+        &["--sim", "--protocol", "smd4", "-c", &record],
     ] {
         let err = stderr(&run(args));
         assert!(err.contains("did you mean"), "{args:?}: {err}");

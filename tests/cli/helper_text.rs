@@ -19,7 +19,7 @@ fn example(message: &str) -> &str {
 fn the_watch_and_record_examples_are_in_the_session_s_dialect_and_run_as_shown() {
     for dialect in DIALECTS {
         let dir = tempdir();
-        let protocol = ["--protocol", dialect.name];
+        let protocol = ["--sim", "--protocol", dialect.name];
         let usage = |helper: &str| {
             let out = run_with_stdin_in(&dir, &[&protocol[..], &["-c", helper]].concat(), "");
             assert_eq!(code(&out), 2, "{}", stderr(&out));
@@ -75,7 +75,11 @@ fn no_help_or_usage_line_of_any_helper_has_a_doubled_space() {
             input.push_str(&format!(":help {name}\n:{name} @@ @@\n"));
         }
         let dir = tempdir();
-        let out = run_with_stdin_in(&dir, &["--protocol", dialect.name, "--keep-going"], &input);
+        let out = run_with_stdin_in(
+            &dir,
+            &["--sim", "--protocol", dialect.name, "--keep-going"],
+            &input,
+        );
         let (shown, errors) = (stdout(&out), stderr(&out));
         for row in shown.lines() {
             assert!(row_is_single_spaced(row), "{}: {row:?}", dialect.name);
@@ -108,7 +112,7 @@ fn params_with_a_filter_nothing_matches_says_so_in_each_dialect() {
     ] {
         let out = run_with_stdin_in(
             &tempdir(),
-            &["--protocol", protocol, "-c", ":params zzz"],
+            &["--sim", "--protocol", protocol, "-c", ":params zzz"],
             "",
         );
         assert_eq!(code(&out), 0, "{}", stderr(&out));

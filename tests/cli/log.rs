@@ -36,7 +36,7 @@ fn named_by(name: &str, device: &str) -> bool {
 #[test]
 fn a_log_directory_gets_a_file_per_session_named_by_device_and_date() {
     let dir = tempdir();
-    let out = run(&["--log", dir.to_str().unwrap(), "-c", "GAP 1, 0"]);
+    let out = run(&["--sim", "--log", dir.to_str().unwrap(), "-c", "GAP 1, 0"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     let files = names(&dir);
     assert_eq!(files.len(), 1, "{files:?}");
@@ -48,7 +48,15 @@ fn a_log_directory_gets_a_file_per_session_named_by_device_and_date() {
     // A path ending with a separator is a directory, made when missing.
     let fresh = dir.join("rig").join("logs");
     let spelled = format!("{}/", fresh.display());
-    let out = run(&["--protocol", "smd4", "-c", "SYS:FW", "--log", &spelled]);
+    let out = run(&[
+        "--sim",
+        "--protocol",
+        "smd4",
+        "-c",
+        "SYS:FW",
+        "--log",
+        &spelled,
+    ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     let files = names(&fresh);
     assert!(
@@ -82,7 +90,10 @@ fn a_log_directory_gets_a_file_per_session_named_by_device_and_date() {
 
 #[test]
 fn log_time_puts_the_time_before_each_reply() {
-    let out = run_with_stdin(&[], ":log time on\nGAP 1, 0\n:log time off\nGAP 1, 0\n");
+    let out = run_with_stdin(
+        &["--sim"],
+        ":log time on\nGAP 1, 0\n:log time off\nGAP 1, 0\n",
+    );
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     let text = stdout(&out);
     let lines: Vec<&str> = text.lines().collect();
@@ -121,7 +132,7 @@ fn log_file_and_off_still_work() {
         ":log {}\nGAP 1, 0\n:log off\nGAP 4, 0\n:log\n",
         file.display()
     );
-    let out = run_with_stdin(&[], &input);
+    let out = run_with_stdin(&["--sim"], &input);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(stdout(&out).contains("transcript stopped"));
     assert!(stdout(&out).contains("not logging; :log FILE starts"));
@@ -159,7 +170,7 @@ fn a_log_directory_never_reuses_a_name_nor_follows_a_planted_symlink() {
         let second = first.to_str().unwrap().replace(".log", "-2.log");
         std::fs::write(&second, "another session\n").unwrap();
     }
-    let out = run(&["--log", logs.to_str().unwrap(), "-c", "GAP 1, 0"]);
+    let out = run(&["--sim", "--log", logs.to_str().unwrap(), "-c", "GAP 1, 0"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(std::fs::read_to_string(&victim).unwrap(), "keep me\n");
     let made: Vec<String> = names(&logs)

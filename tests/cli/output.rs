@@ -21,14 +21,22 @@ fn objects(out: &std::process::Output) -> Vec<Value> {
 
 #[test]
 fn value_prints_only_the_value() {
-    let out = run(&["-c", "SAP 1, 0, -5000", "-c", "GAP 1, 0", "--value"]);
+    let out = run(&[
+        "--sim",
+        "-c",
+        "SAP 1, 0, -5000",
+        "-c",
+        "GAP 1, 0",
+        "--value",
+    ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(lines(&out)[1], "-5000");
     // Written before the subcommand-free shell's -c, the same.
-    let out = run(&["--value", "-c", ":bin", "-c", "136 0"]);
+    let out = run(&["--sim", "--value", "-c", ":bin", "-c", "136 0"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(lines(&out).last().unwrap(), "142V1.06");
     let out = run(&[
+        "--sim",
         "--protocol",
         "smd4",
         "--value",
@@ -44,6 +52,7 @@ fn value_prints_only_the_value() {
 #[test]
 fn json_gives_one_object_per_line_with_status_value_raw_and_module() {
     let out = run(&[
+        "--sim",
         "--json",
         "-c",
         "SAP actual_position, 0, -5000",
@@ -64,7 +73,7 @@ fn json_gives_one_object_per_line_with_status_value_raw_and_module() {
     assert_eq!(read["ok"], true);
     assert_eq!(read["exit"], 0);
 
-    let out = run(&["--protocol", "smd4", "--json", "-c", "MOTOR:VMAX"]);
+    let out = run(&["--sim", "--protocol", "smd4", "--json", "-c", "MOTOR:VMAX"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     let reply = &self::objects(&out)[0];
     assert_eq!(
@@ -80,12 +89,12 @@ fn json_gives_one_object_per_line_with_status_value_raw_and_module() {
 #[test]
 fn failures_keep_their_line_in_value_and_json_output() {
     let input = "GAP 4, 0\nGPA 1, 0\nGAP 200, 0\n:params max_cur\nGAP 6, 0\n";
-    let out = run_with_stdin(&["--value", "--keep-going"], input);
+    let out = run_with_stdin(&["--sim", "--value", "--keep-going"], input);
     assert_eq!(code(&out), 1, "{}", stderr(&out));
     assert_eq!(lines(&out)[..3], ["1000000", "", "0"]);
     assert!(lines(&out).iter().any(|l| l.contains("max_current")));
 
-    let out = run_with_stdin(&["--json", "--keep-going"], input);
+    let out = run_with_stdin(&["--sim", "--json", "--keep-going"], input);
     assert_eq!(code(&out), 1, "{}", stderr(&out));
     let objects = objects(&out);
     assert_eq!(objects.len(), 5, "{}", stdout(&out));
@@ -113,7 +122,7 @@ fn failures_keep_their_line_in_value_and_json_output() {
 fn keep_going_runs_to_the_end_and_exits_with_the_worst_failure() {
     // Without it, the first failure ends the run.
     let input = "GPA 1, 0\nSAP 1, 0, 77\n";
-    let out = run_with_stdin(&[], input);
+    let out = run_with_stdin(&["--sim"], input);
     assert_eq!(code(&out), 2);
     assert!(stdout(&out).is_empty());
 
@@ -122,7 +131,7 @@ fn keep_going_runs_to_the_end_and_exits_with_the_worst_failure() {
         ("GAP 200, 0\nGPA\nGAP 1, 0\n", 1, "BA 100 0"),
         ("GPA\nCGAP 1, 0\nGAP 200, 0\nGAP 1, 0\n", 3, "BA 100 0"),
     ] {
-        let out = run_with_stdin(&["--keep-going", "--timeout", "100"], input);
+        let out = run_with_stdin(&["--sim", "--keep-going", "--timeout", "100"], input);
         assert_eq!(code(&out), worst, "{input:?}: {}", stderr(&out));
         assert_eq!(
             lines(&out).last().map(String::as_str),
@@ -136,7 +145,7 @@ fn keep_going_runs_to_the_end_and_exits_with_the_worst_failure() {
 #[test]
 fn ctrl_c_still_ends_a_run_that_keeps_going() {
     let mut child = Command::new(bin())
-        .args(["--keep-going", "--value"])
+        .args(["--sim", "--keep-going", "--value"])
         .env("NO_COLOR", "1")
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())

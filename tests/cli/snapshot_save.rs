@@ -9,7 +9,7 @@ fn an_existing_file_is_kept_without_force_and_nothing_is_sent() {
     let file = dir.join("module.toml");
     std::fs::write(&file, "the only record\n").unwrap();
     let path = file.to_str().unwrap();
-    let out = run(&["snapshot", "save", path]);
+    let out = run(&["--sim", "snapshot", "save", path]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     assert!(
         stderr(&out).contains(&format!("{path} exists; add --force to replace it")),
@@ -23,7 +23,7 @@ fn an_existing_file_is_kept_without_force_and_nothing_is_sent() {
     );
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "the only record\n");
 
-    let out = run(&["snapshot", "save", path, "--force"]);
+    let out = run(&["--sim", "snapshot", "save", path, "--force"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(
         std::fs::read_to_string(&file)
@@ -41,7 +41,7 @@ fn the_shell_helper_keeps_an_existing_file_too() {
     #[cfg(unix)]
     std::os::unix::fs::symlink(dir.join("nowhere"), &dangling).unwrap();
     let save = format!(":snapshot save {}", file.display());
-    let out = run(&["-c", &save]);
+    let out = run(&["--sim", "-c", &save]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     assert!(
         stderr(&out).contains("exists; add --force"),
@@ -52,11 +52,15 @@ fn the_shell_helper_keeps_an_existing_file_too() {
     #[cfg(unix)]
     {
         // A symlink that points nowhere is a file name in use all the same.
-        let out = run(&["-c", &format!(":snapshot save {}", dangling.display())]);
+        let out = run(&[
+            "--sim",
+            "-c",
+            &format!(":snapshot save {}", dangling.display()),
+        ]);
         assert_eq!(code(&out), 2, "{}", stderr(&out));
         assert!(!dir.join("nowhere").exists());
     }
-    let out = run(&["-c", &format!("{save} --force")]);
+    let out = run(&["--sim", "-c", &format!("{save} --force")]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(
         std::fs::read_to_string(&file)

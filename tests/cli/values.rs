@@ -13,41 +13,48 @@ fn ok(args: &[&str]) -> String {
 
 #[test]
 fn params_values_reads_the_matching_parameters_with_their_meaning() {
-    let text = ok(&["-c", "SGP 65, 0, 7", "-c", ":params --values baud"]);
+    let text = ok(&["--sim", "-c", "SGP 65, 0, 7", "-c", ":params --values baud"]);
     assert!(
         text.contains("global 0/65  serial_baud_rate  7 (115200 baud)"),
         "{text}"
     );
-    let text = ok(&["-c", ":params status --values"]);
+    let text = ok(&["--sim", "-c", ":params status --values"]);
     assert!(text.contains("status_flags"), "{text}");
     assert!(text.contains("standing"), "{text}");
     assert!(
         !text.contains("target_position"),
         "only the matches: {text}"
     );
-    let text = ok(&["--protocol", "smd4", "-c", ":params --values MOTOR:VMAX"]);
+    let text = ok(&[
+        "--sim",
+        "--protocol",
+        "smd4",
+        "-c",
+        ":params --values MOTOR:VMAX",
+    ]);
     assert_eq!(text.trim(), "MOTOR:VMAX  1000 Hz");
 }
 
 #[test]
 fn help_describes_a_parameter_and_explains_the_uncertain_sign_once() {
-    let text = ok(&["-c", ":help serial_baud_rate"]);
+    let text = ok(&["--sim", "-c", ":help serial_baud_rate"]);
     assert!(
         text.starts_with("serial_baud_rate — global parameter, bank 0, 65*"),
         "{text}"
     );
     assert!(text.contains("     0  9600 baud"), "{text}");
     assert!(text.contains("(*: see :help params)"), "{text}");
-    let text = ok(&["-c", ":help params"]);
+    let text = ok(&["--sim", "-c", ":help params"]);
     assert!(
         text.contains(
             "* after the access letters (or the number in :help NAME): the TMCM-142 manual"
         ),
         "{text}"
     );
-    let text = ok(&["-c", ":help MVP"]);
+    let text = ok(&["--sim", "-c", ":help MVP"]);
     assert!(!text.contains("sibling"), "{text}");
     let text = ok(&[
+        "--sim",
         "--protocol",
         "smd4",
         "-c",
@@ -90,7 +97,7 @@ fn a_wait_until_timeout_names_its_condition_and_the_last_value() {
         "let motor = 0;\nwait_until(|| gap(\"actual_position\", motor) == 100, 50);\n",
     )
     .unwrap();
-    let out = run(&["run", script.to_str().unwrap()]);
+    let out = run(&["--sim", "run", script.to_str().unwrap()]);
     let err = stderr(&out);
     assert_eq!(code(&out), 1, "{err}");
     assert!(
@@ -101,7 +108,7 @@ fn a_wait_until_timeout_names_its_condition_and_the_last_value() {
     );
     assert!(!err.contains("anon$"), "{err}");
     std::fs::write(&script, "wait_until(|| gap(1, 0), 30);\n").unwrap();
-    let err = stderr(&run(&["run", script.to_str().unwrap()]));
+    let err = stderr(&run(&["--sim", "run", script.to_str().unwrap()]));
     assert!(err.contains("`gap(1, 0)` (last value: 0)"), "{err}");
 }
 
@@ -115,7 +122,13 @@ fn every_built_in_profile_names_its_baud_rate_code() {
         .collect();
     assert!(names.len() >= 9, "{list}");
     for name in names {
-        let text = ok(&["--profile", name, "-c", ":params --values serial_baud"]);
+        let text = ok(&[
+            "--sim",
+            "--profile",
+            name,
+            "-c",
+            ":params --values serial_baud",
+        ]);
         assert!(
             text.contains("serial_baud_rate  0 (9600 baud)"),
             "{name}: {text}"

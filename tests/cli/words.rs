@@ -33,7 +33,7 @@ fn at_the_prompt_the_words_do_their_helpers() {
 
 #[test]
 fn in_piped_input_help_prints_quit_ends_and_clear_is_skipped() {
-    let out = run_with_stdin(&[], "help GAP\nclear\nGAP 4, 0\nexit\nGAP 5, 0\n");
+    let out = run_with_stdin(&["--sim"], "help GAP\nclear\nGAP 4, 0\nexit\nGAP 5, 0\n");
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     let text = stdout(&out);
     assert!(text.contains("get axis parameter (command 6)"), "{text}");
@@ -87,7 +87,13 @@ fn in_piped_input_exit_with_words_after_it_leaves_as_at_the_prompt() {
     ] {
         for word in ["exit now", "QUIT please", "exit 1"] {
             let log = tempdir().join("t.log");
-            let args = ["--protocol", protocol, "--log", log.to_str().unwrap()];
+            let args = [
+                "--sim",
+                "--protocol",
+                protocol,
+                "--log",
+                log.to_str().unwrap(),
+            ];
             let out = run_with_stdin(&args, &format!("{before}\n{word}\n{after}\n"));
             // Leaving is not a failure, and `exit 1` is no exit code.
             assert_eq!(code(&out), 0, "{word}: {}", stderr(&out));

@@ -146,11 +146,11 @@ fn record_and_plot_a_move_over_tcp() {
 
 #[test]
 fn record_needs_a_duration_without_a_terminal_and_plot_needs_a_recording() {
-    let out = expect(&["-c", ":record x.csv actual_position 10ms"], 2);
+    let out = expect(&["--sim", "-c", ":record x.csv actual_position 10ms"], 2);
     assert!(crate::util::stderr(&out).contains("needs a duration"));
-    let out = expect(&["-c", ":plot"], 2);
+    let out = expect(&["--sim", "-c", ":plot"], 2);
     assert!(crate::util::stderr(&out).contains("nothing recorded yet"));
-    let out = expect(&["-c", ":record x.csv no_such_param 10ms 1s"], 2);
+    let out = expect(&["--sim", "-c", ":record x.csv no_such_param 10ms 1s"], 2);
     assert!(crate::util::stderr(&out).contains("unknown parameter 'no_such_param'"));
 }
 
@@ -159,7 +159,7 @@ fn a_bare_number_is_milliseconds_in_record_as_everywhere() {
     let dir = tempdir();
     let csv = dir.join("bare.csv");
     let record = format!(":record {} actual_position 20 150", arg(&csv));
-    expect(&["-c", &record], 0);
+    expect(&["--sim", "-c", &record], 0);
     let text = std::fs::read_to_string(&csv).unwrap();
     let recording = Recording::from_csv(&text).unwrap();
     let times: Vec<u64> = recording.samples.iter().map(|s| s.time_ms).collect();
@@ -168,7 +168,7 @@ fn a_bare_number_is_milliseconds_in_record_as_everywhere() {
         times.iter().all(|&t| t <= 150),
         "150 is 150 ms, 20 is 20 ms: {times:?}"
     );
-    let out = expect(&["-c", ":help time"], 0);
+    let out = expect(&["--sim", "-c", ":help time"], 0);
     assert!(
         stdout(&out).contains("a bare number of milliseconds (250 is 250ms), at most 7 days"),
         "{}",

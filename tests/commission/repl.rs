@@ -279,6 +279,6 @@ fn ctrl_c_in_a_watch_stops_the_motor() {
 
 #[test]
 fn watch_without_a_terminal_points_to_record() {
-    let out = super::expect(&["-c", ":watch actual_position"], 2);
+    let out = super::expect(&["--sim", "-c", ":watch actual_position"], 2);
     assert!(crate::util::stderr(&out).contains(":watch needs a terminal"));
 }

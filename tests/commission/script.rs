@@ -50,7 +50,7 @@ fn scripts_may_write_only_snapshots_and_recordings() {
     let script = dir.join("bad.rhai");
     let target = dir.join("notes.txt");
     std::fs::write(&script, format!("snapshot_save(\"{}\");", arg(&target))).unwrap();
-    let out = expect(&["run", arg(&script)], 2);
+    let out = expect(&["--sim", "run", arg(&script)], 2);
     assert!(
         stderr(&out).contains("a snapshot is written to a .toml file"),
         "{}",
@@ -65,7 +65,7 @@ fn scripts_may_write_only_snapshots_and_recordings() {
         ),
     )
     .unwrap();
-    let out = expect(&["run", arg(&script)], 2);
+    let out = expect(&["--sim", "run", arg(&script)], 2);
     assert!(stderr(&out).contains("a recording is written to a .csv file"));
     assert!(!target.exists());
 }

@@ -459,7 +459,7 @@ fn a_tmcl_snapshot_or_one_of_another_drive_is_refused_by_an_smd4() {
     let dir = tempdir();
     let (tmcl, other) = (dir.join("tmcl.toml"), dir.join("other.toml"));
     // A TMCM-142 snapshot, from the built-in simulator.
-    let out = crate::util::run(&["snapshot", "save", arg(&tmcl)]);
+    let out = crate::util::run(&["--sim", "snapshot", "save", arg(&tmcl)]);
     assert_exit(&out, 0);
     for force in [&[][..], &["--force"]] {
         let out = snapshot(&drive, &["restore", arg(&tmcl)], force);

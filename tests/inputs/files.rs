@@ -80,16 +80,16 @@ fn command_line_files_that_are_not_regular_files_are_refused_without_blocking() 
     let dir = hostile_dir();
     for file in ["pipe.toml", "link.toml", "/dev/zero", "adir"] {
         let reads: [Vec<&str>; 10] = [
-            vec!["snapshot", "restore", file],
+            vec!["--sim", "snapshot", "restore", file],
             vec!["snapshot", "diff", file],
             vec!["--profile", file, "params"],
             vec!["asm", file],
             vec!["disasm", file],
-            vec!["run", file],
-            vec!["download", file],
+            vec!["--sim", "run", file],
+            vec!["--sim", "download", file],
             vec!["sim", "--state", file],
             vec!["transcript", "to-rhai", file],
-            vec!["-c", "GAP 4, 0", "--profile", file],
+            vec!["--sim", "-c", "GAP 4, 0", "--profile", file],
         ];
         for args in reads {
             let out = guarded(&dir, &args, "");
@@ -105,10 +105,10 @@ fn command_line_files_that_are_not_regular_files_are_refused_without_blocking() 
     // (An existing directory given to --log is a log directory.)
     for file in ["pipe.toml", "link.toml", "/dev/null"] {
         let writes: [Vec<&str>; 4] = [
-            vec!["--log", file, "-c", "GAP 4, 0"],
-            vec!["snapshot", "save", "--force", file],
+            vec!["--sim", "--log", file, "-c", "GAP 4, 0"],
+            vec!["--sim", "snapshot", "save", "--force", file],
             vec!["asm", "test2.tmc", "-o", file],
-            vec!["-c", "GAP 4, 0", "--log", file],
+            vec!["--sim", "-c", "GAP 4, 0", "--log", file],
         ];
         for args in writes {
             let out = guarded(&dir, &args, "");
@@ -134,7 +134,11 @@ fn helpers_refuse_files_that_are_not_regular_files_and_the_session_goes_on() {
                 continue; // /dev/null stands for the devices written to
             }
             let line = format!("{helper} {file}");
-            let out = guarded(&dir, &["--keep-going"], &format!("{line}\nGAP 4, 0\n"));
+            let out = guarded(
+                &dir,
+                &["--sim", "--keep-going"],
+                &format!("{line}\nGAP 4, 0\n"),
+            );
             refused(&out, file, &line);
             assert!(
                 crate::util::stdout(&out).contains("1000000"),
@@ -143,7 +147,7 @@ fn helpers_refuse_files_that_are_not_regular_files_and_the_session_goes_on() {
             );
         }
         let line = format!(":record {file} actual_position 10ms 50ms");
-        let out = guarded(&dir, &[], &format!("{line}\n"));
+        let out = guarded(&dir, &["--sim"], &format!("{line}\n"));
         refused(&out, file, &line);
     }
 }
@@ -172,7 +176,7 @@ fn a_script_may_start_with_a_byte_order_mark() {
     let dir = tempdir();
     let script = dir.join("bom.rhai");
     std::fs::write(&script, "\u{feff}send(\"GAP 4, 0\");\n").unwrap();
-    let out = guarded(&dir, &["run", script.to_str().unwrap()], "");
+    let out = guarded(&dir, &["--sim", "run", script.to_str().unwrap()], "");
     assert_eq!(code(&out), 0, "{}", stderr(&out));
 }
 
@@ -229,7 +233,7 @@ fn huge_files_are_refused_by_their_size_not_read() {
     }
     let cases: [(&[&str], &str); 6] = [
         (&["snapshot", "diff", "huge.toml"], "larger than 4 MiB"),
-        (&["run", "huge.rhai"], "larger than 4 MiB"),
+        (&["--sim", "run", "huge.rhai"], "larger than 4 MiB"),
         (&["asm", "huge.tmc"], "larger than 4 MiB"),
         (&["sim", "--state", "huge.toml"], "larger than 4 MiB"),
         (&["--profile", "huge.toml", "params"], "larger than 4 MiB"),

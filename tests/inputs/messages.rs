@@ -197,7 +197,7 @@ fn flaws(message: &str, placeholders_allowed: bool) -> Vec<&'static str> {
 /// message, and no line of stderr may have a flaw.
 fn check_lines(args: &[&str], lines: &[&str]) {
     let input = lines.join("\n") + "\n";
-    let mut all = vec!["--timeout", "100", "--keep-going"];
+    let mut all = vec!["--sim", "--timeout", "100", "--keep-going"];
     all.extend(args);
     let out = run_with_stdin(&all, &input);
     let dialect = args.join(" ");
@@ -239,7 +239,13 @@ fn bad_smd4_lines_get_messages_without_glitches() {
 fn help_reads_without_nested_brackets() {
     for (dialect, topics) in HELP {
         for topic in *topics {
-            let out = run(&["--protocol", dialect, "-c", &format!(":help {topic}")]);
+            let out = run(&[
+                "--sim",
+                "--protocol",
+                dialect,
+                "-c",
+                &format!(":help {topic}"),
+            ]);
             let text = stdout(&out);
             assert!(!text.trim().is_empty(), "{dialect} :help {topic}");
             for line in text.lines() {

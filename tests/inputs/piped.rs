@@ -12,7 +12,7 @@ use crate::util::bin;
 #[test]
 fn cr_alone_lf_and_crlf_each_end_a_line_even_mixed_in_one_file() {
     let input = b"SAP 4, 0, 7\rGAP 4, 0\r\nSAP 4, 0, 8\n\rGAP 4, 0\r\r\nGGP 2, 2\n# done\rGAP 5, 0";
-    let out = run_piped(&[], input.to_vec());
+    let out = run_piped(&["--sim"], input.to_vec());
     assert_eq!(out.code, 0, "{}", out.stderr());
     assert_eq!(
         out.stdout.lines().collect::<Vec<_>>(),
@@ -26,7 +26,10 @@ fn cr_alone_lf_and_crlf_each_end_a_line_even_mixed_in_one_file() {
         ]
     );
     // A CR-only file that fails names the line an editor shows.
-    let out = run_piped(&[], b"GAP 4, 0\rGAP 4, 0\rGAP nope, 0\rGAP 4, 0\r".to_vec());
+    let out = run_piped(
+        &["--sim"],
+        b"GAP 4, 0\rGAP 4, 0\rGAP nope, 0\rGAP 4, 0\r".to_vec(),
+    );
     assert_eq!(out.code, 2);
     assert!(
         out.stderr().starts_with("tmclsh: line 3 (GAP nope, 0): "),
@@ -39,7 +42,7 @@ fn cr_alone_lf_and_crlf_each_end_a_line_even_mixed_in_one_file() {
 #[test]
 fn a_line_that_is_not_utf8_is_refused_with_its_number() {
     let out = run_piped(
-        &[],
+        &["--sim"],
         b"GAP 4, 0\r\nGAP \xFF\xFE4, 0\r\nSAP 4, 0, 9\r\n".to_vec(),
     );
     assert_eq!(out.code, 2);
@@ -55,7 +58,7 @@ fn a_line_that_is_not_utf8_is_refused_with_its_number() {
 
 #[test]
 fn control_characters_are_escaped_in_messages() {
-    let out = run_piped(&[], b"GAP 4,\x1b]0;owned\x07 0\n".to_vec());
+    let out = run_piped(&["--sim"], b"GAP 4,\x1b]0;owned\x07 0\n".to_vec());
     assert_eq!(out.code, 2);
     assert!(
         !out.stderr.iter().any(|&b| b == 0x1b || b == 0x07),
@@ -69,7 +72,7 @@ fn control_characters_are_escaped_in_messages() {
         out.stderr()
     );
     // A -c line too.
-    let out = run_piped(&["-c", "GAP 4, 0\u{1b}[2J"], Vec::new());
+    let out = run_piped(&["--sim", "-c", "GAP 4, 0\u{1b}[2J"], Vec::new());
     assert_eq!(out.code, 2);
     assert!(!out.stderr.contains(&0x1b), "{:?}", out.stderr());
     assert!(out.stderr().contains("\\x1B[2J"), "{}", out.stderr());
@@ -80,7 +83,7 @@ fn a_one_megabyte_line_gets_a_short_message() {
     let mut input = b"GAP 4, 0\n".to_vec();
     input.extend(std::iter::repeat_n(b'x', 1 << 20));
     input.extend_from_slice(b"\nSAP 4, 0, 9\n");
-    let out = run_piped(&[], input);
+    let out = run_piped(&["--sim"], input);
     assert_eq!(out.code, 2);
     assert_eq!(out.stdout, "BA 100 1000000\n");
     assert_eq!(
@@ -89,7 +92,7 @@ fn a_one_megabyte_line_gets_a_short_message() {
     );
     // The same from -c (an argument holds at most 128 KiB).
     let long = "x".repeat(100_000);
-    let out = run_piped(&["-c", "GAP 4, 0", "-c", &long], Vec::new());
+    let out = run_piped(&["--sim", "-c", "GAP 4, 0", "-c", &long], Vec::new());
     assert_eq!(out.code, 2);
     assert!(out.stderr.len() < 200, "{}", out.stderr().len());
 }

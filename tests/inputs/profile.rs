@@ -84,7 +84,7 @@ fn each_bad_profile_class_is_refused_with_its_line() {
     for (class, text, expected) in cases {
         let path = write(&text);
         let path = path.to_str().unwrap();
-        let out = run(&["--profile", path, "-c", "GAP 4, 0"]);
+        let out = run(&["--sim", "--profile", path, "-c", "GAP 4, 0"]);
         assert_eq!(code(&out), 2, "{class}: {}", stderr(&out));
         assert!(stdout(&out).is_empty(), "{class}: nothing is sent");
         assert!(
@@ -128,6 +128,7 @@ fn the_built_in_simulator_serves_a_custom_profile() {
     let path = write(&profile(""));
     let path = path.to_str().unwrap();
     let out = run(&[
+        "--sim",
         "--profile",
         path,
         "-c",
@@ -146,14 +147,14 @@ fn the_built_in_simulator_serves_a_custom_profile() {
         "the power-up value is the profile's default"
     );
     // The profile's table is the one checked: its range, its parameters.
-    let out = run(&["--profile", path, "-c", "SAP max_speed, 0, 101"]);
+    let out = run(&["--sim", "--profile", path, "-c", "SAP max_speed, 0, 101"]);
     assert_eq!(code(&out), 2);
     assert!(stderr(&out).contains("allowed 0..100"), "{}", stderr(&out));
-    let out = run(&["--profile", path, "-c", "GAP max_current, 0"]);
+    let out = run(&["--sim", "--profile", path, "-c", "GAP max_current, 0"]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     // And the same from a script.
     let script = tempdir().join("p.rhai");
     std::fs::write(&script, "assert_eq(gap(\"max_speed\", 0), 10);\n").unwrap();
-    let out = run(&["--profile", path, "run", script.to_str().unwrap()]);
+    let out = run(&["--sim", "--profile", path, "run", script.to_str().unwrap()]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
 }

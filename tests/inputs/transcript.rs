@@ -30,7 +30,7 @@ fn log_started_in_an_smd4_session_replays_as_smd4() {
         "MOTOR:VMAX,1500\n:log {}\nMOTOR:VMAX,2000\nMOTOR:VMAX\nSYS:MODE\n",
         arg(&log)
     );
-    let out = run_piped(&["--protocol", "smd4"], input.into_bytes());
+    let out = run_piped(&["--sim", "--protocol", "smd4"], input.into_bytes());
     assert_eq!(out.code, 0, "{}", out.stderr());
     let text = std::fs::read_to_string(&log).unwrap();
     assert!(
@@ -56,7 +56,7 @@ fn log_started_in_an_smd4_session_replays_as_smd4() {
         replay.contains("assert_eq(check(\"MOTOR:VMAX\", [2000.0, 2000.0]), \"\");"),
         "{replay}"
     );
-    let out = run(&["run", arg(&script), "--protocol", "smd4"]);
+    let out = run(&["--sim", "run", arg(&script), "--protocol", "smd4"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
 }
 
@@ -72,6 +72,7 @@ fn the_header_names_the_profile_and_a_transcript_of_another_module_is_refused() 
     .unwrap();
     let (log, script) = (dir.join("t.log"), dir.join("t.rhai"));
     let out = run(&[
+        "--sim",
         "--profile",
         arg(&profile),
         "--log",
@@ -193,9 +194,17 @@ fn a_transcript_that_cannot_be_written_fails_the_run_with_exit_3() {
     std::fs::write(&script, "send(\"GAP 4, 0\");\n").unwrap();
     let log = dir.join("t.log");
     let faces: [(&str, Vec<&str>, &[u8]); 3] = [
-        ("-c", vec!["--log", arg(&log), "-c", "GAP 4, 0"], b""),
-        ("stdin", vec!["--log", arg(&log)], b"GAP 4, 0\n"),
-        ("run", vec!["run", arg(&script), "--log", arg(&log)], b""),
+        (
+            "-c",
+            vec!["--sim", "--log", arg(&log), "-c", "GAP 4, 0"],
+            b"",
+        ),
+        ("stdin", vec!["--sim", "--log", arg(&log)], b"GAP 4, 0\n"),
+        (
+            "run",
+            vec!["--sim", "run", arg(&script), "--log", arg(&log)],
+            b"",
+        ),
     ];
     for (face, args, input) in faces {
         // No room at all: the header cannot be written.
@@ -207,7 +216,10 @@ fn a_transcript_that_cannot_be_written_fails_the_run_with_exit_3() {
         assert!(out.stdout.is_empty(), "{face}: nothing ran");
     }
     // A device is no transcript: refused before anything runs.
-    let out = run_piped(&["--log", "/dev/full", "-c", "GAP 4, 0"], Vec::new());
+    let out = run_piped(
+        &["--sim", "--log", "/dev/full", "-c", "GAP 4, 0"],
+        Vec::new(),
+    );
     assert_eq!(out.code, 2, "{}", out.stderr());
     assert!(
         out.stderr()
@@ -215,7 +227,7 @@ fn a_transcript_that_cannot_be_written_fails_the_run_with_exit_3() {
         "{}",
         out.stderr()
     );
-    let out = run_piped(&[], b"GAP 4, 0\n:log /dev/full\nGAP 5, 0\n".to_vec());
+    let out = run_piped(&["--sim"], b"GAP 4, 0\n:log /dev/full\nGAP 5, 0\n".to_vec());
     assert_eq!(out.code, 2, "{}", out.stderr());
     assert_eq!(out.stdout, "BA 100 1000000\n");
 }
@@ -257,7 +269,7 @@ fn with_disk_of(blocks: u32, args: &[&str]) -> Command {
 fn a_transcript_that_fills_the_disk_mid_run_ends_it_with_exit_3() {
     let dir = tempdir();
     let log = dir.join("full.log");
-    let mut args = vec!["--log", arg(&log)];
+    let mut args = vec!["--sim", "--log", arg(&log)];
     for _ in 0..60 {
         args.extend(["-c", "GAP 4, 0"]);
     }
@@ -283,7 +295,7 @@ fn a_transcript_that_fills_the_disk_mid_run_ends_it_with_exit_3() {
     let rhai = dir.join("many.rhai");
     std::fs::write(&rhai, "for i in 0..60 { send(\"GAP 4, 0\"); }\n").unwrap();
     let log = dir.join("script.log");
-    let out = with_small_disk(&["run", arg(&rhai), "--log", arg(&log)])
+    let out = with_small_disk(&["--sim", "run", arg(&rhai), "--log", arg(&log)])
         .output()
         .unwrap();
     assert_eq!(code(&out), 3, "{}", stderr(&out));

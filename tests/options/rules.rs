@@ -52,7 +52,7 @@ fn the_environment_gives_a_port_to_every_face_and_the_command_line_overrides_it(
     assert_eq!(code(&out), 3, "{}", stderr(&out));
     assert!(stderr(&out).contains(&closed), "{}", stderr(&out));
     // A rate from the environment bothers nobody.
-    let out = run_env(&["-c", "GAP 1, 0"], &[("TMCLSH_BAUD", "19200")]);
+    let out = run_env(&["--sim", "-c", "GAP 1, 0"], &[("TMCLSH_BAUD", "19200")]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
 }
 
@@ -131,15 +131,15 @@ fn every_batch_face_on_the_built_in_simulator_says_so_once() {
     let fx = fixtures();
     let script = fresh("once.rhai");
     std::fs::write(&script, "send(\"GAP 1, 0\");\n").unwrap();
-    let tmcl = |args: &[&str]| (run(args), "TMCM-142");
+    let tmcl = |args: &[&str]| (run(&[&["--sim"], args].concat()), "TMCM-142");
     let smd4 = |args: &[&str]| {
-        let mut all = vec!["--protocol", "smd4"];
+        let mut all = vec!["--sim", "--protocol", "smd4"];
         all.extend_from_slice(args);
         (run(&all), "SMD4")
     };
     for (out, module) in [
         tmcl(&["-c", "GAP 1, 0"]),
-        (run_with_stdin(&[], "GAP 1, 0\n"), "TMCM-142"),
+        (run_with_stdin(&["--sim"], "GAP 1, 0\n"), "TMCM-142"),
         tmcl(&["run", &script]),
         tmcl(&["download", s(&fx.program)]),
         tmcl(&["snapshot", "save", &fresh("once.toml")]),
@@ -161,7 +161,7 @@ fn every_batch_face_on_the_built_in_simulator_says_so_once() {
 #[test]
 fn the_smd4_params_table_is_the_shells() {
     let cli = run(&["--protocol", "smd4", "params", "motor:v"]);
-    let shell = run(&["--protocol", "smd4", "-c", ":params MOTOR:V"]);
+    let shell = run(&["--sim", "--protocol", "smd4", "-c", ":params MOTOR:V"]);
     assert_eq!(code(&cli), 0, "{}", stderr(&cli));
     assert!(stdout(&cli).contains("MOTOR:VMAX"), "{}", stdout(&cli));
     assert_eq!(stdout(&cli), stdout(&shell));

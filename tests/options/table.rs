@@ -128,9 +128,8 @@ pub(super) fn fixtures() -> &'static Fixtures {
             transcript: path("session.log"),
             dir: dir.clone(),
         };
-        made(run(&["snapshot", "save", s(&fx.tmcl_snapshot)]));
-        made(run(&[
-            "--protocol",
+        made(run(&["--sim", "snapshot", "save", s(&fx.tmcl_snapshot)]));
+        made(run(&["--sim", "--protocol",
             "smd4",
             "snapshot",
             "save",
@@ -142,7 +141,7 @@ pub(super) fn fixtures() -> &'static Fixtures {
         )
         .unwrap();
         made(run(&["asm", s(&fx.program), "-o", s(&fx.binary)]));
-        made(run(&["--log", s(&fx.transcript), "-c", "GAP 1, 0"]));
+        made(run(&["--sim", "--log", s(&fx.transcript), "-c", "GAP 1, 0"]));
         fx
     })
 }
@@ -229,6 +228,8 @@ pub(super) struct Call {
     pub(super) rest: Vec<String>,
     pub(super) stdin: Option<String>,
     pub(super) env: Vec<(String, String)>,
+    /// Whether the face talks to a module (and so needs a link: `--sim` when none is given).
+    pub(super) talks: bool,
 }
 
 pub(super) fn call(face: Face, setup: &Setup) -> Call {
@@ -272,17 +273,35 @@ pub(super) fn call(face: Face, setup: &Setup) -> Call {
     };
     let mut rest = rest;
     rest.extend(setup.base.iter().cloned());
+    let talks = matches!(
+        face,
+        ShellC | ShellStdin | Run | Download | SnapshotSave | SnapshotDiff | SnapshotRestore | Scan
+    );
     Call {
         words: strings(words),
         rest,
         stdin,
         env: setup.env.clone(),
+        talks,
     }
 }
 
 /// The whole command line with `option` at `position`.
 pub(super) fn argv(call: &Call, option: &[String], position: Position) -> Vec<String> {
     let mut all = Vec::new();
+    let links = ["--port", "--tcp", "--sim"];
+    let linked = option.iter().chain(&call.rest).any(|w| {
+        links
+            .iter()
+            .any(|l| w == l || w.starts_with(&format!("{l}=")))
+    }) || call
+        .env
+        .iter()
+        .any(|(name, _)| name == "TMCLSH_PORT" || name == "TMCLSH_TCP");
+    if call.talks && !linked {
+        // The built-in simulator, as every command run without a terminal must say.
+        all.push("--sim".to_string());
+    }
     match position {
         Position::Before => {
             all.extend(option.iter().cloned());

@@ -45,7 +45,7 @@ fn exit_and_exit_0_end_the_script_as_its_last_line_would() {
             "done.rhai",
             &format!("print(\"before\");\n{call};\nprint(\"after\");\n"),
         );
-        let out = run(&["run", &path]);
+        let out = run(&["--sim", "run", &path]);
         assert_eq!(code(&out), 0, "{call}: {}", stderr(&out));
         assert_eq!(stdout(&out), "before\n", "{call}");
     }
@@ -57,7 +57,7 @@ fn exit_inside_a_closure_a_built_in_function_runs_ends_the_script_too() {
         "map.rhai",
         "[1, 2].map(|x| exit(x + 1));\nprint(\"after\");\n",
     );
-    let out = run(&["run", &path]);
+    let out = run(&["--sim", "run", &path]);
     assert_eq!(code(&out), 1, "{}", stderr(&out));
     assert!(
         stderr(&out).contains("the script called exit(2): it fails"),
@@ -65,7 +65,7 @@ fn exit_inside_a_closure_a_built_in_function_runs_ends_the_script_too() {
         stderr(&out)
     );
     let path = script("map0.rhai", "[1, 2].map(|x| exit(0));\nprint(\"after\");\n");
-    let out = run(&["run", &path]);
+    let out = run(&["--sim", "run", &path]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(stdout(&out), "");
 }

@@ -13,6 +13,7 @@ fn run_within(source: &str, extra: &[&str], guard: Duration) -> Output {
     let script = tempdir().join("limit.rhai");
     std::fs::write(&script, source).unwrap();
     let mut child = Command::new(bin())
+        .args(linked(extra))
         .arg("run")
         .arg(&script)
         .args(extra)
@@ -108,4 +109,14 @@ fn a_script_that_grows_without_bound_hits_the_memory_cap() {
         Duration::from_secs(30),
     );
     assert_eq!(code(&out), 0, "pad and blob still work: {}", stderr(&out));
+}
+
+/// `--sim` unless `extra` names a link: a script run without a terminal must be told what it
+/// talks to.
+fn linked(extra: &[&str]) -> Vec<&'static str> {
+    if extra.iter().any(|a| *a == "--port" || *a == "--tcp") {
+        Vec::new()
+    } else {
+        vec!["--sim"]
+    }
 }

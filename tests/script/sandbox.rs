@@ -17,6 +17,7 @@ fn run_script(cwd: &Path, source: &str, extra: &[&str]) -> Output {
     let script = cwd.join("s.rhai");
     std::fs::write(&script, source).unwrap();
     let mut child = Command::new(bin())
+        .args(linked(extra))
         .arg("run")
         .arg(&script)
         .args(extra)
@@ -258,5 +259,15 @@ fn errors_never_quote_the_file_not_even_when_caught() {
             "leaked to the script: {}",
             stdout(&out)
         );
+    }
+}
+
+/// `--sim` unless `extra` names a link: a script run without a terminal must be told what it
+/// talks to.
+fn linked(extra: &[&str]) -> Vec<&'static str> {
+    if extra.iter().any(|a| *a == "--port" || *a == "--tcp") {
+        Vec::new()
+    } else {
+        vec!["--sim"]
     }
 }

@@ -213,6 +213,7 @@ fn bad_module_and_switch_specs_are_refused_before_serving() {
 #[test]
 fn the_builtin_simulator_is_the_profiles_module() {
     let out = run(&[
+        "--sim",
         "--profile",
         "tmcm-6110",
         "-c",
@@ -232,7 +233,7 @@ fn the_builtin_simulator_is_the_profiles_module() {
         ["BA 100 777", "BA 100 777", "BA 100 1000", "BA 100 0"]
     );
     assert!(stderr(&out).contains("built-in simulated TMCM-6110"));
-    let out = run(&["--profile", "tmcm-1160", "-c", "GIO 2, 0"]);
+    let out = run(&["--sim", "--profile", "tmcm-1160", "-c", "GIO 2, 0"]);
     assert_ne!(
         code(&out),
         0,

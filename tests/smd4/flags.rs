@@ -51,6 +51,7 @@ fn help_lists_the_flag_bits_and_a_read_shows_the_words_it_reads() {
 #[test]
 fn the_value_of_sys_flags_is_its_two_words() {
     let out = crate::util::run(&[
+        "--sim",
         "--protocol",
         "smd4",
         "--value",

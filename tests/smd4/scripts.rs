@@ -125,7 +125,13 @@ fn a_line_the_validator_refuses_exits_2_from_a_script() {
 #[test]
 fn a_bad_target_is_refused() {
     let script = write("target.rhai", "target(300);\n");
-    let out = run(&["run", script.to_str().unwrap(), "--protocol", "smd4"]);
+    let out = run(&[
+        "--sim",
+        "run",
+        script.to_str().unwrap(),
+        "--protocol",
+        "smd4",
+    ]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     assert!(stderr(&out).contains("SMD4 address 300 is not in 0..247"));
 }
@@ -137,7 +143,13 @@ fn commission() -> PathBuf {
 #[test]
 fn the_commissioning_example_runs_on_the_built_in_drive() {
     let script = commission();
-    let out = run(&["run", script.to_str().unwrap(), "--protocol", "smd4"]);
+    let out = run(&[
+        "--sim",
+        "run",
+        script.to_str().unwrap(),
+        "--protocol",
+        "smd4",
+    ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(stdout(&out).contains("commissioned"), "{}", stdout(&out));
 }

@@ -53,3 +53,48 @@ fn unset_empty(cmd: Command) -> Command {
     })
     .mut_subcommands(unset_empty)
 }
+
+/// Variables of tmclsh's test harness (`TMCLSH_TEST_PORT` …), set around the runs they steer.
+const HARNESS: &[&str] = &["TMCLSH_TEST_", "TMCLSH_REQUIRE_"];
+
+/// The `TMCLSH_*` variables set in the environment that no option of `cmd` (or of its
+/// subcommands) reads, each named with the nearest one that is read: a misspelt
+/// `TMCLSH_POTR` would otherwise leave the port unset without a word.
+pub(in crate::cli) fn unknown(cmd: &Command) -> Vec<String> {
+    let mut known = Vec::new();
+    collect(cmd, &mut known);
+    let mut set: Vec<String> = std::env::vars_os()
+        .filter_map(|(name, _)| name.into_string().ok())
+        .filter(|name| name.starts_with(PREFIX) && !known.contains(name))
+        .filter(|name| !HARNESS.iter().any(|h| name.starts_with(h)))
+        .collect();
+    set.sort();
+    let tails: Vec<&str> = known.iter().map(|k| &k[PREFIX.len()..]).collect();
+    set.iter()
+        .map(|name| {
+            let nearest = crate::suggest::nearest(&name[PREFIX.len()..], tails.iter().copied());
+            format!(
+                "unknown environment variable {}, ignored{}",
+                crate::escape::escape_control(name),
+                crate::suggest::did_you_mean(&nearest.map(|n| format!("{PREFIX}{n}")))
+            )
+        })
+        .collect()
+}
+
+/// What every tmclsh variable starts with.
+const PREFIX: &str = "TMCLSH_";
+
+/// The variables the options of `cmd` and its subcommands read.
+fn collect(cmd: &Command, into: &mut Vec<String>) {
+    for arg in cmd.get_arguments() {
+        if let Some(name) = arg.get_env().and_then(|n| n.to_str()) {
+            if !into.iter().any(|k| k == name) {
+                into.push(name.to_string());
+            }
+        }
+    }
+    for sub in cmd.get_subcommands() {
+        collect(sub, into);
+    }
+}

@@ -1,5 +1,6 @@
-//! The configuration files: where they are, and each checked whole — an unknown key or a value
-//! the option would refuse is an error naming the file and the line, never ignored.
+//! The configuration files: where they are, and each checked whole — a value the option would
+//! refuse is an error naming the file and the line, never ignored; an unknown key is a warning
+//! with the nearest known one (a newer tmclsh's key does not stop an older one).
 
 use std::borrow::Cow;
 use std::path::{Path, PathBuf};
@@ -64,10 +65,21 @@ pub(super) fn project_file(from: &Path) -> Option<PathBuf> {
         .find(|file| file.symlink_metadata().is_ok())
 }
 
+/// A file's checked values, and what was wrong with the rest of it.
+#[derive(Debug, Default)]
+pub(super) struct Parsed {
+    /// The values that checked out.
+    pub entries: Vec<Entry>,
+    /// Unknown keys, each named with the file, line and the nearest known key.
+    pub warnings: Vec<String>,
+    /// Values refused, each with the file and line.
+    pub errors: Vec<String>,
+}
+
 /// What reading a configuration file gave.
 pub(super) enum Read {
     /// Its values, checked.
-    Entries(Vec<Entry>),
+    Entries(Parsed),
     /// Not used, and why: a project file another user could have written.
     Ignored(String),
 }
@@ -144,8 +156,9 @@ fn distrust_link(_meta: &std::fs::Metadata) -> Option<String> {
     None
 }
 
-/// Checks one file's text against the options of `cmd`.
-fn parse(path: &Path, text: &str, scope: Scope, cmd: &Command) -> Result<Vec<Entry>, String> {
+/// Checks one file's text against the options of `cmd`: an error for text that is not TOML,
+/// else every key checked on its own.
+fn parse(path: &Path, text: &str, scope: Scope, cmd: &Command) -> Result<Parsed, String> {
     let at = |offset: usize| format!("{}:{}", path.display(), line_at(text, offset));
     let root = DeTable::parse(text).map_err(|e| {
         let place = e
@@ -154,30 +167,54 @@ fn parse(path: &Path, text: &str, scope: Scope, cmd: &Command) -> Result<Vec<Ent
         format!("{place}: {}", e.message().trim_end())
     })?;
     let dir = path.parent().unwrap_or(Path::new("."));
-    let mut entries = Vec::new();
+    let mut parsed = Parsed::default();
     for (name, value) in root.get_ref().iter() {
         let Some(key) = KEYS.iter().find(|k| k.name == name.get_ref().as_ref()) else {
             let known: Vec<&str> = KEYS.iter().map(|k| k.name).collect();
             let nearest = crate::suggest::nearest(name.get_ref(), known.iter().copied());
-            return Err(format!(
-                "{}: unknown key `{}` (the keys are {}){}",
+            parsed.warnings.push(format!(
+                "{}: unknown key `{}`, ignored (the keys are {}){}",
                 at(name.span().start),
                 name.get_ref(),
                 known.join(", "),
                 crate::suggest::did_you_mean(&nearest.map(|n| format!("`{n}`")))
             ));
+            continue;
         };
-        let value = checked(key, value, dir, cmd)
-            .map_err(|why| format!("{}: {why}", at(value.span().start)))?;
-        entries.push(Entry {
+        let value = match checked(key, value, dir, cmd) {
+            Ok(value) => value,
+            Err(why) => {
+                parsed
+                    .errors
+                    .push(format!("{}: {why}", at(value.span().start)));
+                continue;
+            }
+        };
+        let line = line_at(text, name.span().start);
+        let names_link =
+            |e: &Entry| super::super::link_kinds::is_link_key(e.key.name) && e.value != "false";
+        let entry = Entry {
             key,
             value,
             file: path.to_path_buf(),
-            line: line_at(text, name.span().start),
+            line,
             scope,
-        });
+        };
+        if names_link(&entry) {
+            if let Some(other) = parsed.entries.iter().find(|e| names_link(e)) {
+                parsed.errors.push(format!(
+                    "{}: `{}` and `{}` (line {}) name different links; keep one",
+                    at(name.span().start),
+                    key.name,
+                    other.key.name,
+                    other.line
+                ));
+                continue;
+            }
+        }
+        parsed.entries.push(entry);
     }
-    Ok(entries)
+    Ok(parsed)
 }
 
 /// The value of `key` as its option takes it, or why it cannot be.

@@ -1,8 +1,13 @@
 //! Defaults that stick: a user file (`$XDG_CONFIG_HOME/tmclsh/config.toml`, else
 //! `~/.config/tmclsh/config.toml`) and a project file (`tmclsh.toml` in the working directory or
-//! the nearest one above it) give port, baud, protocol, profile, module, timeout, echo, a log
-//! directory and the serial line's settings (dtr, rts, rs485, rs485_delay, keep_latency).
-//! Precedence: command line > environment > project > user > built-in.
+//! the nearest one above it) give the link (port, tcp, or sim), baud, protocol, profile, module,
+//! timeout, echo, a log directory and the serial line's settings (dtr, rts, rs485, rs485_delay,
+//! keep_latency). Precedence: command line > environment > project > user > built-in; a project
+//! file that names a link replaces the user's link whole.
+//!
+//! A broken file cannot lock anyone out: `--help`, `--version`, `completions`, `man` run
+//! whatever it holds, and `tmclsh config` shows what it could read with the errors; every other
+//! command is refused (exit 2).
 //!
 //! A file's values become the defaults of the options (clap then ranks them below the command
 //! line and the environment by itself), so they count wherever the option does and, like
@@ -24,11 +29,13 @@ use crate::dialect::Dialect;
 use crate::exit::Exit;
 
 pub use file::Scope;
-use file::{Entry, Read, project_file, user_file};
+use file::{Entry, Parsed, Read, project_file, user_file};
 
 pub(super) use env::apply as apply_environment;
+pub(super) use env::unknown as unknown_variables;
 
 use super::connection::ModuleArgs;
+use super::link_kinds;
 use super::position::leaf_matches;
 
 /// What a key's value is.
@@ -71,7 +78,21 @@ pub const KEYS: &[Key] = &[
         id: "port",
         kind: Kind::Text,
         example: "port = \"/dev/ttyUSB0\" or \"usb:0403:6001\"",
-        unset: "the built-in simulated module",
+        unset: "no serial port",
+    },
+    Key {
+        name: "tcp",
+        id: "tcp",
+        kind: Kind::Text,
+        example: "tcp = \"192.168.1.20:4001\"",
+        unset: "no TCP link",
+    },
+    Key {
+        name: "sim",
+        id: "sim",
+        kind: Kind::Bool,
+        example: "sim = true",
+        unset: "",
     },
     Key {
         name: "baud",
@@ -185,6 +206,11 @@ pub struct Defaults {
     searched_from: Option<PathBuf>,
     /// The project file found and not used, and why.
     ignored: Option<(PathBuf, String)>,
+    /// Unknown keys, named with the nearest known one.
+    warnings: Vec<String>,
+    /// What could not be read or was refused, with file and line: only `--help`, `--version`,
+    /// `completions`, `man` and `config` run while there is any.
+    errors: Vec<String>,
 }
 
 impl Defaults {
@@ -193,21 +219,40 @@ impl Defaults {
         Defaults::default()
     }
 
-    /// Reads the user's and the project's files; a file with an unknown key or a bad value, or
-    /// one that is not a regular file, is an error naming the file (and line) (exit 2). A project
-    /// file that is not trusted (another user's, or writable by others) is ignored with a note on
-    /// stderr.
-    pub fn load() -> Result<Defaults, String> {
+    /// Reads the user's and the project's files, keeping what checks out: an unknown key is a
+    /// warning, a bad value or a file that cannot be read an error naming the file (and line).
+    /// A project file that is not trusted (another user's, or writable by others) is ignored
+    /// with a note on stderr.
+    pub fn load() -> Defaults {
         let cwd = std::env::current_dir().ok();
         let user = user_file();
         let mut project = cwd.as_deref().and_then(project_file);
         let cmd = super::command();
         let mut entries = Vec::new();
         let mut ignored = None;
+        let mut warnings = Vec::new();
+        let mut errors = Vec::new();
+        let mut take = |parsed: Parsed, entries: &mut Vec<Entry>| {
+            warnings.extend(parsed.warnings);
+            errors.extend(parsed.errors);
+            let overridden = |e: &Entry| {
+                entries.iter().any(|p: &Entry| {
+                    p.key.name == e.key.name
+                        || (link_kinds::is_link_key(p.key.name)
+                            && link_kinds::is_link_key(e.key.name))
+                })
+            };
+            let kept: Vec<Entry> = parsed
+                .entries
+                .into_iter()
+                .filter(|e| !overridden(e))
+                .collect();
+            entries.extend(kept);
+        };
         if let Some(path) = project.clone() {
-            match file::read(&path, Scope::Project, &cmd)? {
-                Read::Entries(read) => entries.extend(read),
-                Read::Ignored(why) => {
+            match file::read(&path, Scope::Project, &cmd) {
+                Ok(Read::Entries(parsed)) => take(parsed, &mut entries),
+                Ok(Read::Ignored(why)) => {
                     super::diagnose(&format!(
                         "ignored {}: {why}; a tmclsh.toml must be yours and writable only \
                          by you (chown it, or chmod go-w)",
@@ -216,27 +261,36 @@ impl Defaults {
                     ignored = Some((path, why));
                     project = None;
                 }
+                Err(why) => take(unreadable(why), &mut entries),
             }
         }
         // Anything at the user's path is read, so a directory or a FIFO there is named.
         if let Some(path) = user.as_deref().filter(|p| p.symlink_metadata().is_ok()) {
-            let Read::Entries(user_entries) = file::read(path, Scope::User, &cmd)? else {
-                unreachable!("only project files are ignored")
-            };
-            let overridden = |e: &Entry| entries.iter().any(|p: &Entry| p.key.name == e.key.name);
-            let kept: Vec<Entry> = user_entries
-                .into_iter()
-                .filter(|e| !overridden(e))
-                .collect();
-            entries.extend(kept);
+            match file::read(path, Scope::User, &cmd) {
+                Ok(Read::Entries(parsed)) => take(parsed, &mut entries),
+                Ok(Read::Ignored(_)) => unreachable!("only project files are ignored"),
+                Err(why) => take(unreadable(why), &mut entries),
+            }
         }
-        Ok(Defaults {
+        Defaults {
             entries,
             user,
             project,
             searched_from: cwd,
             ignored,
-        })
+            warnings,
+            errors,
+        }
+    }
+
+    /// The unknown keys, each named with the nearest known one.
+    pub fn warnings(&self) -> &[String] {
+        &self.warnings
+    }
+
+    /// What was refused, with file and line; empty when the files are sound.
+    pub fn errors(&self) -> &[String] {
+        &self.errors
     }
 
     /// The value `key` gets from a file, if any.
@@ -245,14 +299,21 @@ impl Defaults {
     }
 
     /// Makes the files' values the defaults of the options of `cmd` and its subcommands, except
-    /// `sim`, whose options of the same names are the simulator's own. Global options (`--profile`)
-    /// are set once at the top and reach every subcommand.
+    /// `sim`, whose options of the same names are the simulator's own (`--profile` reaches it too).
     pub fn apply(&self, cmd: Command) -> Command {
         let mut cmd = cmd;
         for entry in &self.entries {
             cmd = set_default(cmd, entry.key.id, &entry.value);
         }
         cmd
+    }
+}
+
+/// A file that could not be read at all.
+fn unreadable(why: String) -> Parsed {
+    Parsed {
+        errors: vec![why],
+        ..Parsed::default()
     }
 }
 
@@ -265,7 +326,8 @@ fn set_default(cmd: Command, id: &'static str, value: &str) -> Command {
         cmd
     };
     cmd.mut_subcommands(|sub| {
-        if sub.get_name() == "sim" {
+        // `--profile` means the same to the simulator: the modules it simulates.
+        if sub.get_name() == "sim" && id != super::profile_option::ID {
             sub
         } else {
             set_default(sub, id, value)
@@ -291,6 +353,9 @@ pub struct ConfigArgs {
     /// Filled in after parsing: the files read.
     #[arg(skip)]
     defaults: Option<Defaults>,
+    /// Filled in after parsing: where the link goes, and by which setting.
+    #[arg(skip)]
+    link: String,
 }
 
 /// One line of `tmclsh config`.
@@ -345,14 +410,48 @@ pub fn origin_of(matches: &ArgMatches, id: &str, defaults: &Defaults) -> Option<
     }
 }
 
+/// A setting as its source writes it, for saying which one wins: `--tcp 127.0.0.1:4001`,
+/// `TMCLSH_TCP=127.0.0.1:4001`, `sim = true (project FILE:LINE)`.
+fn setting(leaf: &ArgMatches, key: &Key, defaults: &Defaults) -> String {
+    let value = leaf
+        .get_raw(key.id)
+        .and_then(|mut v| v.next())
+        .map(|v| crate::escape::escape_control(&v.to_string_lossy()).into_owned())
+        .unwrap_or_default();
+    let flag = key.kind == Kind::Bool;
+    match leaf.value_source(key.id) {
+        Some(ValueSource::CommandLine) if flag => format!("--{}", key.name),
+        Some(ValueSource::CommandLine) => format!("--{} {value}", key.name),
+        Some(ValueSource::EnvVariable) => {
+            let origin = origin(leaf, key, defaults);
+            let var = origin.trim_start_matches("environment ");
+            format!("{var}={value}")
+        }
+        _ if flag => format!("{} = {value} ({})", key.name, origin(leaf, key, defaults)),
+        _ => format!(
+            "{} = \"{value}\" ({})",
+            key.name,
+            origin(leaf, key, defaults)
+        ),
+    }
+}
+
 /// Fills in the report of a parsed `tmclsh config` from its matches.
 pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults) {
     let leaf = leaf_matches(matches);
-    let tcp = leaf.get_one::<String>("tcp");
+    let chosen = link_kinds::chosen(leaf);
+    let winner = chosen.as_ref().ok().copied().flatten();
     let dialect = leaf.get_one::<&'static Dialect>("protocol").copied();
+    let winning = winner.and_then(|id| KEYS.iter().find(|k| k.id == id));
     let unused = |key: &Key| -> Option<String> {
-        if let (Some(tcp), "port" | "baud") = (tcp, key.id) {
-            return Some(format!("--tcp {} wins", crate::escape::escape_control(tcp)));
+        if let Some(win) = winning.filter(|w| w.id != key.id) {
+            let setting = setting(leaf, win, defaults);
+            if link_kinds::is_link_key(key.id) {
+                return Some(format!("{setting} wins"));
+            }
+            if key.id == "baud" && win.id != "port" {
+                return Some(format!("the link is not a serial port: {setting}"));
+            }
         }
         let dialect = dialect?;
         let owner = crate::dialect::DIALECTS
@@ -365,6 +464,25 @@ pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults)
                 dialect.name
             )
         })
+    };
+    args.link = match (&chosen, winning) {
+        (Err(why), _) => format!("refused: {why}"),
+        (Ok(_), Some(key)) => {
+            let origin = origin(leaf, key, defaults);
+            let value = |id: &str| {
+                leaf.get_one::<String>(id)
+                    .map(|v| crate::escape::escape_control(v).into_owned())
+                    .unwrap_or_default()
+            };
+            match key.id {
+                link_kinds::SIM => format!("the built-in simulator ({origin})"),
+                "tcp" => format!("TCP {} ({origin})", value("tcp")),
+                id => format!("{id} {} ({origin})", value(id)),
+            }
+        }
+        (Ok(_), None) => "none: commands run without a terminal are refused; the interactive \
+                          shell opens on the built-in simulator"
+            .to_string(),
     };
     args.report = KEYS
         .iter()
@@ -380,7 +498,9 @@ pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults)
                 Kind::Integer | Kind::Bool => raw,
                 _ => toml::Value::String(raw).to_string(),
             });
-            let unused = value.as_ref().and_then(|_| unused(key));
+            // `sim = false` is as good as unset: it never outranks a link.
+            let set = value.as_deref().is_some_and(|v| v != "false");
+            let unused = set.then(|| unused(key)).flatten();
             Line {
                 key,
                 value,
@@ -420,6 +540,12 @@ pub fn run(args: &ConfigArgs, out: &mut dyn Write) -> io::Result<Exit> {
         )?,
         (None, None, None) => writeln!(out, "# project file: none")?,
     }
+    for error in &defaults.errors {
+        writeln!(out, "# error: {error}")?;
+    }
+    for warning in &defaults.warnings {
+        writeln!(out, "# warning: {warning}")?;
+    }
     match &defaults.user {
         Some(path) if path.is_file() => writeln!(out, "# user file: {}", path.display())?,
         Some(path) => match crate::file::describe_path(path).as_str() {
@@ -446,7 +572,13 @@ pub fn run(args: &ConfigArgs, out: &mut dyn Write) -> io::Result<Exit> {
             None => writeln!(out, "# {} is not set: {}", line.key.name, line.key.unset)?,
         }
     }
-    Ok(Exit::Success)
+    writeln!(out, "# link: {}", args.link)?;
+    // A broken file fails `config` too, so a script checking the set-up notices.
+    Ok(if defaults.errors.is_empty() {
+        Exit::Success
+    } else {
+        Exit::Refused
+    })
 }
 
 #[cfg(test)]
@@ -475,11 +607,11 @@ mod tests {
         let file = place.join("tmclsh.toml");
         std::fs::write(&file, "baud = 300\nprotocol = \"smd4\"\n").unwrap();
         let cmd = super::super::command();
-        let Ok(file::Read::Entries(entries)) = file::read(&file, Scope::Project, &cmd) else {
+        let Ok(file::Read::Entries(parsed)) = file::read(&file, Scope::Project, &cmd) else {
             panic!("the file is read");
         };
         let defaults = Defaults {
-            entries,
+            entries: parsed.entries,
             ..Defaults::none()
         };
         let applied = defaults.apply(cmd);

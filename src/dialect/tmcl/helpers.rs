@@ -128,12 +128,13 @@ fn params(session: &TmclSession, arg: &str, out: &mut dyn Write) -> Result<(), S
     Ok(())
 }
 
-/// `:target N|CHAR`: the module lines without an address character go to.
+/// `:target [N|CHAR]`: the module lines without an address character go to (alone: shows it).
 fn target(session: &mut TmclSession, arg: &str, out: &mut dyn Write) -> Result<(), SessionError> {
-    let module = parse_module(arg)?;
-    session.set_target(module)?;
+    if !arg.trim().is_empty() {
+        session.set_target(parse_module(arg)?)?;
+    }
     let which = session.identity_line();
-    writeln!(out, "target: {}, {which}", ModuleName(module))?;
+    writeln!(out, "target: {}, {which}", ModuleName(session.target()))?;
     Ok(())
 }
 

@@ -82,7 +82,7 @@ fn an_empty_environment_variable_counts_as_unset_and_a_bad_one_is_named() {
             line.contains("built-in") || line.contains("is not set"),
             "{name}: {line}"
         );
-        let out = place.run(&["-c", "GAP 4, 0"], &[(name, "")]);
+        let out = place.run(&["--sim", "-c", "GAP 4, 0"], &[(name, "")]);
         assert_eq!(code(&out), 0, "{name}: {}", stderr(&out));
     }
     for (name, value) in [
@@ -91,7 +91,7 @@ fn an_empty_environment_variable_counts_as_unset_and_a_bad_one_is_named() {
         ("TMCLSH_PROTOCOL", "modbus"),
         ("TMCLSH_LOCAL_ECHO", "maybe"),
     ] {
-        let out = place.run(&["-c", "GAP 4, 0"], &[(name, value)]);
+        let out = place.run(&["--sim", "-c", "GAP 4, 0"], &[(name, value)]);
         let err = stderr(&out);
         assert_eq!(code(&out), 2, "{name}: {err}");
         assert!(
@@ -111,7 +111,10 @@ fn a_port_or_profile_refused_later_still_names_where_it_came_from() {
         "{}",
         stderr(&out)
     );
-    let out = place.run(&["-c", "GAP 4, 0"], &[("TMCLSH_PROFILE", "nosuch")]);
+    let out = place.run(
+        &["--sim", "-c", "GAP 4, 0"],
+        &[("TMCLSH_PROFILE", "nosuch")],
+    );
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     assert!(
         stderr(&out).contains("environment TMCLSH_PROFILE: no built-in profile or file 'nosuch'"),
@@ -119,7 +122,7 @@ fn a_port_or_profile_refused_later_still_names_where_it_came_from() {
         stderr(&out)
     );
     let file = place.project_file("profile = \"nosuch\"\n");
-    let out = place.run(&["-c", "GAP 4, 0"], &[]);
+    let out = place.run(&["--sim", "-c", "GAP 4, 0"], &[]);
     assert_eq!(code(&out), 2, "{}", stderr(&out));
     assert!(
         stderr(&out).contains(&format!(
@@ -130,7 +133,7 @@ fn a_port_or_profile_refused_later_still_names_where_it_came_from() {
         stderr(&out)
     );
     // From the command line, the option itself is the origin.
-    let out = place.run(&["--profile", "nosuch", "-c", "GAP 4, 0"], &[]);
+    let out = place.run(&["--sim", "--profile", "nosuch", "-c", "GAP 4, 0"], &[]);
     assert!(
         stderr(&out).contains("tmclsh: no built-in profile"),
         "{}",

@@ -33,7 +33,7 @@ fn a_project_file_others_could_have_written_is_ignored_with_a_note() {
         assert!(report.contains("ignored"), "{report}");
         assert!(shown(&report, "port").contains("is not set"), "{report}");
         // The session uses the built-in simulator, not the planted port.
-        let out = place.run(&["-c", "GAP 4, 0"], &[]);
+        let out = place.run(&["--sim", "-c", "GAP 4, 0"], &[]);
         assert_eq!(code(&out), 0, "{}", stderr(&out));
         assert!(stderr(&out).contains("ignored"), "{}", stderr(&out));
     }
