@@ -137,7 +137,10 @@ fn run_reporting(args: &RunArgs, configs: &Configured, blocks: &Blocks) -> Resul
         Ok(()) if lost(session.as_ref()).is_none() => Exit::Success,
         Ok(()) => Exit::Link,
         Err(report) => {
-            super::diagnose(&report.message);
+            // A closed stdout ends the run quietly (see `crate::stdout`).
+            if !crate::stdout::closed() {
+                super::diagnose(&report.message);
+            }
             report.exit
         }
     };
