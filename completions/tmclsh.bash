@@ -167,7 +167,7 @@ _tmclsh() {
 
     case "${cmd}" in
         tmclsh)
-            opts="-c -m -v -h -V --value --json --keep-going --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download upload snapshot scan transcript sim config help"
+            opts="-c -m -v -h -V --value --json --keep-going --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download upload snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -186,6 +186,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -293,7 +305,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__config)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -308,6 +320,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -393,7 +417,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__download)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --run --no-validate --address --prefix-comma --quiet-gap --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --run --no-validate --address --prefix-comma --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -408,6 +432,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -783,7 +819,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__params)
-            opts="-m -v -h --values --motor --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
+            opts="-m -v -h --values --motor --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -802,6 +838,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -913,7 +961,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__run)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -928,6 +976,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1015,7 +1075,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__scan)
-            opts="-m -v -h --addresses --first --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --timeout --log --local-echo --reconnect --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --help"
+            opts="-m -v -h --addresses --first --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --timeout --log --local-echo --reconnect --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1034,6 +1094,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1101,7 +1173,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__sim)
-            opts="-v -h --protocol --profile --pty --link --listen --modules --boot-loader --shared-line --baud --latency --state --adapter-echo --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --flags-without-item --help"
+            opts="-v -h --protocol --profile --pty --link --listen --slcan --slcan-ack --foreign-frames --modules --boot-loader --shared-line --baud --latency --state --adapter-echo --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --flags-without-item --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1131,6 +1203,10 @@ _tmclsh() {
                     return 0
                     ;;
                 --listen)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --slcan-ack)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1252,7 +1328,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__diff)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1267,6 +1343,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1404,7 +1492,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__restore)
-            opts="-m -v -h --store --yes --dry-run --force --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
+            opts="-m -v -h --store --yes --dry-run --force --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1419,6 +1507,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1486,7 +1586,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__save)
-            opts="-m -v -h --force --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
+            opts="-m -v -h --force --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1501,6 +1601,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1654,7 +1766,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__upload)
-            opts="-o -m -v -h --output --max --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --no-validate --address --prefix-comma --quiet-gap --help"
+            opts="-o -m -v -h --output --max --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --no-validate --address --prefix-comma --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1681,6 +1793,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1773,7 +1897,7 @@ _tmclsh_with_files() {
         esac
     done
     case "$prev" in
-        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--latency|--left-switch|--link|--listen|--local-echo|--log|--max|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--motor|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--can|--can-bitrate|--can-reply-id|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--latency|--left-switch|--link|--listen|--local-echo|--log|--max|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--motor|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--slcan-ack|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
     esac
     if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
         compopt -o filenames 2>/dev/null

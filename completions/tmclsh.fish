@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_tmclsh_global_optspecs
-    string join \n c= value json keep-going port= baud= tcp= sim dtr= rts= rs485 rs485-delay= keep-latency protocol= profile= m/module= timeout= echo= log= no-validate no-enter stay-ascii local-echo= binary reconnect= v/verbose address= prefix-comma quiet-gap= h/help V/version
+    string join \n c= value json keep-going port= baud= tcp= can= can-bitrate= can-reply-id= sim dtr= rts= rs485 rs485-delay= keep-latency protocol= profile= m/module= timeout= echo= log= no-validate no-enter stay-ascii local-echo= binary reconnect= v/verbose address= prefix-comma quiet-gap= h/help V/version
 end
 
 function __fish_tmclsh_needs_command
@@ -28,6 +28,9 @@ complete -c tmclsh -n "__fish_tmclsh_needs_command" -s c -d 'Execute LINE and ex
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_needs_command" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_needs_command" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
@@ -80,6 +83,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l motor -d 'With 
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
@@ -124,6 +130,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand man" -s h -l help -d 'Prin
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
@@ -167,6 +176,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand disasm" -s h -l help -d 'P
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand download" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
@@ -201,6 +213,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l max -d 'Read at
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand upload" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
@@ -237,6 +252,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and not __fish_s
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from save" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
@@ -269,6 +287,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
@@ -300,6 +321,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from restore" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
@@ -340,6 +364,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l addresses -d 'Add
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r
@@ -383,6 +410,7 @@ smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l profile -d 'Module profile instead of the TMCM-142\'s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l link -d 'Keep the symlink PATH pointed at the current pseudo-terminal, as udev keeps /dev/serial/by-id names pointed at an adapter: after the console\'s `unplug` it points at the new one (and is gone during the outage). An existing file that is not a symlink is refused' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l listen -d 'Serve on TCP at ADDR (HOST:PORT, loopback unless said otherwise; port 0 picks a free one); the bound address is the first line printed' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l slcan-ack -d 'How the slcan adapter acknowledges a transmitted frame: z, Z, cr (a bare CR) or none' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l modules -d 'Modules on the simulated RS-485 bus: addresses, each optionally with its own profile (`1,2` or `1:tmcm-142,2:tmcm-6110`; a module without one is of `--profile`)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l boot-loader -d 'The modules run their boot loader: 136 answers with B for V (`6110B131`), every other command with invalid command; `--boot-loader=2,3` for the modules at those addresses only' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l baud -d 'Pace bytes like a serial line at N baud (10 bits per byte, both directions)' -r
@@ -411,6 +439,8 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l prefix-only -d 'Ac
 comma\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l real-value-grid -d 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l pty -d 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l slcan -d 'Serve the simulated bus as an slcan (serial-line CAN) adapter: requests and replies are TMCL\'s CAN frames (`--can slcan:PATH` on the other side)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l foreign-frames -d 'Put another node\'s frame on the CAN bus (a CANopen heartbeat, ID 0x705) before each reply, as on a bus the modules share with other nodes'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l shared-line -d 'The modules hear each other\'s replies, as on a real RS-485 bus: a module whose address equals the host address (GP 76, 2 by default) takes the others\' replies for commands and answers them. Every module drops a partial binary frame after 5 ms of quiet (the UART time-out of Trinamic\'s firmware), shared line or not'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l adapter-echo -d 'Hand every byte the host sends back to it, before the module\'s answer, as a 2-wire RS-485 adapter without echo suppression does (tmclsh strips it: --local-echo)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s v -l verbose -d 'Log every frame and line received and sent, decoded, to stderr'
@@ -428,6 +458,9 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s h -l help -d 'Prin
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l baud -d 'Serial bit rate (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l tcp -d 'TCP address of the module or of a serial server (HOST:PORT)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l can -d 'CAN adapter of the modules\' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module\'s CAN ID is --module' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l can-bitrate -d 'The CAN bus\'s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN\'s is set with `ip link`) [default: 1000000, the modules\' default]' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l can-reply-id -d 'The CAN ID the modules send their replies to (the modules\' reply ID setting)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l dtr -d 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l rts -d 'RTS on opening the port: on, off, or keep (as for --dtr)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l rs485-delay -d 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485' -r

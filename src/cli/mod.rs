@@ -3,6 +3,7 @@
 //! nothing are refused (`relevance`).
 
 mod asm;
+pub mod can;
 mod completions;
 pub mod config;
 pub mod connection;
@@ -131,9 +132,13 @@ pub fn main() -> Exit {
             return Exit::Refused;
         }
     }
-    // Not locked for the whole run: `sim` prints from its console thread too.
-    let mut stdout = std::io::stdout();
-    let exit = match run(cli, &mut stdout) {
+    let result = run(cli, &mut crate::stdout::Stdout);
+    if crate::stdout::closed() {
+        // The reader of stdout went away (`| head`): the run ended at that write, quietly, as a
+        // Unix tool does; whatever failed on the way out followed from it.
+        return crate::stdout::EXIT;
+    }
+    let exit = match result {
         Ok(exit) => exit,
         Err(failure) => {
             diagnose(&failure.message);
@@ -296,13 +301,9 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
     finish_io(result.map(|()| Exit::Success))
 }
 
-/// The exit code of a command that only writes output: a closed pipe (`| head`) is no failure.
+/// The exit code of a command that only writes output (a closed stdout is decided in [`main`]).
 fn finish_io(result: std::io::Result<Exit>) -> Result<Exit, Failure> {
-    match result {
-        Ok(exit) => Ok(exit),
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
-        Err(e) => Err(Failure::new(Exit::Link, e.to_string())),
-    }
+    result.map_err(|e| Failure::new(Exit::Link, e.to_string()))
 }
 
 /// The TMCL profile, for the subcommands only TMCL has (`asm`, `disasm`, `download`).

@@ -129,6 +129,7 @@ pub fn scan(
         .iter()
         .copied()
         .filter(|a| !found.contains_key(a) && address_char(*a).is_some())
+        .filter(|_| !session.frames_only())
         .collect();
     let in_step = candidates.is_empty();
     if !in_step {

@@ -70,6 +70,8 @@ pub struct TmclSession {
     identify_each: bool,
     /// Every module in binary direct mode, whatever its profile says (`--binary`).
     binary_only: bool,
+    /// The link carries binary frames only (CAN): no ASCII mode, 139 never sent.
+    frames_only: bool,
     /// The last exchange on the line was a complete binary one: every binary receiver is at a
     /// frame boundary, and the next frame needs no quiet line before it.
     frames_aligned: bool,
@@ -129,7 +131,7 @@ impl TmclSession {
         transcript: Option<Transcript>,
     ) -> Result<Self, SessionError> {
         let mut session = Self::open_idle(link, profile, options, transcript)?;
-        session.binary_only = connect.binary;
+        session.binary_only = connect.binary || session.frames_only;
         session.identify(connect.profile_given)?;
         session.contact(session.target)?;
         Ok(session)
@@ -148,6 +150,7 @@ impl TmclSession {
                 options.module
             )));
         }
+        let frames_only = link.frames_only();
         let mut session = TmclSession {
             target: options.module,
             core: SessionCore::new(link, options, transcript),
@@ -162,7 +165,8 @@ impl TmclSession {
             unanswered: Unanswered::default(),
             late_frames: barrier::LateFrames::default(),
             identity: Identity::NotAsked,
-            binary_only: false,
+            binary_only: frames_only,
+            frames_only,
             frames_aligned: false,
             host: None,
             ascii_sent: false,
@@ -186,6 +190,11 @@ impl TmclSession {
     /// The target module's profile, used for completion, hints, help, snapshots and `:params`.
     pub fn profile(&self) -> &Arc<Profile> {
         &self.profile
+    }
+
+    /// Whether the link carries binary frames only (CAN): no ASCII mode, no ASCII probes.
+    pub fn frames_only(&self) -> bool {
+        self.frames_only
     }
 
     /// The module lines without an address character go to.
