@@ -526,6 +526,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('--no-reply-prefix', '--no-reply-prefix', [CompletionResultType]::ParameterName, 'Send replies to addressed packets without the @N, prefix')
             [CompletionResult]::new('--scientific-positions', '--scientific-positions', [CompletionResultType]::ParameterName, 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)')
             [CompletionResult]::new('--tzw-reply-ms', '--tzw-reply-ms', [CompletionResultType]::ParameterName, 'Report MOTOR:TZW in milliseconds, as its example does (its argument is in seconds)')
+            [CompletionResult]::new('--flags-without-item', '--flags-without-item', [CompletionResultType]::ParameterName, 'Answer SYS:FLAGS without the trailing item `1` only its example shows (the document declares no return for it)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             break

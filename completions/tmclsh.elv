@@ -497,6 +497,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --no-reply-prefix 'Send replies to addressed packets without the @N, prefix'
             cand --scientific-positions 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)'
             cand --tzw-reply-ms 'Report MOTOR:TZW in milliseconds, as its example does (its argument is in seconds)'
+            cand --flags-without-item 'Answer SYS:FLAGS without the trailing item `1` only its example shows (the document declares no return for it)'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
