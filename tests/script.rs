@@ -178,7 +178,12 @@ fn a_silent_module_is_exit_3() {
     let path = script("silent.rhai", "gap(1, 0);");
     let out = run(&["run", &path, "--port", &sim.first, "--timeout", "150"]);
     assert_eq!(code(&out), 3, "{}", stderr(&out));
-    assert!(stderr(&out).contains("no reply from module 1 (A) within 150 ms"));
+    assert!(
+        stderr(&out)
+            .contains("module 1 (A) did not answer command 136 (firmware version) within 150 ms"),
+        "{}",
+        stderr(&out)
+    );
 }
 
 #[test]

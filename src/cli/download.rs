@@ -2,8 +2,10 @@
 //! module, verify it, optionally start it. A TMCL subcommand: it names TMCL.
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
+use crate::dialect::tmcl::asm::load_program;
+use crate::dialect::tmcl::profile::catalogue;
 use crate::dialect::tmcl::program::download::{download_and_run, load};
 use crate::dialect::{Configured, Purpose, tmcl};
 use crate::exit::{Exit, Failure};
@@ -34,9 +36,11 @@ pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Res
             "this subcommand works with TMCL modules only",
         ));
     }
-    // A file that cannot be read is refused before the port is opened.
-    crate::file::read(&args.file, crate::file::READ_LIMIT)
+    // A file that cannot be read, or a program no module could take, is refused before the port
+    // is opened.
+    let bytes = crate::file::read(&args.file, crate::file::READ_LIMIT)
         .map_err(|e| Failure::refused(format!("cannot read {e}")))?;
+    precheck(&bytes, &args.file, configs)?;
     let mut session = args.module.open(configs, Audience::Batch, Purpose::Talk)?;
     let tmcl = tmcl::session(&mut *session).expect("a TMCL session");
     // Checked against the module identified (its own command set: EI, VECT … where it has
@@ -53,4 +57,23 @@ pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Res
     let text = result?;
     writeln!(out, "{text}").map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
     Ok(Exit::Success)
+}
+
+/// Refuses a program that the profile in effect and every built-in profile refuse (a syntax
+/// error, an unknown label, a command no module has) without touching the module; whether the
+/// module identified takes it is decided once it is identified.
+fn precheck(bytes: &[u8], file: &Path, configs: &Configured) -> Result<(), Failure> {
+    let name = file.display().to_string();
+    let refusal = match load_program(bytes, &name, super::tmcl_profile(configs)) {
+        Ok(_) => return Ok(()),
+        Err(e) => e,
+    };
+    let any = catalogue::all()
+        .iter()
+        .any(|profile| load_program(bytes, &name, profile).is_ok());
+    if any {
+        Ok(())
+    } else {
+        Err(Failure::refused(refusal.to_string()))
+    }
 }

@@ -16,8 +16,8 @@ pub const SHARED: &[Helper] = &[
     ),
     helper(
         "params",
-        ":params [--values [--motor N]] [filter]",
-        "list the module's parameters or settings (matching filter); --values reads them",
+        ":params [--values] [--motor N] [filter]",
+        "list the module's parameters or settings (matching filter); --values reads them, --motor N (with --values) one motor's",
         ArgKind::Param,
         Section::Session,
     ),

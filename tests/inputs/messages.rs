@@ -45,7 +45,6 @@ const TMCL: &[&str] = &[
     "SAC 0, 0, 0",
     "XGAP 4, 0",
     ":target 99",
-    ":target",
     ":echo x",
     ":run x",
     ":download",
