@@ -165,7 +165,11 @@ pub fn scan(
     }
     let hosts: Vec<(u8, Option<u8>)> = found.values().map(|m| (m.address, m.host)).collect();
     // On CAN the reply ID, not the serial host address, tells replies from requests.
-    let hosts = if session.frames_only() { Vec::new() } else { hosts };
+    let hosts = if session.frames_only() {
+        Vec::new()
+    } else {
+        hosts
+    };
     for warning in host_clash::warnings(&hosts) {
         session.notice(warning);
     }
