@@ -68,6 +68,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('asm', 'asm', [CompletionResultType]::ParameterValue, 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)')
             [CompletionResult]::new('disasm', 'disasm', [CompletionResultType]::ParameterValue, 'Turn a program file back into TMCL source')
             [CompletionResult]::new('download', 'download', [CompletionResultType]::ParameterValue, 'Store a program (source or program file) in the module, verify it, optionally run it')
+            [CompletionResult]::new('upload', 'upload', [CompletionResultType]::ParameterValue, 'Read the stored program back and print it as source (or write FILE.tmc / FILE.bin)')
             [CompletionResult]::new('snapshot', 'snapshot', [CompletionResultType]::ParameterValue, 'Save the module''s parameters to a TOML file, compare with one, or write one back')
             [CompletionResult]::new('scan', 'scan', [CompletionResultType]::ParameterValue, 'Find the modules on the bus, with firmware versions and echo settings')
             [CompletionResult]::new('transcript', 'transcript', [CompletionResultType]::ParameterValue, 'Turn a --log transcript into a replayable Rhai script')
@@ -227,6 +228,44 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))')
             [CompletionResult]::new('--run', '--run', [CompletionResultType]::ParameterName, 'Start the program after downloading it')
+            [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
+            [CompletionResult]::new('--prefix-comma', '--prefix-comma', [CompletionResultType]::ParameterName, 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            break
+        }
+        'tmclsh;upload' {
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Write the program to FILE.tmc (source) or FILE.bin (a program file) instead of printing it')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Write the program to FILE.tmc (source) or FILE.bin (a program file) instead of printing it')
+            [CompletionResult]::new('--max', '--max', [CompletionResultType]::ParameterName, 'Read at most N instructions (default: the module''s program memory)')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial bit rate (8N1)')
+            [CompletionResult]::new('--tcp', '--tcp', [CompletionResultType]::ParameterName, 'TCP address of the module or of a serial server (HOST:PORT)')
+            [CompletionResult]::new('--can', '--can', [CompletionResultType]::ParameterName, 'CAN adapter of the modules'' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module''s CAN ID is --module')
+            [CompletionResult]::new('--can-bitrate', '--can-bitrate', [CompletionResultType]::ParameterName, 'The CAN bus''s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN''s is set with `ip link`) [default: 1000000, the modules'' default]')
+            [CompletionResult]::new('--can-reply-id', '--can-reply-id', [CompletionResultType]::ParameterName, 'The CAN ID the modules send their replies to (the modules'' reply ID setting)')
+            [CompletionResult]::new('--dtr', '--dtr', [CompletionResultType]::ParameterName, 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)')
+            [CompletionResult]::new('--rts', '--rts', [CompletionResultType]::ParameterName, 'RTS on opening the port: on, off, or keep (as for --dtr)')
+            [CompletionResult]::new('--rs485-delay', '--rs485-delay', [CompletionResultType]::ParameterName, 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485')
+            [CompletionResult]::new('--protocol', '--protocol', [CompletionResultType]::ParameterName, 'The protocol the module speaks (also selects the built-in simulated module)')
+            [CompletionResult]::new('--profile', '--profile', [CompletionResultType]::ParameterName, 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--module', '--module', [CompletionResultType]::ParameterName, 'Address of the target module (1 = address character A)')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Milliseconds to wait for a reply before giving up (exit code 3)')
+            [CompletionResult]::new('--echo', '--echo', [CompletionResultType]::ParameterName, 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)')
+            [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date')
+            [CompletionResult]::new('--local-echo', '--local-echo', [CompletionResultType]::ParameterName, 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips')
+            [CompletionResult]::new('--reconnect', '--reconnect', [CompletionResultType]::ParameterName, 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never')
+            [CompletionResult]::new('--address', '--address', [CompletionResultType]::ParameterName, 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)')
+            [CompletionResult]::new('--quiet-gap', '--quiet-gap', [CompletionResultType]::ParameterName, 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)')
+            [CompletionResult]::new('--sim', '--sim', [CompletionResultType]::ParameterName, 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident')
+            [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)')
+            [CompletionResult]::new('--keep-latency', '--keep-latency', [CompletionResultType]::ParameterName, 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)')
+            [CompletionResult]::new('--no-enter', '--no-enter', [CompletionResultType]::ParameterName, 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)')
+            [CompletionResult]::new('--stay-ascii', '--stay-ascii', [CompletionResultType]::ParameterName, 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in')
+            [CompletionResult]::new('--binary', '--binary', [CompletionResultType]::ParameterName, 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))')
             [CompletionResult]::new('--no-validate', '--no-validate', [CompletionResultType]::ParameterName, 'Send lines the validator would refuse (still canonicalised where they parse)')
             [CompletionResult]::new('--prefix-comma', '--prefix-comma', [CompletionResultType]::ParameterName, 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
@@ -530,6 +569,7 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             [CompletionResult]::new('asm', 'asm', [CompletionResultType]::ParameterValue, 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)')
             [CompletionResult]::new('disasm', 'disasm', [CompletionResultType]::ParameterValue, 'Turn a program file back into TMCL source')
             [CompletionResult]::new('download', 'download', [CompletionResultType]::ParameterValue, 'Store a program (source or program file) in the module, verify it, optionally run it')
+            [CompletionResult]::new('upload', 'upload', [CompletionResultType]::ParameterValue, 'Read the stored program back and print it as source (or write FILE.tmc / FILE.bin)')
             [CompletionResult]::new('snapshot', 'snapshot', [CompletionResultType]::ParameterValue, 'Save the module''s parameters to a TOML file, compare with one, or write one back')
             [CompletionResult]::new('scan', 'scan', [CompletionResultType]::ParameterValue, 'Find the modules on the bus, with firmware versions and echo settings')
             [CompletionResult]::new('transcript', 'transcript', [CompletionResultType]::ParameterValue, 'Turn a --log transcript into a replayable Rhai script')
@@ -563,6 +603,9 @@ Register-ArgumentCompleter -Native -CommandName 'tmclsh' -ScriptBlock {
             break
         }
         'tmclsh;help;download' {
+            break
+        }
+        'tmclsh;help;upload' {
             break
         }
         'tmclsh;help;snapshot' {

@@ -65,6 +65,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
             cand download 'Store a program (source or program file) in the module, verify it, optionally run it'
+            cand upload 'Read the stored program back and print it as source (or write FILE.tmc / FILE.bin)'
             cand snapshot 'Save the module''s parameters to a TOML file, compare with one, or write one back'
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
@@ -215,6 +216,43 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -v 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
             cand --verbose 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
             cand --run 'Start the program after downloading it'
+            cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
+            cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+        }
+        &'tmclsh;upload'= {
+            cand -o 'Write the program to FILE.tmc (source) or FILE.bin (a program file) instead of printing it'
+            cand --output 'Write the program to FILE.tmc (source) or FILE.bin (a program file) instead of printing it'
+            cand --max 'Read at most N instructions (default: the module''s program memory)'
+            cand --port 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)'
+            cand --baud 'Serial bit rate (8N1)'
+            cand --tcp 'TCP address of the module or of a serial server (HOST:PORT)'
+            cand --can 'CAN adapter of the modules'' bus: slcan:PATH (a serial-line CAN adapter: CANable, USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module''s CAN ID is --module'
+            cand --can-bitrate 'The CAN bus''s bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN''s is set with `ip link`) [default: 1000000, the modules'' default]'
+            cand --can-reply-id 'The CAN ID the modules send their replies to (the modules'' reply ID setting)'
+            cand --dtr 'DTR on opening the port: on, off, or keep (as found, and left so on closing: a board that resets on DTR is not reset by tmclsh starting or ending)'
+            cand --rts 'RTS on opening the port: on, off, or keep (as for --dtr)'
+            cand --rs485-delay 'RTS raised MS milliseconds before sending and held MS after (BEFORE,AFTER to give them apart); implies --rs485'
+            cand --protocol 'The protocol the module speaks (also selects the built-in simulated module)'
+            cand --profile 'Module profile instead of the TMCM-142''s: a built-in name, alias or module number (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema in docs/profiles.md)'
+            cand -m 'Address of the target module (1 = address character A)'
+            cand --module 'Address of the target module (1 = address character A)'
+            cand --timeout 'Milliseconds to wait for a reply before giving up (exit code 3)'
+            cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
+            cand --log 'Append every byte sent and received, timestamped and decoded, to FILE; given a directory (or a path ending in /), write a new file there named by device and date'
+            cand --local-echo 'Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo suppression): on strips exactly those bytes from what comes back, comparing them; auto (the default) finds out at open and says so; off never strips'
+            cand --reconnect 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never'
+            cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
+            cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
+            cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
+            cand --keep-latency 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
+            cand --no-enter 'Do not send the enter-ASCII-mode frame (the module is already in ASCII mode)'
+            cand --stay-ascii 'Leave the modules in ASCII mode on exit instead of restoring the mode they were found in'
+            cand --binary 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
+            cand -v 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
+            cand --verbose 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
             cand --no-validate 'Send lines the validator would refuse (still canonicalised where they parse)'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
             cand -h 'Print help (see more with ''--help'')'
@@ -500,6 +538,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand asm 'Assemble a stand-alone TMCL program (check it, list it, write FILE.bin)'
             cand disasm 'Turn a program file back into TMCL source'
             cand download 'Store a program (source or program file) in the module, verify it, optionally run it'
+            cand upload 'Read the stored program back and print it as source (or write FILE.tmc / FILE.bin)'
             cand snapshot 'Save the module''s parameters to a TOML file, compare with one, or write one back'
             cand scan 'Find the modules on the bus, with firmware versions and echo settings'
             cand transcript 'Turn a --log transcript into a replayable Rhai script'
@@ -524,6 +563,8 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
         &'tmclsh;help;disasm'= {
         }
         &'tmclsh;help;download'= {
+        }
+        &'tmclsh;help;upload'= {
         }
         &'tmclsh;help;snapshot'= {
             cand save 'Read every readable parameter into FILE (TOML, keyed by parameter name)'

@@ -186,6 +186,8 @@ fn usage_errors_show_escape_sequences_from_arguments_escaped() {
     );
 }
 
+#[cfg(target_os = "linux")]
+mod closed_stdout;
 mod config;
 mod doc_examples;
 mod examples;

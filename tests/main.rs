@@ -5,6 +5,7 @@ mod util;
 
 mod asm;
 mod binary_session;
+mod bus;
 mod can;
 mod catalogue;
 mod cli;

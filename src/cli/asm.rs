@@ -61,13 +61,8 @@ pub(super) fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Res
         crate::file::write(path, &bytes)
             .map_err(|e| Failure::new(Exit::Refused, format!("cannot write {e}")))?;
     }
-    report(args, &program, &source, profile, out).or_else(|e| {
-        if e.kind() == std::io::ErrorKind::BrokenPipe {
-            Ok(())
-        } else {
-            Err(Failure::new(Exit::Refused, e.to_string()))
-        }
-    })?;
+    report(args, &program, &source, profile, out)
+        .map_err(|e| Failure::new(Exit::Refused, e.to_string()))?;
     Ok(Exit::Success)
 }
 

@@ -26,6 +26,7 @@ mod sim;
 mod snapshot;
 mod target;
 mod transcript;
+pub mod upload;
 
 use std::borrow::Cow;
 use std::ffi::OsString;
@@ -78,6 +79,8 @@ enum Command {
     Disasm(disasm::DisasmArgs),
     /// Store a program (source or program file) in the module, verify it, optionally run it.
     Download(download::DownloadArgs),
+    /// Read the stored program back and print it as source (or write FILE.tmc / FILE.bin).
+    Upload(upload::UploadArgs),
     /// Save the module's parameters to a TOML file, compare with one, or write one back.
     Snapshot(snapshot::SnapshotArgs),
     /// Find the modules on the bus, with firmware versions and echo settings.
@@ -129,9 +132,13 @@ pub fn main() -> Exit {
             return Exit::Refused;
         }
     }
-    // Not locked for the whole run: `sim` prints from its console thread too.
-    let mut stdout = std::io::stdout();
-    let exit = match run(cli, &mut stdout) {
+    let result = run(cli, &mut crate::stdout::Stdout);
+    if crate::stdout::closed() {
+        // The reader of stdout went away (`| head`): the run ended at that write, quietly, as a
+        // Unix tool does; whatever failed on the way out followed from it.
+        return crate::stdout::EXIT;
+    }
+    let exit = match result {
         Ok(exit) => exit,
         Err(failure) => {
             diagnose(&failure.message);
@@ -283,6 +290,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Asm(args)) => return asm::run(&args, tmcl_profile(&configs), out),
         Some(Command::Disasm(args)) => return disasm::run(&args, tmcl_profile(&configs), out),
         Some(Command::Download(args)) => return download::run(args, &configs, out),
+        Some(Command::Upload(args)) => return upload::run(args, &configs, out),
         Some(Command::Snapshot(args)) => return snapshot::run(args, &configs, out),
         Some(Command::Scan(args)) => return scan::run(args, &configs, out),
         Some(Command::Transcript(args)) => return transcript::run(args, &configs, out),
@@ -293,13 +301,9 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
     finish_io(result.map(|()| Exit::Success))
 }
 
-/// The exit code of a command that only writes output: a closed pipe (`| head`) is no failure.
+/// The exit code of a command that only writes output (a closed stdout is decided in [`main`]).
 fn finish_io(result: std::io::Result<Exit>) -> Result<Exit, Failure> {
-    match result {
-        Ok(exit) => Ok(exit),
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
-        Err(e) => Err(Failure::new(Exit::Link, e.to_string())),
-    }
+    result.map_err(|e| Failure::new(Exit::Link, e.to_string()))
 }
 
 /// The TMCL profile, for the subcommands only TMCL has (`asm`, `disasm`, `download`).

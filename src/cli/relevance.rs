@@ -27,6 +27,16 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
         "it stores TMCL programs",
     ),
     (
+        "upload",
+        &["no_validate"],
+        "it sends only reads of program memory",
+    ),
+    (
+        "upload",
+        &["address", "prefix_comma", "quiet_gap"],
+        "it reads TMCL programs",
+    ),
+    (
         "scan",
         &["module", "address"],
         "a scan tries every address in --addresses",
@@ -74,7 +84,7 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
 ];
 
 /// Subcommands that only one dialect has: (subcommand, dialect name).
-const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl")];
+const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl"), ("upload", "tmcl")];
 
 /// The subcommand that takes every shared option to show what it would set (`tmclsh config`).
 const SHOWS_ALL: &str = "config";

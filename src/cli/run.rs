@@ -82,7 +82,10 @@ pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
         Ok(()) if lost(session.as_ref()).is_none() => Exit::Success,
         Ok(()) => Exit::Link,
         Err(report) => {
-            super::diagnose(&report.message);
+            // A closed stdout ends the run quietly (see `crate::stdout`).
+            if !crate::stdout::closed() {
+                super::diagnose(&report.message);
+            }
             report.exit
         }
     };

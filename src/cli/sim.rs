@@ -336,7 +336,7 @@ pub(super) fn run(
             if answer == Answer::Quit {
                 std::process::exit(0);
             }
-            println!("{}", answer.line());
+            crate::stdout::line(&answer.line());
             waker.wake();
         }
     });
@@ -349,7 +349,7 @@ pub(super) fn run(
                     let _ = writeln!(out, "{}", path.display()).and_then(|()| out.flush());
                     first = false;
                 } else {
-                    println!("pty {}", path.display());
+                    crate::stdout::line(&format!("pty {}", path.display()));
                 }
             })
         }

@@ -66,7 +66,6 @@ pub(super) fn run(
     };
     match written {
         Ok(()) => Ok(Exit::Success),
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
         Err(e) => Err(Failure::new(
             Exit::Refused,
             format!("cannot write the script: {e}"),

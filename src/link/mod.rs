@@ -80,6 +80,13 @@ pub trait Link: Send {
         None
     }
 
+    /// Whether nothing but this session can be on the line (the in-process simulator): then no
+    /// byte another program or module sent before it opened can sit in a module's receiver, and
+    /// the first frame needs no quiet line before it. Serial ports and TCP bridges are shared.
+    fn private(&self) -> bool {
+        false
+    }
+
     /// Seconds per byte on the wire, where the link knows it (serial: 10 bits per byte).
     fn byte_time(&self) -> Option<std::time::Duration> {
         None

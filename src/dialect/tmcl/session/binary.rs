@@ -309,10 +309,19 @@ impl TmclSession {
     fn trailing_noise(&mut self, module: u8, reply: &[u8; FRAME_LEN]) -> SessionError {
         let rest = &self.core.wire.rx.bytes()[FRAME_LEN..];
         let after = hex(&rest[..rest.len().min(3 * FRAME_LEN)]);
+        let clash = answered_too(module, reply[0], rest)
+            .map(|other| {
+                format!(
+                    " — a reply from {}, which takes the replies of others for requests: its \
+                     address is the host address",
+                    ModuleName(other)
+                )
+            })
+            .unwrap_or_default();
         self.binary_noise(
             "a reply followed by more data",
             format!(
-                "line noise: the reply {} from {} was followed by {after}; not taken",
+                "line noise: the reply {} from {} was followed by {after}{clash}; not taken",
                 hex(reply),
                 ModuleName(module)
             ),
@@ -330,6 +339,14 @@ impl TmclSession {
         self.core.wire.note(&message);
         SessionError::Link(message)
     }
+}
+
+/// The module whose reply frame to the same host follows the reply of `module`: on a shared bus,
+/// one at the host address answering that reply as if it were a request to it.
+fn answered_too(module: u8, host: u8, rest: &[u8]) -> Option<u8> {
+    let frame: &[u8; FRAME_LEN] = rest.get(..FRAME_LEN)?.try_into().ok()?;
+    let other = ReplyFrame::decode(frame).ok()?;
+    (other.host == host && other.module != module && other.module == host).then_some(other.module)
 }
 
 /// A binary reply in the ASCII reply format (`BA 100 -5000`), so one-shot output looks the same in

@@ -78,8 +78,9 @@ pub struct TmclSession {
     /// The host address binary replies begin with, from the last one taken (GP 76; unknown
     /// until a module has answered, and again after it was set).
     host: Option<u8>,
-    /// ASCII bytes went out since the line was last kept quiet for a frame time-out: a module in
-    /// binary mode may hold some of them as the start of a frame.
+    /// ASCII bytes went out since the line was last kept quiet for a frame time-out (or a shared
+    /// line was just opened, holding what others left): a module in binary mode may hold some of
+    /// them as the start of a frame.
     ascii_sent: bool,
     /// A binary frame went out since the last ASCII line: modules in ASCII mode hold its bytes
     /// as the start of a line, which a CR must end before the next line.
@@ -174,6 +175,9 @@ impl TmclSession {
             version_host: None,
             hosts: BTreeMap::new(),
         };
+        // What another program or module sent just before may sit in a binary receiver: the
+        // first frame on a shared line waits for it to fall quiet (a private one has no other).
+        session.ascii_sent = !session.core.wire.link.private();
         let opened = format!("session opened on {}", session.core.wire.link.describe());
         session.core.wire.note(&opened);
         if session.profile.generic {
