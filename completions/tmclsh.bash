@@ -305,7 +305,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__config)
-            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -819,7 +819,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__params)
-            opts="-m -v -h --values --motor --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
+            opts="-m -v -h --json --values --motor --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -917,7 +917,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__ports)
-            opts="-m -h --probe --baud --protocol --module --all --help"
+            opts="-m -h --probe --baud --protocol --module --all --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -947,7 +947,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__profiles)
-            opts="-h --help"
+            opts="-h --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -961,7 +961,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__run)
-            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --junit --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1067,6 +1067,21 @@ _tmclsh() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --junit)
+                    local oldifs
+                    if [ -n "${IFS+x}" ]; then
+                        oldifs="$IFS"
+                    fi
+                    IFS=$'\n'
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    if [ -n "${oldifs+x}" ]; then
+                        IFS="$oldifs"
+                    fi
+                    if [[ "${BASH_VERSINFO[0]}" -ge 4 ]]; then
+                        compopt -o filenames
+                    fi
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1075,7 +1090,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__scan)
-            opts="-m -v -h --addresses --first --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --timeout --log --local-echo --reconnect --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --help"
+            opts="-m -v -h --addresses --first --json --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --timeout --log --local-echo --reconnect --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1173,7 +1188,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__sim)
-            opts="-v -h --protocol --profile --pty --link --listen --slcan --slcan-ack --foreign-frames --modules --boot-loader --shared-line --baud --latency --state --adapter-echo --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --help"
+            opts="-v -h --protocol --profile --pty --link --listen --slcan --slcan-ack --foreign-frames --modules --boot-loader --shared-line --baud --latency --state --adapter-echo --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --flags-without-item --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1328,7 +1343,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__diff)
-            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
+            opts="-m -v -h --json --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1897,7 +1912,7 @@ _tmclsh_with_files() {
         esac
     done
     case "$prev" in
-        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--can|--can-bitrate|--can-reply-id|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--latency|--left-switch|--link|--listen|--local-echo|--log|--max|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--motor|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--slcan-ack|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--can|--can-bitrate|--can-reply-id|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--junit|--latency|--left-switch|--link|--listen|--local-echo|--log|--max|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--motor|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--slcan-ack|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
     esac
     if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
         compopt -o filenames 2>/dev/null

@@ -95,6 +95,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --reconnect 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --json 'Print one JSON document instead of the table; not with --values (fields in docs/machine-output.md)'
             cand --values 'Read the readable parameters (those whose name contains FILTER) from the module, with what each value means; the link is given as for any command (--port, --tcp, --sim)'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
@@ -110,6 +111,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --help 'Print help (see more with ''--help'')'
         }
         &'tmclsh;profiles'= {
+            cand --json 'Print one JSON document instead (fields in docs/machine-output.md)'
             cand -h 'Print help'
             cand --help 'Print help'
         }
@@ -120,6 +122,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --module 'With --probe: the address to ask (TMCL: 1 = address character A; SMD4: @N)'
             cand --probe 'Ask each USB port (or each PORT named) which module is there: address --module at --baud in --protocol (TMCL: command 136 to address 1 at 9600 baud by default), each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
             cand --all 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)'
+            cand --json 'Print one JSON document instead (fields in docs/machine-output.md)'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
@@ -159,6 +162,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --max-memory 'Memory the script may hold, in MiB (0: no limit)'
             cand --max-time 'Wall-clock time after which the script is stopped, its motors too (exit code 1): 500ms, 30s, 2m, or milliseconds'
             cand --allow-dir 'A directory the script''s file functions may also reach (repeatable); by default they reach only the script''s directory and the working directory'
+            cand --junit 'Write a JUnit XML report to FILE: one test case per `test("name", || …)` block of the script (the whole script as one case when it has none), failures with their message and script position. Written whatever the outcome; a failed block does not end the run'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
             cand --keep-latency 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -322,6 +326,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --reconnect 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never'
             cand --address 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
+            cand --json 'Print one JSON document instead of the table (fields in docs/machine-output.md)'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
             cand --keep-latency 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -410,6 +415,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --echo 'Set the target module''s echo on opening: char, line (every reply attributed to its request) or none (global parameter 67 in RAM; it stays after tmclsh ends)'
             cand --quiet-gap 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)'
             cand --first 'Stop at the first module found, trying the addresses in ascending order'
+            cand --json 'Print one JSON document instead of the table (fields in docs/machine-output.md), also when nothing answered'
             cand --sim 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
             cand --rs485 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver''s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
             cand --keep-latency 'Leave an FTDI adapter''s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -491,6 +497,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --no-reply-prefix 'Send replies to addressed packets without the @N, prefix'
             cand --scientific-positions 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)'
             cand --tzw-reply-ms 'Report MOTOR:TZW in milliseconds, as its example does (its argument is in seconds)'
+            cand --flags-without-item 'Answer SYS:FLAGS without the trailing item `1` only its example shows (the document declares no return for it)'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }
@@ -525,6 +532,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand -v 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
             cand --verbose 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
             cand --prefix-comma 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual''s @3MOTOR:STOP'
+            cand --json 'Print one JSON document instead (fields in docs/machine-output.md)'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
         }

@@ -104,6 +104,7 @@ off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l reconnect -d 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l json -d 'Print one JSON document instead of the table; not with --values (fields in docs/machine-output.md)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l values -d 'Read the readable parameters (those whose name contains FILTER) from the module, with what each value means; the link is given as for any command (--port, --tcp, --sim)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
@@ -115,6 +116,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s v -l verbose -d
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -l no-validate -d 'Send lines the validator would refuse (still canonicalised where they parse)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand params" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -l json -d 'Print one JSON document instead (fields in docs/machine-output.md)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand profiles" -s h -l help -d 'Print help'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l baud -d 'With --probe: the bit rate to probe at (8N1)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l protocol -d 'The protocol the module speaks (also selects the built-in simulated module)' -r -f -a "tmcl\t'Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`'
@@ -122,6 +124,7 @@ smd4\t'AML SMD4 text protocol'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s m -l module -d 'With --probe: the address to ask (TMCL: 1 = address character A; SMD4: @N)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l probe -d 'Ask each USB port (or each PORT named) which module is there: address --module at --baud in --protocol (TMCL: command 136 to address 1 at 9600 baud by default), each reply awaited 100 ms (a port in use by another program is reported, not waited for). Built-in ports are probed only when named: what is wired to them may not expect the bytes'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l all -d 'List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -l json -d 'Print one JSON document instead (fields in docs/machine-output.md)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand ports" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -l install -d 'Write the script where the shell loads it from (bash: bash-completion\'s directory under $XDG_DATA_HOME; zsh: $XDG_DATA_HOME/zsh/site-functions; fish: $XDG_CONFIG_HOME/fish) instead of printing it, and say where'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand completions" -s h -l help -d 'Print help'
@@ -156,6 +159,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-call-depth -d 
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-memory -d 'Memory the script may hold, in MiB (0: no limit)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l max-time -d 'Wall-clock time after which the script is stopped, its motors too (exit code 1): 500ms, 30s, 2m, or milliseconds' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l allow-dir -d 'A directory the script\'s file functions may also reach (repeatable); by default they reach only the script\'s directory and the working directory' -r -F
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l junit -d 'Write a JUnit XML report to FILE: one test case per `test("name", || …)` block of the script (the whole script as one case when it has none), failures with their message and script position. Written whatever the outcome; a failed block does not end the run' -r -F
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand run" -l keep-latency -d 'Leave an FTDI adapter\'s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -308,6 +312,7 @@ off\t'It does not'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l reconnect -d 'Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always waits): the port is found again by the name given (a symlink or usb: name follows an adapter plugged back under another device name); an interrupted read is sent again, a motion or write never' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l address -d 'SMD4: send requests with the @N address prefix (0 broadcasts and gets no replies)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l json -d 'Print one JSON document instead of the table (fields in docs/machine-output.md)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand snapshot; and __fish_seen_subcommand_from diff" -l keep-latency -d 'Leave an FTDI adapter\'s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -386,6 +391,7 @@ line\t'The whole line echoed after its end'
 none\t'No echo, only the reply'"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l quiet-gap -d 'SMD4: milliseconds of silence that end a multi-line reply (SYS:FLAGSV, COMS:NET:IPCONF have no end marker)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l first -d 'Stop at the first module found, trying the addresses in ascending order'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l json -d 'Print one JSON document instead of the table (fields in docs/machine-output.md), also when nothing answered'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l sim -d 'Talk to the built-in simulated module: the explicit choice a command run without a terminal needs, so that no script passes against the simulator by accident'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l rs485 -d 'RS-485 direction: RTS high while tmclsh sends, low to receive (the driver\'s RS-485 mode where it has one, else tmclsh raises RTS around each write and waits until it has left)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand scan" -l keep-latency -d 'Leave an FTDI adapter\'s latency timer as it is (tmclsh otherwise sets the low-latency flag, which lowers a 16 ms timer to 1 ms where the driver honours it)'
@@ -453,6 +459,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-current-roundin
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l no-reply-prefix -d 'Send replies to addressed packets without the @N, prefix'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l scientific-positions -d 'Report PACT/PREL in scientific notation like other FLOATs (examples: 1000.00)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l tzw-reply-ms -d 'Report MOTOR:TZW in milliseconds, as its example does (its argument is in seconds)'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l flags-without-item -d 'Answer SYS:FLAGS without the trailing item `1` only its example shows (the document declares no return for it)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l port -d 'Serial port of the module (e.g. /dev/ttyUSB0, usb:0403:6001); without a link, only the interactive shell starts (on the built-in simulated module)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l baud -d 'Serial bit rate (8N1)' -r
@@ -487,6 +494,7 @@ complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l stay-ascii -d '
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l binary -d 'Talk to the modules in binary direct mode (typed lines go out as binary frames), whether or not they have the ASCII interface'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -s v -l verbose -d 'Say on stderr which module answered and the profile used (TMCM-6110, firmware 6110V131, profile tmcm-6110 (built in))'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l prefix-comma -d 'SMD4: put a comma after the address prefix (@3,MOTOR:STOP) instead of the manual\'s @3MOTOR:STOP'
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -l json -d 'Print one JSON document instead (fields in docs/machine-output.md)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand config" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download upload snapshot scan transcript sim config help" -f -a "params" -d 'Print the module\'s axis and global parameters (those matching FILTER)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand help; and not __fish_seen_subcommand_from params profiles ports completions man run asm disasm download upload snapshot scan transcript sim config help" -f -a "profiles" -d 'List the built-in TMCL module profiles with their sources, or show one in full'

@@ -27,6 +27,7 @@ pub mod exit;
 pub mod file;
 #[doc(hidden)]
 pub mod fuzz_entry;
+pub mod json;
 pub mod link;
 pub mod progress;
 #[cfg(feature = "cli")]

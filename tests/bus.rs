@@ -5,6 +5,7 @@
 mod binary_only;
 mod identify;
 mod scan_pause;
+mod smd4_replies;
 mod upload;
 
 use std::process::Output;

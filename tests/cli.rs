@@ -197,6 +197,7 @@ mod helper_text;
 mod history;
 mod install;
 mod log;
+mod machine_output;
 mod output;
 mod ports;
 mod snapshot_save;

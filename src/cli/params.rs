@@ -20,6 +20,9 @@ pub(crate) struct ParamsArgs {
     /// Show parameters whose identifier or name contains FILTER, or whose number is FILTER
     /// (SMD4: commands whose mnemonic contains FILTER).
     pub filter: Option<String>,
+    /// Print one JSON document instead of the table; not with --values (fields in docs/machine-output.md).
+    #[arg(long, conflicts_with = "values")]
+    pub json: bool,
     /// Read the readable parameters (those whose name contains FILTER) from the module, with
     /// what each value means; the link is given as for any command (--port, --tcp, --sim).
     #[arg(long)]
@@ -55,9 +58,25 @@ pub(crate) fn run(
     out: &mut dyn Write,
 ) -> io::Result<Exit> {
     let filter = args.filter.as_deref().unwrap_or("");
-    let matched = configs
-        .of(args.dialect.protocol)
-        .write_params(filter, out)?;
+    let config = configs.of(args.dialect.protocol);
+    let matched = if args.json {
+        match config.params_json(filter) {
+            Ok(rows) => {
+                let document = crate::json::json!({
+                    "protocol": args.dialect.protocol.name,
+                    "parameters": rows,
+                });
+                crate::json::write(&document, out)?;
+                true
+            }
+            Err(message) => {
+                super::diagnose(&message);
+                false
+            }
+        }
+    } else {
+        config.write_params(filter, out)?
+    };
     Ok(if matched {
         Exit::Success
     } else {

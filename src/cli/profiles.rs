@@ -10,6 +10,7 @@ use crate::dialect::tmcl::profile::family::Identity;
 use crate::dialect::tmcl::profile::{Param, Profile};
 use crate::escape::escape_control;
 use crate::exit::Exit;
+use crate::json::{Value, json};
 
 use super::Failure;
 
@@ -19,16 +20,27 @@ pub(super) struct ProfilesArgs {
     /// Show this profile in full: a built-in name, alias or module number, or a profile file.
     #[arg(value_name = "NAME|FILE")]
     pub name: Option<PathBuf>,
+    /// Print one JSON document instead (fields in docs/machine-output.md).
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// Lists the built-in profiles, or shows one.
 pub(super) fn run(args: &ProfilesArgs, out: &mut dyn Write) -> Result<Exit, Failure> {
-    let result = match &args.name {
-        None => list(out),
-        Some(arg) => {
+    let result = match (&args.name, args.json) {
+        (None, false) => list(out),
+        (None, true) => {
+            let all: Vec<Value> = listed().iter().map(|p| summary_json(p)).collect();
+            crate::json::write(&json!({ "profiles": all }), out)
+        }
+        (Some(arg), json) => {
             let profile =
                 catalogue::resolve(arg).map_err(|e| Failure::new(Exit::Refused, e.to_string()))?;
-            detail(&profile, out)
+            if json {
+                crate::json::write(&json!({ "profile": detail_json(&profile) }), out)
+            } else {
+                detail(&profile, out)
+            }
         }
     };
     result
@@ -83,9 +95,62 @@ fn parameter_count(p: &Profile) -> String {
     format!("{} ({uncertain} uncertain)", all.len())
 }
 
-fn list(out: &mut dyn Write) -> io::Result<()> {
+/// The built-in profiles and the generic one, in the order the list shows them.
+fn listed() -> Vec<Arc<Profile>> {
     let mut profiles: Vec<Arc<Profile>> = catalogue::all().to_vec();
     profiles.push(catalogue::generic());
+    profiles
+}
+
+/// A profile's row of the list as JSON (`profiles --json`).
+fn summary_json(p: &Profile) -> Value {
+    let id = &p.identity;
+    json!({
+        "name": p.name,
+        "module": p.module,
+        "generic": p.generic,
+        "aliases": id.aliases,
+        "module_number": id.module_number,
+        "axes": p.axes,
+        "ascii": id.ascii_interface().as_str(),
+        "generation": id.generation,
+        "axis_parameters": p.axis.len(),
+        "global_parameters": p.global.len(),
+        "uncertain_parameters": p.axis.iter().chain(&p.global).filter(|p| p.uncertain).count(),
+        "manual": id.manual,
+        "manual_url": id.manual_url,
+        "origin": origin(p),
+    })
+}
+
+/// A profile in full as JSON (`profiles NAME --json`): its row, its I/O ports, documents and
+/// parameters.
+fn detail_json(p: &Profile) -> Value {
+    let mut object = match summary_json(p) {
+        Value::Object(object) => object,
+        _ => unreachable!("summary_json makes an object"),
+    };
+    let id = &p.identity;
+    let ports: Vec<Value> = p
+        .io_ports
+        .iter()
+        .map(|port| json!({ "bank": port.bank, "port": port.port, "name": port.name }))
+        .collect();
+    let documents: Vec<Value> = id
+        .sources
+        .iter()
+        .map(|doc| json!({ "id": doc.id, "what": doc.what, "at": doc.at }))
+        .collect();
+    object.insert("ascii_commands".into(), json!(p.commands.ascii_mnemonics()));
+    object.insert("io_ports".into(), json!(ports));
+    object.insert("documents".into(), json!(documents));
+    let parameters = crate::dialect::tmcl::params::params_json(p, "").unwrap_or_default();
+    object.insert("parameters".into(), json!(parameters));
+    Value::Object(object)
+}
+
+fn list(out: &mut dyn Write) -> io::Result<()> {
+    let profiles = listed();
     let rows: Vec<Row> = profiles.iter().map(|p| row(p)).collect();
     let header = Row {
         name: "profile".into(),

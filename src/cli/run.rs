@@ -5,14 +5,16 @@ use std::time::Duration;
 
 use crate::dialect::{Configured, Purpose};
 use crate::exit::{Exit, Failure};
+use crate::script::blocks::Blocks;
 use crate::script::limits::DEFAULT_MAX_MEMORY_MIB;
-use crate::script::{self, Limits};
+use crate::script::{self, Limits, junit};
 use crate::session::interrupt;
 
 use super::connection::{Audience, ModuleArgs};
 
 /// Arguments of `run`.
 #[derive(Debug, Clone, clap::Args)]
+#[command(after_long_help = script_functions())]
 pub struct RunArgs {
     /// The Rhai script to run.
     #[arg(value_name = "SCRIPT")]
@@ -41,6 +43,11 @@ pub struct RunArgs {
     /// recordings.
     #[arg(long)]
     pub overwrite: bool,
+    /// Write a JUnit XML report to FILE: one test case per `test("name", || …)` block of the
+    /// script (the whole script as one case when it has none), failures with their message and
+    /// script position. Written whatever the outcome; a failed block does not end the run.
+    #[arg(long, value_name = "FILE", value_hint = clap::ValueHint::FilePath)]
+    pub junit: Option<PathBuf>,
     /// Arguments for the script, in its array `args` (strings).
     #[arg(last = true, value_name = "ARGS")]
     pub args: Vec<String>,
@@ -50,6 +57,43 @@ pub struct RunArgs {
 /// written, the modules it moved are stopped (MST) and every module is put back in the mode it
 /// was found in before exiting.
 pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
+    let blocks = Blocks::default();
+    let result = run_reporting(&args, configs, &blocks);
+    if let Some(file) = &args.junit {
+        let outcome = match &result {
+            Ok(Exit::Success) => Ok(()),
+            Ok(exit) => Err(Failure::new(*exit, "the run failed (see its output)")),
+            Err(failure) => Err(failure.clone()),
+        };
+        let name = args.script.display().to_string();
+        let mut report = blocks.borrow().clone();
+        if report.cases.is_empty() && report.outside.is_none() {
+            // Refused or failed before the script ran (a compile error, no link).
+            report.outside = outcome.clone().err();
+        }
+        let xml = junit::xml(&name, &report, &outcome);
+        if let Err(e) = std::fs::write(file, xml) {
+            super::diagnose(&format!("--junit {}: {e}", file.display()));
+            return Ok(worst(result, Exit::Link));
+        }
+    }
+    result
+}
+
+/// The exit code of `result`, made `exit` when the run passed.
+fn worst(result: Result<Exit, Failure>, exit: Exit) -> Exit {
+    match result {
+        Ok(Exit::Success) => exit,
+        Ok(other) => other,
+        Err(failure) => {
+            super::diagnose(&failure.message);
+            failure.exit
+        }
+    }
+}
+
+/// Runs the script, leaving what its `test` blocks did in `blocks`.
+fn run_reporting(args: &RunArgs, configs: &Configured, blocks: &Blocks) -> Result<Exit, Failure> {
     interrupt::install();
     script::check_file(&args.script)?;
     for dir in &args.allow_dir {
@@ -70,7 +114,18 @@ pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
         overwrite: args.overwrite,
         needs_transcript: true,
     };
-    let (mut session, outcome) = crate::shell::run_file(&args.script, &args.args, session, limits);
+    let (mut session, outcome) = crate::shell::run_file_with_blocks(
+        &args.script,
+        &args.args,
+        session,
+        limits,
+        blocks.clone(),
+    );
+    for case in &blocks.borrow().cases {
+        if let Some(failure) = &case.failure {
+            super::diagnose(&format!("test {:?} failed: {}", case.name, failure.message));
+        }
+    }
     for notice in session.take_notices() {
         super::diagnose(&notice);
     }
@@ -106,6 +161,14 @@ pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
         }
     }
     Ok(exit)
+}
+
+/// The functions scripts can call, for `run --help` (`:help NAME` in the shell shows one).
+fn script_functions() -> String {
+    format!(
+        "Script functions (besides Rhai's own; docs/script-functions.md):\n\n{}",
+        crate::script::registry::listing(&crate::dialect::functions::tables())
+    )
 }
 
 /// A time for `--max-time`: `500ms`, `30s`, `2m`, or a number of milliseconds; at least 1 ms.

@@ -13,6 +13,7 @@ use crate::dialect::DialectSession;
 use crate::dialect::session::BusScan;
 use crate::dialect::{Configured, Purpose};
 use crate::exit::{Exit, Failure};
+use crate::json::json;
 use crate::session::interrupt;
 
 use super::connection::{Audience, ModuleArgs};
@@ -29,6 +30,10 @@ pub(super) struct ScanArgs {
     /// Stop at the first module found, trying the addresses in ascending order.
     #[arg(long)]
     pub first: bool,
+    /// Print one JSON document instead of the table (fields in docs/machine-output.md), also
+    /// when nothing answered.
+    #[arg(long)]
+    pub json: bool,
     /// Which bus, and how to talk to it.
     #[command(flatten)]
     module: ModuleArgs,
@@ -65,11 +70,22 @@ pub(super) fn run(
         super::diagnose(&message);
     }
     let scan = result?;
+    if args.json {
+        let document = json!({
+            "protocol": dialect.name,
+            "found": scan.found,
+            "summary": scan.summary,
+            "modules": scan.modules,
+        });
+        crate::json::write(&document, out).map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
+    }
     if scan.found == 0 {
         return Err(Failure::new(Exit::Link, scan.summary));
     }
-    out.write_all(scan.report.as_bytes())
-        .map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
+    if !args.json {
+        out.write_all(scan.report.as_bytes())
+            .map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
+    }
     Ok(Exit::Success)
 }
 
@@ -98,5 +114,6 @@ fn first_found(
             per_reply.as_millis()
         ),
         report: String::new(),
+        modules: Vec::new(),
     })
 }

@@ -43,6 +43,9 @@ enum Action {
         /// A second snapshot file to compare with, instead of the module.
         #[arg(value_name = "FILE2")]
         other: Option<PathBuf>,
+        /// Print one JSON document instead of the table (fields in docs/machine-output.md).
+        #[arg(long)]
+        json: bool,
         #[command(flatten)]
         module: ModuleArgs,
     },
@@ -96,20 +99,23 @@ pub(super) fn run(
         Action::Diff {
             file,
             other: Some(other),
+            json,
             module,
         } => {
             let params = configs.of(module.protocol()).snapshot_params();
-            finish(actions::diff_files(&file, &other, &params, out).map(|_| ()))
+            let output = diff_output(json);
+            finish(actions::diff_files_as(&file, &other, &params, output, out).map(|_| ()))
         }
         Action::Diff {
             file,
             other: None,
+            json,
             module,
         } => {
             // Read before the link is opened: nothing is sent for a file that is not a snapshot.
             let snapshot = Snapshot::load(&file)?;
             with_device(&module, configs, |d| {
-                actions::diff_snapshot(d, &snapshot, &file, out).map(|_| ())
+                actions::diff_snapshot_as(d, &snapshot, &file, diff_output(json), out).map(|_| ())
             })
         }
         Action::Restore {
@@ -167,6 +173,14 @@ fn with_device(
         super::diagnose(&message);
     }
     finish(result)
+}
+
+fn diff_output(json: bool) -> actions::DiffOutput {
+    if json {
+        actions::DiffOutput::Json
+    } else {
+        actions::DiffOutput::Table
+    }
 }
 
 fn finish(result: Result<(), SessionError>) -> Result<Exit, Failure> {

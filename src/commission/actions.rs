@@ -107,9 +107,34 @@ pub fn diff_snapshot(
     path: &Path,
     out: &mut dyn Write,
 ) -> Result<Comparison, SessionError> {
+    diff_snapshot_as(device, file, path, DiffOutput::Table, out)
+}
+
+/// How a comparison is shown.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DiffOutput {
+    /// The table of differences and a summary line.
+    Table,
+    /// One JSON document (`snapshot diff --json`; fields in docs/machine-output.md).
+    Json,
+}
+
+/// [`diff_snapshot`] shown as `output` says.
+pub fn diff_snapshot_as(
+    device: &mut dyn ParamDevice,
+    file: &Snapshot,
+    path: &Path,
+    output: DiffOutput,
+    out: &mut dyn Write,
+) -> Result<Comparison, SessionError> {
     let comparison = diff::with_device(file, device)?;
     let right = device.who();
-    report(comparison, [&path.display().to_string(), &right], out)
+    report(
+        comparison,
+        [&path.display().to_string(), &right],
+        output,
+        out,
+    )
 }
 
 /// Compares two snapshot files; `params` (the profile's view) tells settings from live values.
@@ -119,20 +144,38 @@ pub fn diff_files(
     params: &[ParamRef],
     out: &mut dyn Write,
 ) -> Result<Comparison, SessionError> {
+    diff_files_as(left, right, params, DiffOutput::Table, out)
+}
+
+/// [`diff_files`] shown as `output` says.
+pub fn diff_files_as(
+    left: &Path,
+    right: &Path,
+    params: &[ParamRef],
+    output: DiffOutput,
+    out: &mut dyn Write,
+) -> Result<Comparison, SessionError> {
     let (a, b) = (Snapshot::load(left)?, Snapshot::load(right)?);
     let comparison = diff::between(&a, &b, params);
     let labels = [left.display().to_string(), right.display().to_string()];
-    report(comparison, [&labels[0], &labels[1]], out)
+    report(comparison, [&labels[0], &labels[1]], output, out)
 }
 
+/// Shows the comparison; fails (exit 1) when something differs, after showing it.
 fn report(
     comparison: Comparison,
     labels: [&str; 2],
+    output: DiffOutput,
     out: &mut dyn Write,
 ) -> Result<Comparison, SessionError> {
-    diff::write_table(&comparison, labels, out)?;
+    match output {
+        DiffOutput::Table => diff::write_table(&comparison, labels, out)?,
+        DiffOutput::Json => crate::json::write(&diff::json(&comparison, labels), out)?,
+    }
     if comparison.differences.is_empty() {
-        writeln!(out, "{}", diff::summary(&comparison))?;
+        if output == DiffOutput::Table {
+            writeln!(out, "{}", diff::summary(&comparison))?;
+        }
         Ok(comparison)
     } else {
         Err(failed(diff::summary(&comparison)))

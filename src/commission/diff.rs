@@ -4,6 +4,7 @@
 use std::io::{self, Write};
 
 use crate::commission::SnapshotRole;
+use crate::json::{Value, json};
 use crate::session::SessionError;
 
 use super::device::{ParamDevice, ParamRef, Scope};
@@ -72,6 +73,25 @@ impl Side {
             (Side::Missing, Side::Missing) => true,
             (Side::Unreadable(a), Side::Unreadable(b)) => a == b,
             _ => false,
+        }
+    }
+
+    /// The side as JSON: `{"state": "value", "value": 5, "label": null, "real": null}`, or
+    /// `{"state": "absent"}`, or `{"state": "unreadable", "error": "…"}`.
+    fn json(&self) -> Value {
+        match self {
+            Side::Value(reading) => json!({
+                "state": "value",
+                "value": match &reading.value {
+                    ParamValue::Int(i) => json!(i),
+                    ParamValue::Float(f) => json!(f),
+                    ParamValue::Text(t) => json!(t),
+                },
+                "label": reading.label,
+                "real": reading.real,
+            }),
+            Side::Missing => json!({ "state": "absent" }),
+            Side::Unreadable(error) => json!({ "state": "unreadable", "error": error }),
         }
     }
 
@@ -216,6 +236,32 @@ pub fn summary(comparison: &Comparison) -> String {
             crate::count::counted(comparison.compared, "setting")
         ),
     }
+}
+
+/// The comparison as one JSON document; `labels` name the two sides.
+pub fn json(comparison: &Comparison, labels: [&str; 2]) -> Value {
+    let differences: Vec<Value> = comparison
+        .differences
+        .iter()
+        .map(|d| {
+            json!({
+                "name": d.name,
+                "section": d.scope.section(),
+                "place": d.place,
+                "unit": d.unit,
+                "left": d.left.json(),
+                "right": d.right.json(),
+            })
+        })
+        .collect();
+    json!({
+        "left": labels[0],
+        "right": labels[1],
+        "compared": comparison.compared,
+        "differ": comparison.differences.len(),
+        "summary": summary(comparison),
+        "differences": differences,
+    })
 }
 
 /// Prints the differences as a table (nothing when there are none); `labels` name the two sides.

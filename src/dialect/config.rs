@@ -85,6 +85,10 @@ pub trait DialectConfig: AsAny {
     /// so on stderr and returns false.
     fn write_params(&self, filter: &str, out: &mut dyn Write) -> io::Result<bool>;
 
+    /// Its parameters matching `filter` as JSON objects (`tmclsh params --json`, fields in
+    /// docs/machine-output.md); the error says why none matches.
+    fn params_json(&self, filter: &str) -> Result<Vec<crate::json::Value>, String>;
+
     /// Every parameter a snapshot of its modules holds (to compare two files offline).
     fn snapshot_params(&self) -> Vec<ParamRef>;
 

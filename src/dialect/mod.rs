@@ -9,6 +9,7 @@
 
 mod config;
 pub mod elsewhere;
+pub mod functions;
 pub mod grammar;
 pub mod guard;
 pub mod helper;
@@ -53,7 +54,7 @@ pub struct Dialect {
     pub recognises: fn(&str) -> bool,
     /// The device functions its scripts have, besides those every script has: how a script
     /// run in the wrong session is told.
-    pub script_functions: &'static [&'static str],
+    pub script_functions: &'static [crate::script::registry::ScriptFn],
     /// Its helper commands besides those every dialect has (`:bin`, `:flags` …).
     pub helpers: &'static [Helper],
     /// Reads the dialect's tables (TMCL: the `--profile` file) into a [`DialectConfig`].

@@ -100,6 +100,8 @@ pub struct BusScan {
     pub summary: String,
     /// The table of modules found, the summary line and any notes, line by line.
     pub report: String,
+    /// Each module found as a JSON object (`scan --json`; fields in docs/machine-output.md).
+    pub modules: Vec<crate::json::Value>,
 }
 
 /// Any value as [`Any`], so a dialect can get its own session type back from a trait object.

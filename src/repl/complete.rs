@@ -54,6 +54,9 @@ fn complete_helper(rest: &str, start: usize, word: &str, grammar: &dyn Grammar) 
         ArgKind::Topic => {
             let mut topics: Vec<&str> = grammar.topics().to_vec();
             topics.extend(helpers::available(dialect).map(|h| h.name));
+            topics.extend(crate::dialect::functions::names(dialect));
+            let mut seen = std::collections::HashSet::new();
+            topics.retain(|t| seen.insert(*t));
             let mut out: Vec<Candidate> = fixed(&topics);
             out.extend(grammar.topic_words(word));
             out

@@ -18,12 +18,15 @@ macro_rules! volatile {
 }
 pub(crate) use volatile;
 
+pub mod blocks;
 pub mod commission;
 pub(crate) mod common;
 mod ending;
 pub mod failure;
+pub mod junit;
 pub mod limits;
 pub mod memory;
+pub mod registry;
 pub mod sandbox;
 pub(crate) mod waiting;
 
@@ -58,6 +61,7 @@ pub struct Script {
     sandbox: Rc<Sandbox>,
     print: PrintSink,
     elsewhere: Elsewhere,
+    blocks: blocks::Blocks,
 }
 
 /// What a call of a function the engine lacks means, if the caller knows (a function of another
@@ -83,6 +87,7 @@ impl Script {
                 sandbox: Rc::new(sandbox),
                 print: Rc::new(print_to_stdout),
                 elsewhere: Rc::new(|_| None),
+                blocks: blocks::Blocks::default(),
             }),
             Err(e) => Err(Failure::refused(format!("cannot read script {e}"))),
         }
@@ -102,12 +107,19 @@ impl Script {
             sandbox: Rc::new(sandbox),
             print: Rc::new(print_to_stdout),
             elsewhere: Rc::new(|_| None),
+            blocks: blocks::Blocks::default(),
         }
     }
 
     /// The script with its `print` lines sent to `sink` instead of stdout.
     pub fn print_to(mut self, sink: PrintSink) -> Script {
         self.print = sink;
+        self
+    }
+
+    /// The script with what its `test` blocks did left in `blocks` when it has run.
+    pub fn report_blocks_to(mut self, blocks: blocks::Blocks) -> Script {
+        self.blocks = blocks;
         self
     }
 
@@ -123,14 +135,16 @@ impl Script {
     /// discarded before a reply, an event) goes out before the next `print` line, which may show
     /// that reply; what is left when the script ends is the caller's. With
     /// `limits.needs_transcript`, the script ends (exit 3) at its next operation once
-    /// `lost_transcript` says the transcript can no longer be written. The engine holds the
-    /// session for the run and gives it back when dropped.
+    /// `lost_transcript` says the transcript can no longer be written. After a failed `test`
+    /// block, `stop` stops what the session set moving (its messages go to stderr). The engine
+    /// holds the session for the run and gives it back when dropped.
     pub fn run<S: 'static>(
         &self,
         session: S,
         annotate: fn(&mut S, &str) -> bool,
         notices: fn(&mut S) -> Vec<String>,
         lost_transcript: fn(&S) -> bool,
+        stop: fn(&mut S) -> Vec<String>,
         register: Registrar<S>,
     ) -> (S, Result<(), Failure>) {
         let shared = Rc::new(RefCell::new(session));
@@ -168,7 +182,17 @@ impl Script {
                 },
             );
             register(&mut engine, &shared, &self.sandbox);
-            execute(&engine, self)
+            let record = blocks::Record::default();
+            let session = shared.clone();
+            let after_failure: Rc<dyn Fn()> = Rc::new(move || {
+                if let Ok(mut session) = session.try_borrow_mut() {
+                    for message in stop(&mut session) {
+                        notice_to_stderr(&escape_control(&message));
+                    }
+                }
+            });
+            blocks::register(&mut engine, record.clone(), after_failure);
+            execute(&engine, self, &record)
         };
         let result = if watchdog.stop(result.is_ok()) && result.is_err() {
             Err(Failure {
@@ -304,9 +328,60 @@ fn compile(engine: &Engine, name: &str, source: &str) -> Result<rhai::AST, Failu
     })
 }
 
-fn execute(engine: &Engine, script: &Script) -> Result<(), Failure> {
+/// Runs the script and puts what its `test` blocks did in words (in `script.blocks`); blocks
+/// that failed fail a run that otherwise passed.
+fn execute(engine: &Engine, script: &Script, record: &blocks::Record) -> Result<(), Failure> {
     let name = script.name.as_str();
-    let ast = compile(engine, name, &script.source)?;
+    let ast = match compile(engine, name, &script.source) {
+        Ok(ast) => ast,
+        Err(failure) => {
+            *script.blocks.borrow_mut() = blocks::Report {
+                cases: Vec::new(),
+                outside: Some(failure.clone()),
+            };
+            return Err(failure);
+        }
+    };
+    let context = Context {
+        name,
+        engine,
+        ast: &ast,
+        elsewhere: &script.elsewhere,
+    };
+    let outcome = run_ast(engine, script, &ast, &context);
+    let mut ended_in_a_block = false;
+    let cases: Vec<blocks::Case> = std::mem::take(&mut *record.borrow_mut())
+        .into_iter()
+        .map(|ran| blocks::Case {
+            name: ran.name,
+            time: ran.time,
+            failure: match ran.end {
+                blocks::End::Passed => None,
+                blocks::End::Failed(error) => Some(report(&context, blocks::unwrapped(*error))),
+                blocks::End::EndedTheRun => {
+                    ended_in_a_block = true;
+                    outcome.clone().err()
+                }
+            },
+        })
+        .collect();
+    let outside = outcome.clone().err().filter(|_| !ended_in_a_block);
+    let outcome = match outcome {
+        Ok(()) => blocks::verdict(name, &cases).map_or(Ok(()), Err),
+        failed => failed,
+    };
+    *script.blocks.borrow_mut() = blocks::Report { cases, outside };
+    outcome
+}
+
+/// Runs the compiled script with its arguments; the failure it ended with, in words.
+fn run_ast(
+    engine: &Engine,
+    script: &Script,
+    ast: &rhai::AST,
+    context: &Context<'_>,
+) -> Result<(), Failure> {
+    let name = script.name.as_str();
     let mut scope = Scope::new();
     let args: rhai::Array = script
         .args
@@ -314,7 +389,7 @@ fn execute(engine: &Engine, script: &Script) -> Result<(), Failure> {
         .map(|a| Dynamic::from(a.clone()))
         .collect();
     scope.push_constant("args", args);
-    let Err(error) = engine.run_ast_with_scope(&mut scope, &ast) else {
+    let Err(error) = engine.run_ast_with_scope(&mut scope, ast) else {
         return Ok(());
     };
     if let Some(outcome) = ending::outcome(&error) {
@@ -323,13 +398,7 @@ fn execute(engine: &Engine, script: &Script) -> Result<(), Failure> {
             message: at(name, error.position(), &failure.message),
         });
     }
-    let context = Context {
-        name,
-        engine,
-        ast: &ast,
-        elsewhere: &script.elsewhere,
-    };
-    Err(report(&context, *error))
+    Err(report(context, *error))
 }
 
 /// What a failure is reported with: the script's name, and what explains a call of an unknown

@@ -167,8 +167,8 @@ fn registered(register: impl FnOnce(&mut Engine)) -> Vec<String> {
     added
 }
 
-fn sorted(names: &[&str]) -> Vec<String> {
-    let mut names: Vec<String> = names.iter().map(|n| n.to_string()).collect();
+fn sorted(functions: &[registry::ScriptFn]) -> Vec<String> {
+    let mut names: Vec<String> = functions.iter().map(|f| f.name.to_string()).collect();
     names.sort();
     names
 }
@@ -222,4 +222,30 @@ fn a_caught_failure_tells_its_exit_code() {
         "a device error status: {printed:?}"
     );
     assert_eq!(printed[1], "2", "refused before sending");
+}
+
+#[test]
+fn the_registry_lists_every_function_every_script_has_and_no_other() {
+    let (session, _) = session();
+    let shared = Rc::new(RefCell::new(session));
+    let sandbox = Rc::new(Sandbox::new([std::path::Path::new(".")], false));
+    let print = Rc::new(print_to_stdout) as PrintSink;
+    let mut engine = base_engine(&Limits::default(), None, Arc::default(), &print, never());
+    common::register(&mut engine, Rc::from(""), |_| {});
+    blocks::register(&mut engine, blocks::Record::default(), Rc::new(|| {}));
+    commission::register(&mut engine, &shared, &sandbox);
+    // Registered into the engine itself, not Rhai's standard packages (documented by Rhai);
+    // `to_string` is Rhai's own conversion, given to a caught `Failure` too.
+    let mut added: Vec<String> = engine
+        .gen_fn_signatures(false)
+        .iter()
+        .filter_map(|signature| signature.split('(').next())
+        .map(str::trim)
+        .filter(|name| name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_'))
+        .filter(|name| *name != "to_string")
+        .map(str::to_string)
+        .collect();
+    added.sort();
+    added.dedup();
+    assert_eq!(added, sorted(registry::SHARED));
 }

@@ -94,6 +94,14 @@ pub(super) fn write_help(
     if session.help_command(&word, out)? {
         return Ok(());
     }
+    if let Some(function) = crate::dialect::functions::find(dialect, topic) {
+        let text = crate::script::registry::help_line(function);
+        return writeln!(
+            out,
+            "{}",
+            crate::wrap::fit(&text, 0, crate::wrap::terminal_width())
+        );
+    }
     writeln!(out, "no help on '{topic}'; :help lists topics")
 }
 

@@ -19,7 +19,7 @@ use crate::exit::{Exit, ExitStatus};
 use crate::script::Limits;
 use crate::session::{SessionError, Transcript, interrupt};
 
-pub use script::{run_file, run_source};
+pub use script::{run_file, run_file_with_blocks, run_source};
 
 /// Whether to go on after a helper command.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

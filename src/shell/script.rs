@@ -7,6 +7,7 @@ use std::rc::Rc;
 
 use crate::dialect::{DialectSession, elsewhere};
 use crate::exit::Failure;
+use crate::script::blocks::Blocks;
 use crate::script::{Limits, Script};
 
 /// Runs the script at `path` with `args` over `session`; returns the session and the outcome.
@@ -18,8 +19,19 @@ pub fn run_file(
     session: Box<dyn DialectSession>,
     limits: Limits,
 ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
+    run_file_with_blocks(path, args, session, limits, Blocks::default())
+}
+
+/// [`run_file`], leaving what the script's `test` blocks did in `blocks`.
+pub fn run_file_with_blocks(
+    path: &Path,
+    args: &[String],
+    session: Box<dyn DialectSession>,
+    limits: Limits,
+    blocks: Blocks,
+) -> (Box<dyn DialectSession>, Result<(), Failure>) {
     match Script::from_file(path, args, limits) {
-        Ok(script) => run(script, session),
+        Ok(script) => run(script.report_blocks_to(blocks), session),
         Err(failure) => (session, Err(failure)),
     }
 }

@@ -17,6 +17,7 @@
 
 mod env;
 mod file;
+mod json;
 
 use std::io::{self, Write};
 use std::path::PathBuf;
@@ -350,6 +351,9 @@ pub struct ConfigArgs {
     #[allow(dead_code)]
     #[command(flatten)]
     module: ModuleArgs,
+    /// Print one JSON document instead (fields in docs/machine-output.md).
+    #[arg(long)]
+    json: bool,
     /// Filled in after parsing: every value and where it came from.
     #[arg(skip)]
     report: Vec<Line>,
@@ -518,6 +522,9 @@ pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults)
 /// Prints every value and where it came from, as TOML a file could hold.
 pub fn run(args: &ConfigArgs, out: &mut dyn Write) -> io::Result<Exit> {
     let defaults = args.defaults.clone().unwrap_or_default();
+    if args.json {
+        return json::write(args, &defaults, out).map(|()| Exit::Success);
+    }
     writeln!(
         out,
         "# precedence: command line > environment > project file > user file > built-in"

@@ -13,6 +13,7 @@ use std::io::{self, Write};
 use std::path::Path;
 
 use crate::dialect::Configured;
+use crate::json::{Value, json};
 
 use super::connection::DialectArgs;
 
@@ -39,6 +40,9 @@ pub(super) struct PortsArgs {
     /// List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them).
     #[arg(long)]
     pub all: bool,
+    /// Print one JSON document instead (fields in docs/machine-output.md).
+    #[arg(long)]
+    pub json: bool,
     /// The ports to probe (with --probe).
     #[arg(value_name = "PORT", requires = "probe", value_hint = clap::ValueHint::FilePath)]
     pub named: Vec<String>,
@@ -48,24 +52,69 @@ pub(super) struct PortsArgs {
 /// product (manufacturer), and its stable names under it; with `--probe`, then what answers.
 pub(super) fn run(args: &PortsArgs, configs: &Configured, out: &mut dyn Write) -> io::Result<()> {
     let all = ports()?;
-    list_ports(&all, args.all, out)?;
-    if args.probe {
-        let paths: Vec<String> = if args.named.is_empty() {
-            all.iter()
-                .filter(|p| matches!(p.kind, Kind::Usb(_)))
-                .map(|p| p.path.display().to_string())
-                .collect()
-        } else {
-            args.named.clone()
-        };
-        let probe = probe::Probe {
-            baud: args.baud,
-            dialect: args.dialect.protocol,
-            address: args.module,
-        };
-        probe::probe_all(&paths, configs, &probe, out)?;
+    if !args.json {
+        list_ports(&all, args.all, out)?;
     }
-    Ok(())
+    let paths: Vec<String> = match (args.probe, args.named.is_empty()) {
+        (false, _) => Vec::new(),
+        (true, true) => all
+            .iter()
+            .filter(|p| matches!(p.kind, Kind::Usb(_)))
+            .map(|p| p.path.display().to_string())
+            .collect(),
+        (true, false) => args.named.clone(),
+    };
+    let probe = probe::Probe {
+        baud: args.baud,
+        dialect: args.dialect.protocol,
+        address: args.module,
+    };
+    if !args.json {
+        return probe::probe_all(&paths, configs, &probe, out);
+    }
+    let listed: Vec<Value> = all
+        .iter()
+        .filter(|p| args.all || !p.placeholder)
+        .map(|p| port_json(p, &all))
+        .collect();
+    let mut document = json!({ "ports": listed });
+    if args.probe {
+        let probes: Vec<Value> = paths
+            .iter()
+            .map(|path| json!({ "port": path, "answer": probe::probe(path, configs, &probe) }))
+            .collect();
+        document["probes"] = json!(probes);
+    }
+    crate::json::write(&document, out)
+}
+
+/// A port as a JSON object (`ports --json`).
+fn port_json(port: &Port, all: &[Port]) -> Value {
+    let usb = match &port.kind {
+        Kind::Usb(usb) => Some(usb),
+        _ => None,
+    };
+    let kind = match &port.kind {
+        Kind::Usb(_) => "usb",
+        Kind::Pci => "pci",
+        Kind::Bluetooth => "bluetooth",
+        Kind::Other if port.placeholder => "none",
+        Kind::Other => "other",
+    };
+    json!({
+        "path": port.path.display().to_string(),
+        "type": kind,
+        "vid": usb.map(|u| format!("{:04x}", u.vid)),
+        "pid": usb.map(|u| format!("{:04x}", u.pid)),
+        "serial": usb.and_then(|u| u.serial.clone()),
+        "interface": usb.and_then(|u| u.interface),
+        "manufacturer": usb.and_then(|u| u.manufacturer.clone()),
+        "product": usb.and_then(|u| u.product.clone()),
+        "latency_ms": port.latency.map(|t| t.as_millis() as u64),
+        "placeholder": port.placeholder,
+        "links": port.links.iter().map(|l| l.display().to_string()).collect::<Vec<_>>(),
+        "usb_name": usb_name(port, all),
+    })
 }
 
 /// The `usb:` name of `port`, with its interface when its adapter has several ports.

@@ -50,7 +50,7 @@ pub(super) fn probe_all(
 }
 
 /// What answers on one port, in a few words.
-fn probe(path: &str, configs: &Configured, with: &Probe) -> String {
+pub(super) fn probe(path: &str, configs: &Configured, with: &Probe) -> String {
     let config = configs.of(with.dialect);
     let options = SessionOptions {
         module: with.address,

@@ -71,6 +71,10 @@ impl DialectConfig for Smd4Config {
         super::params::write_params(filter, out)
     }
 
+    fn params_json(&self, filter: &str) -> Result<Vec<crate::json::Value>, String> {
+        super::params::params_json(filter)
+    }
+
     fn snapshot_params(&self) -> Vec<ParamRef> {
         super::commission::spec_params(Smd4Spec::builtin())
     }

@@ -4,6 +4,7 @@
 use std::io::{self, Write};
 
 use super::protocol::{Smd4Spec, hints};
+use crate::json::{Value, json};
 
 /// The SMD4 commands matching `filter`, one row each, as the shell's `:params` shows them; when
 /// none matches, says so on stderr and returns false.
@@ -17,4 +18,28 @@ pub fn write_params(filter: &str, out: &mut dyn Write) -> io::Result<bool> {
         writeln!(out, "{}", hints::fitted_row(spec))?;
     }
     Ok(true)
+}
+
+/// The SMD4 commands matching `filter` as JSON objects (`params --json`); the error says that
+/// none matches.
+pub fn params_json(filter: &str) -> Result<Vec<Value>, String> {
+    let rows: Vec<Value> = hints::matching(&Smd4Spec::builtin().commands, filter)
+        .map(|spec| {
+            json!({
+                "mnemonic": spec.mnemonic,
+                "group": spec.group,
+                "readable": spec.readable,
+                "writable": spec.writable,
+                "argument": spec.arg.is_some().then(|| hints::arg_summary(spec)),
+                "unit": spec.unit,
+                "default": spec.default,
+                "uncertain": spec.uncertain,
+                "description": spec.description,
+            })
+        })
+        .collect();
+    if rows.is_empty() {
+        return Err(format!("no SMD4 command matches '{filter}'"));
+    }
+    Ok(rows)
 }

@@ -13,6 +13,7 @@ use std::time::Duration;
 
 use crate::dialect::smd4::protocol::{MAX_ADDRESS, Request};
 use crate::dialect::smd4::session::Smd4Session;
+use crate::json::json;
 use crate::session::SessionError;
 
 use crate::commission::scan::describe_addresses;
@@ -111,6 +112,11 @@ pub fn bus_scan(
         found: report.found.len(),
         summary: summary(&report),
         report: String::from_utf8_lossy(&text).into_owned(),
+        modules: report
+            .found
+            .iter()
+            .map(|d| json!({ "address": d.address, "firmware": d.firmware, "serial": d.serial }))
+            .collect(),
     })
 }
 

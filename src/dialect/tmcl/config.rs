@@ -180,6 +180,10 @@ impl DialectConfig for TmclConfig {
         super::params::write_params(&self.profile, filter, out)
     }
 
+    fn params_json(&self, filter: &str) -> Result<Vec<crate::json::Value>, String> {
+        super::params::params_json(&self.profile, filter)
+    }
+
     fn snapshot_params(&self) -> Vec<ParamRef> {
         super::commission::profile_params(&self.profile)
     }

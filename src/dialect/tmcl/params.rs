@@ -4,25 +4,62 @@ use std::io::{self, Write};
 
 use super::profile::{Param, ParamKind, Profile};
 use crate::dialect::UNCERTAIN;
+use crate::json::{Value, json};
 use crate::wrap::{fit, terminal_width};
 
 /// The parameters of `profile` matching `filter`, as a table; when none matches, says so on
 /// stderr and returns false.
 pub fn write_params(profile: &Profile, filter: &str, out: &mut dyn Write) -> io::Result<bool> {
-    let rows: Vec<&Param> = profile.matching(filter).collect();
+    match matching(profile, filter) {
+        Ok(rows) => write_table(&rows, out).map(|()| true),
+        Err(message) => {
+            eprintln!("{message}");
+            Ok(false)
+        }
+    }
+}
+
+/// The parameters of `profile` matching `filter`; the error says why there are none.
+fn matching<'a>(profile: &'a Profile, filter: &str) -> Result<Vec<&'a Param>, String> {
     if profile.generic {
-        eprintln!(
+        return Err(format!(
             "the {} profile knows parameters by number only (0..255): it has none to list",
             profile.module
-        );
-        return Ok(false);
+        ));
     }
+    let rows: Vec<&Param> = profile.matching(filter).collect();
     if rows.is_empty() {
-        eprintln!("no {} parameter matches '{filter}'", profile.module);
-        return Ok(false);
+        return Err(format!(
+            "no {} parameter matches '{filter}'",
+            profile.module
+        ));
     }
-    write_table(&rows, out)?;
-    Ok(true)
+    Ok(rows)
+}
+
+/// The parameters of `profile` matching `filter` as JSON objects (`params --json`).
+pub fn params_json(profile: &Profile, filter: &str) -> Result<Vec<Value>, String> {
+    Ok(matching(profile, filter)?
+        .into_iter()
+        .map(|p| {
+            let (kind, bank) = match p.kind {
+                ParamKind::Axis => ("axis", Value::Null),
+                ParamKind::Global { bank } => ("global", json!(bank)),
+            };
+            json!({
+                "kind": kind,
+                "bank": bank,
+                "number": p.number,
+                "name": p.ident,
+                "manual_name": p.name,
+                "access": p.access.letters(),
+                "range": p.range.map(|(min, max)| json!([min, max])),
+                "unit": p.unit,
+                "uncertain": p.uncertain,
+                "description": p.description,
+            })
+        })
+        .collect())
 }
 
 /// Prints parameters as an aligned table (shared with the REPL's `:params`).

@@ -28,6 +28,7 @@ use crate::dialect::tmcl::protocol::host_clash;
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
 use crate::dialect::tmcl::session::{Echo, TmclReply, TmclSession, WireMode};
+use crate::json::{Value, json};
 use crate::session::SessionError;
 
 use crate::commission::scan::describe_addresses;
@@ -68,6 +69,23 @@ impl FoundModule {
             ),
             Err(_) => "?".into(),
         }
+    }
+
+    /// The module as a JSON object (`scan --json`).
+    pub fn json(&self) -> Value {
+        json!({
+            "address": self.address,
+            "char": address_char(self.address).map(String::from),
+            "mode": match self.mode {
+                WireMode::Ascii => "ascii",
+                WireMode::Binary => "binary",
+            },
+            "firmware": self.firmware,
+            "echo": self.echo.map(Echo::name),
+            "host_address": self.host,
+            "module": self.firmware.as_ref().map(|_| self.module()),
+            "boot_loader": self.in_boot_loader(),
+        })
     }
 
     /// Whether the profile its version string names has no ASCII interface: it has no echo
@@ -213,6 +231,7 @@ pub fn bus_scan(
         found: report.found.len(),
         summary: summary(&report),
         report: String::from_utf8_lossy(&text).into_owned(),
+        modules: report.found.iter().map(FoundModule::json).collect(),
     })
 }
 

@@ -84,6 +84,18 @@ fn helpers_and_their_arguments() {
 }
 
 #[test]
+fn help_completes_script_function_names_from_the_registry() {
+    assert!(words(":help wait_p").contains(&"wait_pos".to_string()));
+    assert!(words(":help assert_n").contains(&"assert_near".to_string()));
+    let targets = words(":help targe");
+    assert_eq!(
+        targets.iter().filter(|w| w.trim() == "target").count(),
+        1,
+        "a helper and a function of one name offered once: {targets:?}"
+    );
+}
+
+#[test]
 fn smd4_mnemonics_complete_level_by_level() {
     let Completion::Words { candidates, .. } = complete("MOTOR:VM", 8, &smd4()) else {
         panic!()

@@ -6,8 +6,6 @@
 //! so device text can neither move the cursor nor reorder the terminal's text (bidirectional
 //! overrides), and a JSON reader gets the exact text back.
 
-use std::io;
-
 use serde_json::{Map, Value, json};
 
 use crate::dialect::Reply;
@@ -66,55 +64,7 @@ fn head(number: usize, input: &str) -> Map<String, Value> {
     object
 }
 
-/// `value` as one line of ASCII JSON.
+/// `value` as one line of ASCII JSON (see [`crate::json`]).
 pub fn json_line(value: &Value) -> String {
-    let mut bytes = Vec::new();
-    let mut serializer = serde_json::Serializer::with_formatter(&mut bytes, AsciiFormatter);
-    serde::Serialize::serialize(value, &mut serializer).expect("a JSON value serialises");
-    String::from_utf8(bytes).expect("the formatter writes ASCII")
-}
-
-/// serde_json's compact output (which escapes C0 controls), with DEL and every character beyond
-/// ASCII (C1 controls among them) written as `\uXXXX`: nothing in it a terminal acts on.
-struct AsciiFormatter;
-
-impl serde_json::ser::Formatter for AsciiFormatter {
-    fn write_string_fragment<W: ?Sized + io::Write>(
-        &mut self,
-        writer: &mut W,
-        fragment: &str,
-    ) -> io::Result<()> {
-        for c in fragment.chars() {
-            // DEL is ASCII, but a control character JSON leaves to the writer.
-            if c.is_ascii() && c != '\x7f' {
-                writer.write_all(&[c as u8])?;
-            } else {
-                let mut units = [0u16; 2];
-                for unit in c.encode_utf16(&mut units) {
-                    write!(writer, "\\u{unit:04x}")?;
-                }
-            }
-        }
-        Ok(())
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn json_is_ascii_and_round_trips() {
-        let text = "BA 100 \u{1b}[2J \u{7f}\u{9b}2J \u{202e}evil \u{1F600} \"q\" \\";
-        let line = json_line(&json!({ "raw": text }));
-        assert!(line.is_ascii(), "{line}");
-        assert!(!line.chars().any(|c| c.is_control()), "{line}");
-        assert!(line.contains("\\u007f\\u009b2J"), "{line}");
-        assert!(
-            line.contains("\\u202e") && line.contains("\\ud83d\\ude00"),
-            "{line}"
-        );
-        let back: Value = serde_json::from_str(&line).unwrap();
-        assert_eq!(back["raw"], text);
-    }
+    crate::json::line(value)
 }

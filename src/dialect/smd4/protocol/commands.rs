@@ -159,6 +159,9 @@ pub struct Smd4Command {
     pub fixed_point: bool,
     /// Reply shape.
     pub reply: ReplyShape,
+    /// The reply's data item may be missing: the document declares no return, only an example
+    /// shows one (SYS:FLAGS).
+    pub reply_optional: bool,
     /// Unit as printed (`Hz`, `A rms`).
     pub unit: String,
     /// Factory default, as text.
@@ -245,6 +248,7 @@ impl Smd4Command {
             value_type,
             fixed_point: row.value_format.as_deref() == Some("fixed"),
             reply,
+            reply_optional: row.reply_optional,
             unit: row.unit.clone(),
             default: row.default.as_ref().map(Scalar::text),
             labels,

@@ -138,6 +138,8 @@ pub(crate) struct CommandRow {
     pub reply: String,
     pub reply_literal: Option<String>,
     #[serde(default)]
+    pub reply_optional: bool,
+    #[serde(default)]
     pub requires_standby: bool,
     #[serde(default)]
     pub starts_motion: bool,

@@ -83,6 +83,8 @@ pub struct Expectation {
     pub(super) value: Option<ItemType>,
     /// The value may come in fixed point (PACT, PREL).
     pub(super) fixed_point: bool,
+    /// The data item may be missing (`reply_optional`).
+    pub(super) optional: bool,
 }
 
 impl Expectation {
@@ -97,6 +99,7 @@ impl Expectation {
             shape: Some(spec.reply.clone()),
             value: spec.value_item_type(),
             fixed_point: spec.fixed_point,
+            optional: spec.reply_optional,
         }
     }
 

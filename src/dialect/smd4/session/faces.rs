@@ -141,6 +141,7 @@ impl DialectSession for Smd4Session {
             |s, text| s.annotate(text),
             |s| s.take_notices(),
             |s| s.transcript().is_some_and(|t| t.failure().is_some()),
+            |s| s.stop_motion(),
             |engine, s, files| {
                 crate::dialect::smd4::script::register(engine, s);
                 crate::script::commission::register(engine, s, files);

@@ -48,6 +48,10 @@ pub struct QuirkFlags {
     /// VSTOP example). Without it the real value echoes the user value.
     #[arg(long, value_name = "STEP", value_parser = positive)]
     pub real_value_grid: Option<f64>,
+    /// Answer SYS:FLAGS without the trailing item `1` only its example shows (the document
+    /// declares no return for it).
+    #[arg(long)]
+    pub flags_without_item: bool,
 }
 
 fn positive(text: &str) -> Result<f64, String> {
@@ -89,6 +93,7 @@ impl QuirkFlags {
             },
             tzw_reply_ms: self.tzw_reply_ms,
             real_value_grid: self.real_value_grid,
+            omit_optional_item: self.flags_without_item,
             state_file: state.map(Path::to_path_buf),
         }
     }

@@ -58,6 +58,8 @@ pub struct Smd4SimOptions {
     /// Real values of user/real pairs on this grid (Hz or Hz/s); `None` echoes the user value,
     /// since the conversion is not documented.
     pub real_value_grid: Option<f64>,
+    /// Leave out the data item the document declares no return for (SYS:FLAGS' `1`).
+    pub omit_optional_item: bool,
     /// Where STORE saves the configuration and power-up reads it; `None` keeps it in memory.
     pub state_file: Option<PathBuf>,
 }
@@ -74,6 +76,7 @@ impl Default for Smd4SimOptions {
             position_format: PositionFormat::Fixed,
             tzw_reply_ms: false,
             real_value_grid: None,
+            omit_optional_item: false,
             state_file: None,
         }
     }

@@ -64,6 +64,11 @@ impl Smd4Sim {
     /// The data items for `value` in the command's reply shape.
     pub(super) fn items(&self, spec: &Smd4Command, value: Option<&Setting>) -> Vec<String> {
         match (&spec.reply, value) {
+            (ReplyShape::Literal(_), _)
+                if spec.reply_optional && self.options.omit_optional_item =>
+            {
+                Vec::new()
+            }
             (ReplyShape::Literal(text), _) => vec![text.clone()],
             (ReplyShape::Value, Some(v)) => vec![self.item(spec, v)],
             (ReplyShape::UserReal, Some(v)) => {

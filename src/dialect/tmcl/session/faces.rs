@@ -153,6 +153,7 @@ impl DialectSession for TmclSession {
             |s, text| s.annotate(text),
             |s| s.take_notices(),
             |s| s.transcript().is_some_and(|t| t.failure().is_some()),
+            |s| s.stop_motion(),
             |engine, s, files| {
                 super::super::script::register(engine, s, files);
                 crate::script::commission::register(engine, s, files);
