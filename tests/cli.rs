@@ -189,6 +189,7 @@ fn usage_errors_show_escape_sequences_from_arguments_escaped() {
 mod config;
 mod doc_examples;
 mod examples;
+mod first_hour;
 mod forgiving;
 mod helper_text;
 mod history;

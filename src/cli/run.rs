@@ -82,6 +82,11 @@ pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
         Ok(()) if lost(session.as_ref()).is_none() => Exit::Success,
         Ok(()) => Exit::Link,
         Err(report) => {
+            // Silence from the start may be a device of the other dialect.
+            let other = (report.exit == Exit::Link)
+                .then(|| session.wrong_dialect())
+                .flatten();
+            let report = other.unwrap_or(report);
             super::diagnose(&report.message);
             report.exit
         }
