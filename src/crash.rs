@@ -33,7 +33,11 @@ pub const INJECT_VAR: &str = "TMCLSH_TEST_CRASH";
 struct Panic {
     message: String,
     location: String,
-    backtrace: Option<String>,
+    /// Captured (with `RUST_BACKTRACE`) but not symbolised: only the report resolves it, once,
+    /// for the first panic. Resolving reads the binary's debug information, which in a debug
+    /// build takes over 100 MB; doing it in the hook cost that for every panic, also for the ones
+    /// caught while stopping, whose backtraces are never shown.
+    backtrace: Option<Backtrace>,
 }
 
 /// What one session did while the stack unwound.
@@ -88,8 +92,7 @@ fn keep(info: &PanicHookInfo<'_>) {
         }
     }
     let backtrace = Backtrace::capture();
-    let backtrace =
-        (backtrace.status() == BacktraceStatus::Captured).then(|| backtrace.to_string());
+    let backtrace = (backtrace.status() == BacktraceStatus::Captured).then_some(backtrace);
     lock(&PANICS).push(Panic {
         message,
         location,

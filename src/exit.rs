@@ -13,7 +13,8 @@ pub enum Exit {
     Link,
     /// 130: interrupted by Ctrl-C.
     Interrupted,
-    /// 128 + N: ended by signal N (SIGTERM 143, SIGHUP 129), after stopping the motors.
+    /// 128 + N: ended by signal N (SIGTERM 143, SIGHUP 129), after stopping the motors; 141 when
+    /// stdout was closed, as for SIGPIPE (`crate::stdout`).
     Terminated(u8),
 }
 

@@ -35,5 +35,6 @@ pub mod script;
 pub mod session;
 pub mod shell;
 pub mod sim;
+pub mod stdout;
 pub mod suggest;
 pub mod wrap;

@@ -118,11 +118,13 @@ fn profiles_shows_one_in_full_by_name_alias_or_file() {
     assert!(ok(&["profiles", "generic"]).contains("I/O (bank/port) none: no port map"));
     let said = refused(&["profiles", "tmcm-611"]);
     assert!(said.contains("did you mean tmcm-6110?"), "{said}");
-    let said = refused(&["profiles", "--profile", "tmcm-6110"]);
+    let said = refused(&["--profile", "tmcm-6110", "profiles"]);
     assert!(
         said.contains("does not apply to `tmclsh profiles`"),
         "{said}"
     );
+    let said = refused(&["profiles", "--profile", "tmcm-6110"]);
+    assert!(said.contains("'--profile'"), "{said}");
 }
 
 #[test]

@@ -186,10 +186,13 @@ fn usage_errors_show_escape_sequences_from_arguments_escaped() {
     );
 }
 
+#[cfg(target_os = "linux")]
+mod closed_stdout;
 mod config;
 mod doc_examples;
 mod examples;
 mod first_hour;
+mod first_hour_shell;
 mod forgiving;
 mod helper_text;
 mod history;

@@ -76,6 +76,9 @@ pub fn tmclsh(args: &[String]) -> Run {
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .env("NO_COLOR", "1")
+        // The bound is the binary's own: a panic's backtrace, symbolised from a debug build's
+        // debug information, takes over 100 MB (and fails the run with 101 in any case).
+        .env("RUST_BACKTRACE", "0")
         .spawn()
         .expect("tmclsh runs");
     let pid = child.id();

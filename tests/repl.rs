@@ -8,6 +8,7 @@ use rexpect::session::{PtySession, spawn_command};
 use crate::util::{bin, tempdir};
 
 mod addressed;
+mod leaving;
 mod ports;
 
 /// The REPL on the built-in simulator, with its own history directory.

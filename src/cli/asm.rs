@@ -19,6 +19,9 @@ pub(super) struct AsmArgs {
     /// Print the listing: address, the 7 instruction bytes and the source line.
     #[arg(long)]
     pub list: bool,
+    /// The module's tables (its program memory, its commands).
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
 }
 
 pub(super) fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
@@ -58,13 +61,8 @@ pub(super) fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Res
         crate::file::write(path, &bytes)
             .map_err(|e| Failure::new(Exit::Refused, format!("cannot write {e}")))?;
     }
-    report(args, &program, &source, profile, out).or_else(|e| {
-        if e.kind() == std::io::ErrorKind::BrokenPipe {
-            Ok(())
-        } else {
-            Err(Failure::new(Exit::Refused, e.to_string()))
-        }
-    })?;
+    report(args, &program, &source, profile, out)
+        .map_err(|e| Failure::new(Exit::Refused, e.to_string()))?;
     Ok(Exit::Success)
 }
 

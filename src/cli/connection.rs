@@ -17,6 +17,7 @@ use crate::link::line::{LineOptions, Modem, Rs485};
 use crate::session::transcript::Header;
 use crate::session::{LocalEcho, SessionOptions, Transcript};
 
+use super::can::{CanSettings, CanSpec, DEFAULT_BITRATE, DEFAULT_REPLY_ID};
 use super::link_kinds::{self, SIM};
 use super::target::{Target, is_log_dir, log_file};
 
@@ -36,6 +37,17 @@ pub struct ConnectionArgs {
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT", env = "TMCLSH_TCP")]
     pub tcp: Option<String>,
+    /// CAN adapter of the modules' bus: slcan:PATH (a serial-line CAN adapter: CANable,
+    /// USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module's CAN ID is --module.
+    #[arg(long, value_name = "slcan:PATH|socketcan:IFACE", env = "TMCLSH_CAN", value_parser = parse_can)]
+    pub can: Option<CanSpec>,
+    /// The CAN bus's bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN's is set
+    /// with `ip link`) [default: 1000000, the modules' default]
+    #[arg(long, value_name = "BPS", value_parser = parse_can_bitrate)]
+    pub can_bitrate: Option<u32>,
+    /// The CAN ID the modules send their replies to (the modules' reply ID setting).
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_REPLY_ID, value_parser = clap::value_parser!(u16).range(0..=0x7FF))]
+    pub can_reply_id: u16,
     /// Talk to the built-in simulated module: the explicit choice a command run without a
     /// terminal needs, so that no script passes against the simulator by accident.
     #[arg(long)]
@@ -67,6 +79,23 @@ pub struct LineArgs {
     /// flag, which lowers a 16 ms timer to 1 ms where the driver honours it).
     #[arg(long, env = "TMCLSH_KEEP_LATENCY")]
     pub keep_latency: bool,
+}
+
+fn parse_can(text: &str) -> Result<CanSpec, String> {
+    CanSpec::parse(text)
+}
+
+/// A bit rate slcan has a code for (`S0`…`S8`).
+fn parse_can_bitrate(text: &str) -> Result<u32, String> {
+    let rates = crate::link::can::slcan::BITRATES;
+    text.trim()
+        .parse::<u32>()
+        .ok()
+        .filter(|bps| rates.contains(bps))
+        .ok_or_else(|| {
+            let list: Vec<String> = rates.iter().map(u32::to_string).collect();
+            format!("a CAN bit rate is one of {}", list.join(", "))
+        })
 }
 
 /// A `--port` value (also `port` in a configuration file, `TMCLSH_PORT`): a device, never a
@@ -127,7 +156,7 @@ pub const BAUD_RANGE: std::ops::RangeInclusive<u32> = 50..=12_000_000;
 /// A `--baud` value (also `baud` in a configuration file, `TMCLSH_BAUD`): a whole number in
 /// [`BAUD_RANGE`], refused otherwise before anything is opened (0 used to reach the serial link
 /// after the module had been put into ASCII mode).
-fn parse_baud(text: &str) -> Result<u32, String> {
+pub(super) fn parse_baud(text: &str) -> Result<u32, String> {
     let hint = format!(
         "a bit rate is a whole number from {} to {}, such as 9600 or 115200",
         BAUD_RANGE.start(),
@@ -181,8 +210,8 @@ impl Args for CommandLine {
 }
 
 /// The session flags of every dialect (`--address` …), each dialect's under the help heading it
-/// sets (which, as with any flattened group, stays for the options after it). Their values are
-/// read by the dialect from the [`CommandLine`].
+/// sets; the heading is reset after them, so that a subcommand's own options declared after the
+/// group stay under "Options". Their values are read by the dialect from the [`CommandLine`].
 #[derive(Debug, Clone)]
 pub struct DialectFlags;
 
@@ -198,7 +227,10 @@ impl FromArgMatches for DialectFlags {
 
 impl Args for DialectFlags {
     fn augment_args(cmd: Command) -> Command {
-        DIALECTS.iter().fold(cmd, |cmd, d| (d.session_flags)(cmd))
+        DIALECTS
+            .iter()
+            .fold(cmd, |cmd, d| (d.session_flags)(cmd))
+            .next_help_heading(None::<&str>)
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {
@@ -349,6 +381,20 @@ impl SessionArgs {
     }
 }
 
+impl ConnectionArgs {
+    /// The CAN link `--can` names, with its bus settings.
+    fn can_target(&self) -> Target {
+        Target::Can {
+            spec: self.can.clone().expect("chosen only when given"),
+            settings: CanSettings {
+                bitrate: self.can_bitrate.unwrap_or(DEFAULT_BITRATE),
+                reply_id: self.can_reply_id,
+                baud: self.baud,
+            },
+        }
+    }
+}
+
 /// Everything that says which module to talk to and how: flattened, the same way, into the shell
 /// and every subcommand that opens a session in either dialect.
 #[derive(Debug, Clone, clap::Args)]
@@ -362,6 +408,9 @@ pub struct ModuleArgs {
     /// The protocol it speaks.
     #[command(flatten)]
     pub dialect: DialectArgs,
+    /// The module's tables.
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
     /// How requests are sent and checked.
     #[command(flatten)]
     pub session: SessionArgs,
@@ -422,6 +471,7 @@ impl ModuleArgs {
         match self.chosen()? {
             Some(SIM) => Ok(Target::Builtin),
             Some("tcp") => Target::of(None, self.connection.tcp.as_deref()),
+            Some("can") => Ok(self.connection.can_target()),
             Some(_) => Target::of(self.connection.port.as_deref(), None),
             None if audience == Audience::Interactive => Ok(Target::Builtin),
             None => Err(Failure::new(Exit::Refused, link_kinds::no_link())),

@@ -13,6 +13,9 @@ pub(super) struct DisasmArgs {
     /// Program file written by `tmclsh asm -o`.
     #[arg(value_name = "FILE.bin")]
     pub file: PathBuf,
+    /// The module's tables (its commands).
+    #[command(flatten)]
+    pub profile: super::profile_option::ProfileOption,
 }
 
 pub(super) fn run(
@@ -36,10 +39,7 @@ pub(super) fn run(
         profile.module
     )
     .and_then(|()| out.write_all(disassembly.source.as_bytes()));
-    match written {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
-            Err(Failure::new(Exit::Refused, e.to_string()))
-        }
-        _ => Ok(Exit::Success),
-    }
+    written
+        .map(|()| Exit::Success)
+        .map_err(|e| Failure::new(Exit::Refused, e.to_string()))
 }

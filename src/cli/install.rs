@@ -152,10 +152,7 @@ pub(super) fn man(args: &ManArgs, out: &mut dyn Write) -> Result<Exit, Failure> 
     } else {
         out.write_all(&page)
             .map(|()| Exit::Success)
-            .or_else(|e| match e.kind() {
-                std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
-                _ => Err(Failure::new(Exit::Link, e.to_string())),
-            })
+            .map_err(|e| Failure::new(Exit::Link, e.to_string()))
     }
 }
 

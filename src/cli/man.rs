@@ -1,12 +1,82 @@
 //! `tmclsh man`: the manual page (roff), generated from the same clap definitions as `--help` and
 //! the completions, so the three cannot disagree. `man/tmclsh.1` is its output, kept current by a
 //! test. One page: the shell's options, then a section per subcommand with its synopsis and
-//! options, then exit status, environment and files.
+//! options, then examples, exit status, environment and files. The synopses are written here:
+//! clap_mangen's name no values (`[-c ]`, `[--port]`).
 
 use std::io::{self, Write};
 
-use clap::Command;
+use clap::{Arg, ArgAction, Command};
 use clap_mangen::Man;
+
+/// An example of the EXAMPLES section: the command line and what it does.
+pub struct Example {
+    /// The command line, starting with `tmclsh`.
+    pub command: &'static str,
+    /// What it does, one sentence.
+    pub what: &'static str,
+    /// Whether it runs to its end without a terminal (the test suite runs those given `--sim`).
+    pub batch: bool,
+}
+
+/// The EXAMPLES section: every one on the built-in simulator (`--sim`) or a placeholder port.
+pub const EXAMPLES: &[Example] = &[
+    Example {
+        command: "tmclsh --sim",
+        what: "The interactive shell on the built-in simulated TMCM-142 (:help lists the helpers).",
+        batch: false,
+    },
+    Example {
+        command: "tmclsh --port /dev/ttyUSB0 --baud 115200",
+        what: "The interactive shell on the module at a serial port.",
+        batch: false,
+    },
+    Example {
+        command: "tmclsh --sim -c 'ROR 0, 1000' -c 'GAP 3, 0'",
+        what: "Send two lines and print each reply; the exit code says whether all went well.",
+        batch: true,
+    },
+    Example {
+        command: "tmclsh --sim --value -c 'GAP 1, 0'",
+        what: "Print only the value of a reply, for a shell script.",
+        batch: true,
+    },
+    Example {
+        command: "tmclsh --sim --protocol smd4 -c 'SYS:FW'",
+        what: "Talk to the simulated AML SMD4 drive instead.",
+        batch: true,
+    },
+    Example {
+        command: "tmclsh --sim scan",
+        what: "Find the modules on the bus, with firmware versions.",
+        batch: true,
+    },
+    Example {
+        command: "tmclsh --sim params --values --motor 0 speed",
+        what: "Read motor 0's parameters whose names contain speed from the module.",
+        batch: true,
+    },
+    Example {
+        command: "tmclsh --sim run scripts/back_and_forth.rhai -- 2 2000 200000 4000000",
+        what: "Run a Rhai script; exit code 0 when it passed, 1 when an assertion failed.",
+        batch: true,
+    },
+    Example {
+        command: "tmclsh --sim snapshot save rig.toml",
+        what: "Save the module's parameters to a TOML file (snapshot diff and restore use it).",
+        batch: true,
+    },
+    Example {
+        command: "tmclsh --port /dev/ttyUSB0 download scripts/test2.tmc --run",
+        what: "Assemble a TMCL program, store it in the module, verify it and start it.",
+        batch: false,
+    },
+    Example {
+        command: "tmclsh ports --probe --baud 115200",
+        what: "List the serial ports and ask each USB port which module answers at 115200 baud.",
+        batch: false,
+    },
+];
 
 /// Prints the page.
 pub fn run(out: &mut dyn Write) -> io::Result<()> {
@@ -21,7 +91,7 @@ pub fn render() -> io::Result<Vec<u8>> {
     let man = Man::new(cmd.clone()).manual("tmclsh manual");
     man.render_title(&mut page)?;
     man.render_name_section(&mut page)?;
-    man.render_synopsis_section(&mut page)?;
+    writeln!(page, ".SH SYNOPSIS\n{}", synopsis(&cmd, "tmclsh"))?;
     man.render_description_section(&mut page)?;
     man.render_options_section(&mut page)?;
     // clap_mangen's own list points to a page per subcommand; here they are sections below.
@@ -41,6 +111,7 @@ pub fn render() -> io::Result<Vec<u8>> {
     for sub in cmd.get_subcommands().filter(|s| !s.is_hide_set()) {
         subcommand(&mut page, sub, &format!("tmclsh {}", sub.get_name()))?;
     }
+    examples(&mut page)?;
     page.extend_from_slice(TAIL.as_bytes());
     man.render_version_section(&mut page)?;
     Ok(page)
@@ -66,7 +137,7 @@ fn subcommand(page: &mut Vec<u8>, sub: &Command, path: &str) -> io::Result<()> {
     let man = Man::new(named);
     let mut body = Vec::new();
     man.render_description_section(&mut body)?;
-    man.render_synopsis_section(&mut body)?;
+    writeln!(body, ".PP\n{}", synopsis(sub, path))?;
     let has_options = sub
         .get_arguments()
         .any(|a| !a.is_positional() && !a.is_hide_set());
@@ -77,9 +148,78 @@ fn subcommand(page: &mut Vec<u8>, sub: &Command, path: &str) -> io::Result<()> {
     // paragraphs.
     let body = String::from_utf8_lossy(&body)
         .replace(".SH DESCRIPTION\n", "")
-        .replace(".SH SYNOPSIS\n", ".PP\n")
         .replace(".SH OPTIONS\n", ".PP\nOptions:\n");
     page.extend_from_slice(body.as_bytes());
+    Ok(())
+}
+
+/// The synopsis of `cmd` called `name`: each visible option with its value (`[-c LINE]...`,
+/// `[--port PATH]`), the arguments, then `[COMMAND]` where it has subcommands.
+fn synopsis(cmd: &Command, name: &str) -> String {
+    let mut line = format!("\\fB{}\\fR", roff_text(name));
+    let options = cmd
+        .get_arguments()
+        .filter(|a| !a.is_positional() && !a.is_hide_set());
+    for arg in options {
+        let flag = match (arg.get_short(), arg.get_long()) {
+            (Some(short), Some(long)) => format!("\\fB-{short}\\fR|\\fB--{long}\\fR"),
+            (Some(short), None) => format!("\\fB-{short}\\fR"),
+            (None, Some(long)) => format!("\\fB--{long}\\fR"),
+            (None, None) => continue,
+        };
+        let value = match value_name(arg) {
+            Some(value) if optional_value(arg) => format!("[=\\fI{value}\\fR]"),
+            Some(value) => format!(" \\fI{value}\\fR"),
+            None => String::new(),
+        };
+        let repeated = matches!(arg.get_action(), ArgAction::Append | ArgAction::Count);
+        let dots = if repeated { "..." } else { "" };
+        line.push_str(&format!(" [{}{value}]{dots}", flag.replace('-', "\\-")));
+    }
+    for arg in cmd.get_positionals().filter(|a| !a.is_hide_set()) {
+        let value = format!("\\fI{}\\fR", value_name(arg).unwrap_or_default());
+        let many = arg.get_num_args().is_some_and(|n| n.max_values() > 1);
+        let dots = if many { "..." } else { "" };
+        if arg.is_required_set() {
+            line.push_str(&format!(" {value}{dots}"));
+        } else {
+            line.push_str(&format!(" [{value}]{dots}"));
+        }
+    }
+    if cmd.has_subcommands() {
+        line.push_str(" [\\fICOMMAND\\fR]");
+    }
+    line
+}
+
+/// The value an option or argument takes, as its help names it (`PATH`, `NAME|FILE`), escaped.
+fn value_name(arg: &Arg) -> Option<String> {
+    if !arg.get_action().takes_values() {
+        return None;
+    }
+    let names = match arg.get_value_names() {
+        Some(names) => names.iter().map(|n| n.to_string()).collect::<Vec<_>>(),
+        None => vec![arg.get_id().as_str().to_uppercase()],
+    };
+    Some(roff_text(&names.join(" ")))
+}
+
+/// Whether the option's value may be left out (`--local-echo` alone means on).
+fn optional_value(arg: &Arg) -> bool {
+    arg.get_num_args().is_some_and(|n| n.min_values() == 0)
+}
+
+/// The EXAMPLES section, from [`EXAMPLES`].
+fn examples(page: &mut Vec<u8>) -> io::Result<()> {
+    writeln!(page, ".SH EXAMPLES")?;
+    for example in EXAMPLES {
+        writeln!(
+            page,
+            ".TP\n\\fB{}\\fR\n{}",
+            roff_text(example.command),
+            roff_text(example.what)
+        )?;
+    }
     Ok(())
 }
 

@@ -3,6 +3,7 @@
 //! nothing are refused (`relevance`).
 
 mod asm;
+pub mod can;
 mod completions;
 pub mod config;
 pub mod connection;
@@ -14,6 +15,7 @@ pub mod man;
 pub(crate) mod params;
 mod ports;
 mod position;
+mod profile_option;
 mod profiles;
 mod progress;
 mod relevance;
@@ -24,6 +26,7 @@ mod sim;
 mod snapshot;
 mod target;
 mod transcript;
+pub mod upload;
 
 use std::borrow::Cow;
 use std::ffi::OsString;
@@ -40,10 +43,9 @@ use crate::exit::{Exit, Failure};
 #[derive(Debug, Parser)]
 #[command(name = "tmclsh", version, about, long_about = None, max_term_width = 100)]
 pub struct Cli {
-    /// Module profile instead of the TMCM-142's: a built-in name, alias or module number
-    /// (`tmclsh profiles` lists them: tmcm-6110, pd-1141, 6110, generic …) or a TOML file (schema
-    /// in docs/profiles.md).
-    #[arg(long, global = true, value_name = "NAME|FILE", env = "TMCLSH_PROFILE")]
+    /// The module profile given to the command that runs (`--profile`, declared by each command
+    /// that reads module tables), filled in after parsing.
+    #[arg(skip)]
     pub profile: Option<PathBuf>,
 
     #[command(flatten)]
@@ -77,6 +79,8 @@ enum Command {
     Disasm(disasm::DisasmArgs),
     /// Store a program (source or program file) in the module, verify it, optionally run it.
     Download(download::DownloadArgs),
+    /// Read the stored program back and print it as source (or write FILE.tmc / FILE.bin).
+    Upload(upload::UploadArgs),
     /// Save the module's parameters to a TOML file, compare with one, or write one back.
     Snapshot(snapshot::SnapshotArgs),
     /// Find the modules on the bus, with firmware versions and echo settings.
@@ -128,9 +132,13 @@ pub fn main() -> Exit {
             return Exit::Refused;
         }
     }
-    // Not locked for the whole run: `sim` prints from its console thread too.
-    let mut stdout = std::io::stdout();
-    let exit = match run(cli, &mut stdout) {
+    let result = run(cli, &mut crate::stdout::Stdout);
+    if crate::stdout::closed() {
+        // The reader of stdout went away (`| head`): the run ended at that write, quietly, as a
+        // Unix tool does; whatever failed on the way out followed from it.
+        return crate::stdout::EXIT;
+    }
+    let exit = match result {
         Ok(exit) => exit,
         Err(failure) => {
             diagnose(&failure.message);
@@ -241,6 +249,7 @@ pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cl
     let matches = cmd.try_get_matches_from_mut(argv)?;
     relevance::check(&mut cmd, &matches)?;
     let mut cli = Cli::from_arg_matches(&matches)?;
+    cli.profile = profile_option::given(position::leaf_matches(&matches));
     cli.profile_origin = config::origin_of(&matches, "profile", defaults);
     if let Some(Command::Config(args)) = &mut cli.command {
         config::explain(args, &matches, defaults);
@@ -266,6 +275,9 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Failure::new(Exit::Refused, message)
     })?;
     let result = match cli.command {
+        Some(Command::Params(args)) if args.values => {
+            return params::read_values(&args, &configs, out);
+        }
         Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
         Some(Command::Ports(args)) => ports::run(&args, &configs, out),
         Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),
@@ -278,6 +290,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Asm(args)) => return asm::run(&args, tmcl_profile(&configs), out),
         Some(Command::Disasm(args)) => return disasm::run(&args, tmcl_profile(&configs), out),
         Some(Command::Download(args)) => return download::run(args, &configs, out),
+        Some(Command::Upload(args)) => return upload::run(args, &configs, out),
         Some(Command::Snapshot(args)) => return snapshot::run(args, &configs, out),
         Some(Command::Scan(args)) => return scan::run(args, &configs, out),
         Some(Command::Transcript(args)) => return transcript::run(args, &configs, out),
@@ -288,13 +301,9 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
     finish_io(result.map(|()| Exit::Success))
 }
 
-/// The exit code of a command that only writes output: a closed pipe (`| head`) is no failure.
+/// The exit code of a command that only writes output (a closed stdout is decided in [`main`]).
 fn finish_io(result: std::io::Result<Exit>) -> Result<Exit, Failure> {
-    match result {
-        Ok(exit) => Ok(exit),
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
-        Err(e) => Err(Failure::new(Exit::Link, e.to_string())),
-    }
+    result.map_err(|e| Failure::new(Exit::Link, e.to_string()))
 }
 
 /// The TMCL profile, for the subcommands only TMCL has (`asm`, `disasm`, `download`).

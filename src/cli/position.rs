@@ -12,7 +12,7 @@ use clap::{Arg, ArgMatches, Command};
 
 /// Moves the options given before the subcommand behind the name of the (innermost) subcommand.
 /// `cmd` is the built command and `first` the result of parsing `argv` with it once, so the
-/// arguments are known to be well formed. Global options (`--profile`) stay where they are.
+/// arguments are known to be well formed. Global options (none today) stay where they are.
 pub(super) fn behind_subcommand(
     cmd: &mut Command,
     first: &ArgMatches,

@@ -31,11 +31,9 @@ pub(super) fn run(args: &ProfilesArgs, out: &mut dyn Write) -> Result<Exit, Fail
             detail(&profile, out)
         }
     };
-    match result {
-        Ok(()) => Ok(Exit::Success),
-        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(Exit::Success),
-        Err(e) => Err(Failure::new(Exit::Link, e.to_string())),
-    }
+    result
+        .map(|()| Exit::Success)
+        .map_err(|e| Failure::new(Exit::Link, e.to_string()))
 }
 
 /// One row of the list.

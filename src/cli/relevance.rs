@@ -27,6 +27,16 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
         "it stores TMCL programs",
     ),
     (
+        "upload",
+        &["no_validate"],
+        "it sends only reads of program memory",
+    ),
+    (
+        "upload",
+        &["address", "prefix_comma", "quiet_gap"],
+        "it reads TMCL programs",
+    ),
+    (
         "scan",
         &["module", "address"],
         "a scan tries every address in --addresses",
@@ -52,6 +62,11 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
         "it sends no typed lines",
     ),
     (
+        "params",
+        &["no_validate", "quiet_gap"],
+        "it sends no typed lines",
+    ),
+    (
         "snapshot save",
         &["no_validate", "quiet_gap"],
         "it sends no typed lines",
@@ -69,13 +84,10 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
 ];
 
 /// Subcommands that only one dialect has: (subcommand, dialect name).
-const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl")];
+const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl"), ("upload", "tmcl")];
 
 /// The subcommand that takes every shared option to show what it would set (`tmclsh config`).
 const SHOWS_ALL: &str = "config";
-
-/// Subcommands that read no module tables (`--profile` is global, so every one receives it).
-const NO_TABLES: &[&str] = &["ports", "completions", "man", "profiles"];
 
 /// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
 /// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).
@@ -180,28 +192,53 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
     if given("port") && given("tcp") {
         refuse(&["tcp"], "and --port name two links; give one".into());
     }
-    if !has_value(leaf, "port") || given("tcp") {
-        let why = "is the bit rate of a serial port; give it with --port";
+    if words == "ports" {
+        if !given("probe") {
+            refuse(&["baud", "protocol", "module"], "goes with --probe".into());
+        }
+        return refusals;
+    }
+    let can = can_kind(leaf);
+    if can.is_none() {
+        let why = "is a setting of a CAN link; give it with --can";
+        refuse(&["can_bitrate", "can_reply_id"], why.into());
+    }
+    if can == Some(CanKind::SocketCan) {
+        let why = "is not tmclsh's to set on SocketCAN: the interface has its rate (`ip link set \
+                   can0 type can bitrate 1000000`)";
+        refuse(&["can_bitrate"], why.into());
+    }
+    let slcan = can == Some(CanKind::Slcan);
+    if (!has_value(leaf, "port") && !slcan) || given("tcp") {
+        let why = "is the bit rate of a serial port; give it with --port (or --can slcan:PATH)";
         refuse(&["baud"], why.into());
     }
-    if !has_value(leaf, "port") && !has_value(leaf, "tcp") {
+    if !has_value(leaf, "port") && !has_value(leaf, "tcp") && !slcan {
         let why = "is a setting of a serial line; give it with --port";
         refuse(&LINE_IDS, why.into());
+    }
+    if words == "params" && !given("values") {
+        let ids = module_ids();
+        let linked: Vec<&str> = ids
+            .iter()
+            .map(String::as_str)
+            .filter(|id| !["protocol", "profile"].contains(id))
+            .collect();
+        let why =
+            "does not apply to `tmclsh params` without --values: the table comes from the profile";
+        refuse(&linked, why.into());
     }
     if words == "snapshot diff" && has_value(leaf, "other") {
         let ids = module_ids();
         let offline: Vec<&str> = ids
             .iter()
             .map(String::as_str)
-            .filter(|id| *id != "protocol")
+            .filter(|id| !["protocol", "profile"].contains(id))
             .collect();
         refuse(
             &offline,
             "does not apply to comparing two snapshot files".into(),
         );
-    }
-    if NO_TABLES.contains(&words) {
-        refuse(&["profile"], format!("does not apply to {named}"));
     }
     refusals
 }
@@ -209,6 +246,24 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
 /// The serial line's settings: they need a port (or a serial server, where they are noted as
 /// not applied).
 const LINE_IDS: [&str; 5] = ["dtr", "rts", "rs485", "rs485_delay", "keep_latency"];
+
+/// The kind of CAN link `--can` (or `TMCLSH_CAN`, or a file) names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum CanKind {
+    Slcan,
+    SocketCan,
+}
+
+fn can_kind(matches: &ArgMatches) -> Option<CanKind> {
+    let spec = matches
+        .try_get_one::<super::can::CanSpec>("can")
+        .ok()
+        .flatten()?;
+    Some(match spec {
+        super::can::CanSpec::Slcan(_) => CanKind::Slcan,
+        super::can::CanSpec::SocketCan(_) => CanKind::SocketCan,
+    })
+}
 
 /// The protocol in effect, for commands that have the option.
 fn dialect(matches: &ArgMatches) -> Option<&'static Dialect> {
@@ -269,9 +324,6 @@ mod tests {
         let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
         for id in DIALECTS.iter().flat_map(|d| own_options(d)) {
             assert!(cmd.get_arguments().any(|a| a.get_id() == &id), "{id}");
-        }
-        for path in NO_TABLES {
-            assert!(cmd.find_subcommand(path).is_some(), "{path}");
         }
     }
 

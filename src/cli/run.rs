@@ -87,7 +87,10 @@ pub fn run(args: RunArgs, configs: &Configured) -> Result<Exit, Failure> {
                 .then(|| session.wrong_dialect())
                 .flatten();
             let report = other.unwrap_or(report);
-            super::diagnose(&report.message);
+            // A closed stdout ends the run quietly (see `crate::stdout`).
+            if !crate::stdout::closed() {
+                super::diagnose(&report.message);
+            }
             report.exit
         }
     };

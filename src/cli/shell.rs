@@ -76,7 +76,7 @@ pub fn run(args: ShellArgs, configs: &Configured) -> Result<Exit, Failure> {
     } else {
         Lines::Given(args.commands.into_iter())
     };
-    let mut out = std::io::stdout().lock();
+    let mut out = crate::stdout::Stdout;
     let mut err = std::io::stderr().lock();
     Ok(batch::run(&mut shell, lines, options, &mut out, &mut err))
 }

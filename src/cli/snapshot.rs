@@ -174,8 +174,8 @@ fn finish(result: Result<(), SessionError>) -> Result<Exit, Failure> {
     Ok(Exit::Success)
 }
 
-/// Output that ignores a closed pipe (`| head`): the work goes on, the rest of the report is
-/// dropped, and the exit code stays that of the work.
+/// Output that ignores a closed pipe (`| head`): the work goes on (the file is written, the scan
+/// finishes), the rest of the report is dropped; the run then ends quietly with 141 (`crate::stdout`).
 pub(super) struct PipeSafe<'a>(pub &'a mut dyn Write);
 
 impl Write for PipeSafe<'_> {

@@ -29,6 +29,9 @@ enum Action {
         /// the transcript saw.
         #[arg(long, value_name = "MS", default_value_t = 10_000)]
         wait: u64,
+        /// The module's tables.
+        #[command(flatten)]
+        profile: super::profile_option::ProfileOption,
     },
 }
 
@@ -38,7 +41,9 @@ pub(super) fn run(
     configs: &Configured,
     out: &mut dyn Write,
 ) -> Result<Exit, Failure> {
-    let Action::ToRhai { log, output, wait } = args.action;
+    let Action::ToRhai {
+        log, output, wait, ..
+    } = args.action;
     let refused = |what: String| Failure::new(Exit::Refused, format!("{}: {what}", log.display()));
     let text = read_transcript(&log).map_err(refused)?;
     let entries = replay::parse::parse(&text).map_err(refused)?;
@@ -61,7 +66,6 @@ pub(super) fn run(
     };
     match written {
         Ok(()) => Ok(Exit::Success),
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(Exit::Success),
         Err(e) => Err(Failure::new(
             Exit::Refused,
             format!("cannot write the script: {e}"),

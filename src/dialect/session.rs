@@ -252,6 +252,13 @@ pub trait DialectSession: AsAny {
         None
     }
 
+    /// Warnings for a user leaving the interactive shell while motors this session set moving
+    /// (itself or by a program) still turn, each saying how to stop one; leaving stops nothing.
+    /// None where the dialect cannot tell.
+    fn turning_at_exit(&mut self) -> Vec<String> {
+        Vec::new()
+    }
+
     /// Whether this session started motion or a program that may still be going.
     fn may_be_moving(&self) -> bool {
         let core = self.core();

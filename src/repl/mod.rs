@@ -135,6 +135,12 @@ pub fn run(shell: &mut Shell, banner: &str) -> Exit {
         exit = Exit::Terminated(signal.number() as u8);
     }
     history::save(&mut editor, dialect);
+    // `:quit` or Ctrl-D with a motor turning: said, as `:stop` says it of a program's motion.
+    if exit == Exit::Success && shell.session_ref().may_be_moving() {
+        for warning in shell.session().turning_at_exit() {
+            let _ = writeln!(out, "warning: {}", escape_control(&warning));
+        }
+    }
     for message in shell.session().close() {
         let _ = writeln!(out, "{}", escape_control(&message));
     }

@@ -221,6 +221,7 @@ pub fn check_file(path: &Path) -> Result<(), Failure> {
 const MEMORY: &str = "memory";
 const TIME: &str = "time";
 const TRANSCRIPT: &str = "transcript";
+const STDOUT: &str = "stdout";
 
 /// Whether the run must end before its next operation (a transcript it needs was lost).
 type Halt = Box<dyn Fn() -> bool>;
@@ -259,6 +260,8 @@ fn base_engine(
             Some(Dynamic::from(MEMORY))
         } else if halt() {
             Some(Dynamic::from(TRANSCRIPT))
+        } else if crate::stdout::closed() {
+            Some(Dynamic::from(STDOUT))
         } else {
             None
         }
@@ -282,7 +285,7 @@ fn base_engine(
 /// trusts. The price is that a script cannot colour its output or move the cursor; a verdict needs
 /// neither.
 pub fn print_to_stdout(escaped: &str) {
-    println!("{escaped}");
+    crate::stdout::line(escaped);
 }
 
 /// Where the session's notices go during a run: stderr, as the other diagnostics.
@@ -432,6 +435,10 @@ fn report(context: &Context<'_>, error: EvalAltResult) -> Failure {
                 position,
                 "the run stops: it asked for a transcript that cannot be written",
             ),
+        },
+        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == STDOUT => Failure {
+            exit: crate::stdout::EXIT,
+            message: at(name, position, "stdout was closed"),
         },
         EvalAltResult::ErrorTerminated(..) => Failure {
             exit: Exit::Interrupted,

@@ -260,7 +260,7 @@ fn step(
         }
     };
     if writeln!(out, "{shown}").and_then(|()| out.flush()).is_err() {
-        // stdout closed (e.g. piped into `head`): not an error, just stop.
+        // stdout closed (e.g. piped into `head`): the run ends here, quietly (`crate::stdout`).
         return Ok(Flow::Quit);
     }
     reply.checked()?;

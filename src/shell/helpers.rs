@@ -16,15 +16,15 @@ pub const SHARED: &[Helper] = &[
     ),
     helper(
         "params",
-        ":params [--values] [filter]",
+        ":params [--values [--motor N]] [filter]",
         "list the module's parameters or settings (matching filter); --values reads them",
         ArgKind::Param,
         Section::Session,
     ),
     helper(
         "target",
-        ":target N|CHAR",
-        "address another module on the bus (TMCL: 2 or B; SMD4: @N, none for no prefix)",
+        ":target [N|CHAR]",
+        "show the module addressed, or address another (TMCL: 2 or B; SMD4: @N, none for no prefix)",
         ArgKind::Module,
         Section::Session,
     ),

@@ -116,8 +116,14 @@ impl Shell {
             }
             "quit" => return Ok(Flow::Quit),
             "params" if values::values_filter(arg).is_some() => {
-                let filter = values::values_filter(arg).unwrap_or_default();
-                values::write_values(self.session().param_device(), &filter, out)?
+                let wanted = values::values_filter(arg).expect("checked")?;
+                if values::write_values(self.session().param_device(), &wanted, out)? == 0 {
+                    writeln!(
+                        out,
+                        "{}",
+                        crate::escape::escape_control(&values::none_matched(&wanted))
+                    )?;
+                }
             }
             _ => self.session().run_helper(helper, arg, out)?,
         }

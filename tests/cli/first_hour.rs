@@ -11,8 +11,9 @@ use crate::sim::Sim;
 use crate::util::{bin, code, stderr, stdout, tempdir};
 
 /// What a command run without a terminal and without a link says.
-const NO_LINK: &str = "no module to talk to: give --port or --tcp (or TMCLSH_PORT or TMCLSH_TCP, \
-                       or port or tcp in tmclsh.toml), or --sim for the built-in simulator";
+const NO_LINK: &str = "no module to talk to: give --port, --tcp or --can (or TMCLSH_PORT, \
+                       TMCLSH_TCP or TMCLSH_CAN, or port, tcp or can in tmclsh.toml), or --sim \
+                       for the built-in simulator";
 
 /// A project directory of our own (its `tmclsh.toml`, if any, ours) and an empty user
 /// configuration, with no TMCLSH_ variables but `env`.

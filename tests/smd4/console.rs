@@ -87,6 +87,12 @@ fn bad_console_commands_are_answered_with_an_error() {
     let help = drive.sim.console("help");
     assert!(help.starts_with("ok commands: "), "{help}");
     assert!(help.contains(" flash-failure "), "{help}");
+    // Only the SMD4 console's commands and every console's: no TMCL command, no word of a
+    // description's continuation line.
+    let names: Vec<&str> = help.split_whitespace().collect();
+    for other in ["input", "switch", "@N", "reads", "modules"] {
+        assert!(!names.contains(&other), "{other} in {help}");
+    }
     assert_eq!(
         drive.sim.console("time").split(' ').next(),
         Some("ok"),

@@ -87,6 +87,13 @@ pub const KEYS: &[Key] = &[
         unset: "no TCP link",
     },
     Key {
+        name: "can",
+        id: "can",
+        kind: Kind::Text,
+        example: "can = \"slcan:/dev/ttyACM0\" or \"socketcan:can0\"",
+        unset: "no CAN link",
+    },
+    Key {
         name: "sim",
         id: "sim",
         kind: Kind::Bool,
@@ -298,8 +305,7 @@ impl Defaults {
     }
 
     /// Makes the files' values the defaults of the options of `cmd` and its subcommands, except
-    /// `sim`, whose options of the same names are the simulator's own. Global options (`--profile`)
-    /// are set once at the top and reach every subcommand.
+    /// `sim`, whose options of the same names are the simulator's own (`--profile` reaches it too).
     pub fn apply(&self, cmd: Command) -> Command {
         let mut cmd = cmd;
         for entry in &self.entries {
@@ -326,7 +332,8 @@ fn set_default(cmd: Command, id: &'static str, value: &str) -> Command {
         cmd
     };
     cmd.mut_subcommands(|sub| {
-        if sub.get_name() == "sim" {
+        // `--profile` means the same to the simulator: the modules it simulates.
+        if sub.get_name() == "sim" && id != super::profile_option::ID {
             sub
         } else {
             set_default(sub, id, value)

@@ -13,17 +13,28 @@ use std::path::Path;
 
 use crate::dialect::Configured;
 
+use super::connection::DialectArgs;
+
 use list::{Kind, Port, ports};
 
 /// Arguments of `ports`.
 #[derive(Debug, Clone, clap::Args)]
 pub(super) struct PortsArgs {
-    /// Ask each USB port (or each PORT named) which TMCL module is there: command 136 to
-    /// address 1 at 9600 baud, each reply awaited 100 ms (a port in use by another program is
-    /// reported, not waited for). Built-in ports are probed only when named: what is wired to
-    /// them may not expect the bytes.
+    /// Ask each USB port (or each PORT named) which module is there: address --module at --baud
+    /// in --protocol (TMCL: command 136 to address 1 at 9600 baud by default), each reply
+    /// awaited 100 ms (a port in use by another program is reported, not waited for). Built-in
+    /// ports are probed only when named: what is wired to them may not expect the bytes.
     #[arg(long)]
     pub probe: bool,
+    /// With --probe: the bit rate to probe at (8N1).
+    #[arg(long, value_name = "N", env = "TMCLSH_BAUD", default_value_t = 9600, value_parser = super::connection::parse_baud)]
+    pub baud: u32,
+    /// With --probe: the protocol to ask in.
+    #[command(flatten)]
+    pub dialect: DialectArgs,
+    /// With --probe: the address to ask (TMCL: 1 = address character A; SMD4: @N).
+    #[arg(long, short = 'm', value_name = "N", env = "TMCLSH_MODULE", default_value_t = 1, value_parser = clap::value_parser!(u8).range(1..))]
+    pub module: u8,
     /// List the placeholder ttyS ports too (reserved by the kernel, with no UART behind them).
     #[arg(long)]
     pub all: bool,
@@ -46,7 +57,12 @@ pub(super) fn run(args: &PortsArgs, configs: &Configured, out: &mut dyn Write) -
         } else {
             args.named.clone()
         };
-        probe::probe_all(&paths, configs, out)?;
+        let probe = probe::Probe {
+            baud: args.baud,
+            dialect: args.dialect.protocol,
+            address: args.module,
+        };
+        probe::probe_all(&paths, configs, &probe, out)?;
     }
     Ok(())
 }

@@ -34,6 +34,10 @@ pub fn run(
                 writeln!(out, "no setting matches '{arg}'")?;
             }
         }
+        // Alone: where requests go now.
+        "target" if arg.trim().is_empty() => {
+            writeln!(out, "requests go to {}", describe(session.address()))?;
+        }
         "target" => {
             let address = parse_address(arg)?;
             session.set_address(address);

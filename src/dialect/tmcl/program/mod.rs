@@ -3,6 +3,7 @@
 //! to binary mode transparently for the control functions ASCII mode lacks.
 
 pub mod download;
+pub mod upload;
 
 use crate::dialect::session::DialectSession;
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -199,21 +200,45 @@ pub fn status(session: &mut TmclSession, module: u8) -> Result<i32, SessionError
 /// Warnings about the motors of `module` that still turn, with their speed: stopping a program
 /// does not stop the motion it started. A check that cannot be made says why.
 pub fn still_turning(session: &mut TmclSession, module: u8) -> Vec<String> {
+    warn_turning(session, module, |motor| {
+        format!("the program stopped, its motion did not; MST {motor} or Ctrl-C stops it")
+    })
+}
+
+/// Warnings about the motors of `module` still turning as the interactive shell ends: leaving
+/// does not stop them (as `:stop` does not stop a program's motion); each says how to.
+pub fn turning_at_exit(session: &mut TmclSession, module: u8) -> Vec<String> {
+    let option = if module == 1 {
+        String::new()
+    } else {
+        format!("-m {module} ")
+    };
+    warn_turning(session, module, |motor| {
+        format!(
+            "leaving the shell does not stop it; MST {motor} does (tmclsh {option}-c 'MST {motor}' \
+             with the same link)"
+        )
+    })
+}
+
+/// A warning for each motor of `module` whose actual speed is not 0, ending with `how(motor)`.
+fn warn_turning(session: &mut TmclSession, module: u8, how: impl Fn(u8) -> String) -> Vec<String> {
     let name = ModuleName(module);
-    let Ok(speed) = session.profile().find_axis("actual_speed") else {
+    let profile = session.profile_of(module);
+    let Ok(speed) = profile.find_axis("actual_speed") else {
         return Vec::new();
     };
     let (number, ident) = (speed.number, speed.ident.clone());
     let mut warnings = Vec::new();
-    for motor in 0..session.profile().axes {
+    for motor in 0..profile.axes {
         let read = session
             .request(module, Instruction::new(Opcode::Gap, number, motor, 0))
             .and_then(TmclExchange::checked);
         match read.map(|x| x.value().unwrap_or(0)) {
             Ok(0) => {}
             Ok(value) => warnings.push(format!(
-                "motor {motor} of {name} is still turning ({ident} = {value}): the program \
-                 stopped, its motion did not; MST {motor} or Ctrl-C stops it"
+                "motor {motor} of {name} is still turning ({ident} = {value}): {}",
+                how(motor)
             )),
             Err(e) => warnings.push(format!(
                 "could not check whether motor {motor} of {name} still turns: {e}"

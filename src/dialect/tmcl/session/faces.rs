@@ -52,6 +52,18 @@ impl DialectSession for TmclSession {
         Some(self.target.into())
     }
 
+    /// Each motor of the modules this session or its programs set moving, read once.
+    fn turning_at_exit(&mut self) -> Vec<String> {
+        let mut modules = super::modules(&self.core.moved);
+        modules.extend(super::modules(&self.core.running));
+        modules.sort_unstable();
+        modules.dedup();
+        modules
+            .into_iter()
+            .flat_map(|module| crate::dialect::tmcl::program::turning_at_exit(self, module))
+            .collect()
+    }
+
     /// Every module goes back to the mode it was found in (unless `--stay-ascii`).
     fn close(&mut self) -> Vec<String> {
         if self.core.options.stay_ascii {
