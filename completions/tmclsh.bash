@@ -61,6 +61,9 @@ _tmclsh() {
             tmclsh,transcript)
                 cmd="tmclsh__subcmd__transcript"
                 ;;
+            tmclsh,upload)
+                cmd="tmclsh__subcmd__upload"
+                ;;
             tmclsh__subcmd__help,asm)
                 cmd="tmclsh__subcmd__help__subcmd__asm"
                 ;;
@@ -105,6 +108,9 @@ _tmclsh() {
                 ;;
             tmclsh__subcmd__help,transcript)
                 cmd="tmclsh__subcmd__help__subcmd__transcript"
+                ;;
+            tmclsh__subcmd__help,upload)
+                cmd="tmclsh__subcmd__help__subcmd__upload"
                 ;;
             tmclsh__subcmd__help__subcmd__snapshot,diff)
                 cmd="tmclsh__subcmd__help__subcmd__snapshot__subcmd__diff"
@@ -161,7 +167,7 @@ _tmclsh() {
 
     case "${cmd}" in
         tmclsh)
-            opts="-c -m -v -h -V --value --json --keep-going --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download snapshot scan transcript sim config help"
+            opts="-c -m -v -h -V --value --json --keep-going --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help --version params profiles ports completions man run asm disasm download upload snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -180,6 +186,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -287,7 +305,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__config)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -302,6 +320,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -387,7 +417,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__download)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --run --no-validate --address --prefix-comma --quiet-gap --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --run --no-validate --address --prefix-comma --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -402,6 +432,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -469,7 +511,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__help)
-            opts="params profiles ports completions man run asm disasm download snapshot scan transcript sim config help"
+            opts="params profiles ports completions man run asm disasm download upload snapshot scan transcript sim config help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -748,6 +790,20 @@ _tmclsh() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        tmclsh__subcmd__help__subcmd__upload)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         tmclsh__subcmd__man)
             opts="-h --install --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
@@ -763,7 +819,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__params)
-            opts="-m -v -h --values --motor --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
+            opts="-m -v -h --values --motor --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -782,6 +838,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -893,7 +961,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__run)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --max-operations --max-call-depth --max-memory --max-time --allow-dir --overwrite --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -908,6 +976,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -995,7 +1075,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__scan)
-            opts="-m -v -h --addresses --first --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --timeout --log --local-echo --reconnect --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --help"
+            opts="-m -v -h --addresses --first --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --timeout --log --local-echo --reconnect --prefix-comma --module --address --no-enter --stay-ascii --binary --verbose --echo --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1014,6 +1094,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1081,7 +1173,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__sim)
-            opts="-v -h --protocol --profile --pty --link --listen --modules --boot-loader --shared-line --baud --latency --state --adapter-echo --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --help"
+            opts="-v -h --protocol --profile --pty --link --listen --slcan --slcan-ack --foreign-frames --modules --boot-loader --shared-line --baud --latency --state --adapter-echo --verbose --manual-clock --left-switch --right-switch --home-switch --no-reply-to-139 --no-reply-to-bin --no-ascii --reply-end --echo-end --backspace-echo --drop-rate --corrupt-rate --delay-rate --delay-ms --silent-after --hangup-after --fault-seed --seed --flag-case --float-decimals --float-missing-e --error-spelling --no-current-rounding --prefix-only --no-reply-prefix --scientific-positions --tzw-reply-ms --real-value-grid --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1111,6 +1203,10 @@ _tmclsh() {
                     return 0
                     ;;
                 --listen)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --slcan-ack)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1232,7 +1328,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__diff)
-            opts="-m -v -h --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
+            opts="-m -v -h --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1247,6 +1343,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1384,7 +1492,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__restore)
-            opts="-m -v -h --store --yes --dry-run --force --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
+            opts="-m -v -h --store --yes --dry-run --force --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-validate --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1399,6 +1507,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1466,7 +1586,7 @@ _tmclsh() {
             return 0
             ;;
         tmclsh__subcmd__snapshot__subcmd__save)
-            opts="-m -v -h --force --port --baud --tcp --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
+            opts="-m -v -h --force --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --address --prefix-comma --no-validate --quiet-gap --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1481,6 +1601,18 @@ _tmclsh() {
                     return 0
                     ;;
                 --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1633,6 +1765,112 @@ _tmclsh() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        tmclsh__subcmd__upload)
+            opts="-o -m -v -h --output --max --port --baud --tcp --can --can-bitrate --can-reply-id --sim --dtr --rts --rs485 --rs485-delay --keep-latency --protocol --profile --module --timeout --echo --log --no-enter --stay-ascii --local-echo --binary --reconnect --verbose --no-validate --address --prefix-comma --quiet-gap --help"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --output)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --max)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tcp)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-bitrate)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --can-reply-id)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --dtr)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --protocol)
+                    COMPREPLY=($(compgen -W "tmcl smd4" -- "${cur}"))
+                    return 0
+                    ;;
+                --profile)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --module)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --echo)
+                    COMPREPLY=($(compgen -W "char line none" -- "${cur}"))
+                    return 0
+                    ;;
+                --log)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --local-echo)
+                    COMPREPLY=($(compgen -W "auto on off" -- "${cur}"))
+                    return 0
+                    ;;
+                --reconnect)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --address)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --quiet-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
     esac
 }
 
@@ -1659,7 +1897,7 @@ _tmclsh_with_files() {
         esac
     done
     case "$prev" in
-        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--latency|--left-switch|--link|--listen|--local-echo|--log|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--motor|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
+        --address|--addresses|--allow-dir|--backspace-echo|--baud|--boot-loader|--can|--can-bitrate|--can-reply-id|--corrupt-rate|--delay-ms|--delay-rate|--drop-rate|--dtr|--echo|--echo-end|--error-spelling|--flag-case|--float-decimals|--hangup-after|--home-switch|--latency|--left-switch|--link|--listen|--local-echo|--log|--max|--max-call-depth|--max-memory|--max-operations|--max-time|--module|--modules|--motor|--output|--port|--prefix-only|--profile|--protocol|--quiet-gap|--real-value-grid|--reconnect|--reply-end|--right-switch|--rs485-delay|--rts|--seed|--silent-after|--slcan-ack|--state|--tcp|--timeout|--wait|-c|-m|-o) extensions=() ;;
     esac
     if [[ ${#extensions[@]} -gt 0 && "$cur" != -* ]]; then
         compopt -o filenames 2>/dev/null

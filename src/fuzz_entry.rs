@@ -31,6 +31,7 @@ use crate::dialect::tmcl::protocol::{
 };
 use crate::dialect::tmcl::replay as tmcl_replay;
 use crate::dialect::tmcl::sim::Bus;
+use crate::link::can::slcan;
 use crate::sim::Device;
 use crate::sim::fault::{Faults, Faulty};
 
@@ -42,6 +43,7 @@ pub const TARGETS: &[Target] = &[
     ("tmcl_line", tmcl_line),
     ("tmcl_reply", tmcl_reply),
     ("tmcl_frame", tmcl_frame),
+    ("slcan", slcan),
     ("smd4_request", smd4_request),
     ("smd4_response", smd4_response),
     ("asm", asm),
@@ -118,6 +120,35 @@ pub fn tmcl_frame(data: &[u8]) {
         }
         assert!(decoder.pending() < FRAME_LEN);
     }
+}
+
+/// slcan text from an adapter (or a host), in pieces: the events do not depend on where the
+/// bytes were cut, no partial line outgrows the longest slcan line, and every frame read encodes
+/// back to a line that reads as the same frame.
+pub fn slcan(data: &[u8]) {
+    let (mut whole, mut pieces) = (Vec::new(), Vec::new());
+    slcan::Decoder::default().push(data, &mut whole);
+    let mut decoder = slcan::Decoder::default();
+    let mut rest = data;
+    while let Some((&split, tail)) = rest.split_first() {
+        let take = usize::from(split % 16).min(tail.len());
+        decoder.push(&tail[..take], &mut pieces);
+        rest = &tail[take..];
+    }
+    for event in &whole {
+        if let slcan::Event::Frame(frame) = event {
+            let line = slcan::encode(frame);
+            let mut again = Vec::new();
+            slcan::Decoder::default().push(line.as_bytes(), &mut again);
+            assert_eq!(again, vec![event.clone()], "{line:?}");
+        }
+    }
+    let mut cut = Vec::new();
+    let mut decoder = slcan::Decoder::default();
+    for chunk in data.chunks(7) {
+        decoder.push(chunk, &mut cut);
+    }
+    assert_eq!(cut, whole, "events depend on where the bytes were cut");
 }
 
 /// A typed SMD4 request: parse, validate against the built-in table, and format back to a line

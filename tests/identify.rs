@@ -2,7 +2,8 @@
 //! built-in profile's simulated module is recognised from its 136 answer and talked to with its
 //! own tables; a given profile wins with one warning; an unknown module number gets the generic
 //! profile; a boot loader ends the session after the one exchange; a module already in ASCII mode
-//! (no answer to 136) falls back to the profile it has, within the timeout.
+//! (no answer to 136) is talked to with a given profile, and without one is sent nothing on a
+//! guess (exit 3).
 
 use std::path::{Path, PathBuf};
 use std::process::Output;
@@ -197,7 +198,7 @@ fn a_boot_loader_is_reported_and_nothing_else_is_sent() {
 }
 
 #[test]
-fn a_module_already_in_ascii_mode_falls_back_to_the_profile_it_has() {
+fn a_module_already_in_ascii_mode_is_talked_to_with_a_given_profile_and_never_guessed() {
     let sim = Sim::start(&["--pty", "--profile", "tmcm-6110"]);
     {
         let mut port = sim.pty();
@@ -230,19 +231,70 @@ fn a_module_already_in_ascii_mode_falls_back_to_the_profile_it_has() {
         "{err}"
     );
     assert_eq!(stdout(&out).trim_end(), "BA 100 1000");
-    // Without a profile: the default one. (The session above put the module back in binary
-    // mode, as GP 67 says it starts in binary mode.)
+    // Without a profile nothing is guessed: no 139 to a module that did not say what it is. It
+    // answers a line in ASCII mode, so it was left there: the default profile, in ASCII mode.
+    // (The session above put the module back in binary mode, as GP 67 says it starts in binary.)
     {
         let mut port = sim.pty();
         assert_eq!(port.transact(1, 139, 0, 0, 0).value, 0);
     }
-    let out = on(&sim, &["--timeout", "300", "-c", "GAP 4, 0"]);
-    assert_eq!(code(&out), 0, "{}", stderr(&out));
-    assert!(
-        stderr(&out).contains("using the profile tmcm-142 (built in)"),
-        "{}",
-        stderr(&out)
+    let dir = tempdir();
+    let log = dir.join("guess.log");
+    let out = on(
+        &sim,
+        &[
+            "--timeout",
+            "300",
+            "--log",
+            log.to_str().unwrap(),
+            "-c",
+            "GAP 4, 0",
+        ],
     );
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let err = stderr(&out);
+    for said in [
+        "answers in ASCII mode",
+        "using the profile tmcm-142 (built in)",
+    ] {
+        assert!(err.contains(said), "{said}: {err}");
+    }
+    let log = std::fs::read_to_string(&log).unwrap();
+    assert!(!log.contains("(139)"), "{log}");
+}
+
+#[test]
+fn a_module_that_answers_neither_136_nor_an_ascii_line_is_sent_nothing_on_a_guess() {
+    // Nothing at address 5: asked twice in binary and once in ASCII, then exit 3 with the
+    // likely causes and the two ways on.
+    let sim = Sim::start(&["--pty"]);
+    let dir = tempdir();
+    let log = dir.join("none.log");
+    let out = on(
+        &sim,
+        &[
+            "--timeout",
+            "200",
+            "-m",
+            "5",
+            "--log",
+            log.to_str().unwrap(),
+            "-c",
+            "GAP 4, 0",
+        ],
+    );
+    assert_eq!(code(&out), 3, "{}", stderr(&out));
+    let err = stderr(&out);
+    for said in [
+        "module 5 (E) is not identified",
+        "already in ASCII mode",
+        "--profile NAME",
+        "--binary",
+    ] {
+        assert!(err.contains(said), "{said}: {err}");
+    }
+    let log = std::fs::read_to_string(&log).unwrap();
+    assert!(!log.contains("(139)") && !log.contains("GAP 4"), "{log}");
 }
 
 #[test]
@@ -297,7 +349,7 @@ fn a_scan_names_a_boot_loader_and_an_unknown_module_and_asks_the_loader_nothing_
     ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(
-        stdout(&out).contains("142B1.06  ?     TMCM-142 (boot loader)"),
+        stdout(&out).contains("142B1.06  ?       TMCM-142 (boot loader)"),
         "{}",
         stdout(&out)
     );
@@ -322,7 +374,7 @@ fn a_scan_names_a_boot_loader_and_an_unknown_module_and_asks_the_loader_nothing_
     ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(
-        stdout(&out).contains("9999V100  char  TMCM-9999 (no profile)"),
+        stdout(&out).contains("9999V100  char    TMCM-9999 (no profile)"),
         "{}",
         stdout(&out)
     );

@@ -5,6 +5,8 @@ mod util;
 
 mod asm;
 mod binary_session;
+mod bus;
+mod can;
 mod catalogue;
 mod cli;
 mod commission;

@@ -17,6 +17,7 @@ use crate::link::line::{LineOptions, Modem, Rs485};
 use crate::session::transcript::Header;
 use crate::session::{LocalEcho, SessionOptions, Transcript};
 
+use super::can::{CanSettings, CanSpec, DEFAULT_BITRATE, DEFAULT_REPLY_ID};
 use super::link_kinds::{self, SIM};
 use super::target::{Target, is_log_dir, log_file};
 
@@ -36,6 +37,17 @@ pub struct ConnectionArgs {
     /// TCP address of the module or of a serial server (HOST:PORT).
     #[arg(long, value_name = "HOST:PORT", env = "TMCLSH_TCP")]
     pub tcp: Option<String>,
+    /// CAN adapter of the modules' bus: slcan:PATH (a serial-line CAN adapter: CANable,
+    /// USBtin, CANUSB) or socketcan:IFACE (Linux: can0, vcan0). The module's CAN ID is --module.
+    #[arg(long, value_name = "slcan:PATH|socketcan:IFACE", env = "TMCLSH_CAN", value_parser = parse_can)]
+    pub can: Option<CanSpec>,
+    /// The CAN bus's bit rate, set on an slcan adapter (10000 to 1000000; SocketCAN's is set
+    /// with `ip link`) [default: 1000000, the modules' default]
+    #[arg(long, value_name = "BPS", value_parser = parse_can_bitrate)]
+    pub can_bitrate: Option<u32>,
+    /// The CAN ID the modules send their replies to (the modules' reply ID setting).
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_REPLY_ID, value_parser = clap::value_parser!(u16).range(0..=0x7FF))]
+    pub can_reply_id: u16,
     /// Talk to the built-in simulated module: the explicit choice a command run without a
     /// terminal needs, so that no script passes against the simulator by accident.
     #[arg(long)]
@@ -67,6 +79,23 @@ pub struct LineArgs {
     /// flag, which lowers a 16 ms timer to 1 ms where the driver honours it).
     #[arg(long, env = "TMCLSH_KEEP_LATENCY")]
     pub keep_latency: bool,
+}
+
+fn parse_can(text: &str) -> Result<CanSpec, String> {
+    CanSpec::parse(text)
+}
+
+/// A bit rate slcan has a code for (`S0`…`S8`).
+fn parse_can_bitrate(text: &str) -> Result<u32, String> {
+    let rates = crate::link::can::slcan::BITRATES;
+    text.trim()
+        .parse::<u32>()
+        .ok()
+        .filter(|bps| rates.contains(bps))
+        .ok_or_else(|| {
+            let list: Vec<String> = rates.iter().map(u32::to_string).collect();
+            format!("a CAN bit rate is one of {}", list.join(", "))
+        })
 }
 
 /// A `--port` value (also `port` in a configuration file, `TMCLSH_PORT`): a device, never a
@@ -352,6 +381,20 @@ impl SessionArgs {
     }
 }
 
+impl ConnectionArgs {
+    /// The CAN link `--can` names, with its bus settings.
+    fn can_target(&self) -> Target {
+        Target::Can {
+            spec: self.can.clone().expect("chosen only when given"),
+            settings: CanSettings {
+                bitrate: self.can_bitrate.unwrap_or(DEFAULT_BITRATE),
+                reply_id: self.can_reply_id,
+                baud: self.baud,
+            },
+        }
+    }
+}
+
 /// Everything that says which module to talk to and how: flattened, the same way, into the shell
 /// and every subcommand that opens a session in either dialect.
 #[derive(Debug, Clone, clap::Args)]
@@ -428,6 +471,7 @@ impl ModuleArgs {
         match self.chosen()? {
             Some(SIM) => Ok(Target::Builtin),
             Some("tcp") => Target::of(None, self.connection.tcp.as_deref()),
+            Some("can") => Ok(self.connection.can_target()),
             Some(_) => Target::of(self.connection.port.as_deref(), None),
             None if audience == Audience::Interactive => Ok(Target::Builtin),
             None => Err(Failure::new(Exit::Refused, link_kinds::no_link())),

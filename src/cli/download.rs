@@ -28,17 +28,22 @@ pub struct DownloadArgs {
 /// Runs `download`.
 pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
     interrupt::install();
-    let profile = super::tmcl_profile(configs);
-    let instructions = load(&args.file, profile)?;
     if !tmcl::is(args.module.protocol()) {
         return Err(Failure::new(
             Exit::Refused,
             "this subcommand works with TMCL modules only",
         ));
     }
+    // A file that cannot be read is refused before the port is opened.
+    crate::file::read(&args.file, crate::file::READ_LIMIT)
+        .map_err(|e| Failure::refused(format!("cannot read {e}")))?;
     let mut session = args.module.open(configs, Audience::Batch, Purpose::Talk)?;
     let tmcl = tmcl::session(&mut *session).expect("a TMCL session");
-    let result = download_and_run(tmcl, &instructions, args.run);
+    // Checked against the module identified (its own command set: EI, VECT … where it has
+    // them), not the default profile; a given --profile is what identification settled on.
+    let profile = tmcl.profile().clone();
+    let result =
+        load(&args.file, &profile).and_then(|program| download_and_run(tmcl, &program, args.run));
     for notice in session.take_notices() {
         super::diagnose(&notice);
     }

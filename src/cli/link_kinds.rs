@@ -29,6 +29,10 @@ pub(super) const LINK_KINDS: &[LinkKind] = &[
         id: "tcp",
         env: "TMCLSH_TCP",
     },
+    LinkKind {
+        id: "can",
+        env: "TMCLSH_CAN",
+    },
 ];
 
 /// The id of `--sim`, the built-in simulator as an explicit choice.
@@ -137,8 +141,8 @@ mod tests {
     fn the_refusal_names_every_kind_of_link() {
         assert_eq!(
             no_link(),
-            "no module to talk to: give --port or --tcp (or TMCLSH_PORT or TMCLSH_TCP, or port or \
-             tcp in tmclsh.toml), or --sim for the built-in simulator"
+            "no module to talk to: give --port, --tcp or --can (or TMCLSH_PORT, TMCLSH_TCP or \
+             TMCLSH_CAN, or port, tcp or can in tmclsh.toml), or --sim for the built-in simulator"
         );
     }
 

@@ -3,6 +3,7 @@
 //! nothing are refused (`relevance`).
 
 mod asm;
+pub mod can;
 mod completions;
 pub mod config;
 pub mod connection;
@@ -25,6 +26,7 @@ mod sim;
 mod snapshot;
 mod target;
 mod transcript;
+pub mod upload;
 
 use std::borrow::Cow;
 use std::ffi::OsString;
@@ -77,6 +79,8 @@ enum Command {
     Disasm(disasm::DisasmArgs),
     /// Store a program (source or program file) in the module, verify it, optionally run it.
     Download(download::DownloadArgs),
+    /// Read the stored program back and print it as source (or write FILE.tmc / FILE.bin).
+    Upload(upload::UploadArgs),
     /// Save the module's parameters to a TOML file, compare with one, or write one back.
     Snapshot(snapshot::SnapshotArgs),
     /// Find the modules on the bus, with firmware versions and echo settings.
@@ -286,6 +290,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Asm(args)) => return asm::run(&args, tmcl_profile(&configs), out),
         Some(Command::Disasm(args)) => return disasm::run(&args, tmcl_profile(&configs), out),
         Some(Command::Download(args)) => return download::run(args, &configs, out),
+        Some(Command::Upload(args)) => return upload::run(args, &configs, out),
         Some(Command::Snapshot(args)) => return snapshot::run(args, &configs, out),
         Some(Command::Scan(args)) => return scan::run(args, &configs, out),
         Some(Command::Transcript(args)) => return transcript::run(args, &configs, out),

@@ -27,6 +27,16 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
         "it stores TMCL programs",
     ),
     (
+        "upload",
+        &["no_validate"],
+        "it sends only reads of program memory",
+    ),
+    (
+        "upload",
+        &["address", "prefix_comma", "quiet_gap"],
+        "it reads TMCL programs",
+    ),
+    (
         "scan",
         &["module", "address"],
         "a scan tries every address in --addresses",
@@ -74,7 +84,7 @@ const UNUSED: &[(&str, &[&str], &str)] = &[
 ];
 
 /// Subcommands that only one dialect has: (subcommand, dialect name).
-const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl")];
+const ONE_DIALECT: &[(&str, &str)] = &[("download", "tmcl"), ("upload", "tmcl")];
 
 /// The subcommand that takes every shared option to show what it would set (`tmclsh config`).
 const SHOWS_ALL: &str = "config";
@@ -188,11 +198,22 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
         }
         return refusals;
     }
-    if !has_value(leaf, "port") || given("tcp") {
-        let why = "is the bit rate of a serial port; give it with --port";
+    let can = can_kind(leaf);
+    if can.is_none() {
+        let why = "is a setting of a CAN link; give it with --can";
+        refuse(&["can_bitrate", "can_reply_id"], why.into());
+    }
+    if can == Some(CanKind::SocketCan) {
+        let why = "is not tmclsh's to set on SocketCAN: the interface has its rate (`ip link set \
+                   can0 type can bitrate 1000000`)";
+        refuse(&["can_bitrate"], why.into());
+    }
+    let slcan = can == Some(CanKind::Slcan);
+    if (!has_value(leaf, "port") && !slcan) || given("tcp") {
+        let why = "is the bit rate of a serial port; give it with --port (or --can slcan:PATH)";
         refuse(&["baud"], why.into());
     }
-    if !has_value(leaf, "port") && !has_value(leaf, "tcp") {
+    if !has_value(leaf, "port") && !has_value(leaf, "tcp") && !slcan {
         let why = "is a setting of a serial line; give it with --port";
         refuse(&LINE_IDS, why.into());
     }
@@ -225,6 +246,24 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
 /// The serial line's settings: they need a port (or a serial server, where they are noted as
 /// not applied).
 const LINE_IDS: [&str; 5] = ["dtr", "rts", "rs485", "rs485_delay", "keep_latency"];
+
+/// The kind of CAN link `--can` (or `TMCLSH_CAN`, or a file) names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum CanKind {
+    Slcan,
+    SocketCan,
+}
+
+fn can_kind(matches: &ArgMatches) -> Option<CanKind> {
+    let spec = matches
+        .try_get_one::<super::can::CanSpec>("can")
+        .ok()
+        .flatten()?;
+    Some(match spec {
+        super::can::CanSpec::Slcan(_) => CanKind::Slcan,
+        super::can::CanSpec::SocketCan(_) => CanKind::SocketCan,
+    })
+}
 
 /// The protocol in effect, for commands that have the option.
 fn dialect(matches: &ArgMatches) -> Option<&'static Dialect> {

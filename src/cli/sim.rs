@@ -9,8 +9,11 @@ use std::time::Duration;
 use clap::{ArgMatches, Args, Command, FromArgMatches};
 
 use crate::clock::{Clock, ManualClock, SystemClock};
-use crate::dialect::{Configured, DIALECTS, Dialect, SimFlags, default_dialect, protocol_parser};
+use crate::dialect::{
+    Configured, DIALECTS, Dialect, DialectConfig, SimFlags, default_dialect, protocol_parser,
+};
 use crate::exit::{Exit, Failure};
+use crate::link::can::slcan::AckStyle;
 use crate::sim::Device;
 use crate::sim::console::{self, Answer, Console};
 use crate::sim::echo::AdapterEcho;
@@ -18,6 +21,7 @@ use crate::sim::fault::{Faults, Faulty};
 use crate::sim::inprocess::SharedDevice;
 use crate::sim::latency::Latency;
 use crate::sim::pacing::Paced;
+use crate::sim::slcan::{SlcanAdapter, SlcanOptions};
 
 /// Arguments of `sim`.
 #[derive(Debug, clap::Args)]
@@ -46,6 +50,20 @@ pub(super) struct SimArgs {
     /// one); the bound address is the first line printed.
     #[arg(long, value_name = "ADDR")]
     pub listen: Option<String>,
+
+    /// Serve the simulated bus as an slcan (serial-line CAN) adapter: requests and replies are
+    /// TMCL's CAN frames (`--can slcan:PATH` on the other side).
+    #[arg(long)]
+    pub slcan: bool,
+
+    /// How the slcan adapter acknowledges a transmitted frame: z, Z, cr (a bare CR) or none.
+    #[arg(long, value_name = "z|Z|cr|none", default_value = "z", value_parser = slcan_ack, requires = "slcan")]
+    pub slcan_ack: AckStyle,
+
+    /// Put another node's frame on the CAN bus (a CANopen heartbeat, ID 0x705) before each
+    /// reply, as on a bus the modules share with other nodes.
+    #[arg(long, requires = "slcan")]
+    pub foreign_frames: bool,
 
     /// The bus layout of the chosen dialect's simulator.
     #[command(flatten)]
@@ -170,6 +188,10 @@ fn console_help() -> String {
     console::help(DIALECTS.iter().map(|d| d.console_help))
 }
 
+fn slcan_ack(text: &str) -> Result<AckStyle, String> {
+    AckStyle::parse(text).ok_or_else(|| format!("'{text}' is no acknowledgement: z, Z, cr or none"))
+}
+
 fn rate(text: &str) -> Result<f64, String> {
     text.parse::<f64>()
         .ok()
@@ -212,7 +234,11 @@ fn foreign_flag(flag: &str, owner: &Dialect, chosen: &Dialect) -> String {
 /// device (faults inside, so replies are judged whole; the echo outside the pacing, so the whole
 /// request comes back before anything the module sends, as on a half-duplex bus; the latency
 /// timer outermost, holding what the adapter hands the host, echo included).
-fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
+fn decorate(
+    device: Box<dyn Device>,
+    args: &SimArgs,
+    config: &dyn DialectConfig,
+) -> Result<Box<dyn Device>, Failure> {
     let faults = Faults {
         drop_rate: args.drop_rate,
         corrupt_rate: args.corrupt_rate,
@@ -223,6 +249,25 @@ fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
         seed: args.seed,
     };
     let device: Box<dyn Device> = Box::new(Faulty::new(device, faults));
+    // The adapter outside the faults: a dropped reply is a frame that never comes.
+    let device: Box<dyn Device> = if args.slcan {
+        let bus = config.can_device(device).ok_or_else(|| {
+            Failure::new(
+                Exit::Refused,
+                format!(
+                    "--slcan: the {} simulation has no CAN interface",
+                    args.protocol.name.to_uppercase()
+                ),
+            )
+        })?;
+        let options = SlcanOptions {
+            ack: args.slcan_ack,
+            foreign: args.foreign_frames,
+        };
+        Box::new(SlcanAdapter::new(bus, options))
+    } else {
+        device
+    };
     let device: Box<dyn Device> = match args.baud {
         Some(baud) => Box::new(Paced::new(device, baud)),
         None => device,
@@ -233,10 +278,10 @@ fn decorate(device: Box<dyn Device>, args: &SimArgs) -> Box<dyn Device> {
         device
     };
     // The adapter's timer sits between the line and the host: outermost.
-    match args.latency {
+    Ok(match args.latency {
         Some(ms) => Box::new(Latency::new(device, Duration::from_millis(ms))),
         None => device,
-    }
+    })
 }
 
 /// Runs the simulator until interrupted (or `quit` on the console).
@@ -248,7 +293,9 @@ pub(super) fn run(
 ) -> Result<Exit, Failure> {
     use crate::sim::serve::{Server, wake_pair};
 
-    let device: SharedDevice = Arc::new(Mutex::new(decorate(device(args, configs)?, args)));
+    let config = configs.of(args.protocol);
+    let device = decorate(device(args, configs)?, args, config)?;
+    let device: SharedDevice = Arc::new(Mutex::new(device));
     let manual = args.manual_clock.then(|| Arc::new(ManualClock::new()));
     let clock: Arc<dyn Clock> = match &manual {
         Some(manual) => manual.clone(),

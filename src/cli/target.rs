@@ -9,6 +9,7 @@ use crate::dialect::{Dialect, DialectConfig};
 use crate::exit::{Exit, Failure};
 use crate::link::{LineOptions, Link, LinkError, SerialLink, TcpLink};
 
+use super::can::{CanSettings, CanSpec};
 use super::ports::usb::{UsbSpec, find};
 
 /// The place a link goes to.
@@ -25,6 +26,13 @@ pub enum Target {
         name: String,
         /// The device file it has now.
         path: String,
+    },
+    /// A CAN adapter, with the bus's settings.
+    Can {
+        /// The adapter.
+        spec: CanSpec,
+        /// Bit rate, reply ID, the serial rate to an slcan adapter.
+        settings: CanSettings,
     },
     /// The built-in simulated module.
     Builtin,
@@ -120,6 +128,9 @@ impl Target {
                 }
                 Box::new(link)
             }
+            Target::Can { spec, settings } => {
+                super::can::open(spec, *settings, line, config, timeout)?
+            }
             Target::Builtin => {
                 let name = format!("simulated {} (built-in)", config.simulated_module());
                 crate::sim::builtin_link(config.simulator(), name)
@@ -141,6 +152,7 @@ impl Target {
                         .unwrap_or_else(|| "serial".into()),
                 }
             }
+            Target::Can { spec, .. } => spec.file_name(),
             Target::Builtin => format!("sim-{}", dialect.name),
         };
         name.chars()

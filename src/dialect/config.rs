@@ -6,9 +6,11 @@ use std::path::Path;
 
 use crate::commission::ParamRef;
 use crate::link::Link;
+use crate::link::can::Framer;
 use crate::session::transcript::{Header, Transcript};
 use crate::session::{SessionError, SessionOptions};
 use crate::sim::Device;
+use crate::sim::slcan::CanDevice;
 
 use super::replay::parse::Entry;
 use super::session::{AsAny, DialectSession};
@@ -61,6 +63,20 @@ pub trait DialectConfig: AsAny {
         state: Option<&Path>,
         verbose: bool,
     ) -> Result<Box<dyn Device>, String>;
+
+    /// The framing that carries its sessions over CAN (`--can`), replies taken at `reply_id`;
+    /// `None` for a dialect without one.
+    fn can_framer(&self, reply_id: u16) -> Option<Box<dyn Framer>> {
+        let _ = reply_id;
+        None
+    }
+
+    /// Its simulated bus `device` on CAN (`tmclsh sim --slcan`); `None` for a dialect without
+    /// a CAN framing.
+    fn can_device(&self, device: Box<dyn Device>) -> Option<Box<dyn CanDevice>> {
+        let _ = device;
+        None
+    }
 
     /// Opens a session.
     fn open(&self, opening: Opening<'_>) -> Result<Box<dyn DialectSession>, SessionError>;

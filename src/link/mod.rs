@@ -3,6 +3,7 @@
 //! already past takes what has arrived, which is how stale input is drained), describe, reopen
 //! after the link was lost, and the line's state (`line/`: what a real serial line adds).
 
+pub mod can;
 pub mod line;
 mod serial;
 mod tcp;
@@ -26,6 +27,10 @@ pub enum LinkError {
     /// The link could not be opened.
     #[error("{0}")]
     Open(String),
+    /// A CAN adapter reported an error of its own (slcan's BEL: a refused command or frame, a
+    /// bus gone off).
+    #[error("{0}")]
+    Adapter(String),
 }
 
 impl LinkError {
@@ -75,9 +80,22 @@ pub trait Link: Send {
         None
     }
 
+    /// Whether nothing but this session can be on the line (the in-process simulator): then no
+    /// byte another program or module sent before it opened can sit in a module's receiver, and
+    /// the first frame needs no quiet line before it. Serial ports and TCP bridges are shared.
+    fn private(&self) -> bool {
+        false
+    }
+
     /// Seconds per byte on the wire, where the link knows it (serial: 10 bits per byte).
     fn byte_time(&self) -> Option<std::time::Duration> {
         None
+    }
+
+    /// Whether the link carries only whole binary frames (CAN): a dialect with a text mode
+    /// never enters it there.
+    fn frames_only(&self) -> bool {
+        false
     }
 
     /// The state of the line for `:line`: rate, modem lines, latency timer, byte counts, the

@@ -3,7 +3,7 @@
 
 pub use crate::dialect::grammar::{Candidate, Completion};
 use crate::dialect::{ArgKind, Grammar};
-use crate::shell::helpers;
+use crate::shell::{helpers, values};
 
 /// Completes the word ending at `pos` in `line`.
 pub fn complete(line: &str, pos: usize, grammar: &dyn Grammar) -> Completion {
@@ -48,6 +48,8 @@ fn complete_helper(rest: &str, start: usize, word: &str, grammar: &dyn Grammar) 
     let candidates = match helper.arg {
         ArgKind::File => return Completion::File { start },
         ArgKind::Echo => fixed(&["char", "line", "none"]),
+        // `:params --values --motor N`: its flags, then names.
+        ArgKind::Param if lower.starts_with('-') => fixed(&[values::FLAG, values::MOTOR]),
         ArgKind::Param => name_candidates(grammar, &lower),
         ArgKind::Topic => {
             let mut topics: Vec<&str> = grammar.topics().to_vec();

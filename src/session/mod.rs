@@ -168,7 +168,7 @@ impl From<crate::link::LinkError> for SessionError {
         use crate::link::LinkError;
         match error {
             LinkError::Lost(message) => SessionError::Lost(message),
-            LinkError::Open(message) => SessionError::Link(message),
+            LinkError::Open(message) | LinkError::Adapter(message) => SessionError::Link(message),
             LinkError::Timeout => SessionError::Link("timed out".into()),
         }
     }

@@ -58,6 +58,10 @@ pub(crate) enum Peer {
 /// as noise instead of being kept until its line end comes.
 pub(crate) const MAX_LINE: usize = 1024;
 
+/// How much longer than the gap asked for [`Wire::idle_for`] waits for a quiet line before it
+/// says something else talks on it.
+pub(crate) const QUIET_BOUND: Duration = Duration::from_secs(2);
+
 /// A link with its receive buffer, transcript, notices and trust.
 pub(crate) struct Wire {
     pub link: Box<dyn Link>,
@@ -69,6 +73,10 @@ pub(crate) struct Wire {
     /// When bytes last arrived, for [`Wire::idle_for`]: on a bus every module hears the
     /// others' replies too.
     last_heard: Option<Instant>,
+    /// When a shared line was opened (none for a private one, the in-process simulator): the
+    /// first quiet gap counts from here, since what another program or module sent just before
+    /// cannot be known.
+    opened: Option<Instant>,
     /// Peers whose answers may still be on the way.
     suspect: Suspicion,
     /// The peer of the exchange in progress.
@@ -88,6 +96,7 @@ impl Wire {
         precise_timers();
         let state = link.line_state();
         let tally = Tally::new(&state);
+        let opened = (!link.private()).then(Instant::now);
         let mut wire = Wire {
             tally,
             link,
@@ -96,6 +105,7 @@ impl Wire {
             notices: Vec::new(),
             last_sent: None,
             last_heard: None,
+            opened,
             suspect: Suspicion::default(),
             in_flight: None,
             discards: Discards::default(),
@@ -166,25 +176,36 @@ impl Wire {
         Ok(())
     }
 
-    /// Keeps the line idle until `gap` has passed since the last byte on it, sent or heard (a
-    /// module in binary mode hears the replies of the others on its bus as well as our lines).
-    /// Binary receivers on a bus find the start of a frame only after such a pause (a UART
-    /// time-out), so this is needed before the first binary frame to a module that has seen
-    /// other traffic; it is a rule of the line, not a guessed reply delay. Ctrl-C interrupts it.
+    /// Keeps the line idle until nothing was sent or heard on it for `gap` (a module in binary
+    /// mode hears the replies of the others on its bus as well as our lines), counting from the
+    /// opening of a shared line when nothing passed yet. Binary receivers on a bus find the start
+    /// of a frame only after such a pause (a UART time-out), so this is needed before the first
+    /// binary frame to a module that may have seen other traffic; it is a rule of the line, not a
+    /// guessed reply delay. It reads while it waits — what arrives (a reply another program left
+    /// unread, another module's chatter) stays in the receive buffer for the caller to drain and
+    /// starts the gap again — and gives up when the line never falls quiet within
+    /// [`QUIET_BOUND`]. Ctrl-C interrupts it.
     pub(crate) fn idle_for(&mut self, gap: Duration) -> Result<(), SessionError> {
-        let Some(last) = self.last_sent.max(self.last_heard) else {
-            return Ok(());
-        };
-        let until = last + gap;
+        let started = Instant::now();
+        let bound = started + gap + QUIET_BOUND;
         loop {
-            if interrupt::pending() {
-                return Err(SessionError::Interrupted);
-            }
-            let now = Instant::now();
-            if now >= until {
+            let Some(last) = self.last_sent.max(self.last_heard).max(self.opened) else {
+                return Ok(());
+            };
+            let until = last + gap;
+            if Instant::now() >= until {
                 return Ok(());
             }
-            std::thread::sleep((until - now).min(interrupt::SLICE));
+            if Instant::now() >= bound {
+                let message = format!(
+                    "the line did not fall quiet for {} ms within {} ms: something else talks on                      it (another program on the port, a module sending on its own)",
+                    gap.as_millis(),
+                    (gap + QUIET_BOUND).as_millis()
+                );
+                self.note(&message);
+                return Err(SessionError::Link(message));
+            }
+            self.fill(until.min(bound))?;
         }
     }
 
@@ -273,6 +294,9 @@ impl Wire {
     /// Forgets what was received (a link opened anew). Suspicion stays: a device behind a
     /// reopened port may still answer what it was asked before.
     pub(crate) fn reset(&mut self) {
+        if self.opened.is_some() {
+            self.opened = Some(Instant::now());
+        }
         self.rx.clear();
         self.reset_echo();
         self.discarded.clear();

@@ -80,6 +80,10 @@ impl SimLink {
 }
 
 impl Link for SimLink {
+    fn private(&self) -> bool {
+        true
+    }
+
     fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
         let now = self.clock.now();
         let mut device = self.lock();

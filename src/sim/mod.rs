@@ -15,6 +15,7 @@ pub mod latency;
 pub mod pacing;
 #[cfg(unix)]
 pub mod serve;
+pub mod slcan;
 pub mod store;
 
 pub use builtin::builtin_link;

@@ -19,6 +19,7 @@ const NAMING_A_DIALECT: &[&str] = &[
     "src/cli/asm.rs",
     "src/cli/disasm.rs",
     "src/cli/download.rs",
+    "src/cli/upload.rs",
     "src/cli/profiles.rs",
     "src/fuzz_entry.rs",
 ];

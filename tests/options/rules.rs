@@ -149,8 +149,9 @@ fn every_batch_face_on_the_built_in_simulator_says_so_once() {
         smd4(&["snapshot", "save", &fresh("once-smd4.toml")]),
         smd4(&["scan", "--addresses", "1"]),
     ] {
-        let notice =
-            format!("using the built-in simulated {module}; give --port or --tcp for hardware");
+        let notice = format!(
+            "using the built-in simulated {module}; give --port, --tcp or --can for hardware"
+        );
         assert_eq!(code(&out), 0, "{}", stderr(&out));
         assert_eq!(stderr(&out).matches(&notice).count(), 1, "{}", stderr(&out));
     }

@@ -55,3 +55,18 @@ fn target_alone_shows_the_target() {
     p.send_control('d').unwrap();
     p.exp_eof().unwrap();
 }
+
+#[test]
+fn an_smd4_drive_left_turning_is_warned_of_too() {
+    let (mut p, _) = repl(&["--sim", "--protocol", "smd4"]);
+    p.exp_string("smd4> ").unwrap();
+    type_in(&mut p, "MOTOR:RUNV,+\r");
+    p.exp_string("smd4> ").unwrap();
+    type_in(&mut p, ":quit\r");
+    p.exp_string("the motor of ").unwrap();
+    p.exp_string(
+        "is still turning (no standby flag): leaving the shell does not stop it; MOTOR:STOP does",
+    )
+    .unwrap();
+    p.exp_eof().unwrap();
+}

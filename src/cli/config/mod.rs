@@ -87,6 +87,13 @@ pub const KEYS: &[Key] = &[
         unset: "no TCP link",
     },
     Key {
+        name: "can",
+        id: "can",
+        kind: Kind::Text,
+        example: "can = \"slcan:/dev/ttyACM0\" or \"socketcan:can0\"",
+        unset: "no CAN link",
+    },
+    Key {
         name: "sim",
         id: "sim",
         kind: Kind::Bool,

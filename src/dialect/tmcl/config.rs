@@ -9,9 +9,13 @@ use std::sync::Arc;
 use crate::commission::ParamRef;
 use crate::dialect::replay::parse::Entry;
 use crate::dialect::{CommandLine, Dialect, DialectConfig, DialectSession, Opening, Purpose};
+use crate::link::can::Framer;
 use crate::session::SessionError;
 use crate::session::transcript::Header;
 use crate::sim::Device;
+use crate::sim::slcan::CanDevice;
+
+use super::protocol::can::TmclFramer;
 
 use super::profile::{Profile, catalogue};
 use super::session::{Connect, Echo, TmclSession};
@@ -132,6 +136,14 @@ impl DialectConfig for TmclConfig {
         verbose: bool,
     ) -> Result<Box<dyn Device>, String> {
         super::sim::flags::served(&self.simulated_profile(), flags, state, verbose)
+    }
+
+    fn can_framer(&self, reply_id: u16) -> Option<Box<dyn Framer>> {
+        Some(Box::new(TmclFramer::new(reply_id)))
+    }
+
+    fn can_device(&self, device: Box<dyn Device>) -> Option<Box<dyn CanDevice>> {
+        Some(Box::new(super::sim::can::CanBus::new(device)))
     }
 
     /// For a conversation, the target module is identified (command 136: its profile, unless

@@ -1,4 +1,5 @@
-//! The helper commands of TMCL modules: targets, echo, program control, download, modes.
+//! The helper commands of TMCL modules: targets, echo, program control, download and upload,
+//! modes.
 
 use std::io::Write;
 use std::path::Path;
@@ -6,7 +7,7 @@ use std::path::Path;
 use crate::dialect::helper::{ArgKind, Helper, Section, helper};
 use crate::dialect::session::DialectSession;
 use crate::dialect::tmcl::params::write_table;
-use crate::dialect::tmcl::program::{self, download};
+use crate::dialect::tmcl::program::{self, download, upload};
 use crate::dialect::tmcl::protocol::line::address_of;
 use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
 use crate::dialect::tmcl::session::{Echo, TmclExchange, TmclSession};
@@ -64,6 +65,13 @@ pub const HELPERS: &[Helper] = &[
         Section::Module,
     ),
     helper(
+        "upload",
+        ":upload [FILE.tmc|FILE.bin]",
+        "read the stored program back (command 134): print it as source, or write it",
+        ArgKind::File,
+        Section::Module,
+    ),
+    helper(
         "bin",
         ":bin",
         "leave ASCII mode; lines are then sent as binary frames (direct mode)",
@@ -111,6 +119,17 @@ pub fn run(
                 return Err(usage());
             }
             download_file(session, path, run, out)
+        }
+        "upload" => {
+            let path = Path::new(arg);
+            let output = if arg.is_empty() {
+                upload::Output::Print
+            } else {
+                upload::Output::for_file(path)?
+            };
+            let text = upload::upload_to(session, output, None)?;
+            write!(out, "{text}")?;
+            Ok(())
         }
         "bin" | "ascii" => switch_mode(session, helper.name == "ascii", out),
         other => unreachable!("helper table and TMCL dispatch disagree on :{other}"),

@@ -23,6 +23,7 @@ use std::io::{self, Write};
 use std::time::Duration;
 
 use crate::dialect::tmcl::profile::catalogue::{self, Identified};
+use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::protocol::host_clash;
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
@@ -67,6 +68,19 @@ impl FoundModule {
             ),
             Err(_) => "?".into(),
         }
+    }
+
+    /// Whether the profile its version string names has no ASCII interface: it has no echo
+    /// setting (global parameter 67 is not its own) and is shown as `binary`.
+    pub fn binary_only(&self) -> bool {
+        let Some(firmware) = &self.firmware else {
+            return false;
+        };
+        matches!(
+            catalogue::identify(firmware),
+            Ok(Identified::Known { profile, .. })
+                if profile.identity.ascii_interface() == AsciiInterface::No
+        )
     }
 
     /// Whether its boot loader answered: it is asked nothing more.
@@ -115,6 +129,7 @@ pub fn scan(
         .iter()
         .copied()
         .filter(|a| !found.contains_key(a) && address_char(*a).is_some())
+        .filter(|_| !session.frames_only())
         .collect();
     let in_step = candidates.is_empty();
     if !in_step {
@@ -143,7 +158,12 @@ pub fn scan(
             session.quiet(quiet)?;
         }
         for address in binary {
-            let echo = session.with_timeout(per_reply, |s| read_echo_binary(s, address))?;
+            // GP 67 is not a binary-only module's own: not asked.
+            let echo = if found.get(&address).is_some_and(FoundModule::binary_only) {
+                None
+            } else {
+                session.with_timeout(per_reply, |s| read_echo_binary(s, address))?
+            };
             let firmware = found.get(&address).and_then(|m| m.firmware.clone());
             let host = if has_host_address(session, address, firmware.as_deref()) {
                 session.with_timeout(per_reply, |s| read_host_binary(s, address))?
@@ -319,7 +339,7 @@ fn version_text(answer: &TmclReply) -> Option<String> {
 /// Prints the table of modules found and a summary line.
 pub fn write_report(report: &TmclScan, out: &mut dyn Write) -> io::Result<()> {
     if !report.found.is_empty() {
-        writeln!(out, "address  char  found in  firmware  echo  module")?;
+        writeln!(out, "address  char  found in  firmware  echo    module")?;
     }
     for m in &report.found {
         let c = address_char(m.address).map_or("-".to_string(), String::from);
@@ -328,10 +348,14 @@ pub fn write_report(report: &TmclScan, out: &mut dyn Write) -> io::Result<()> {
             WireMode::Binary => "binary",
         };
         let firmware = m.firmware.as_deref().unwrap_or("?");
-        let echo = m.echo.map_or("?", Echo::name);
+        let echo = match m.echo {
+            _ if m.binary_only() => "binary",
+            Some(echo) => echo.name(),
+            None => "?",
+        };
         writeln!(
             out,
-            "{:>7}  {c:<4}  {mode:<8}  {firmware:<8}  {echo:<4}  {}",
+            "{:>7}  {c:<4}  {mode:<8}  {firmware:<8}  {echo:<6}  {}",
             m.address,
             m.module()
         )?;

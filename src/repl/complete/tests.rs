@@ -79,6 +79,8 @@ fn helpers_and_their_arguments() {
     assert_eq!(words(":log tr"), vec!["<file>"]);
     assert!(words(":help G").contains(&"GAP ".to_string()));
     assert_eq!(words(":params actual_s"), vec!["actual_speed"]);
+    assert_eq!(words(":params --v"), vec!["--values"]);
+    assert_eq!(words(":params --values --m"), vec!["--motor"]);
 }
 
 #[test]

@@ -349,6 +349,53 @@ fn the_quiet_gap_before_a_frame_counts_from_the_last_byte_heard_too() {
     );
 }
 
+#[test]
+fn a_shared_line_is_read_until_quiet_from_its_opening_and_a_private_one_is_not_waited_for() {
+    // Opened on a shared line, the first quiet gap counts from the opening, and a reply another
+    // program left arriving meanwhile is read (for the caller to drain) and starts it again.
+    let (mut wire, script) = wire();
+    arrive(
+        &script,
+        Duration::from_millis(20),
+        b"\x02\x01\x64\x06\x00\x00\x00\x00\x6D",
+    );
+    wire.idle_for(Duration::from_millis(60)).unwrap();
+    assert_eq!(wire.rx.len(), 9, "the stale reply was read while waiting");
+    // A private link (the in-process simulator) has nobody else: nothing to wait for.
+    struct Private(ScriptedLink);
+    impl Link for Private {
+        fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
+            self.0.send(bytes)
+        }
+        fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
+            self.0.recv(buf, deadline)
+        }
+        fn describe(&self) -> String {
+            "private".into()
+        }
+        fn private(&self) -> bool {
+            true
+        }
+    }
+    let script = Arc::new(Mutex::new(Script::default()));
+    let mut wire = Wire::new(Box::new(Private(ScriptedLink(script.clone()))), None);
+    wire.idle_for(Duration::from_millis(60)).unwrap();
+    assert_eq!(
+        waits(&script),
+        0,
+        "a private line is not waited for at its opening"
+    );
+}
+
+#[test]
+fn a_line_that_never_falls_quiet_is_reported_not_waited_for_for_ever() {
+    let (mut wire, script) = wire();
+    script.lock().unwrap().flood = Some(b"BA 100 0\r".to_vec());
+    // It ends in an error (here the receive buffer's bound comes first), never a hang.
+    let err = wire.idle_for(Duration::from_millis(20)).unwrap_err();
+    assert!(matches!(err, SessionError::Link(_)), "{err}");
+}
+
 /// Sends `bytes` as the first request of a session, marked as the probe of echo detection.
 fn probe(w: &mut Wire, bytes: &[u8]) {
     w.begin(A, false, TIMEOUT, &mut nothing_benign).unwrap();

@@ -15,7 +15,8 @@ use crate::session::SessionError;
 use crate::session::core::SessionCore;
 use crate::session::transcript::Header;
 
-use super::Smd4Session;
+use super::{DriveName, Smd4Session};
+use crate::dialect::smd4::protocol::Request;
 
 impl DialectSession for Smd4Session {
     fn dialect(&self) -> &'static Dialect {
@@ -43,6 +44,29 @@ impl DialectSession for Smd4Session {
     /// MOTOR:STOP to every drive this session set moving.
     fn stop_motion(&mut self) -> Vec<String> {
         self.urgently(Self::stop_drives)
+    }
+
+    /// Each drive this session set moving whose standby flag (motor stationary) is clear.
+    fn turning_at_exit(&mut self) -> Vec<String> {
+        let drives: Vec<Option<u32>> = self.core.moved.iter().copied().collect();
+        let mut warnings = Vec::new();
+        // A broadcast (@0) gets no reply to read the flags from.
+        for address in drives.into_iter().filter(|a| *a != Some(0)) {
+            let name = DriveName(address);
+            let mut flags = Request::new("SYS:FLAGS");
+            flags.address = address;
+            match self.request(flags).and_then(|x| x.checked()) {
+                Ok(x) if x.reply.as_ref().is_none_or(|r| r.sflags.standby()) => {}
+                Ok(_) => warnings.push(format!(
+                    "the motor of {name} is still turning (no standby flag): leaving the shell \
+                     does not stop it; MOTOR:STOP does"
+                )),
+                Err(e) => warnings.push(format!(
+                    "could not check whether the motor of {name} still turns: {e}"
+                )),
+            }
+        }
+        warnings
     }
 
     fn target_address(&self) -> Option<u32> {

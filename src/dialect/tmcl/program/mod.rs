@@ -3,6 +3,7 @@
 //! to binary mode transparently for the control functions ASCII mode lacks.
 
 pub mod download;
+pub mod upload;
 
 use crate::dialect::session::DialectSession;
 use std::panic::{AssertUnwindSafe, catch_unwind};

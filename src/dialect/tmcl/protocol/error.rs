@@ -103,6 +103,17 @@ pub enum InputError {
         /// Number of motors.
         axes: u8,
     },
+    /// A write or store of global parameter 67 (ASCII start bit, echo) on a module without the
+    /// ASCII interface: a module that keeps bit 0 would start in a mode it lacks.
+    #[error(
+        "the {module} has no ASCII interface: global parameter 67 (start in ASCII mode, echo) is \
+         not its own, and a module that kept it could start in a mode it lacks and be locked out \
+         of binary frames; not sent"
+    )]
+    NoAsciiStartBit {
+        /// The module type.
+        module: String,
+    },
     /// A write to a parameter that is read-only.
     #[error("{kind} parameter {number} ({ident}) is read-only; use {read} to read it")]
     ReadOnly {

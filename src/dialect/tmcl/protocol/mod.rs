@@ -3,6 +3,7 @@
 //! profile's tables ([`super::profile`], which holds the command table). Pure code: bytes and
 //! text in, values out.
 
+pub mod can;
 pub mod error;
 pub mod frame;
 pub mod host_clash;

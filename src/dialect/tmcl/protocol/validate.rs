@@ -210,6 +210,7 @@ fn check_param(
         _ => return Ok(Vec::new()),
     };
     let Some(param) = param else {
+        family::check_ascii_start_bit(spec, instruction, profile)?;
         if profile.generic {
             return Ok(Vec::new()); // numbers only: the session said so once
         }

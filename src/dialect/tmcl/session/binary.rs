@@ -3,11 +3,13 @@
 
 use std::time::Instant;
 
+use crate::dialect::tmcl::protocol::can;
 use crate::dialect::tmcl::protocol::frame::{
     CommandFrame, FRAME_LEN, ReplyFrame, decode_version_string, hex,
 };
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
 use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode, Status};
+use crate::link::can::CanFrame;
 
 use super::{TmclExchange, TmclReply, TmclSession, WireMode};
 
@@ -57,6 +59,11 @@ impl TmclSession {
         module: u8,
         instruction: Instruction,
     ) -> Result<TmclExchange, SessionError> {
+        if self.frames_only && instruction.command == Opcode::EnterAscii {
+            return Err(SessionError::Refused(
+                "command 139 is not sent over CAN: TMCL over CAN has no ASCII mode".into(),
+            ));
+        }
         let sent = self.describe_instruction(&instruction);
         let frame = CommandFrame {
             address: module,
@@ -66,9 +73,10 @@ impl TmclSession {
         // No reply frame begins like its request: the first one tells whether the adapter
         // echoes.
         self.core.wire.probe_echo();
+        let can = self.can_form(|| can::request(&frame));
         self.core.wire.send(
             &frame,
-            format_args!("{sent} to {} in binary", ModuleName(module)),
+            format_args!("{sent} to {} in binary{can}", ModuleName(module)),
         )?;
         // Modules in ASCII mode now hold the frame as the start of a line.
         self.line_dirty = self.modules.values().any(|m| m.mode == WireMode::Ascii);
@@ -92,6 +100,16 @@ impl TmclSession {
             if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
                 return Err(self.binary_timeout(module));
             }
+        }
+    }
+
+    /// The CAN frame a serial frame travelled as, for the transcript (`, CAN 001#0604…`), on a
+    /// CAN link; nothing on a serial one.
+    fn can_form(&self, frame: impl FnOnce() -> CanFrame) -> String {
+        if self.frames_only {
+            format!(", CAN {}", frame())
+        } else {
+            String::new()
         }
     }
 
@@ -131,9 +149,10 @@ impl TmclSession {
             }
             self.settle_binary(module, raw, deadline)?;
             self.host = Some(raw[0]);
+            let can = self.can_form(|| can::reply(raw, u16::from(raw[0]), true));
             self.core
                 .wire
-                .log_received(FRAME_LEN, format_args!("version {text}"));
+                .log_received(FRAME_LEN, format_args!("version {text}{can}"));
             return Ok(Some((TmclReply::Version(text.clone()), text)));
         }
         let reply = ReplyFrame::decode(raw).map_err(|e| {
@@ -170,10 +189,11 @@ impl TmclSession {
         self.settle_binary(module, raw, deadline)?;
         self.host = Some(reply.host);
         self.forget_host(&instruction);
+        let can = self.can_form(|| can::reply(raw, u16::from(raw[0]), false));
         self.core.wire.log_received(
             FRAME_LEN,
             format_args!(
-                "from {}: {}, value {}",
+                "from {}: {}, value {}{can}",
                 ModuleName(reply.module),
                 reply.status,
                 reply.value
@@ -289,10 +309,19 @@ impl TmclSession {
     fn trailing_noise(&mut self, module: u8, reply: &[u8; FRAME_LEN]) -> SessionError {
         let rest = &self.core.wire.rx.bytes()[FRAME_LEN..];
         let after = hex(&rest[..rest.len().min(3 * FRAME_LEN)]);
+        let clash = answered_too(module, reply[0], rest)
+            .map(|other| {
+                format!(
+                    " — a reply from {}, which takes the replies of others for requests: its \
+                     address is the host address",
+                    ModuleName(other)
+                )
+            })
+            .unwrap_or_default();
         self.binary_noise(
             "a reply followed by more data",
             format!(
-                "line noise: the reply {} from {} was followed by {after}; not taken",
+                "line noise: the reply {} from {} was followed by {after}{clash}; not taken",
                 hex(reply),
                 ModuleName(module)
             ),
@@ -310,6 +339,14 @@ impl TmclSession {
         self.core.wire.note(&message);
         SessionError::Link(message)
     }
+}
+
+/// The module whose reply frame to the same host follows the reply of `module`: on a shared bus,
+/// one at the host address answering that reply as if it were a request to it.
+fn answered_too(module: u8, host: u8, rest: &[u8]) -> Option<u8> {
+    let frame: &[u8; FRAME_LEN] = rest.get(..FRAME_LEN)?.try_into().ok()?;
+    let other = ReplyFrame::decode(frame).ok()?;
+    (other.host == host && other.module != module && other.module == host).then_some(other.module)
 }
 
 /// A binary reply in the ASCII reply format (`BA 100 -5000`), so one-shot output looks the same in

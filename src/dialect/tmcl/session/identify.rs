@@ -6,9 +6,13 @@
 //! answer (a mismatch is one warning). A module no profile describes gets the generic profile; a
 //! boot loader's answer (`B` for `V`) ends the session before anything else is sent.
 //!
-//! A module that does not answer (one already in ASCII mode takes the frame as a line for
-//! another module; an old firmware) costs one `--timeout`; a CR then ends the partial line, and
-//! the session goes on with the profile it has, saying so once.
+//! The first frame on a shared line (a port, a TCP bridge) waits until the line has been quiet
+//! for twice the module's partial-frame time-out, so whatever others sent before cannot misalign
+//! its receiver. A module that does not answer usably (one already in ASCII mode takes the frame
+//! as a line for another module; another module at the host address answers its reply; an old
+//! firmware) is asked once more after such a quiet gap, a CR first ending any partial line. Still
+//! unidentified, it is sent nothing on a guess (exit 3, naming the likely causes) unless a profile
+//! or `--binary` was given: then the session goes on with that, saying so once.
 
 use std::sync::Arc;
 
@@ -93,12 +97,20 @@ impl TmclSession {
     }
 
     /// Asks `module` for its firmware version (136 type 0) and records its profile and identity.
+    /// A module that does not identify itself is refused (exit 3) unless a profile or `--binary`
+    /// was given: nothing is sent to it on a guess of what it is.
     pub(super) fn identify_module(&mut self, module: u8) -> Result<(), SessionError> {
+        self.settle_identity(module, true)
+    }
+
+    /// [`TmclSession::identify_module`]; `strict` off keeps going with the profile the session
+    /// has (a module identified before a reconnect, which says so itself).
+    pub(super) fn settle_identity(&mut self, module: u8, strict: bool) -> Result<(), SessionError> {
         self.identify_each = true;
         if !self.core.options.enter {
             return Ok(());
         }
-        let identity = self.ask_identity(module)?;
+        let identity = self.ask_identity(module, strict)?;
         let profile = match &identity {
             Identity::Answered { .. } if !self.profile_given => self
                 .identified
@@ -131,8 +143,76 @@ impl TmclSession {
         }
     }
 
-    /// One 136 exchange with `module`; what it said (the profile it names in `self.identified`).
-    fn ask_identity(&mut self, module: u8) -> Result<Identity, SessionError> {
+    /// Asks `module` what it is, twice if need be: an answer lost to what the line held (another
+    /// module's reply, a partial line, what another program left) is asked for again once the
+    /// line was quiet for the frame time-out. What it said (the profile it names in
+    /// `self.identified`); no usable answer is a failure when `strict` and no profile or
+    /// `--binary` was given.
+    fn ask_identity(&mut self, module: u8, strict: bool) -> Result<Identity, SessionError> {
+        let c = ModuleName(module);
+        let why = match self.ask_identity_once(module)? {
+            Ok(identity) => return Ok(identity),
+            Err(why) => why,
+        };
+        self.core
+            .wire
+            .note(&format!("asking {c} again after a quiet line"));
+        self.ascii_sent = true;
+        self.frames_aligned = false;
+        let why = match self.ask_identity_once(module)? {
+            Ok(identity) => return Ok(identity),
+            Err(again) => again.or(why),
+        };
+        self.core
+            .wire
+            .note(&format!("not identified: {c}, {}", why.short));
+        if strict && !self.profile_given && !self.binary_only {
+            if why.silent && self.answers_in_ascii(module)? {
+                self.core.wire.notices.push(format!(
+                    "{c} did not answer command 136 (firmware version) but answers in ASCII mode: \
+                     it was left in ASCII mode; not identified, using the profile {} (name its \
+                     own with --profile NAME)",
+                    profile_label(&self.fallback)
+                ));
+                return Ok(Identity::NoAnswer("in ASCII mode, no answer to 136".into()));
+            }
+            return Err(
+                Failure::new(Exit::Link, unidentified(module, &why, self.resync_gap())).into(),
+            );
+        }
+        self.core.wire.notices.push(format!(
+            "{}; not identified, using the profile {}",
+            why.said,
+            profile_label(&self.fallback)
+        ));
+        Ok(Identity::NoAnswer(why.short.into()))
+    }
+
+    /// Whether `module`, silent to 136, answers a read of its echo setting as an ASCII line: a
+    /// module left in ASCII mode (by a program that ended without `BIN`) has the ASCII interface
+    /// and needs no 139. Its state is then known (found in ASCII mode); otherwise forgotten.
+    fn answers_in_ascii(&mut self, module: u8) -> Result<bool, SessionError> {
+        if self.modules.contains_key(&module) {
+            return Ok(false);
+        }
+        match self.assume_ascii(module) {
+            Ok(()) => Ok(true),
+            Err(SessionError::Timeout { .. } | SessionError::Link(_)) => {
+                self.modules.remove(&module);
+                // The line holds the unanswered line's bytes: quiet before the next frame.
+                self.ascii_sent = true;
+                self.frames_aligned = false;
+                Ok(false)
+            }
+            Err(e) => Err(e),
+        }
+    }
+
+    /// One 136 exchange with `module`; what it said, or why that is no identification.
+    fn ask_identity_once(
+        &mut self,
+        module: u8,
+    ) -> Result<Result<Identity, Unidentified>, SessionError> {
         self.identified = None;
         let c = ModuleName(module);
         let ask = Instruction::new(Opcode::FirmwareVersion, 0, 0, 0);
@@ -145,31 +225,28 @@ impl TmclSession {
                 _ => String::new(),
             },
             Err(SessionError::Timeout { timeout, .. }) => {
-                self.core
-                    .wire
-                    .note(&format!("not identified: {c}, no answer to 136"));
                 // A module in ASCII mode holds the frame as the start of a line.
                 self.end_partial_line()?;
-                self.core.wire.notices.push(format!(
-                    "{c} did not answer command 136 (firmware version) within {} ms: not \
-                     identified (a module already in ASCII mode, or an old firmware); using the \
-                     profile {}",
-                    timeout.as_millis(),
-                    profile_label(&self.fallback)
-                ));
-                return Ok(Identity::NoAnswer("no answer to 136".into()));
+                return Ok(Err(Unidentified {
+                    short: "no answer to 136",
+                    said: format!(
+                        "{c} did not answer command 136 (firmware version) within {} ms (a \
+                         module already in ASCII mode, or an old firmware)",
+                        timeout.as_millis()
+                    ),
+                    clash: false,
+                    silent: true,
+                }));
             }
             // Something came back that is no version string: said, and no profile is
             // picked from it.
             Err(SessionError::Link(message)) if message.starts_with("line noise") => {
-                self.core
-                    .wire
-                    .note(&format!("not identified: {c}, no usable answer to 136"));
-                self.core.wire.notices.push(format!(
-                    "{message}; {c} not identified, using the profile {}",
-                    profile_label(&self.fallback)
-                ));
-                return Ok(Identity::NoAnswer("no usable answer to 136".into()));
+                return Ok(Err(Unidentified {
+                    short: "no usable answer to 136",
+                    clash: message.contains("host address"),
+                    said: message,
+                    silent: false,
+                }));
             }
             Err(e) => return Err(e),
         };
@@ -182,14 +259,12 @@ impl TmclSession {
                 identified
             }
             Err(e) => {
-                self.core
-                    .wire
-                    .note(&format!("not identified: {c}, answer not understood"));
-                self.core.wire.notices.push(format!(
-                    "{c} answered command 136 with {e}; not identified, using the profile {}",
-                    profile_label(&self.fallback)
-                ));
-                return Ok(Identity::NoAnswer("answer not understood".into()));
+                return Ok(Err(Unidentified {
+                    short: "answer not understood",
+                    said: format!("{c} answered command 136 with {e}"),
+                    clash: false,
+                    silent: false,
+                }));
             }
         };
         let version = match &identified {
@@ -218,7 +293,7 @@ impl TmclSession {
             self.warn_mismatch(module, version, &module_type);
         }
         self.identified = Some(named);
-        Ok(identity)
+        Ok(Ok(identity))
     }
 
     /// Remembers the host address `module` replies with, and warns when it is the address of
@@ -298,6 +373,50 @@ impl TmclSession {
     pub fn identity(&self) -> &Identity {
         &self.identity
     }
+}
+
+/// Why an answer to 136 identified nothing: a few words for the banner, what happened for the
+/// user, and whether another module at the host address was seen answering.
+struct Unidentified {
+    short: &'static str,
+    said: String,
+    clash: bool,
+    /// Nothing came back at all (a module in ASCII mode takes a frame for a line).
+    silent: bool,
+}
+
+impl Unidentified {
+    /// The more telling of two attempts' reasons: one that saw a host-address clash.
+    fn or(self, first: Unidentified) -> Unidentified {
+        if first.clash && !self.clash {
+            first
+        } else {
+            self
+        }
+    }
+}
+
+/// The refusal of a module that did not identify itself: what happened, the likely causes (the
+/// clash first when it was seen) and the two ways on.
+fn unidentified(module: u8, why: &Unidentified, gap: std::time::Duration) -> String {
+    let c = ModuleName(module);
+    let clash = "another module at the host address (GP 76) on a shared bus, which takes the \
+                 replies for requests and answers them (give each a host address no module has: \
+                 SGP 76, 0, N; `tmclsh scan` names it)";
+    let others = "a module already in ASCII mode, a wrong address or baud rate";
+    let causes = if why.clash {
+        format!("{clash}; or {others}")
+    } else {
+        format!("{others}; or {clash}")
+    };
+    format!(
+        "{c} is not identified (command 136 asked twice, the line quiet for {} ms before each): \
+         {}. It is sent nothing on a guess of what it is (no 139 to enter ASCII mode). Likely \
+         causes: {causes}. Name its profile with --profile NAME (`tmclsh profiles` lists them), \
+         or talk to it in binary frames only with --binary",
+        gap.as_millis(),
+        why.said.trim_end_matches("; not taken"),
+    )
 }
 
 /// The notice of a module no built-in profile describes, which names it, so that each such

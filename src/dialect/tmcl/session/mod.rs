@@ -70,14 +70,17 @@ pub struct TmclSession {
     identify_each: bool,
     /// Every module in binary direct mode, whatever its profile says (`--binary`).
     binary_only: bool,
+    /// The link carries binary frames only (CAN): no ASCII mode, 139 never sent.
+    frames_only: bool,
     /// The last exchange on the line was a complete binary one: every binary receiver is at a
     /// frame boundary, and the next frame needs no quiet line before it.
     frames_aligned: bool,
     /// The host address binary replies begin with, from the last one taken (GP 76; unknown
     /// until a module has answered, and again after it was set).
     host: Option<u8>,
-    /// ASCII bytes went out since the line was last kept quiet for a frame time-out: a module in
-    /// binary mode may hold some of them as the start of a frame.
+    /// ASCII bytes went out since the line was last kept quiet for a frame time-out (or a shared
+    /// line was just opened, holding what others left): a module in binary mode may hold some of
+    /// them as the start of a frame.
     ascii_sent: bool,
     /// A binary frame went out since the last ASCII line: modules in ASCII mode hold its bytes
     /// as the start of a line, which a CR must end before the next line.
@@ -128,7 +131,7 @@ impl TmclSession {
         transcript: Option<Transcript>,
     ) -> Result<Self, SessionError> {
         let mut session = Self::open_idle(link, profile, options, transcript)?;
-        session.binary_only = connect.binary;
+        session.binary_only = connect.binary || session.frames_only;
         session.identify(connect.profile_given)?;
         session.contact(session.target)?;
         Ok(session)
@@ -147,6 +150,7 @@ impl TmclSession {
                 options.module
             )));
         }
+        let frames_only = link.frames_only();
         let mut session = TmclSession {
             target: options.module,
             core: SessionCore::new(link, options, transcript),
@@ -161,7 +165,8 @@ impl TmclSession {
             unanswered: Unanswered::default(),
             late_frames: barrier::LateFrames::default(),
             identity: Identity::NotAsked,
-            binary_only: false,
+            binary_only: frames_only,
+            frames_only,
             frames_aligned: false,
             host: None,
             ascii_sent: false,
@@ -170,6 +175,9 @@ impl TmclSession {
             version_host: None,
             hosts: BTreeMap::new(),
         };
+        // What another program or module sent just before may sit in a binary receiver: the
+        // first frame on a shared line waits for it to fall quiet (a private one has no other).
+        session.ascii_sent = !session.core.wire.link.private();
         let opened = format!("session opened on {}", session.core.wire.link.describe());
         session.core.wire.note(&opened);
         if session.profile.generic {
@@ -182,6 +190,11 @@ impl TmclSession {
     /// The target module's profile, used for completion, hints, help, snapshots and `:params`.
     pub fn profile(&self) -> &Arc<Profile> {
         &self.profile
+    }
+
+    /// Whether the link carries binary frames only (CAN): no ASCII mode, no ASCII probes.
+    pub fn frames_only(&self) -> bool {
+        self.frames_only
     }
 
     /// The module lines without an address character go to.

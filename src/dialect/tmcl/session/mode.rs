@@ -115,7 +115,12 @@ impl TmclSession {
         // 136 before 139: its answer decides the profile, and the profile the mode.
         self.identify_if_new(module)?;
         if self.binary_only {
-            self.start_binary(module, "--binary given")?;
+            let why = if self.frames_only {
+                "the link is CAN, which carries binary frames only"
+            } else {
+                "--binary given"
+            };
+            self.start_binary(module, why)?;
             return Ok(WireMode::Binary);
         }
         if !self.has_ascii(module) {
@@ -217,6 +222,11 @@ impl TmclSession {
 
     /// Sends 139 and learns the echo mode (see the module docs).
     pub fn enter_ascii(&mut self, module: u8) -> Result<(), SessionError> {
+        if self.frames_only {
+            return Err(SessionError::Refused(
+                "there is no ASCII mode over CAN: the link carries binary frames only".into(),
+            ));
+        }
         if !self.has_ascii(module) {
             let profile = self.profile_of(module);
             return Err(SessionError::Refused(format!(

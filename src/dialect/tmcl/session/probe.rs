@@ -83,6 +83,10 @@ impl TmclSession {
 
     /// Sends a lone CR, which ends whatever partial line ASCII-mode modules hold.
     pub fn end_partial_line(&mut self) -> Result<(), SessionError> {
+        if self.frames_only {
+            // CAN carries no text: no line is left partial.
+            return Ok(());
+        }
         self.ascii_sent = true;
         self.frames_aligned = false;
         self.core.wire.send(

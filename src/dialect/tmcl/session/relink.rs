@@ -70,6 +70,9 @@ impl TmclSession {
     /// so a module in ASCII mode is taken out of it first), a changed firmware said, and the
     /// modules that were in ASCII mode put back into it with their echo learnt again.
     pub(super) fn reenter_modules(&mut self) -> Result<(), SessionError> {
+        // A reopened line may hold anything: the first frame waits for it to fall quiet.
+        self.ascii_sent = !self.core.wire.link.private();
+        self.frames_aligned = false;
         let mut modules: Vec<(u8, Option<WireMode>)> = self
             .modules
             .iter()
@@ -122,7 +125,7 @@ impl TmclSession {
             return Ok(());
         };
         self.known.remove(&module);
-        self.identify_module(module)?;
+        self.settle_identity(module, false)?;
         let c = ModuleName(module);
         let now = self.known.get(&module).map(|k| k.identity.clone());
         match now {

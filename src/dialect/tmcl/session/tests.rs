@@ -841,25 +841,43 @@ fn the_late_reply_of_an_echoed_request_is_known_for_what_it_is() {
 fn an_answer_to_136_that_is_no_version_string_picks_no_profile() {
     // The scripted module answers 136 with an ordinary reply frame: eight bytes that are not
     // printable characters ('????????' before the check).
-    let wire = Arc::new(Mutex::new(Wire::default()));
-    let module = FakeModule {
-        quirks: Quirks::default(),
-        wire: wire.clone(),
-        frames: FrameDecoder::new(),
-        line: Vec::new(),
-        position: -5000,
-        gaps: 0,
-        held: Vec::new(),
-        holding: false,
+    let link = || {
+        let module = FakeModule {
+            quirks: Quirks::default(),
+            wire: Arc::new(Mutex::new(Wire::default())),
+            frames: FrameDecoder::new(),
+            line: Vec::new(),
+            position: -5000,
+            gaps: 0,
+            held: Vec::new(),
+            holding: false,
+        };
+        Box::new(FakeLink { module })
     };
-    let mut s = TmclSession::connect(
-        Box::new(FakeLink { module }),
+    // Without a profile given, nothing is guessed: the session is refused.
+    let refused = TmclSession::connect(
+        link(),
         Profile::builtin(),
         super::Connect::default(),
         options(),
         None,
-    )
-    .expect("the session opens");
+    );
+    let Err(SessionError::Failed(failure)) = refused else {
+        panic!("opened without an identified module");
+    };
+    assert!(
+        failure.message.contains("which is not a firmware version")
+            && failure.message.contains("--profile NAME"),
+        "{}",
+        failure.message
+    );
+    // With one, the session goes on with it, and says so.
+    let given = super::Connect {
+        profile_given: true,
+        ..super::Connect::default()
+    };
+    let mut s = TmclSession::connect(link(), Profile::builtin(), given, options(), None)
+        .expect("the session opens");
     assert!(
         matches!(s.identity(), super::Identity::NoAnswer(_)),
         "{:?}",

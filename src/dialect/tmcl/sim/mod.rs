@@ -9,6 +9,7 @@
 
 mod ascii;
 mod bus;
+pub mod can;
 mod control;
 mod control_cmd;
 mod exec;

@@ -8,11 +8,15 @@
 //! with a one-line notice that names the range it misses.
 
 use crate::dialect::tmcl::profile::Profile;
-use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
+use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind, ParamUse};
+use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::profile::family::{OUTPUT_BANK, RangeWhen, spans};
 use crate::dialect::tmcl::protocol::Instruction;
 
 use super::super::error::{ConditionalRange, InputError, Warning};
+
+/// Global parameter 67 (bank 0): the ASCII interface's settings, bit 0 its start in ASCII mode.
+const ASCII_SETTINGS: u8 = 67;
 
 /// The bank of a global-parameter command against the banks it accepts (STGP/RSGP: bank 2).
 pub(super) fn check_bank(
@@ -36,6 +40,28 @@ pub(super) fn check_bank(
         accepted: format!("{} only on the {}", banks.join(" or "), profile.module),
         note: spec.banks_note.clone(),
     })
+}
+
+/// Global parameter 67 of the ASCII interface (bit 0: start in ASCII mode) is never written or
+/// stored on a module whose profile has none: sent "anyway" as an unknown parameter, a module that
+/// kept it would start in a mode it does not have. Reads stay allowed.
+pub(super) fn check_ascii_start_bit(
+    spec: &CommandSpec,
+    instruction: &Instruction,
+    profile: &Profile,
+) -> Result<(), InputError> {
+    let changes = matches!(spec.param_use, Some(ParamUse::Write | ParamUse::Store));
+    let gp67 = spec
+        .operand_for(Field::Type)
+        .is_some_and(|o| o.kind == OperandKind::GlobalParam)
+        && instruction.type_ == ASCII_SETTINGS
+        && instruction.motor == 0;
+    if changes && gp67 && profile.identity.ascii_interface() == AsciiInterface::No {
+        return Err(InputError::NoAsciiStartBit {
+            module: profile.module.clone(),
+        });
+    }
+    Ok(())
 }
 
 /// The port and bank of GIO/SIO against the module's I/O map (not checked without one); a

@@ -187,3 +187,22 @@ fn a_control_function_takes_any_motor_byte() {
     }
     assert!(refused("GAP 1, 1", Mode::Binary).contains("motor"));
 }
+
+#[test]
+fn a_binary_only_module_never_gets_the_ascii_start_bit() {
+    // The TMCM-6214 has no ASCII interface: GP 67 written or stored could make it start in a
+    // mode it lacks. A read is only the usual unknown-parameter warning.
+    let profile = crate::dialect::tmcl::profile::catalogue::by_name("tmcm-6214").unwrap();
+    for text in ["SGP 67, 0, 1", "SGP 67, 0, 32", "STGP 67, 0"] {
+        let line = parse(text, &profile).unwrap();
+        let e = validate(&line, &profile, Mode::Binary).unwrap_err();
+        assert!(
+            e.to_string().contains("has no ASCII interface"),
+            "{text}: {e}"
+        );
+    }
+    let line = parse("GGP 67, 0", &profile).unwrap();
+    assert!(validate(&line, &profile, Mode::Binary).is_ok());
+    // A module with the interface takes it.
+    assert!(check("SGP 67, 0, 32", Mode::Ascii).is_ok());
+}

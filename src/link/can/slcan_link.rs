@@ -1,0 +1,162 @@
+//! An slcan adapter on a serial line as a [`CanBus`]: the open sequence (`C`, `Sn`, `O`), each
+//! answered by the adapter or named as the problem; frames out as `t…` commands; frames in with
+//! the adapter's acknowledgements (whichever style, or none) set aside and BEL reported as the
+//! adapter's error.
+
+use std::collections::VecDeque;
+use std::time::{Duration, Instant};
+
+use super::CanBus;
+use super::frame::CanFrame;
+use super::slcan::{self, Decoder, Event};
+use crate::link::{Link, LinkError};
+
+/// An slcan adapter, open on the bus.
+pub struct SlcanLink {
+    serial: Box<dyn Link>,
+    name: String,
+    bitrate: u32,
+    timeout: Duration,
+    decoder: Decoder,
+    events: VecDeque<Event>,
+    acks: u64,
+    other_lines: u64,
+}
+
+impl SlcanLink {
+    /// Opens the adapter on `serial` (named `name` in messages) at `bitrate`; each command of the
+    /// open sequence must be answered within `timeout`.
+    pub fn open(
+        serial: Box<dyn Link>,
+        name: &str,
+        bitrate: u32,
+        timeout: Duration,
+    ) -> Result<SlcanLink, LinkError> {
+        let mut link = SlcanLink {
+            serial,
+            name: name.to_string(),
+            bitrate,
+            timeout,
+            decoder: Decoder::default(),
+            events: VecDeque::new(),
+            acks: 0,
+            other_lines: 0,
+        };
+        link.start()?;
+        Ok(link)
+    }
+
+    /// The open sequence: close whatever was open (an adapter already closed may refuse that),
+    /// set the bit rate, open.
+    fn start(&mut self) -> Result<(), LinkError> {
+        let rate = slcan::bitrate_command(self.bitrate).ok_or_else(|| {
+            LinkError::Open(format!(
+                "slcan has no code for {} bit/s; its rates are {}",
+                self.bitrate,
+                slcan::BITRATES.map(|r| r.to_string()).join(", ")
+            ))
+        })?;
+        self.decoder = Decoder::default();
+        self.events.clear();
+        self.command(slcan::CLOSE, true)?;
+        self.command(&rate, false)?;
+        self.command(slcan::OPEN, false)
+    }
+
+    /// Sends one command and waits for its CR (or BEL, taken when `bell_ok`).
+    fn command(&mut self, command: &str, bell_ok: bool) -> Result<(), LinkError> {
+        self.serial.send(command.as_bytes())?;
+        let shown = command.trim_end_matches('\r');
+        let deadline = Instant::now() + self.timeout;
+        loop {
+            let event = match self.next_event(deadline) {
+                Ok(event) => event,
+                Err(LinkError::Timeout) => {
+                    return Err(LinkError::Open(format!(
+                        "the CAN adapter on {} did not answer the slcan command `{shown}` within \
+                         {} ms: is it an slcan adapter (CANable or candleLight with slcan \
+                         firmware, USBtin, CANUSB), powered and not held by another program?",
+                        self.name,
+                        self.timeout.as_millis()
+                    )));
+                }
+                Err(e) => return Err(e),
+            };
+            match event {
+                Event::Ack(_) => return Ok(()),
+                Event::Bell if bell_ok => return Ok(()),
+                Event::Bell => {
+                    return Err(LinkError::Adapter(format!(
+                        "the slcan adapter on {} refused `{shown}` (BEL)",
+                        self.name
+                    )));
+                }
+                Event::Frame(_) | Event::Line(_) => {}
+            }
+        }
+    }
+
+    /// The next event from the adapter, reading the line until `deadline`.
+    fn next_event(&mut self, deadline: Instant) -> Result<Event, LinkError> {
+        loop {
+            if let Some(event) = self.events.pop_front() {
+                return Ok(event);
+            }
+            let mut buf = [0u8; 256];
+            let n = self.serial.recv(&mut buf, deadline)?;
+            let mut events = Vec::new();
+            self.decoder.push(&buf[..n], &mut events);
+            self.events.extend(events);
+        }
+    }
+}
+
+impl CanBus for SlcanLink {
+    fn send_frame(&mut self, frame: &CanFrame) -> Result<(), LinkError> {
+        self.serial.send(slcan::encode(frame).as_bytes())
+    }
+
+    fn recv_frame(&mut self, deadline: Instant) -> Result<CanFrame, LinkError> {
+        loop {
+            match self.next_event(deadline)? {
+                Event::Frame(frame) => return Ok(frame),
+                Event::Ack(_) => self.acks += 1,
+                Event::Line(_) => self.other_lines += 1,
+                Event::Bell => {
+                    return Err(LinkError::Adapter(format!(
+                        "the slcan adapter on {} reported an error (BEL): a frame it could not \
+                         send, or its bus is off (no other node acknowledging, wrong bit rate, \
+                         missing termination)",
+                        self.name
+                    )));
+                }
+            }
+        }
+    }
+
+    fn describe(&self) -> String {
+        format!("slcan {} at {} bit/s", self.name, self.bitrate)
+    }
+
+    fn reopen(&mut self) -> Result<(), LinkError> {
+        self.serial.reopen()?;
+        self.start()
+    }
+
+    fn close(&mut self) {
+        self.serial.close()
+    }
+
+    #[cfg(unix)]
+    fn watch(&self) -> Option<std::os::fd::OwnedFd> {
+        self.serial.watch()
+    }
+
+    fn notes(&self) -> Vec<String> {
+        vec![format!(
+            "slcan: {} acknowledgements, {} other lines (extended or remote frames, answers) \
+             ignored",
+            self.acks, self.other_lines
+        )]
+    }
+}
