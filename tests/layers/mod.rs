@@ -254,10 +254,10 @@ fn the_checks_see_an_upward_use_and_a_dialect_crossing() {
     assert_eq!(wrong.len(), 1, "{wrong:?}");
 }
 
-/// What a dialect's pure `protocol/` folder may not use: the crate's I/O, simulator and faces,
+/// What a dialect's pure `protocol/` folder may not use: the crate's sessions, simulator and faces,
 /// and its own dialect's session (where its faces live) and simulator. Tables it shares with
-/// commissioning (`commission::SnapshotRules`) are data, not I/O.
-const ABOVE_PROTOCOL: &[&str] = &["cli", "repl", "shell", "script", "sim", "session", "link"];
+/// commissioning (`commission::SnapshotRules`) and a link's frame types (`link::can`) are data.
+const ABOVE_PROTOCOL: &[&str] = &["cli", "repl", "shell", "script", "sim", "session"];
 const ABOVE_PROTOCOL_IN_DIALECT: &[&str] = &["session", "sim", "faces"];
 
 #[test]
