@@ -193,12 +193,18 @@ impl Wire {
                 return Ok(());
             };
             let until = last + gap;
-            if Instant::now() >= until {
+            let now = Instant::now();
+            // A stall of this thread is not silence: what arrived meanwhile is read first.
+            if now >= until && !self.fill(now)? {
                 return Ok(());
+            }
+            if now >= until {
+                continue;
             }
             if Instant::now() >= bound {
                 let message = format!(
-                    "the line did not fall quiet for {} ms within {} ms: something else talks on                      it (another program on the port, a module sending on its own)",
+                    "the line did not fall quiet for {} ms within {} ms: something else talks on \
+                     it (another program on the port, a module sending on its own)",
                     gap.as_millis(),
                     (gap + QUIET_BOUND).as_millis()
                 );

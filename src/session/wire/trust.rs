@@ -165,6 +165,13 @@ impl Wire {
         loop {
             let quiet_until = quiet_since + window;
             let now = Instant::now();
+            // A stall of this thread is not silence: what arrived meanwhile is taken first.
+            if now >= quiet_until && self.fill(now)? {
+                quiet_since = Instant::now();
+                let n = self.rx.len();
+                self.discard(n, OUTSIDE);
+                continue;
+            }
             if now >= quiet_until {
                 self.flush_discarded();
                 self.suspect = Suspicion::default();
