@@ -45,7 +45,8 @@ pub struct QuirkFlags {
     pub tzw_reply_ms: bool,
     /// Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s
     /// (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the
-    /// VSTOP example). Without it the real value echoes the user value.
+    /// VSTOP example). Without it the real value echoes the user value. At most 1, so each pair
+    /// stays within the 0.5 the reply check allows ([user_real] in data/smd4.toml).
     #[arg(long, value_name = "STEP", value_parser = grid_step)]
     pub real_value_grid: Option<f64>,
     /// Answer SYS:FLAGS without the trailing item `1` only its example shows (the document
