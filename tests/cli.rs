@@ -191,6 +191,7 @@ mod closed_stdout;
 mod config;
 mod doc_examples;
 mod examples;
+mod first_hour;
 mod first_hour_shell;
 mod forgiving;
 mod helper_text;

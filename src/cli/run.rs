@@ -137,6 +137,11 @@ fn run_reporting(args: &RunArgs, configs: &Configured, blocks: &Blocks) -> Resul
         Ok(()) if lost(session.as_ref()).is_none() => Exit::Success,
         Ok(()) => Exit::Link,
         Err(report) => {
+            // Silence from the start may be a device of the other dialect.
+            let other = (report.exit == Exit::Link)
+                .then(|| session.wrong_dialect())
+                .flatten();
+            let report = other.unwrap_or(report);
             // A closed stdout ends the run quietly (see `crate::stdout`).
             if !crate::stdout::closed() {
                 super::diagnose(&report.message);

@@ -48,10 +48,8 @@ pub fn run(args: UploadArgs, configs: &Configured, out: &mut dyn Write) -> Resul
         super::diagnose(&message);
     }
     let text = result.map_err(Failure::from)?;
-    match out.write_all(text.as_bytes()) {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
-            Err(Failure::new(Exit::Link, e.to_string()))
-        }
-        _ => Ok(Exit::Success),
-    }
+    // A closed stdout is decided in `cli::main` (quietly, 141).
+    out.write_all(text.as_bytes())
+        .map(|()| Exit::Success)
+        .map_err(|e| Failure::new(Exit::Link, e.to_string()))
 }

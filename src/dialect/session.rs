@@ -247,6 +247,13 @@ pub trait DialectSession: AsAny {
         core.wire.transcript.is_some()
     }
 
+    /// Before a run ends on a time-out: whether the silence is a device of another dialect, as
+    /// the failure naming the `--protocol` to give (exit 2). Asked only as the run ends, since
+    /// the probe may leave bytes the device keeps; `None` when the session heard anything at all.
+    fn wrong_dialect(&mut self) -> Option<crate::exit::Failure> {
+        None
+    }
+
     /// Warnings for a user leaving the interactive shell while motors this session set moving
     /// (itself or by a program) still turn, each saying how to stop one; leaving stops nothing.
     /// None where the dialect cannot tell.

@@ -253,6 +253,12 @@ impl Wire {
         }
     }
 
+    /// Whether anything at all has come from the line since it was opened: a session that
+    /// heard nothing may be talking the wrong protocol.
+    pub(crate) fn heard_anything(&self) -> bool {
+        self.last_heard.is_some()
+    }
+
     /// Records the first `n` bytes of the receive buffer as received and removes them.
     pub(crate) fn log_received(&mut self, n: usize, meaning: impl Display) {
         self.flush_discarded();

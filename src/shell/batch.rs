@@ -139,7 +139,16 @@ pub fn run(
                 interrupt::take();
                 worst = worse(worst, e.exit());
             }
-            Err(e) => break worse(worst, fail(shell, &e, err, Some((number, text)))),
+            Err(e) => {
+                let e = match e {
+                    SessionError::Timeout { .. } => match shell.session().wrong_dialect() {
+                        Some(failure) => SessionError::Failed(failure),
+                        None => e,
+                    },
+                    e => e,
+                };
+                break worse(worst, fail(shell, &e, err, Some((number, text))));
+            }
         }
     };
     for message in shell.session().close() {

@@ -638,3 +638,29 @@ fn a_usb_name_is_looked_up_again_when_the_adapter_comes_back_under_another_name(
     p.send_control('d').unwrap();
     p.exp_eof().unwrap();
 }
+
+#[test]
+fn ports_marks_known_slcan_adapters_as_can() {
+    let machine = Machine::new();
+    let nowhere = machine.root.join("nowhere");
+    std::fs::write(&nowhere, "").unwrap();
+    machine.usb_serial("ttyACM0", ("16d0", "117e"), None, &nowhere);
+    machine.usb_serial("ttyUSB0", ("0403", "6001"), None, &nowhere);
+    let out = machine.run(&["ports"]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let text = stdout(&out);
+    let line = |name: &str| {
+        text.lines()
+            .find(|l| l.starts_with(&machine.dev(name)))
+            .unwrap_or_else(|| panic!("{name} not listed:\n{text}"))
+            .to_string()
+    };
+    let can = line("ttyACM0");
+    assert!(can.contains(" CAN "), "{can}");
+    assert!(can.contains("CANable 2.0 (slcan firmware)"), "{can}");
+    assert!(
+        can.contains(&format!("--can slcan:{}", machine.dev("ttyACM0"))),
+        "{can}"
+    );
+    assert!(line("ttyUSB0").contains(" USB "), "{text}");
+}

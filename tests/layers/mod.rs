@@ -253,3 +253,115 @@ fn the_checks_see_an_upward_use_and_a_dialect_crossing() {
     let wrong = crossings(&[crossing], &folders);
     assert_eq!(wrong.len(), 1, "{wrong:?}");
 }
+
+/// What a dialect's pure `protocol/` folder may not use: the crate's sessions, simulator and faces,
+/// and its own dialect's session (where its faces live) and simulator. Tables it shares with
+/// commissioning (`commission::SnapshotRules`) and a link's frame types (`link::can`) are data.
+const ABOVE_PROTOCOL: &[&str] = &["cli", "repl", "shell", "script", "sim", "session"];
+const ABOVE_PROTOCOL_IN_DIALECT: &[&str] = &["session", "sim", "faces"];
+
+#[test]
+fn pure_protocol_folders_use_no_session_simulator_or_face() {
+    let wrong = protocol_reaching_up(&library(), &dialect_folders());
+    assert!(
+        wrong.is_empty(),
+        "protocol code using what is above it:\n{}",
+        wrong.join("\n")
+    );
+}
+
+/// The uses in `sources`' `protocol/` folders of what is above them.
+fn protocol_reaching_up(sources: &[Source], folders: &[String]) -> Vec<String> {
+    let mut wrong = Vec::new();
+    for source in sources.iter().filter(|s| !s.test_only) {
+        let Some(folder) = folder_of(&source.module, folders) else {
+            continue;
+        };
+        if source.module.get(2).map(String::as_str) != Some("protocol") {
+            continue;
+        }
+        for path in used_paths(source) {
+            let above = match path.as_slice() {
+                [dialect, own, inner, ..] if dialect == "dialect" && own == folder => {
+                    ABOVE_PROTOCOL_IN_DIALECT.contains(&inner.as_str())
+                }
+                [top, ..] => ABOVE_PROTOCOL.contains(&top.as_str()),
+                [] => false,
+            };
+            if above {
+                wrong.push(format!(
+                    "{} uses {}",
+                    source.file.display(),
+                    path.join("::")
+                ));
+            }
+        }
+    }
+    wrong
+}
+
+/// What asks the terminal: whether a stream is one, its size, the terminal library.
+const ASKING_THE_TERMINAL: &[&str] = &[
+    "is_terminal(",
+    "terminal_width(",
+    "crossterm::",
+    "terminal::size(",
+];
+
+/// The layers that must not ask the terminal anything: the UI (`cli`, `repl`, `shell`) asks and
+/// passes what it learnt down; `wrap` holds the one question, for the UI and the dialects' faces.
+/// Below them the session, links, simulators, scripts and commissioning, and in each dialect its
+/// `protocol/`, `session/` and `sim/` folders.
+fn below_the_ui(source: &Source, folders: &[String]) -> bool {
+    match source.module.as_slice() {
+        [dialect, folder, inner, ..] if dialect == "dialect" && folders.contains(folder) => {
+            ["protocol", "session", "sim"].contains(&inner.as_str())
+        }
+        [top, ..] => ["session", "link", "sim", "script", "commission"].contains(&top.as_str()),
+        [] => false,
+    }
+}
+
+#[test]
+fn nothing_below_the_ui_asks_the_terminal() {
+    let folders = dialect_folders();
+    let wrong: Vec<String> = library()
+        .iter()
+        .filter(|s| !s.test_only && below_the_ui(s, &folders))
+        .flat_map(|s| {
+            ASKING_THE_TERMINAL
+                .iter()
+                .filter(|ask| s.code.contains(*ask))
+                .map(move |ask| format!("{} asks the terminal ({ask}…)", s.file.display()))
+        })
+        .collect();
+    assert!(
+        wrong.is_empty(),
+        "below the UI, pass what the terminal said in instead:\n{}",
+        wrong.join("\n")
+    );
+}
+
+#[test]
+fn the_checks_see_a_protocol_reaching_up_and_a_question_to_the_terminal() {
+    let folders = dialect_folders();
+    let a = &folders[0];
+    let protocol = made_up(
+        "src/dialect/a/protocol/x.rs",
+        &["dialect", a, "protocol", "x"],
+        &format!(
+            "use crate::dialect::{a}::session::faces::Faces;\nuse super::super::sim::Bus;\nuse crate::session::SessionError;\nuse super::table::Row;\nuse crate::escape::escape_control;"
+        ),
+    );
+    let wrong = protocol_reaching_up(&[protocol], &folders);
+    assert_eq!(wrong.len(), 3, "{wrong:?}");
+    let asking = made_up(
+        "src/dialect/a/protocol/y.rs",
+        &["dialect", a, "protocol", "y"],
+        "let w = crate::wrap::terminal_width();",
+    );
+    assert!(below_the_ui(&asking, &folders));
+    assert!(asking.code.contains("terminal_width("));
+    let face = made_up("src/shell/help.rs", &["shell", "help"], "");
+    assert!(!below_the_ui(&face, &folders));
+}

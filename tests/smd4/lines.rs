@@ -169,11 +169,16 @@ fn a_silent_drive_exits_3_after_the_timeout() {
             err.contains("no reply from the drive within 200 ms"),
             "{err}"
         );
+        let received = drive.received();
         assert_eq!(
-            drive.received(),
-            ["SYS:FW"],
+            received.first().map(String::as_str),
+            Some("SYS:FW"),
             "{via:?}: the request did go out"
         );
+        // Then the TMCL probes that tell a TMCL module on the line, ended by a line end, and
+        // nothing else.
+        assert_eq!(received.len(), 2, "{via:?}: {received:?}");
+        assert!(received[1].ends_with("AGGP 67, 0\\r"), "{received:?}");
     }
 }
 

@@ -4,6 +4,7 @@
 //! resolves to them; placeholder `ttyS` ports only with `--all`; with `--probe`, what module
 //! answers on each USB port or on the ports named (`probe.rs`).
 
+mod can;
 mod list;
 mod probe;
 pub(super) mod usb;
@@ -166,9 +167,13 @@ fn list_ports(all: &[Port], placeholders: bool, out: &mut dyn Write) -> io::Resu
                         (None, Some(m)) => m.clone(),
                         (None, None) => String::new(),
                     };
+                    let (kind, product) = match can::slcan_adapter(usb.vid, usb.pid) {
+                        Some(name) => ("CAN", format!("{name}: --can slcan:{path}")),
+                        None => ("USB", product),
+                    };
                     [
                         path,
-                        "USB".into(),
+                        kind.into(),
                         format!("{:04x}:{:04x}", usb.vid, usb.pid),
                         usb.serial.clone().unwrap_or_else(dash),
                         usb.interface.map(|i| i.to_string()).unwrap_or_else(dash),

@@ -27,7 +27,11 @@ pub fn run(
         "params" => {
             let mut any = false;
             for spec in hints::matching(&session.spec().commands, arg) {
-                writeln!(out, "{}", hints::fitted_row(spec))?;
+                writeln!(
+                    out,
+                    "{}",
+                    hints::fitted_row(spec, crate::wrap::terminal_width())
+                )?;
                 any = true;
             }
             if !any {

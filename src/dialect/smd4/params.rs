@@ -15,7 +15,11 @@ pub fn write_params(filter: &str, out: &mut dyn Write) -> io::Result<bool> {
         return Ok(false);
     }
     for spec in rows {
-        writeln!(out, "{}", hints::fitted_row(spec))?;
+        writeln!(
+            out,
+            "{}",
+            hints::fitted_row(spec, crate::wrap::terminal_width())
+        )?;
     }
     Ok(true)
 }

@@ -201,6 +201,12 @@ pub fn scan(
         session.set_target(original)?;
     }
     let hosts: Vec<(u8, Option<u8>)> = found.values().map(|m| (m.address, m.host)).collect();
+    // On CAN the reply ID, not the serial host address, tells replies from requests.
+    let hosts = if session.frames_only() {
+        Vec::new()
+    } else {
+        hosts
+    };
     for warning in host_clash::warnings(&hosts) {
         session.notice(warning);
     }

@@ -58,9 +58,25 @@ impl SlcanLink {
         })?;
         self.decoder = Decoder::default();
         self.events.clear();
+        self.drain_stale()?;
         self.command(slcan::CLOSE, true)?;
         self.command(&rate, false)?;
         self.command(slcan::OPEN, false)
+    }
+
+    /// Drops what the adapter said before this open (an earlier program's unread answers and
+    /// frames), so no stale CR is taken for the answer to `C`: what has arrived is read without
+    /// waiting, up to a bound, since an adapter left open may stream a busy bus's frames.
+    fn drain_stale(&mut self) -> Result<(), LinkError> {
+        let mut buf = [0u8; 256];
+        for _ in 0..256 {
+            match self.serial.recv(&mut buf, Instant::now()) {
+                Ok(_) => {}
+                Err(LinkError::Timeout) => return Ok(()),
+                Err(e) => return Err(e),
+            }
+        }
+        Ok(())
     }
 
     /// Sends one command and waits for its CR (or BEL, taken when `bell_ok`).

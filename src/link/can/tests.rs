@@ -186,3 +186,11 @@ fn an_unknown_bit_rate_is_refused_before_anything_is_sent() {
     ));
     assert!(sent.lock().unwrap().is_empty());
 }
+
+#[test]
+fn answers_left_by_an_earlier_program_are_not_taken_for_the_open_sequences() {
+    // Closed already: `C` is refused with BEL; a CR and a frame left unread wait in the line.
+    let (mut serial, _) = Scripted::new(|line: &str| if line == "C" { vec![7] } else { vec![13] });
+    serial.incoming.extend(b"\rt0021FF\r");
+    SlcanLink::open(Box::new(serial), "/dev/x", 1_000_000, TIMEOUT).unwrap();
+}

@@ -94,9 +94,10 @@ pub fn table_row(spec: &Smd4Command) -> String {
     )
 }
 
-/// [`table_row`] fitted to the terminal: what the argument accepts continues under itself.
-pub fn fitted_row(spec: &Smd4Command) -> String {
-    crate::wrap::fit(&table_row(spec), 29, crate::wrap::terminal_width())
+/// [`table_row`] fitted to `width` columns (the terminal's, which the face asks for): what the
+/// argument accepts continues under itself.
+pub fn fitted_row(spec: &Smd4Command, width: Option<usize>) -> String {
+    crate::wrap::fit(&table_row(spec), 29, width)
 }
 
 /// One line of help: usage, accepted values, access, the reply and the description.

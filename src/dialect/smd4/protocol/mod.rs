@@ -19,6 +19,7 @@ pub(crate) mod load;
 pub mod multiline;
 pub mod reply;
 pub mod request;
+pub mod sniff;
 pub mod spec;
 pub mod types;
 pub mod validate;

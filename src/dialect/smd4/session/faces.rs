@@ -23,6 +23,10 @@ impl DialectSession for Smd4Session {
         &crate::dialect::smd4::DIALECT
     }
 
+    fn wrong_dialect(&mut self) -> Option<crate::exit::Failure> {
+        self.sniff_other_dialect()
+    }
+
     fn core(&self) -> &SessionCore {
         &self.core
     }

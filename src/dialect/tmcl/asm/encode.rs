@@ -6,6 +6,7 @@
 //! so a program is held to exactly the rules a typed command is.
 
 use crate::dialect::tmcl::profile::Profile;
+use crate::dialect::tmcl::profile::catalogue;
 use crate::dialect::tmcl::profile::commands::{CommandSpec, Field, OperandKind};
 use crate::dialect::tmcl::protocol::operands::{self, Number, OperandText, Refused, byte};
 use crate::dialect::tmcl::protocol::validate::{Mode, validate, validate_instruction};
@@ -222,6 +223,19 @@ fn command<'p>(word: &str, profile: &'p Profile) -> Result<&'p CommandSpec, Prob
         if let Err(e) = validate(&line, profile, Mode::Program) {
             return Err(e.into());
         }
+    }
+    // A command other modules have (EI, VECT … on the TMCM-1140) names them, not a near miss.
+    let elsewhere: Vec<String> = catalogue::all()
+        .iter()
+        .filter(|other| other.name != profile.name && other.commands.by_mnemonic(word).is_some())
+        .map(|other| other.name.clone())
+        .collect();
+    if !elsewhere.is_empty() {
+        return Err(Problem::NotInProfile {
+            word: word.to_string(),
+            module: profile.module.clone(),
+            profiles: elsewhere,
+        });
     }
     let mnemonics = profile
         .commands

@@ -20,6 +20,19 @@ pub enum Problem {
         /// The nearest mnemonic.
         suggestion: Option<String>,
     },
+    /// A command of other modules that this module's profile does not have.
+    #[error(
+        "the {module} has no command '{word}'; these profiles have it: {}; give --profile NAME, or download to the module and it is checked against the module identified",
+        profiles.join(", ")
+    )]
+    NotInProfile {
+        /// What was written.
+        word: String,
+        /// The module whose profile was used.
+        module: String,
+        /// The built-in profiles that have the command.
+        profiles: Vec<String>,
+    },
     /// A jump or call to a label that is not defined.
     #[error("unknown label '{name}'{}", did_you_mean(suggestion))]
     UnknownLabel {

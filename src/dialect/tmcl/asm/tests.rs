@@ -470,3 +470,18 @@ fn the_documented_example_assembles() {
 
 mod grammar;
 mod hostile;
+
+#[test]
+fn a_command_other_modules_have_names_the_profiles_that_have_it() {
+    let message = error("EI 0\nSTOP");
+    assert!(
+        message.starts_with(
+            "t.tmc:1:1: error: the TMCM-142 has no command 'EI'; these profiles have it: "
+        ),
+        "{message}"
+    );
+    assert!(message.contains("tmcm-1140"), "{message}");
+    assert!(!message.contains("tmcm-142,"), "{message}");
+    let tmcm_1140 = crate::dialect::tmcl::profile::catalogue::by_name("tmcm-1140").unwrap();
+    assert!(load_program(b"EI 0\nSTOP", "t.tmc", &tmcm_1140).is_ok());
+}

@@ -1,8 +1,8 @@
 //! The TMCL command table: numbers, mnemonics, operand layouts, keywords and where each command
 //! may be used. Built from the profile data; nothing here lists commands by hand.
 
-use super::family::RangeWhen;
 use super::load::{CommandRow, KeywordRow};
+use super::range_when::{Condition, RangeWhen};
 
 /// What an operand in mnemonic form means, and so which instruction field it fills.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -406,7 +406,7 @@ impl CommandTable {
     }
 
     /// Keeps the commands' conditional ranges whose condition `keep` accepts.
-    pub(crate) fn keep_range_when(&mut self, keep: impl Fn(&super::family::Condition) -> bool) {
+    pub(crate) fn keep_range_when(&mut self, keep: impl Fn(&Condition) -> bool) {
         for command in &mut self.commands {
             command.range_when.retain(|r| keep(&r.when));
         }

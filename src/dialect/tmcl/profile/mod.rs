@@ -12,6 +12,7 @@ pub mod commands;
 pub mod decode;
 pub mod family;
 pub(crate) mod load;
+mod range_when;
 pub mod sim_roles;
 pub mod version;
 

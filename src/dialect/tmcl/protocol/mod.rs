@@ -13,6 +13,7 @@ pub mod module_name;
 pub mod opcode;
 pub mod operands;
 pub mod reply;
+pub mod sniff;
 pub mod status;
 pub mod syntax;
 pub mod validate;

@@ -17,6 +17,7 @@ mod mode;
 mod probe;
 mod relink;
 mod reset;
+mod sniff;
 mod stop;
 mod unanswered;
 

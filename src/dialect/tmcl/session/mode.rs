@@ -345,6 +345,9 @@ impl TmclSession {
             Ok(x) => x,
             Err(SessionError::Timeout { timeout, .. }) => {
                 self.modules.remove(&module);
+                if let Some(other) = self.sniff_other_dialect() {
+                    return Err(other);
+                }
                 return Err(SessionError::Timeout {
                     module: ModuleName(module).to_string(),
                     timeout,

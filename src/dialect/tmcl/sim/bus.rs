@@ -10,10 +10,10 @@ use std::time::Duration;
 use crate::dialect::tmcl::profile::Profile;
 use crate::sim::{Device, LogSink};
 
-use super::control_cmd;
+use super::control_cmd::{self, Controlled};
 use super::machine::Machine;
 use super::module::{Module, Sink};
-use super::motion::{Switch, Switches};
+use super::motion::{MotorState, Switch, Switches};
 use super::options::Quirks;
 use super::state::{BusImage, Eeprom, ModuleImage};
 
@@ -54,21 +54,6 @@ impl Default for BusOptions {
             shared_line: false,
         }
     }
-}
-
-/// What the motor of a module is doing, for tests and the console.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MotorState {
-    /// Position counter (AP 1).
-    pub position: i32,
-    /// Target position (AP 0).
-    pub target: i32,
-    /// Velocity in microsteps per second.
-    pub velocity: f64,
-    /// Target position reached (AP 8).
-    pub target_reached: bool,
-    /// Reference search in progress.
-    pub searching: bool,
 }
 
 /// Simulated modules sharing one serial line.
@@ -386,5 +371,42 @@ impl Device for Bus {
 
     fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
         control_cmd::run(self, now, command)
+    }
+}
+
+impl Controlled for Bus {
+    fn slots(&self) -> Vec<u8> {
+        Bus::slots(self)
+    }
+
+    fn reset(&mut self, now: Duration, slot: Option<u8>) -> Result<String, String> {
+        Bus::reset(self, now, slot)
+    }
+
+    fn set_input(&mut self, now: Duration, slot: u8, port: u8, high: bool) -> Result<(), String> {
+        Bus::set_input(self, now, slot, port, high)
+    }
+
+    fn set_analog(&mut self, now: Duration, slot: u8, port: u8, value: i32) -> Result<(), String> {
+        Bus::set_analog(self, now, slot, port, value)
+    }
+
+    fn set_switch(
+        &mut self,
+        now: Duration,
+        slot: u8,
+        motor: u8,
+        which: Switch,
+        position: Option<i64>,
+    ) -> Result<(), String> {
+        Bus::set_switch(self, now, slot, motor, which, position)
+    }
+
+    fn output(&mut self, now: Duration, slot: u8, port: u8) -> Option<bool> {
+        Bus::output(self, now, slot, port)
+    }
+
+    fn motor_of(&mut self, now: Duration, slot: u8, motor: u8) -> Option<MotorState> {
+        Bus::motor_of(self, now, slot, motor)
     }
 }

@@ -4,8 +4,8 @@
 use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
-use super::exec::{Effect, Outcome, Reply};
 use super::machine::Machine;
+use super::outcome::{Effect, Outcome, Reply};
 use super::program::read_reply;
 
 /// GP 81 (TMCL code protection) bits.

@@ -14,11 +14,40 @@
 
 use std::time::Duration;
 
-use super::bus::Bus;
-use super::motion::Switch;
+use super::motion::{MotorState, Switch};
+
+/// What the console's commands need of a running bus. The bus implements it (`bus.rs`) and hands
+/// itself to [`run`], so this file does not name the bus back.
+pub(crate) trait Controlled {
+    /// Factory addresses of the modules, in bus order.
+    fn slots(&self) -> Vec<u8>;
+    /// Resets one module or all; says what it did.
+    fn reset(&mut self, now: Duration, slot: Option<u8>) -> Result<String, String>;
+    /// Sets a digital input.
+    fn set_input(&mut self, now: Duration, slot: u8, port: u8, high: bool) -> Result<(), String>;
+    /// Sets an analog input.
+    fn set_analog(&mut self, now: Duration, slot: u8, port: u8, value: i32) -> Result<(), String>;
+    /// Places (or removes) a switch of a module's motor.
+    fn set_switch(
+        &mut self,
+        now: Duration,
+        slot: u8,
+        motor: u8,
+        which: Switch,
+        position: Option<i64>,
+    ) -> Result<(), String>;
+    /// The state of an output.
+    fn output(&mut self, now: Duration, slot: u8, port: u8) -> Option<bool>;
+    /// What a motor is doing.
+    fn motor_of(&mut self, now: Duration, slot: u8, motor: u8) -> Option<MotorState>;
+}
 
 /// Runs `command` if it is a bus command (`None` when it is not one).
-pub(crate) fn run(bus: &mut Bus, now: Duration, command: &str) -> Option<Result<String, String>> {
+pub(crate) fn run(
+    bus: &mut dyn Controlled,
+    now: Duration,
+    command: &str,
+) -> Option<Result<String, String>> {
     let mut words: Vec<&str> = command.split_whitespace().collect();
     match words.as_slice() {
         ["reset"] => return Some(bus.reset(now, None)),
@@ -57,7 +86,7 @@ pub(crate) fn run(bus: &mut Bus, now: Duration, command: &str) -> Option<Result<
 
 /// The module a leading `@N` names, taken off `words`; without one, the first module (`None`
 /// on a bus without modules).
-fn take_module(bus: &Bus, words: &mut Vec<&str>) -> Option<Result<u8, String>> {
+fn take_module(bus: &dyn Controlled, words: &mut Vec<&str>) -> Option<Result<u8, String>> {
     let first: Option<&str> = words.first().copied();
     let Some(n) = first.and_then(|w| w.strip_prefix('@')) else {
         return bus.slots().first().map(|slot| Ok(*slot));
@@ -86,7 +115,7 @@ fn take_motor(words: &mut Vec<&str>) -> Result<u8, String> {
 
 /// `input PORT 0|1`.
 fn set_input(
-    bus: &mut Bus,
+    bus: &mut dyn Controlled,
     now: Duration,
     slot: u8,
     port: &str,
@@ -104,7 +133,7 @@ fn set_input(
 
 /// `analog PORT VALUE`.
 fn set_analog(
-    bus: &mut Bus,
+    bus: &mut dyn Controlled,
     now: Duration,
     slot: u8,
     port: &str,
@@ -120,7 +149,7 @@ fn set_analog(
 
 /// `switch [M] left|right|home POS|off` for motor `motor` of the module at `slot`.
 fn set_switch(
-    bus: &mut Bus,
+    bus: &mut dyn Controlled,
     now: Duration,
     (slot, motor): (u8, u8),
     which: &str,
@@ -153,7 +182,12 @@ fn set_switch(
 }
 
 /// `motor [M]`: position, target, velocity and target reached.
-fn motor_state(bus: &mut Bus, now: Duration, slot: u8, motor: u8) -> Result<String, String> {
+fn motor_state(
+    bus: &mut dyn Controlled,
+    now: Duration,
+    slot: u8,
+    motor: u8,
+) -> Result<String, String> {
     bus.motor_of(now, slot, motor)
         .map(|m| {
             format!(

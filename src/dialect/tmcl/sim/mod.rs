@@ -22,13 +22,15 @@ mod machine;
 mod module;
 mod motion;
 mod options;
+mod outcome;
 mod params;
 mod program;
 mod ramp;
 mod state;
 mod vm;
 
-pub use bus::{Bus, BusOptions, MotorState};
+pub use bus::{Bus, BusOptions};
+pub use motion::MotorState;
 pub use motion::{Switch, Switches};
 pub use options::{Backspace, LineEnd, Quirks};
 pub use state::{BusImage, Eeprom, ModuleImage, StateError};

@@ -11,9 +11,9 @@ use crate::dialect::tmcl::protocol::{
 };
 
 use super::ascii::{Context, Echo, LineInput};
-use super::exec::{Effect, Outcome, Reply, Source};
 use super::machine::Machine;
 use super::options::Quirks;
+use super::outcome::{Effect, Outcome, Reply, Source};
 
 /// Where a module's replies and log lines go.
 pub(crate) struct Sink<'a> {

@@ -9,6 +9,21 @@
 
 use super::ramp::{Plan, State};
 
+/// What the motor of a module is doing, for tests and the console.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MotorState {
+    /// Position counter (AP 1).
+    pub position: i32,
+    /// Target position (AP 0).
+    pub target: i32,
+    /// Velocity in microsteps per second.
+    pub velocity: f64,
+    /// Target position reached (AP 8).
+    pub target_reached: bool,
+    /// Reference search in progress.
+    pub searching: bool,
+}
+
 /// Where the virtual switches are, in physical microsteps (`None`: not connected).
 ///
 /// The left limit switch is active at and left of its position, the right one at and right of

@@ -17,10 +17,10 @@ use std::cmp::Ordering;
 
 use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 
-use super::exec::{Reply, Source};
 use super::interrupts::Interrupts;
 use super::machine::Machine;
 use super::motion::Switch;
+use super::outcome::{Reply, Source};
 use super::program::Program;
 
 /// Application status as 135 and GP 128 report it.
