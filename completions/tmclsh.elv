@@ -480,7 +480,7 @@ set edit:completion:arg-completer[tmclsh] = {|@words|
             cand --float-decimals 'Decimals of FLOAT replies: 4 (every example) or 5 (the type table)'
             cand --error-spelling 'Spelling of error items: paren (-103 (Invalid Mnemonic)), comma (-103,Invalid Mnemonic) or bare (-103)'
             cand --prefix-only 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)'
-            cand --real-value-grid 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value'
+            cand --real-value-grid 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value. At most 1, so each pair stays within the 0.5 the reply check allows ([user_real] in data/smd4.toml)'
             cand --pty 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
             cand --slcan 'Serve the simulated bus as an slcan (serial-line CAN) adapter: requests and replies are TMCL''s CAN frames (`--can slcan:PATH` on the other side)'
             cand --foreign-frames 'Put another node''s frame on the CAN bus (a CANopen heartbeat, ID 0x705) before each reply, as on a bus the modules share with other nodes'

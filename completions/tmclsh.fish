@@ -443,7 +443,7 @@ comma\t''
 bare\t''"
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l prefix-only -d 'Accept only one form of the address prefix: attached (@3MOTOR:STOP) or comma (@3,MOTOR:STOP)' -r -f -a "attached\t''
 comma\t''"
-complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l real-value-grid -d 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value' -r
+complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l real-value-grid -d 'Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the VSTOP example). Without it the real value echoes the user value. At most 1, so each pair stays within the 0.5 the reply check allows ([user_real] in data/smd4.toml)' -r
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l pty -d 'Serve on a new pseudo-terminal (the default); its path is the first line printed'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l slcan -d 'Serve the simulated bus as an slcan (serial-line CAN) adapter: requests and replies are TMCL\'s CAN frames (`--can slcan:PATH` on the other side)'
 complete -c tmclsh -n "__fish_tmclsh_using_subcommand sim" -l foreign-frames -d 'Put another node\'s frame on the CAN bus (a CANopen heartbeat, ID 0x705) before each reply, as on a bus the modules share with other nodes'

@@ -25,7 +25,8 @@
 //! Every spelling the document and the simulator's quirk switches use passes; a dropped digit,
 //! point, `E` sign or exponent digit, a letter in a number, `NaN`, `inf`, `1e999`, a 23-digit
 //! integer, an extra or missing item do not. A digit turned into another digit passes: no reply
-//! grammar can see that.
+//! grammar can see that, except in a user/real pair, whose two values may disagree only as far as
+//! the drive's resolution allows (`[user_real]` in the data).
 
 use super::commands::ReplyShape;
 use super::format::{FIXED_DECIMALS, FLOAT_DECIMALS};
@@ -70,6 +71,14 @@ pub enum Noise {
         /// How many came.
         got: usize,
     },
+    /// A user/real pair whose values lie further apart than the drive's resolution.
+    #[error("user value {user} and real value {real} disagree beyond the drive's resolution")]
+    Disagree {
+        /// The user value as received.
+        user: String,
+        /// The real value as received.
+        real: String,
+    },
     /// An item that is not of its declared type, or not written as a drive writes it.
     #[error("'{raw}' where {expected} is due")]
     Item {
@@ -78,6 +87,47 @@ pub enum Noise {
         /// What the command declares.
         expected: String,
     },
+}
+
+/// How far the user and real value of a user/real pair may lie apart: the real value is the
+/// closest the drive's clock divider can produce, so it is near the user value, never far.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RealTolerance {
+    /// Fraction of the user value, including the rounding of both printed values.
+    pub relative: f64,
+    /// Hz or Hz/s, for values near zero.
+    pub absolute: f64,
+}
+
+impl RealTolerance {
+    /// The `[user_real]` tolerances, widened by one unit in the last of `float_digits`
+    /// significant digits; `None` when the data gives none.
+    pub(crate) fn from_data(
+        relative: Option<f64>,
+        absolute: Option<f64>,
+        float_digits: u32,
+    ) -> Result<Option<RealTolerance>, String> {
+        let (Some(relative), Some(absolute)) = (relative, absolute) else {
+            return match (relative, absolute) {
+                (None, None) => Ok(None),
+                _ => Err("[user_real] needs both relative_tolerance and absolute_tolerance".into()),
+            };
+        };
+        if !(relative >= 0.0 && absolute >= 0.0 && relative.is_finite() && absolute.is_finite()) {
+            return Err("[user_real] tolerances must be finite and not negative".into());
+        }
+        let rounding = 10f64.powi(1 - float_digits.max(1) as i32);
+        Ok(Some(RealTolerance {
+            relative: relative + rounding,
+            absolute,
+        }))
+    }
+
+    /// Whether `real` may be what the drive produces for `user`.
+    pub fn admits(&self, user: f64, real: f64) -> bool {
+        let scale = user.abs().max(real.abs());
+        (user - real).abs() <= (self.relative * scale).max(self.absolute)
+    }
 }
 
 /// Whether a reply with address prefix `from` answers a request sent to `to`. A drive may leave
@@ -141,7 +191,23 @@ pub fn check_reply(reply: &Smd4Reply, expect: &Expectation, to: Option<u32>) -> 
             });
         }
     }
-    Ok(())
+    match (shape, items.as_slice(), expect.real_tolerance) {
+        (ReplyShape::UserReal, [user, real], Some(tolerance)) => {
+            agreeing(&user.raw, &real.raw, tolerance)
+        }
+        _ => Ok(()),
+    }
+}
+
+/// A user/real pair whose values the tolerance admits; both are well-formed FLOATs.
+fn agreeing(user: &str, real: &str, tolerance: RealTolerance) -> Result<(), Noise> {
+    match (parse_reply_float(user), parse_reply_float(real)) {
+        (Some(u), Some(r)) if !tolerance.admits(u, r) => Err(Noise::Disagree {
+            user: user.to_string(),
+            real: real.to_string(),
+        }),
+        _ => Ok(()),
+    }
 }
 
 /// Exactly one item, accepted by `fits`.

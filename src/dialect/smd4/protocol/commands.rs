@@ -1,6 +1,7 @@
 //! The SMD4 command table, built from `data/smd4.toml`: what each mnemonic reads and writes, its
 //! argument, its reply shape and the rules around it. Nothing here lists commands by hand.
 
+use super::check::RealTolerance;
 use super::load::{CommandRow, Scalar};
 use super::types::{ArgValue, ItemType, parse_arg};
 
@@ -186,6 +187,8 @@ pub struct Smd4Command {
     pub uncertain: bool,
     /// Why.
     pub uncertain_reason: String,
+    /// How far the two values of a [`ReplyShape::UserReal`] reply may disagree (`[user_real]`).
+    pub real_tolerance: Option<RealTolerance>,
 }
 
 impl Smd4Command {
@@ -261,6 +264,7 @@ impl Smd4Command {
             examples: examples(row),
             uncertain: row.uncertain,
             uncertain_reason: row.uncertain_reason.clone(),
+            real_tolerance: None,
         })
     }
 }
@@ -381,6 +385,15 @@ impl Smd4CommandTable {
             .map(Smd4Command::from_row)
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Smd4CommandTable { commands })
+    }
+
+    /// Gives every user/real command the data's tolerance.
+    pub(crate) fn set_real_tolerance(&mut self, tolerance: Option<RealTolerance>) {
+        for command in &mut self.commands {
+            if command.reply == ReplyShape::UserReal {
+                command.real_tolerance = tolerance;
+            }
+        }
     }
 
     /// Every command, in the document's order.

@@ -13,6 +13,8 @@ pub(crate) struct Smd4File {
     #[serde(default)]
     pub snapshot: SnapshotRow,
     #[serde(default)]
+    pub user_real: UserRealRow,
+    #[serde(default)]
     pub error_code: Vec<ErrorCodeRow>,
     #[serde(default)]
     pub sflag: Vec<FlagRow>,
@@ -40,6 +42,13 @@ pub(crate) struct SnapshotRow {
     #[serde(default)]
     pub needs_standby: bool,
     pub float_digits: Option<u32>,
+}
+
+/// The `[user_real]` section: how far a user/real pair may disagree.
+#[derive(Debug, Default, Deserialize)]
+pub(crate) struct UserRealRow {
+    pub relative_tolerance: Option<f64>,
+    pub absolute_tolerance: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -27,7 +27,7 @@ pub mod validate;
 #[cfg(test)]
 mod tests;
 
-pub use check::{Noise, check_reply, is_reply_to};
+pub use check::{Noise, RealTolerance, check_reply, is_reply_to};
 pub use commands::{
     ArgProblem, ArgSpec, Choice, Example, Kind, ReplyShape, Smd4Command, Smd4CommandTable,
 };

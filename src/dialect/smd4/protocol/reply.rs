@@ -11,6 +11,7 @@ use nom::character::complete::{char, digit1, one_of};
 use nom::combinator::opt;
 use nom::{IResult, Parser};
 
+use super::check::RealTolerance;
 use super::commands::{ReplyShape, Smd4Command, Smd4CommandTable};
 use super::errors::{DeviceError, ErrorCode};
 use super::flags::{Eflags, Sflags};
@@ -85,6 +86,8 @@ pub struct Expectation {
     pub(super) fixed_point: bool,
     /// The data item may be missing (`reply_optional`).
     pub(super) optional: bool,
+    /// How far a user/real pair may disagree; `None` leaves the pair unchecked.
+    pub(super) real_tolerance: Option<RealTolerance>,
 }
 
 impl Expectation {
@@ -100,6 +103,7 @@ impl Expectation {
             value: spec.value_item_type(),
             fixed_point: spec.fixed_point,
             optional: spec.reply_optional,
+            real_tolerance: spec.real_tolerance,
         }
     }
 

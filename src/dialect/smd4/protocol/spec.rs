@@ -5,6 +5,7 @@ use std::net::Ipv4Addr;
 use std::sync::OnceLock;
 use std::time::Duration;
 
+use super::check::RealTolerance;
 use super::commands::Smd4CommandTable;
 use super::errors::ErrorInfo;
 use super::flags::FlagTable;
@@ -77,14 +78,20 @@ impl Smd4Spec {
                 .map(|t| t.parse().map_err(|_| format!("bad IPv4 address '{t}'")))
                 .unwrap_or(Ok(fallback))
         };
-        let commands = Smd4CommandTable::from_rows(&file.command)?;
+        let mut commands = Smd4CommandTable::from_rows(&file.command)?;
+        let float_digits = file.snapshot.float_digits.unwrap_or(5);
+        commands.set_real_tolerance(RealTolerance::from_data(
+            file.user_real.relative_tolerance,
+            file.user_real.absolute_tolerance,
+            float_digits,
+        )?);
         let rules = file.snapshot.rules.clone();
         rules.check_names(|name| commands.get(name).is_some_and(|c| c.mnemonic == name))?;
         Ok(Smd4Spec {
             snapshot: SnapshotSpec {
                 rules,
                 needs_standby: file.snapshot.needs_standby,
-                float_digits: file.snapshot.float_digits.unwrap_or(5),
+                float_digits,
             },
             commands,
             sflags: FlagTable::from_rows("sflag", &file.sflag)?,

@@ -6,7 +6,7 @@ use std::path::Path;
 use clap::{ArgMatches, Args, Command, FromArgMatches};
 
 use crate::dialect::SimFlags;
-use crate::dialect::smd4::protocol::{ErrorSpelling, FlagCase, FloatStyle, PrefixStyle};
+use crate::dialect::smd4::protocol::{ErrorSpelling, FlagCase, FloatStyle, PrefixStyle, Smd4Spec};
 use crate::sim::Device;
 
 use super::{PositionFormat, PrefixAcceptance, Smd4Sim, Smd4SimOptions};
@@ -45,8 +45,9 @@ pub struct QuirkFlags {
     pub tzw_reply_ms: bool,
     /// Put the real value of user/real pairs (VMAX, AMAX, VSTART …) on a grid of STEP Hz or Hz/s
     /// (the conversion is undocumented; 0.0027939677238464355 = 12 MHz/2^24/256 reproduces the
-    /// VSTOP example). Without it the real value echoes the user value.
-    #[arg(long, value_name = "STEP", value_parser = positive)]
+    /// VSTOP example). Without it the real value echoes the user value. At most 1, so each pair
+    /// stays within the 0.5 the reply check allows ([user_real] in data/smd4.toml).
+    #[arg(long, value_name = "STEP", value_parser = grid_step)]
     pub real_value_grid: Option<f64>,
     /// Answer SYS:FLAGS without the trailing item `1` only its example shows (the document
     /// declares no return for it).
@@ -59,6 +60,24 @@ fn positive(text: &str) -> Result<f64, String> {
         .ok()
         .filter(|x| x.is_finite() && *x > 0.0)
         .ok_or_else(|| format!("'{text}' is not a positive number"))
+}
+
+/// A grid step whose real values the reply check admits: half a step off at most, so at most
+/// twice the data's absolute user/real tolerance.
+fn grid_step(text: &str) -> Result<f64, String> {
+    let step = positive(text)?;
+    let widest = Smd4Spec::builtin()
+        .commands
+        .iter()
+        .find_map(|c| c.real_tolerance)
+        .map_or(f64::INFINITY, |t| 2.0 * t.absolute);
+    if step > widest {
+        return Err(format!(
+            "a step of {step} puts real values further from the user value than a drive's \
+             resolution (at most {widest})"
+        ));
+    }
+    Ok(step)
 }
 
 impl QuirkFlags {

@@ -422,3 +422,68 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn user_and_real_values_that_agree_pass() {
+    // The document's pairs: the widest is THIGH's 500 -> 504 (0.8 %).
+    passes("MOTOR:THIGH", ",5.0000E+02,5.0400E+02");
+    passes("MOTOR:AMAX", ",1.5000E+02,1.4988E+02");
+    passes("MOTOR:VSTOP", ",1.0000+01,9.9996+00");
+    passes("MOTOR:VSTART", ",0.0000+00,0.0000+00");
+    // Near zero the absolute part (0.5 Hz) rules.
+    passes("MOTOR:VSTART", ",1.0000E+00,1.4000E+00");
+}
+
+#[test]
+fn user_and_real_values_that_disagree_are_noise() {
+    // A corrupted leading digit or exponent: far beyond any clock divider's rounding.
+    for data in [
+        ",1.5000E+02,2.4988E+02",
+        ",1.5000E+02,1.4988E+03",
+        ",1.0000E+03,1.1000E+03",
+        ",1.0000E+00,2.0000E+00",
+    ] {
+        assert_eq!(
+            noise("MOTOR:AMAX", data),
+            Noise::Disagree {
+                user: data[1..11].to_string(),
+                real: data[12..].to_string(),
+            },
+            "{data}"
+        );
+    }
+    assert_eq!(
+        noise("MOTOR:VMAX", ",1.0000E+03,9.0000E+02").to_string(),
+        "user value 1.0000E+03 and real value 9.0000E+02 disagree beyond the drive's resolution"
+    );
+}
+
+#[test]
+fn real_values_on_the_widest_grid_the_simulator_takes_pass() {
+    let tolerance = Smd4Spec::builtin()
+        .commands
+        .get("MOTOR:VMAX")
+        .and_then(|c| c.real_tolerance)
+        .expect("user/real commands carry the data's tolerance");
+    let step = 2.0 * tolerance.absolute;
+    for user in [0.0, 1.0, 1.5, 2.5, 7.49, 100.0, 149.5, 700.0, 15000.0] {
+        let real = (user / step).round() * step;
+        let line = format!(
+            "0x0888,0x0000,{},{}",
+            format_float(user, FloatStyle::default()),
+            format_float(real, FloatStyle::default())
+        );
+        assert_eq!(check("MOTOR:VMAX", &line), Ok(()), "{line}");
+    }
+}
+
+#[test]
+fn without_a_tolerance_in_the_data_pairs_are_not_compared() {
+    let text = crate::dialect::smd4::protocol::spec::BUILTIN_TOML
+        .replace("relative_tolerance = 0.01\n", "")
+        .replace("absolute_tolerance = 0.5\n", "");
+    let spec = Smd4Spec::from_toml(&text).unwrap();
+    let expect = Expectation::for_command(spec.commands.get("MOTOR:VMAX").unwrap());
+    let reply = parse_reply("0x0888,0x0000,1.0000E+03,9.0000E+02", &expect).unwrap();
+    assert_eq!(check_reply(&reply, &expect, None), Ok(()));
+}
