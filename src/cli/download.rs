@@ -6,10 +6,10 @@ use std::path::{Path, PathBuf};
 
 use crate::dialect::tmcl::asm::load_program;
 use crate::dialect::tmcl::profile::catalogue;
-use crate::dialect::tmcl::program::download::{download_and_run, load};
+use crate::dialect::tmcl::program::download::download_and_run;
 use crate::dialect::{Configured, Purpose, tmcl};
 use crate::exit::{Exit, Failure};
-use crate::session::interrupt;
+use crate::session::{SessionError, interrupt};
 
 use super::connection::{Audience, ModuleArgs};
 
@@ -46,8 +46,11 @@ pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Res
     // Checked against the module identified (its own command set: EI, VECT … where it has
     // them), not the default profile; a given --profile is what identification settled on.
     let profile = tmcl.profile().clone();
-    let result =
-        load(&args.file, &profile).and_then(|program| download_and_run(tmcl, &program, args.run));
+    // The bytes read and checked above, not the file read again.
+    let name = args.file.display().to_string();
+    let result = load_program(&bytes, &name, &profile)
+        .map_err(|e| SessionError::Failed(Failure::refused(e.to_string())))
+        .and_then(|program| download_and_run(tmcl, &program, args.run));
     for notice in session.take_notices() {
         super::diagnose(&notice);
     }
