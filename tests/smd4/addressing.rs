@@ -114,6 +114,9 @@ fn addressing_mode_ignores_unprefixed_packets_until_the_drive_restarts() {
             "the message says why: {err}"
         );
 
+        // An addressed request answered proves the drive has read everything before it on the
+        // line, the probes included: the console's power-cycle must not overtake them.
+        assert_exit(&drive.run(&["--address", "1", "-c", "SYS:FW"]), 0);
         assert_eq!(
             drive.console("power-cycle"),
             "powered up from the stored configuration"
