@@ -325,7 +325,7 @@ pub(super) fn run(
     };
     // Its `help` names only the commands of the simulator it drives.
     let help = console::help([args.protocol.console_help]);
-    let mut console = Console::new(device, clock, manual, help);
+    let mut console = Console::new(device, clock, manual, help).with_line(server.line());
     if listener.is_none() {
         console = console.with_unplug(server.unplug_handle());
     }

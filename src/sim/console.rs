@@ -5,6 +5,7 @@
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
+use super::Device;
 use super::inprocess::SharedDevice;
 use crate::clock::{Clock, ManualClock};
 
@@ -81,6 +82,15 @@ impl Unplug {
     }
 }
 
+/// The line a console command must not overtake. The console reads stdin on its own thread while
+/// the server reads the line on another, so a command (`quit`, `power-cycle`) could act before
+/// bytes a client wrote earlier had been read; every command first hands the device whatever the
+/// line has readable now, under the device's lock, as the server does with what it reads.
+pub trait Line: Send + Sync {
+    /// Hands `device` the bytes waiting on the line, without waiting for more.
+    fn catch_up(&self, device: &mut dyn Device, now: Duration);
+}
+
 /// A console attached to a device and its clock.
 pub struct Console {
     device: SharedDevice,
@@ -90,6 +100,8 @@ pub struct Console {
     help: String,
     /// Where `unplug` goes: the pty server's (none on TCP).
     unplug: Option<Arc<Unplug>>,
+    /// The line served, whose waiting bytes go to the device before each command.
+    line: Option<Arc<dyn Line>>,
 }
 
 impl Console {
@@ -107,6 +119,7 @@ impl Console {
             manual,
             help,
             unplug: None,
+            line: None,
         }
     }
 
@@ -116,8 +129,18 @@ impl Console {
         self
     }
 
-    /// Runs one line.
+    /// Orders each command after what a client already wrote on `line`.
+    pub fn with_line(mut self, line: Arc<dyn Line>) -> Self {
+        self.line = Some(line);
+        self
+    }
+
+    /// Runs one line, after the bytes already waiting on the line have reached the device.
     pub fn run(&self, line: &str) -> Answer {
+        let mut device = self.device.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(served) = &self.line {
+            served.catch_up(&mut *device, self.clock.now());
+        }
         let words: Vec<&str> = line.split_whitespace().collect();
         match words.as_slice() {
             [] => Answer::Ok(String::new()),
@@ -147,7 +170,6 @@ impl Console {
             },
             _ => {
                 let now = self.clock.now();
-                let mut device = self.device.lock().unwrap_or_else(|e| e.into_inner());
                 match device.control(now, line.trim()) {
                     Some(Ok(text)) => Answer::Ok(text),
                     Some(Err(text)) => Answer::Error(text),

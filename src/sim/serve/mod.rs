@@ -5,19 +5,18 @@
 mod pty;
 mod tcp;
 
+use std::fs::File;
 use std::io::{self, Read, Write};
 use std::os::fd::{AsFd, BorrowedFd};
 use std::os::unix::net::UnixStream;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use nix::errno::Errno;
-use nix::poll::{PollFd, PollFlags};
-#[cfg(not(any(target_os = "linux", target_os = "android")))]
-use nix::poll::{PollTimeout, poll};
+use nix::poll::{PollFd, PollFlags, PollTimeout, poll};
 
 use super::Device;
-use super::console::Unplug;
+use super::console::{Line, Unplug};
 use super::inprocess::SharedDevice;
 use crate::clock::Clock;
 
@@ -90,6 +89,43 @@ enum End {
     Unplugged(Duration),
 }
 
+/// The connection being served, as the console reaches it: a second descriptor of the same
+/// stream. The server reads and hands over under the device's lock, and so does the console, so
+/// every byte reaches the device in the order the client wrote it, before or after a command.
+#[derive(Debug, Default)]
+struct Served(Mutex<Option<File>>);
+
+impl Served {
+    fn set(&self, port: Option<&dyn Port>) {
+        let copy = port.and_then(|p| p.as_fd().try_clone_to_owned().ok());
+        *self.0.lock().unwrap_or_else(|e| e.into_inner()) = copy.map(File::from);
+    }
+}
+
+impl Line for Served {
+    fn catch_up(&self, device: &mut dyn Device, now: Duration) {
+        let served = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        let Some(mut port) = served.as_ref() else {
+            return;
+        };
+        let mut buf = [0u8; 4096];
+        while let Some(Ok(n @ 1..)) = read_now(&mut port, &mut buf) {
+            device.receive(now, &buf[..n]);
+        }
+    }
+}
+
+/// Reads what `port` has readable now, never waiting: `None` when nothing is (the other reader,
+/// server or console, took it first; a blocking TCP stream must then not be read).
+fn read_now(port: &mut (impl Read + AsFd + ?Sized), buf: &mut [u8]) -> Option<io::Result<usize>> {
+    let mut fds = [PollFd::new(port.as_fd(), PollFlags::POLLIN)];
+    let ready = poll(&mut fds, PollTimeout::ZERO).is_ok_and(|n| n > 0)
+        && fds[0].revents().is_some_and(|r| {
+            r.intersects(PollFlags::POLLIN | PollFlags::POLLHUP | PollFlags::POLLERR)
+        });
+    ready.then(|| port.read(buf))
+}
+
 /// A device, its clock and the means to serve it.
 pub struct Server {
     device: SharedDevice,
@@ -98,6 +134,8 @@ pub struct Server {
     log: Box<dyn FnMut(&str) + Send>,
     /// An `unplug` from the console, acted on by the pty server.
     unplug: Arc<Unplug>,
+    /// The connection being served, for the console.
+    served: Arc<Served>,
 }
 
 /// A byte stream that can be polled.
@@ -118,7 +156,13 @@ impl Server {
             wake,
             log,
             unplug: Arc::default(),
+            served: Arc::default(),
         }
+    }
+
+    /// Where the console reads what a client wrote before its command (see [`Line`]).
+    pub fn line(&self) -> Arc<dyn Line> {
+        self.served.clone()
     }
 
     /// Where the console's `unplug` reaches this server.
@@ -126,10 +170,11 @@ impl Server {
         self.unplug.clone()
     }
 
+    /// `f` on the device, with the time read under its lock (so it never goes backwards between
+    /// the server's and the console's calls).
     fn with_device<R>(&self, f: impl FnOnce(&mut dyn Device, Duration) -> R) -> R {
-        let now = self.clock.now();
         let mut device = self.device.lock().unwrap_or_else(|e| e.into_inner());
-        f(&mut *device, now)
+        f(&mut *device, self.clock.now())
     }
 
     /// A new connection: the device may talk again and stale output is dropped.
@@ -141,8 +186,16 @@ impl Server {
         });
     }
 
-    /// Moves bytes between `port` and the device until the connection ends.
+    /// Moves bytes between `port` and the device until the connection ends; the console reaches
+    /// the port meanwhile.
     fn pump(&mut self, port: &mut dyn Port, extra: Option<BorrowedFd>) -> io::Result<End> {
+        self.served.set(Some(&*port));
+        let end = self.pump_served(port, extra);
+        self.served.set(None);
+        end
+    }
+
+    fn pump_served(&mut self, port: &mut dyn Port, extra: Option<BorrowedFd>) -> io::Result<End> {
         precise_timers();
         let mut out = Vec::new();
         let mut buf = [0u8; 4096];
@@ -208,15 +261,23 @@ impl Server {
                 self.wake.drain();
             }
             if port_ready {
-                match port.read(&mut buf) {
-                    Ok(0) => return Ok(End::Closed),
-                    Ok(n) => self.with_device(|device, now| device.receive(now, &buf[..n])),
-                    Err(e)
+                // Read under the device's lock, as the console catches up (see `Served`).
+                let read = self.with_device(|device, now| {
+                    let read = read_now(port, &mut buf);
+                    if let Some(Ok(n @ 1..)) = read {
+                        device.receive(now, &buf[..n]);
+                    }
+                    read
+                });
+                match read {
+                    None | Some(Ok(1..)) => {}
+                    Some(Ok(0)) => return Ok(End::Closed),
+                    Some(Err(e))
                         if matches!(
                             e.kind(),
                             io::ErrorKind::WouldBlock | io::ErrorKind::Interrupted
                         ) => {}
-                    Err(_) => return Ok(End::Closed),
+                    Some(Err(_)) => return Ok(End::Closed),
                 }
             }
             if extra_ready {
@@ -259,6 +320,42 @@ fn precise_timers() {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A device that keeps what it receives.
+    #[derive(Default)]
+    struct Heard(Vec<u8>);
+
+    impl Device for Heard {
+        fn receive(&mut self, _: Duration, bytes: &[u8]) {
+            self.0.extend_from_slice(bytes);
+        }
+        fn poll_output(&mut self, _: Duration, _: &mut Vec<u8>) {}
+        fn next_due(&self, _: Duration) -> Option<Duration> {
+            None
+        }
+    }
+
+    #[test]
+    fn the_console_catches_up_with_what_the_client_wrote_without_waiting() {
+        let (mut client, port) = UnixStream::pair().unwrap();
+        let served = Served::default();
+        let mut device = Heard::default();
+        served.catch_up(&mut device, Duration::ZERO);
+        assert!(device.0.is_empty(), "no connection, nothing to read");
+        served.set(Some(&port));
+        served.catch_up(&mut device, Duration::ZERO);
+        assert!(
+            device.0.is_empty(),
+            "nothing written: no wait on a blocking stream"
+        );
+        client.write_all(b"SYS:FW\n").unwrap();
+        served.catch_up(&mut device, Duration::ZERO);
+        assert_eq!(device.0, b"SYS:FW\n");
+        served.set(None);
+        client.write_all(b"later").unwrap();
+        served.catch_up(&mut device, Duration::ZERO);
+        assert_eq!(device.0, b"SYS:FW\n", "the connection ended");
+    }
 
     #[test]
     fn the_waker_is_polled_until_every_waker_is_gone() {
