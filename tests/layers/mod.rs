@@ -2,6 +2,7 @@
 //! uses only modules of lower layers, the dialect folders never use each other, and outside them
 //! only the list of dialects and the subcommands of one dialect name one.
 
+mod circles;
 mod paths;
 
 use std::collections::BTreeMap;

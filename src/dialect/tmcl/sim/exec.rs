@@ -130,7 +130,9 @@ impl Machine {
                 self.set_coordinate(m, i.type_, counter)?;
             }
             // Only a division by zero fails here: the keyword was checked before.
-            Opcode::Calc | Opcode::Calcx => self.calculate(i).map_err(|_| Status::InvalidValue)?,
+            Opcode::Calc | Opcode::Calcx => {
+                self.vm.calculate(i).map_err(|_| Status::InvalidValue)?
+            }
             Opcode::Gco => return Ok(self.coords[m as usize][i.type_ as usize]),
             _ => return Err(Status::InvalidCommand),
         }

@@ -14,70 +14,16 @@
 //! limit switch stops its motor (reaching the switch taken as the rising edge); a switch passed
 //! with its limit disabled, or left again, raises nothing.
 
-use std::cmp::Ordering;
-
 use crate::dialect::tmcl::profile::family::{ALL_INTERRUPTS, InterruptKind};
 use crate::dialect::tmcl::protocol::Instruction;
 
 use super::machine::Machine;
 use super::motion::Switch;
 use super::params::Slot;
-use super::vm::{ProgramError, Wait};
+use super::vm::{Context, ProgramError, jump_target};
 
 /// The global parameter bank of the interrupt configuration.
 const CONFIG_BANK: u8 = 3;
-
-/// The program's state an interrupt saves and RETI restores.
-#[derive(Debug, Clone)]
-pub(super) struct Context {
-    /// Where the program goes on.
-    pc: i32,
-    acc: i32,
-    x: i32,
-    compared: Option<Ordering>,
-    timeout_flag: bool,
-    wait: Option<Wait>,
-}
-
-/// Vectors, switches and what is pending.
-#[derive(Debug, Clone)]
-pub(super) struct Interrupts {
-    vectors: Box<[Option<i32>; 256]>,
-    enabled: Box<[bool; 256]>,
-    global: bool,
-    pending: Box<[bool; 256]>,
-    /// The next tick of each timer, by interrupt number, while its period is set.
-    timers: Vec<(u8, f64)>,
-    /// The interrupted program, while a handler runs.
-    pub(super) saved: Option<Context>,
-}
-
-impl Interrupts {
-    /// No vectors, all off (power-up, program reset).
-    pub(super) fn new() -> Interrupts {
-        Interrupts {
-            vectors: Box::new([None; 256]),
-            enabled: Box::new([false; 256]),
-            global: false,
-            pending: Box::new([false; 256]),
-            timers: Vec::new(),
-            saved: None,
-        }
-    }
-
-    /// When the next timer ticks.
-    pub(super) fn next_tick(&self) -> Option<f64> {
-        self.timers.iter().map(|&(_, at)| at).min_by(f64::total_cmp)
-    }
-
-    fn ready(&self) -> Option<u8> {
-        if !self.global || self.saved.is_some() {
-            return None;
-        }
-        (0..=u8::MAX)
-            .find(|&n| self.pending[usize::from(n)] && self.vectors[usize::from(n)].is_some())
-    }
-}
 
 impl Machine {
     /// EI, DI, VECT, RETI in a program; `next_pc` is where the program would go on.
@@ -106,7 +52,7 @@ impl Machine {
                 if !known(i.type_) {
                     return Err(ProgramError::InvalidInstruction);
                 }
-                let target = self.jump_target(i.value)?;
+                let target = jump_target(&self.program, i.value)?;
                 self.vm.interrupts.vectors[usize::from(i.type_)] = Some(target);
             }
             _ => {

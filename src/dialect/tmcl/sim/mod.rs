@@ -12,6 +12,7 @@ mod bus;
 pub mod can;
 mod control;
 mod control_cmd;
+mod events;
 mod exec;
 #[cfg(feature = "cli")]
 pub mod flags;
@@ -26,6 +27,7 @@ mod outcome;
 mod params;
 mod program;
 mod ramp;
+mod runner;
 mod state;
 mod vm;
 
