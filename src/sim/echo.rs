@@ -29,6 +29,8 @@ impl<D: Device> AdapterEcho<D> {
 }
 
 impl<D: Device> Device for AdapterEcho<D> {
+    pass_on!(inner: hung_up, byte_time, control);
+
     fn receive(&mut self, now: Duration, bytes: &[u8]) {
         // What the device sent before these bytes goes back before their echo.
         self.inner.poll_output(now, &mut self.out);
@@ -49,21 +51,9 @@ impl<D: Device> Device for AdapterEcho<D> {
         }
     }
 
-    fn hung_up(&self) -> bool {
-        self.inner.hung_up()
-    }
-
     fn reconnect(&mut self) {
         self.out.clear();
         self.inner.reconnect();
-    }
-
-    fn byte_time(&mut self, time: Duration) {
-        self.inner.byte_time(time);
-    }
-
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
-        self.inner.control(now, command)
     }
 }
 

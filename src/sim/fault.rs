@@ -190,6 +190,8 @@ impl<D: Device> Faulty<D> {
 }
 
 impl<D: Device> Device for Faulty<D> {
+    pass_on!(inner: byte_time);
+
     fn receive(&mut self, now: Duration, bytes: &[u8]) {
         if self.hung {
             return;
@@ -234,10 +236,6 @@ impl<D: Device> Device for Faulty<D> {
         self.delivered = 0;
         self.queue.clear();
         self.inner.reconnect();
-    }
-
-    fn byte_time(&mut self, time: Duration) {
-        self.inner.byte_time(time);
     }
 
     fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {

@@ -47,6 +47,8 @@ impl<D: Device> Latency<D> {
 }
 
 impl<D: Device> Device for Latency<D> {
+    pass_on!(inner: hung_up, byte_time, control);
+
     fn receive(&mut self, now: Duration, bytes: &[u8]) {
         self.collect(now);
         self.inner.receive(now, bytes);
@@ -76,22 +78,10 @@ impl<D: Device> Device for Latency<D> {
             .min()
     }
 
-    fn hung_up(&self) -> bool {
-        self.inner.hung_up()
-    }
-
     fn reconnect(&mut self) {
         self.held.clear();
         self.since = None;
         self.inner.reconnect();
-    }
-
-    fn byte_time(&mut self, time: Duration) {
-        self.inner.byte_time(time);
-    }
-
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
-        self.inner.control(now, command)
     }
 }
 

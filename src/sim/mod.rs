@@ -6,6 +6,33 @@
 //! [`crate::link::Link`]; decorators add line pacing, an adapter that echoes, an adapter's latency
 //! timer and fault injection to any device.
 
+/// The [`Device`] methods a decorator passes on unchanged to the device it wraps (in `$inner`),
+/// written once rather than in every decorator.
+macro_rules! pass_on {
+    ($inner:ident: $($method:ident),+) => {
+        $(pass_on!(@ $inner $method);)+
+    };
+    (@ $inner:ident hung_up) => {
+        fn hung_up(&self) -> bool {
+            self.$inner.hung_up()
+        }
+    };
+    (@ $inner:ident byte_time) => {
+        fn byte_time(&mut self, time: std::time::Duration) {
+            self.$inner.byte_time(time)
+        }
+    };
+    (@ $inner:ident control) => {
+        fn control(
+            &mut self,
+            now: std::time::Duration,
+            command: &str,
+        ) -> Option<Result<String, String>> {
+            self.$inner.control(now, command)
+        }
+    };
+}
+
 mod builtin;
 pub mod console;
 pub mod echo;

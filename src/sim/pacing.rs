@@ -108,6 +108,8 @@ impl<D: Device> Paced<D> {
 }
 
 impl<D: Device> Device for Paced<D> {
+    pass_on!(inner: hung_up);
+
     fn receive(&mut self, now: Duration, bytes: &[u8]) {
         let start = self.in_free.max(now);
         for (i, &byte) in bytes.iter().enumerate() {
@@ -138,10 +140,6 @@ impl<D: Device> Device for Paced<D> {
         .into_iter()
         .flatten()
         .min()
-    }
-
-    fn hung_up(&self) -> bool {
-        self.inner.hung_up()
     }
 
     fn reconnect(&mut self) {

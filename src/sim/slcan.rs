@@ -181,18 +181,10 @@ impl Device for SlcanAdapter {
         }
     }
 
-    fn hung_up(&self) -> bool {
-        self.bus.hung_up()
-    }
-
     fn reconnect(&mut self) {
         self.open = false;
         self.decoder = Decoder::default();
         self.bus.reconnect()
-    }
-
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
-        self.bus.control(now, command)
     }
 }
 

@@ -136,11 +136,6 @@ impl Bus {
         Bus::new(Profile::builtin(), BusOptions::default())
     }
 
-    /// Factory addresses of the modules, in bus order.
-    pub fn slots(&self) -> Vec<u8> {
-        self.modules.iter().map(|m| m.machine.slot).collect()
-    }
-
     fn module(&mut self, slot: u8) -> Result<&mut Module, String> {
         let slots = self.slots();
         self.modules
@@ -202,32 +197,6 @@ impl Bus {
         }
     }
 
-    /// Power-cycles the module at factory address `slot`, or every module: RAM back to the
-    /// stored values, motors standing, program stopped, the interface in the mode GP 67 bit 0
-    /// says (binary unless set otherwise).
-    pub fn reset(&mut self, now: Duration, slot: Option<u8>) -> Result<String, String> {
-        self.advance(now);
-        if let Some(slot) = slot {
-            self.module(slot)?;
-        }
-        let t = secs(now);
-        let mut told = Vec::new();
-        for module in &mut self.modules {
-            if slot.is_some_and(|s| s != module.machine.slot) {
-                continue;
-            }
-            module.machine.boot(t);
-            module.power_up();
-            let mode = if module.is_ascii() { "ASCII" } else { "binary" };
-            told.push(format!(
-                "module {} restarted in {mode} mode",
-                module.machine.slot
-            ));
-        }
-        self.save_if_changed(false);
-        Ok(told.join("; "))
-    }
-
     /// Saves the EEPROM image when a module's EEPROM changed (or when `force`d at start).
     fn save_if_changed(&mut self, force: bool) {
         let changed = self.modules.iter().any(|m| m.machine.eeprom_changed);
@@ -249,78 +218,9 @@ impl Bus {
         }
     }
 
-    /// Sets a digital input of a module.
-    pub fn set_input(
-        &mut self,
-        now: Duration,
-        slot: u8,
-        port: u8,
-        high: bool,
-    ) -> Result<(), String> {
-        self.advance(now);
-        self.module(slot)?.machine.set_input(port, high)
-    }
-
-    /// Sets an analog input of a module (0..adc_max).
-    pub fn set_analog(
-        &mut self,
-        now: Duration,
-        slot: u8,
-        port: u8,
-        value: i32,
-    ) -> Result<(), String> {
-        self.advance(now);
-        self.module(slot)?.machine.io.set_analog(port, value)
-    }
-
-    /// Moves (or with `None` disconnects) a virtual switch of a motor of a module, in physical
-    /// microsteps.
-    pub fn set_switch(
-        &mut self,
-        now: Duration,
-        slot: u8,
-        motor: u8,
-        which: Switch,
-        position: Option<i64>,
-    ) -> Result<(), String> {
-        self.advance(now);
-        let machine = &mut self.module(slot)?.machine;
-        let (module, count) = (machine.profile.module.clone(), machine.axes.len());
-        let axis = machine.axes.get_mut(usize::from(motor)).ok_or_else(|| {
-            format!(
-                "the {module} has no motor {motor} (motors 0..{})",
-                count - 1
-            )
-        })?;
-        axis.switches.set(which, position);
-        axis.settle(secs(now));
-        Ok(())
-    }
-
-    /// The state of an output of a module at `now` (a running program may have set it).
-    pub fn output(&mut self, now: Duration, slot: u8, port: u8) -> Option<bool> {
-        self.advance(now);
-        self.module(slot).ok()?.machine.io.output(port)
-    }
-
     /// What motor 0 of a module is doing at `now`.
     pub fn motor(&mut self, now: Duration, slot: u8) -> Option<MotorState> {
         self.motor_of(now, slot, 0)
-    }
-
-    /// What a motor of a module is doing at `now` (`None`: no such module or motor).
-    pub fn motor_of(&mut self, now: Duration, slot: u8, motor: u8) -> Option<MotorState> {
-        self.advance(now);
-        let t = secs(now);
-        let machine = &self.module(slot).ok()?.machine;
-        let axis = machine.axes.get(usize::from(motor))?;
-        Some(MotorState {
-            position: axis.counter(t),
-            target: machine.role(motor, machine.roles.target_position),
-            velocity: axis.state(t).v,
-            target_reached: machine.target_reached(motor, t),
-            searching: axis.search_status() != 0,
-        })
     }
 
     /// The EEPROM image of each module, in bus order.
@@ -375,22 +275,47 @@ impl Device for Bus {
 }
 
 impl Controlled for Bus {
+    /// Factory addresses of the modules, in bus order.
     fn slots(&self) -> Vec<u8> {
-        Bus::slots(self)
+        self.modules.iter().map(|m| m.machine.slot).collect()
     }
-
+    /// Power-cycles the module at factory address `slot`, or every module: RAM back to the
+    /// stored values, motors standing, program stopped, the interface in the mode GP 67 bit 0
+    /// says (binary unless set otherwise).
     fn reset(&mut self, now: Duration, slot: Option<u8>) -> Result<String, String> {
-        Bus::reset(self, now, slot)
+        self.advance(now);
+        if let Some(slot) = slot {
+            self.module(slot)?;
+        }
+        let t = secs(now);
+        let mut told = Vec::new();
+        for module in &mut self.modules {
+            if slot.is_some_and(|s| s != module.machine.slot) {
+                continue;
+            }
+            module.machine.boot(t);
+            module.power_up();
+            let mode = if module.is_ascii() { "ASCII" } else { "binary" };
+            told.push(format!(
+                "module {} restarted in {mode} mode",
+                module.machine.slot
+            ));
+        }
+        self.save_if_changed(false);
+        Ok(told.join("; "))
     }
-
+    /// Sets a digital input of a module.
     fn set_input(&mut self, now: Duration, slot: u8, port: u8, high: bool) -> Result<(), String> {
-        Bus::set_input(self, now, slot, port, high)
+        self.advance(now);
+        self.module(slot)?.machine.set_input(port, high)
     }
-
+    /// Sets an analog input of a module (0..adc_max).
     fn set_analog(&mut self, now: Duration, slot: u8, port: u8, value: i32) -> Result<(), String> {
-        Bus::set_analog(self, now, slot, port, value)
+        self.advance(now);
+        self.module(slot)?.machine.io.set_analog(port, value)
     }
-
+    /// Moves (or with `None` disconnects) a virtual switch of a motor of a module, in physical
+    /// microsteps.
     fn set_switch(
         &mut self,
         now: Duration,
@@ -399,14 +324,36 @@ impl Controlled for Bus {
         which: Switch,
         position: Option<i64>,
     ) -> Result<(), String> {
-        Bus::set_switch(self, now, slot, motor, which, position)
+        self.advance(now);
+        let machine = &mut self.module(slot)?.machine;
+        let (module, count) = (machine.profile.module.clone(), machine.axes.len());
+        let axis = machine.axes.get_mut(usize::from(motor)).ok_or_else(|| {
+            format!(
+                "the {module} has no motor {motor} (motors 0..{})",
+                count - 1
+            )
+        })?;
+        axis.switches.set(which, position);
+        axis.settle(secs(now));
+        Ok(())
     }
-
+    /// The state of an output of a module at `now` (a running program may have set it).
     fn output(&mut self, now: Duration, slot: u8, port: u8) -> Option<bool> {
-        Bus::output(self, now, slot, port)
+        self.advance(now);
+        self.module(slot).ok()?.machine.io.output(port)
     }
-
+    /// What a motor of a module is doing at `now` (`None`: no such module or motor).
     fn motor_of(&mut self, now: Duration, slot: u8, motor: u8) -> Option<MotorState> {
-        Bus::motor_of(self, now, slot, motor)
+        self.advance(now);
+        let t = secs(now);
+        let machine = &self.module(slot).ok()?.machine;
+        let axis = machine.axes.get(usize::from(motor))?;
+        Some(MotorState {
+            position: axis.counter(t),
+            target: machine.role(motor, machine.roles.target_position),
+            velocity: axis.state(t).v,
+            target_reached: machine.target_reached(motor, t),
+            searching: axis.search_status() != 0,
+        })
     }
 }

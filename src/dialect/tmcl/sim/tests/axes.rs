@@ -4,6 +4,7 @@
 
 use crate::dialect::tmcl::profile::catalogue;
 use crate::dialect::tmcl::protocol::Status;
+use crate::dialect::tmcl::sim::control_cmd::Controlled;
 use crate::dialect::tmcl::sim::{Bus, BusOptions, Switch, Switches};
 
 use super::Sim;

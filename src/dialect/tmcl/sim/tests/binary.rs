@@ -4,6 +4,7 @@ use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::profile::commands::{CommandSpec, OperandKind};
 use crate::dialect::tmcl::protocol::frame::decode_version_string;
 use crate::dialect::tmcl::protocol::{CommandFrame, Instruction, ReplyFrame, Status};
+use crate::dialect::tmcl::sim::control_cmd::Controlled;
 
 use crate::sim::Device;
 

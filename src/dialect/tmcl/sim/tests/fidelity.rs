@@ -3,6 +3,7 @@
 //! profile as a simulated module, GP 67 only where there is an ASCII interface.
 
 use crate::dialect::tmcl::protocol::Status;
+use crate::dialect::tmcl::sim::control_cmd::Controlled;
 
 use super::Sim;
 

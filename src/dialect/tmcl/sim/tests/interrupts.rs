@@ -2,6 +2,7 @@
 //! manual clock; the program's context saved and restored around the handler.
 
 use super::Sim;
+use crate::dialect::tmcl::sim::control_cmd::Controlled;
 
 const GAP: u8 = 6;
 const SGP: u8 = 9;

@@ -1,6 +1,7 @@
 //! Motion through the command interface: trapezoid timing, velocity ramps, units, limit
 //! switches, reference search, encoder.
 
+use crate::dialect::tmcl::sim::control_cmd::Controlled;
 use crate::dialect::tmcl::sim::{BusOptions, Switch, Switches};
 
 use super::Sim;
