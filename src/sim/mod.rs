@@ -40,6 +40,7 @@ pub mod fault;
 pub mod inprocess;
 pub mod latency;
 pub mod pacing;
+pub mod ramp;
 #[cfg(unix)]
 pub mod serve;
 pub mod slcan;

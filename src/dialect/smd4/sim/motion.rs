@@ -3,6 +3,8 @@
 //! any time is exact. A motion is a list of phases of constant acceleration; the motor rests at
 //! the end of the last one.
 
+use crate::sim::ramp::trapezoid;
+
 /// The ramp settings a plan uses (Hz, Hz/s, s): the drive's motion profile.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ramp {
@@ -354,30 +356,16 @@ impl Plan {
             }
             return self.arrive(target);
         }
-        let peak = if u0 > profile.vmax {
-            profile.vmax
-        } else {
-            let squared = (d + u0 * u0 / (2.0 * a) + ve * ve / (2.0 * b))
-                / (1.0 / (2.0 * a) + 1.0 / (2.0 * b));
-            squared.sqrt().min(profile.vmax)
-        };
-        if peak < ve {
+        let ramp = trapezoid(d, u0, ve, profile.vmax, a, b);
+        if ramp.peak < ve {
             // A move shorter than the ramp up to VSTOP: accelerate all the way, then stop.
             let v_end = (u0 * u0 + 2.0 * a * d).sqrt();
             self.push((v_end - u0) / a, direction * a, false);
             return self.arrive(target);
         }
-        let rate_up = if peak >= u0 { a } else { b };
-        let ramp_up = (peak * peak - u0 * u0).abs() / (2.0 * rate_up);
-        let ramp_down = (peak * peak - ve * ve) / (2.0 * b);
-        self.push(
-            (peak - u0).abs() / rate_up,
-            direction * (peak - u0).signum() * rate_up,
-            false,
-        );
-        let cruise = (d - ramp_up - ramp_down).max(0.0);
-        self.push(cruise / peak, 0.0, peak >= profile.vmax);
-        self.push((peak - ve) / b, -direction * b, false);
+        self.push(ramp.change_time, direction * ramp.change, false);
+        self.push(ramp.cruise_time, 0.0, ramp.peak >= profile.vmax);
+        self.push(ramp.stop_time, -direction * b, false);
         self.arrive(target);
     }
 

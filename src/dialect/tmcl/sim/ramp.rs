@@ -4,6 +4,8 @@
 //! Units: seconds, microsteps, microsteps per second (pps) and pps per second. A plan's last
 //! phase has no acceleration and lasts forever (standing still, or turning at constant speed).
 
+use crate::sim::ramp::trapezoid;
+
 /// A stretch of constant acceleration starting at `start` (seconds since power-up).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Phase {
@@ -127,10 +129,10 @@ impl Plan {
         b.finish(x_end, target)
     }
 
-    /// Moves from (`x0`, `v0`) to rest at `target` with at most `vmax` and `accel`: a trapezoid,
-    /// or a triangle when the distance is too short to reach `vmax`. A motor moving away from the
-    /// target, or too fast to stop in time, first brakes to a stop. Without speed the motor only
-    /// brakes and then stays where it is.
+    /// Moves from (`x0`, `v0`) to rest at `target` with at most `vmax` and `accel`: the shared
+    /// trapezoid, or a triangle when the distance is too short to reach `vmax`. A motor moving
+    /// away from the target, or too fast to stop in time, first brakes to a stop. Without speed
+    /// the motor only brakes and then stays where it is.
     pub(super) fn position(t: f64, x0: f64, v0: f64, target: f64, vmax: f64, accel: f64) -> Plan {
         let accel = if accel.is_finite() && accel > 0.0 {
             accel
@@ -148,23 +150,11 @@ impl Plan {
             let x = b.x;
             return b.finish(x, 0.0);
         }
-        let d = target - b.x;
-        let s = d.signum();
-        let mut u = b.v.abs();
-        if u > vmax {
-            b.push(-s * accel, (u - vmax) / accel);
-            u = vmax;
-        }
-        let distance = (target - b.x).abs();
-        let peak = vmax.min((accel * distance + 0.5 * u * u).sqrt());
-        let ramp_up = (peak * peak - u * u) / (2.0 * accel);
-        let ramp_down = peak * peak / (2.0 * accel);
-        let cruise = (distance - ramp_up - ramp_down).max(0.0);
-        b.push(s * accel, (peak - u) / accel);
-        if peak > 0.0 {
-            b.push(0.0, cruise / peak);
-        }
-        b.push(-s * accel, peak / accel);
+        let s = (target - b.x).signum();
+        let ramp = trapezoid((target - b.x).abs(), b.v.abs(), 0.0, vmax, accel, accel);
+        b.push(s * ramp.change, ramp.change_time);
+        b.push(0.0, ramp.cruise_time);
+        b.push(-s * accel, ramp.stop_time);
         b.finish(target, 0.0)
     }
 
