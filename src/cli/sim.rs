@@ -185,7 +185,7 @@ impl<const G: u8> Args for SimFlagGroup<G> {
 
 /// The console commands of every dialect's simulator.
 fn console_help() -> String {
-    console::help(DIALECTS.iter().map(|d| d.console_help))
+    console::help(DIALECTS.iter().map(|d| d.console))
 }
 
 fn slcan_ack(text: &str) -> Result<AckStyle, String> {
@@ -324,8 +324,8 @@ pub(super) fn run(
         None => None,
     };
     // Its `help` names only the commands of the simulator it drives.
-    let help = console::help([args.protocol.console_help]);
-    let mut console = Console::new(device, clock, manual, help).with_line(server.line());
+    let commands = args.protocol.console;
+    let mut console = Console::new(device, clock, manual, commands).with_line(server.line());
     if listener.is_none() {
         console = console.with_unplug(server.unplug_handle());
     }

@@ -76,9 +76,8 @@ pub struct Dialect {
     pub sim_flag_given: fn(&CommandLine) -> Option<&'static str>,
     /// The module its simulator stands for in messages (`TMCM-142`).
     pub simulated: &'static str,
-    /// The commands of its simulator's console, for `tmclsh sim --help`: a heading line, then
-    /// one two-space indented line per command.
-    pub console_help: &'static str,
+    /// The commands of its simulator's console, for `tmclsh sim --help` and the console's `help`.
+    pub console: &'static crate::sim::console::Section,
     /// The note that opens its sessions in a transcript written before transcripts had headers;
     /// a file with none of these notes is read as the default dialect's.
     pub legacy_note: Option<&'static str>,

@@ -12,29 +12,75 @@ use crate::clock::{Clock, ManualClock};
 /// What every console says before the commands of its simulator.
 const HELP_TITLE: &str = "Console commands (one per line on stdin; each is answered by one line, `ok ...` or `error: ...`):";
 
-/// The commands every simulator's console has (faults, time, quitting).
-const SHARED_HELP: &str = " Both:
-  drop RATE | corrupt RATE           drop or corrupt replies from now on (RATE 0..1)
-  delay RATE MS                      hold replies back by MS milliseconds
-  seed N                             restart the fault decisions from seed N (and the counts)
-  faults                             show the seed and the faults injected since it was set
-  silent on|off                      stop or resume answering (commands still execute)
-  hangup                             hang up the connection now
-  unplug SECS                        with --pty: the adapter goes away (the pty closes, the client
-                                     reads EOF or EIO) and comes back after SECS on a new pty, another
-                                     number, its path printed as `pty PATH` and behind --link; the
-                                     modules keep their state (only the adapter was unplugged)
-  advance DURATION                   with --manual-clock: let time pass (2s, 250ms, 1.5s; plain = ms)
-  time                               show the simulation time
-  quit                               end the simulator";
+/// The commands of one simulator's console (or of every console) under a heading: the table
+/// both `tmclsh sim --help` and the console's `help` read.
+#[derive(Debug, Clone, Copy)]
+pub struct Section {
+    /// Whose commands they are (`SMD4 drive (--protocol smd4)`).
+    pub heading: &'static str,
+    /// The commands in the order the help lists them, each its syntax (alternatives joined by
+    /// ` | `, the first word of each a name `help` lists) and what it does, in lines as
+    /// `tmclsh sim --help` shows them.
+    pub commands: &'static [(&'static str, &'static str)],
+}
 
-/// The console commands, for `tmclsh sim --help` and `help`: those of each simulator (a dialect's
-/// section: a heading line, then two-space indented commands), then those every console has.
-pub fn help<'a>(sections: impl IntoIterator<Item = &'a str>) -> String {
+/// The commands every simulator's console has (faults, time, quitting).
+const SHARED: Section = Section {
+    heading: "Both",
+    commands: &[
+        (
+            "drop RATE | corrupt RATE",
+            "drop or corrupt replies from now on (RATE 0..1)",
+        ),
+        ("delay RATE MS", "hold replies back by MS milliseconds"),
+        (
+            "seed N",
+            "restart the fault decisions from seed N (and the counts)",
+        ),
+        (
+            "faults",
+            "show the seed and the faults injected since it was set",
+        ),
+        (
+            "silent on|off",
+            "stop or resume answering (commands still execute)",
+        ),
+        ("hangup", "hang up the connection now"),
+        (
+            "unplug SECS",
+            "with --pty: the adapter goes away (the pty closes, the client\n\
+             reads EOF or EIO) and comes back after SECS on a new pty, another\n\
+             number, its path printed as `pty PATH` and behind --link; the\n\
+             modules keep their state (only the adapter was unplugged)",
+        ),
+        (
+            "advance DURATION",
+            "with --manual-clock: let time pass (2s, 250ms, 1.5s; plain = ms)",
+        ),
+        ("time", "show the simulation time"),
+        ("quit", "end the simulator"),
+    ],
+};
+
+/// The column a command's description starts at.
+const DOES_AT: usize = 37;
+
+/// The console commands, for `tmclsh sim --help`: those of each simulator's section, then those
+/// every console has, each section a heading line and one line per command (its description's
+/// further lines indented to its column).
+pub fn help<'a>(sections: impl IntoIterator<Item = &'a Section>) -> String {
     let mut text = HELP_TITLE.to_string();
-    for section in sections.into_iter().chain([SHARED_HELP]) {
-        text.push('\n');
-        text.push_str(section);
+    for section in sections.into_iter().chain([&SHARED]) {
+        text.push_str(&format!("\n {}:", section.heading));
+        for (syntax, does) in section.commands {
+            let syntax = format!("  {syntax}");
+            let mut lines = does.lines();
+            let first = lines.next().unwrap_or_default();
+            text.push_str(&format!("\n{syntax:<width$}{first}", width = DOES_AT));
+            for line in lines {
+                text.push_str(&format!("\n{:DOES_AT$}{line}", ""));
+            }
+        }
     }
     text
 }
@@ -96,8 +142,8 @@ pub struct Console {
     device: SharedDevice,
     clock: Arc<dyn Clock>,
     manual: Option<Arc<ManualClock>>,
-    /// The text of [`help`], whose command names `help` lists.
-    help: String,
+    /// The simulator's own commands, which `help` names before every console's.
+    commands: &'static Section,
     /// Where `unplug` goes: the pty server's (none on TCP).
     unplug: Option<Arc<Unplug>>,
     /// The line served, whose waiting bytes go to the device before each command.
@@ -105,19 +151,19 @@ pub struct Console {
 }
 
 impl Console {
-    /// `manual` is the clock when time only moves on `advance`; `help` is the text [`help`]
-    /// made, whose command names the console's `help` lists.
+    /// `manual` is the clock when time only moves on `advance`; `commands` are the simulator's
+    /// own, which the console's `help` names.
     pub fn new(
         device: SharedDevice,
         clock: Arc<dyn Clock>,
         manual: Option<Arc<ManualClock>>,
-        help: String,
+        commands: &'static Section,
     ) -> Self {
         Console {
             device,
             clock,
             manual,
-            help,
+            commands,
             unplug: None,
             line: None,
         }
@@ -145,7 +191,7 @@ impl Console {
         match words.as_slice() {
             [] => Answer::Ok(String::new()),
             ["quit" | "exit"] => Answer::Quit,
-            ["help"] => Answer::Ok(summary(&self.help)),
+            ["help"] => Answer::Ok(summary([self.commands, &SHARED])),
             ["time"] => Answer::Ok(format!("{:.6} s", self.clock.now().as_secs_f64())),
             ["advance", amount] => match (&self.manual, crate::duration::parse(amount)) {
                 (None, _) => Answer::Error("advance needs --manual-clock".into()),
@@ -193,20 +239,14 @@ fn unplug_time(secs: &str) -> Result<Duration, String> {
 }
 
 /// The answer to `help`: the command names on one line (the console answers every command with
-/// one line; `tmclsh sim --help` describes them). A command's line starts with two spaces; a
-/// description's continuation with more, and its first word is no command.
-fn summary(help: &str) -> String {
+/// one line; `tmclsh sim --help` describes them).
+fn summary(sections: [&Section; 2]) -> String {
     let mut names: Vec<&str> = Vec::new();
-    let commands = help
-        .lines()
-        .filter(|l| l.starts_with("  ") && !l.starts_with("   "));
-    for line in commands {
-        let syntax = line.trim().split("  ").next().unwrap_or_default();
-        for form in syntax.split(" | ") {
-            let name = form.split_whitespace().next().unwrap_or_default();
-            if !name.is_empty() && !names.contains(&name) {
-                names.push(name);
-            }
+    let commands = sections.iter().flat_map(|s| s.commands);
+    for form in commands.flat_map(|(syntax, _)| syntax.split(" | ")) {
+        let name = form.split_whitespace().next().unwrap_or_default();
+        if !name.is_empty() && !names.contains(&name) {
+            names.push(name);
         }
     }
     format!(
@@ -226,12 +266,12 @@ mod tests {
     fn console(manual: bool) -> (Console, Arc<ManualClock>) {
         let clock = Arc::new(ManualClock::new());
         let device: SharedDevice = Arc::new(Mutex::new(Bus::builtin()));
-        let section = crate::dialect::tmcl::DIALECT.console_help;
+        let section = crate::dialect::tmcl::DIALECT.console;
         let console = Console::new(
             device,
             clock.clone(),
             manual.then(|| clock.clone()),
-            help([section]),
+            section,
         );
         (console, clock)
     }

@@ -42,7 +42,7 @@ pub static DIALECT: Dialect = Dialect {
     #[cfg(feature = "cli")]
     sim_flag_given: sim::flags::given,
     simulated: "SMD4",
-    console_help: CONSOLE_HELP,
+    console: &sim::CONSOLE,
     legacy_note: Some(replay::OPENED),
     typed_here,
     scan_addresses: "1-247",
@@ -57,15 +57,3 @@ pub static DIALECT: Dialect = Dialect {
 fn typed_here(line: &str) -> bool {
     line.contains(':')
 }
-
-/// The commands of its simulator's console (`tmclsh sim --help`).
-const CONSOLE_HELP: &str = " SMD4 drive (--protocol smd4):
-  limit pos|neg 0|1                  set the level of a limit input (active after LIMIT:POL+/-)
-  exten 0|1                          set the external enable input
-  joystick 0|1                       plug a joystick in or out
-  fault BIT|NAME                     latch an EFLAGS bit (e.g. 2 or TempOver); the motor stops
-  flash-failure on|off               make STORE fail with -5 (worn-out flash) or work again
-  power-cycle                        restart from the stored configuration
-  motor                              show position, velocity, standby, target velocity reached
-  flags                              show SFLAGS, EFLAGS and whether addressing mode is on
-  setting MNEMONIC                   show a working setting (e.g. COMS:SERIAL:SLAVEADDR)";

@@ -55,7 +55,7 @@ pub static DIALECT: Dialect = Dialect {
     #[cfg(feature = "cli")]
     sim_flag_given: sim::flags::given,
     simulated: "TMCM-142",
-    console_help: CONSOLE_HELP,
+    console: &sim::CONSOLE,
     legacy_note: None,
     typed_here,
     scan_addresses: "1-26",
@@ -79,16 +79,3 @@ pub fn session(session: &mut dyn DialectSession) -> Option<&mut TmclSession> {
 fn typed_here(line: &str) -> bool {
     !line.contains(':')
 }
-
-/// The commands of its simulator's console (`tmclsh sim --help`).
-const CONSOLE_HELP: &str = " TMCL module bus (--protocol tmcl):
-  input PORT 0|1                     set a digital input (GIO bank 0)
-  analog PORT VALUE                  set an analog input (GIO bank 1, 0..the ADC maximum)
-  switch [M] left|right|home POS|off move a virtual switch of motor M (default 0; physical
-                                     microsteps) or disconnect it
-  output PORT                        show an output (SIO bank 2)
-  motor [M]                          show position, target, velocity, target reached of motor M
-  reset [N]                          power-cycle module N (factory address) or every module: RAM
-                                     back to the stored values, motion and program stopped, the
-                                     interface in the mode GP 67 bit 0 says (binary by default)
-  @N COMMAND                         any of the above for the module with factory address N";

@@ -1,21 +1,45 @@
 //! Control commands for a running simulated SMD4 (the `tmclsh sim --protocol smd4` console,
 //! tests): move its inputs, latch faults, break its flash, cycle its power, look at the motor.
-//!
-//! ```text
-//! limit pos|neg 0|1       electrical level of a limit input (active after LIMIT:POL±)
-//! exten 0|1               the external enable input
-//! joystick 0|1            plug a joystick in or out
-//! fault BIT|NAME          latch an EFLAGS bit (2, TempOver, "Temp Over"); the motor stops
-//! flash-failure on|off    make STORE fail with −5 from now on
-//! power-cycle             restart from the stored configuration
-//! motor                   position, velocity, standby, target velocity reached
-//! flags                   SFLAGS, EFLAGS and whether addressing mode is on
-//! setting MNEMONIC        a working setting (COMS:SERIAL:SLAVEADDR)
-//! ```
+//! The commands and their help are the table [`CONSOLE`].
 
 use std::time::Duration;
 
 use super::{Limit, Smd4Sim};
+use crate::sim::console::Section;
+
+/// The console's commands, for `tmclsh sim --help` and the console's `help`.
+pub(crate) const CONSOLE: Section = Section {
+    heading: "SMD4 drive (--protocol smd4)",
+    commands: &[
+        (
+            "limit pos|neg 0|1",
+            "set the level of a limit input (active after LIMIT:POL+/-)",
+        ),
+        ("exten 0|1", "set the external enable input"),
+        ("joystick 0|1", "plug a joystick in or out"),
+        (
+            "fault BIT|NAME",
+            "latch an EFLAGS bit (e.g. 2 or TempOver); the motor stops",
+        ),
+        (
+            "flash-failure on|off",
+            "make STORE fail with -5 (worn-out flash) or work again",
+        ),
+        ("power-cycle", "restart from the stored configuration"),
+        (
+            "motor",
+            "show position, velocity, standby, target velocity reached",
+        ),
+        (
+            "flags",
+            "show SFLAGS, EFLAGS and whether addressing mode is on",
+        ),
+        (
+            "setting MNEMONIC",
+            "show a working setting (e.g. COMS:SERIAL:SLAVEADDR)",
+        ),
+    ],
+};
 
 /// Runs `command` if it is an SMD4 console command (`None` when it is not one).
 pub(super) fn run(

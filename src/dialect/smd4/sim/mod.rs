@@ -31,6 +31,7 @@ use crate::dialect::smd4::protocol::{Eflags, Request, Sflags, Smd4Spec};
 use crate::sim::store::{FileStore, MemoryStore, Store};
 use crate::sim::{Device, LogSink};
 pub use config::{Setting, Settings};
+pub(crate) use control::CONSOLE;
 pub use motion::MotorState;
 use motion::{Goal, Motion, Ramp};
 pub use options::{PositionFormat, PrefixAcceptance, Smd4SimOptions};

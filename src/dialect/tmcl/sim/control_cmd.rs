@@ -15,6 +15,7 @@
 use std::time::Duration;
 
 use super::motion::{MotorState, Switch};
+use crate::sim::console::Section;
 
 /// What the console's commands need of a running bus. The bus implements it (`bus.rs`) and hands
 /// itself to [`run`], so this file does not name the bus back.
@@ -41,6 +42,38 @@ pub(crate) trait Controlled {
     /// What a motor is doing.
     fn motor_of(&mut self, now: Duration, slot: u8, motor: u8) -> Option<MotorState>;
 }
+
+/// The console's commands, for `tmclsh sim --help` and the console's `help`.
+pub(crate) const CONSOLE: Section = Section {
+    heading: "TMCL module bus (--protocol tmcl)",
+    commands: &[
+        ("input PORT 0|1", "set a digital input (GIO bank 0)"),
+        (
+            "analog PORT VALUE",
+            "set an analog input (GIO bank 1, 0..the ADC maximum)",
+        ),
+        (
+            "switch [M] left|right|home POS|off",
+            "move a virtual switch of motor M (default 0; physical\n\
+             microsteps) or disconnect it",
+        ),
+        ("output PORT", "show an output (SIO bank 2)"),
+        (
+            "motor [M]",
+            "show position, target, velocity, target reached of motor M",
+        ),
+        (
+            "reset [N]",
+            "power-cycle module N (factory address) or every module: RAM\n\
+             back to the stored values, motion and program stopped, the\n\
+             interface in the mode GP 67 bit 0 says (binary by default)",
+        ),
+        (
+            "@N COMMAND",
+            "any of the above for the module with factory address N",
+        ),
+    ],
+};
 
 /// Runs `command` if it is a bus command (`None` when it is not one).
 pub(crate) fn run(

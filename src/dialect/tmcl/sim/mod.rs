@@ -32,6 +32,7 @@ mod state;
 mod vm;
 
 pub use bus::{Bus, BusOptions};
+pub(crate) use control_cmd::CONSOLE;
 pub use motion::MotorState;
 pub use motion::{Switch, Switches};
 pub use options::{Backspace, LineEnd, Quirks};
