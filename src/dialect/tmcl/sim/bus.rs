@@ -15,7 +15,7 @@ use super::machine::Machine;
 use super::module::{Module, Sink};
 use super::motion::{MotorState, Switch, Switches};
 use super::options::Quirks;
-use super::state::{BusImage, Eeprom, ModuleImage};
+use super::state::{BusImage, Eeprom};
 
 /// How to build a bus.
 pub struct BusOptions {
@@ -217,29 +217,6 @@ impl Bus {
             module.machine.eeprom_changed = false;
         }
     }
-
-    /// What motor 0 of a module is doing at `now`.
-    pub fn motor(&mut self, now: Duration, slot: u8) -> Option<MotorState> {
-        self.motor_of(now, slot, 0)
-    }
-
-    /// The EEPROM image of each module, in bus order.
-    pub fn images(&self) -> Vec<ModuleImage> {
-        self.modules.iter().map(|m| m.machine.image()).collect()
-    }
-
-    /// The module name of each module, in bus order (`TMCM-6110`).
-    pub fn modules(&self) -> Vec<(u8, String)> {
-        self.modules
-            .iter()
-            .map(|m| (m.machine.slot, m.machine.profile.module.clone()))
-            .collect()
-    }
-
-    /// Whether a module is in ASCII mode.
-    pub fn is_ascii(&mut self, slot: u8) -> Option<bool> {
-        Some(self.module(slot).ok()?.is_ascii())
-    }
 }
 
 impl Device for Bus {
@@ -342,6 +319,7 @@ impl Controlled for Bus {
         self.advance(now);
         self.module(slot).ok()?.machine.io.output(port)
     }
+
     /// What a motor of a module is doing at `now` (`None`: no such module or motor).
     fn motor_of(&mut self, now: Duration, slot: u8, motor: u8) -> Option<MotorState> {
         self.advance(now);
@@ -355,5 +333,32 @@ impl Controlled for Bus {
             target_reached: machine.target_reached(motor, t),
             searching: axis.search_status() != 0,
         })
+    }
+}
+
+/// What only the tests look at.
+#[cfg(test)]
+impl Bus {
+    /// What motor 0 of a module is doing at `now`.
+    pub fn motor(&mut self, now: Duration, slot: u8) -> Option<MotorState> {
+        self.motor_of(now, slot, 0)
+    }
+
+    /// The EEPROM image of each module, in bus order.
+    pub fn images(&self) -> Vec<super::state::ModuleImage> {
+        self.modules.iter().map(|m| m.machine.image()).collect()
+    }
+
+    /// The module name of each module, in bus order (`TMCM-6110`).
+    pub fn modules(&self) -> Vec<(u8, String)> {
+        self.modules
+            .iter()
+            .map(|m| (m.machine.slot, m.machine.profile.module.clone()))
+            .collect()
+    }
+
+    /// Whether a module is in ASCII mode.
+    pub fn is_ascii(&mut self, slot: u8) -> Option<bool> {
+        Some(self.module(slot).ok()?.is_ascii())
     }
 }

@@ -27,6 +27,15 @@ fn find_mut<T>(ports: &mut [(u8, T)], port: u8) -> Option<&mut T> {
     ports.iter_mut().find(|(p, _)| *p == port).map(|(_, v)| v)
 }
 
+/// Sets input `port` of `inputs` (of a `kind`), or says which inputs there are.
+fn set_input<T>(inputs: &mut [(u8, T)], port: u8, value: T, kind: &str) -> Result<(), String> {
+    let ports: Vec<String> = inputs.iter().map(|(p, _)| p.to_string()).collect();
+    let input = find_mut(inputs, port)
+        .ok_or_else(|| format!("no {kind} input {port}; inputs are {}", ports.join(", ")))?;
+    *input = value;
+    Ok(())
+}
+
 impl Io {
     /// All inputs low, analog inputs at 0, outputs off.
     pub(super) fn new(sim: &SimConstants) -> Io {
@@ -61,15 +70,7 @@ impl Io {
 
     /// Sets a digital input.
     pub(super) fn set_input(&mut self, port: u8, high: bool) -> Result<(), String> {
-        let ports = self
-            .digital
-            .iter()
-            .map(|(p, _)| p.to_string())
-            .collect::<Vec<_>>();
-        *find_mut(&mut self.digital, port)
-            .ok_or_else(|| format!("no digital input {port}; inputs are {}", ports.join(", ")))? =
-            high;
-        Ok(())
+        set_input(&mut self.digital, port, high, "digital")
     }
 
     /// Sets an analog input (0..adc_max).
@@ -80,15 +81,7 @@ impl Io {
                 self.adc_max
             ));
         }
-        let ports = self
-            .analog
-            .iter()
-            .map(|(p, _)| p.to_string())
-            .collect::<Vec<_>>();
-        *find_mut(&mut self.analog, port)
-            .ok_or_else(|| format!("no analog input {port}; inputs are {}", ports.join(", ")))? =
-            value;
-        Ok(())
+        set_input(&mut self.analog, port, value, "analog")
     }
 
     /// An output's state.
