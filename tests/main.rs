@@ -14,6 +14,7 @@ mod fuzz_corpus;
 #[cfg(feature = "hardware")]
 mod hardware;
 mod hostile;
+mod hot_path;
 mod identify;
 mod inputs;
 mod layers;

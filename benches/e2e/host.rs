@@ -176,7 +176,7 @@ pub fn measure(plan: &Plan) -> Vec<Row> {
 /// Seconds per round trip over a bare pseudo-terminal: the client writes the 10 bytes of a
 /// request, a thread on the other side reads them and writes 19 bytes (echo and reply of
 /// character-echo mode), the client reads them. The kernel's part of every transaction.
-fn pty_floor(n: u32) -> f64 {
+pub fn pty_floor(n: u32) -> f64 {
     let pair = nix::pty::openpty(None, None).expect("openpty");
     let mut termios = tcgetattr(&pair.slave).expect("tcgetattr");
     cfmakeraw(&mut termios);

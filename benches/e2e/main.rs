@@ -5,14 +5,17 @@
 //! for trying a change, not for publishing. `-- --soak` runs only the fault soak (row 7) and
 //! rewrites only its row and section; `-- --limit` likewise for late replies (row 8);
 //! `-- --latency` for the latency timer rows (row 9), `-- --reconnect` for the reconnect time
-//! (row 10, its row only). With `-- --reads N` the soak's and late replies' cells make N reads
-//! each instead of 20,000 (the table says how many). Linux only: it uses ptys, wait4 and /proc.
+//! (row 10, its row only), `-- --hot` for the hot path (row 11) and the in-process rate (row 3).
+//! With `-- --reads N` the soak's and late replies' cells make N reads each instead of 20,000
+//! (the table says how many). Linux only: it uses ptys, wait4 and /proc.
 
 #[cfg(target_os = "linux")]
 #[path = "../pure/cases.rs"]
 mod cases;
 #[cfg(target_os = "linux")]
 mod host;
+#[cfg(target_os = "linux")]
+mod hot;
 #[cfg(target_os = "linux")]
 mod latency;
 #[cfg(target_os = "linux")]
@@ -151,6 +154,29 @@ fn main() {
         }
         return;
     }
+    if std::env::args().any(|a| a == "--hot") {
+        eprintln!("e2e: the hot path and the in-process rate only");
+        let load_before = machine::load();
+        let in_process = local::in_process(plan.in_process_n, plan.in_process_reps);
+        let hot = hot::measure(plan.host_n, plan.host_reps);
+        println!("{}", report::text(std::slice::from_ref(&in_process)));
+        println!("{}", report::text(&hot));
+        let load_after = machine::load();
+        println!("load average before / after: {load_before} / {load_after}");
+        if !quick {
+            let path = proc::repo_file("BENCHMARKS.md");
+            let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+            let row3 = [report::markdown_line(&in_process)];
+            let new = report::splice_rows(&old, "3. In-process", &row3);
+            let lines: Vec<String> = hot.iter().map(report::markdown_line).collect();
+            let new = report::splice_rows(&new, hot::PREFIX, &lines);
+            let section = hot::section(&date(), &load_before, &load_after);
+            let new = report::splice_section(&new, hot::HEADING, &section);
+            std::fs::write(&path, new).expect("write BENCHMARKS.md");
+            eprintln!("e2e: wrote rows 3 and 11 into {}", path.display());
+        }
+        return;
+    }
     if std::env::args().any(|a| a == "--reconnect") {
         eprintln!("e2e: the reconnect time only");
         let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("e2e");
@@ -210,18 +236,22 @@ fn main() {
     step("late replies: replies later than the resync window (a few minutes)");
     let limit_cells = soak::measure_faults(&limit_plan, &soak::LIMIT_FAULTS);
     let limit_row = soak::limit_row(&limit_cells, &limit_plan);
+    step("the hot path: round trips with and without load, system calls");
+    let hot_rows = hot::measure(plan.host_n, plan.host_reps);
     step("the reconnect time: an adapter unplugged under an idle REPL");
     let relink_row = relink::measure(plan.reconnects, &scratch);
     let load_after = machine::load();
     let date = date();
     let soak_section = soak::section(&soak_cells, &soak_plan, &date);
     let limit_section = soak::limit_section(&limit_cells, &limit_plan, &date);
+    let hot_section = hot::section(&date, &load_before, &load_after);
 
     let soak_line = report::markdown_line(rows.last().expect("the soak row"));
     let limit_line = report::markdown_line(&limit_row);
     rows.push(limit_row);
     rows.extend(latency_rows);
     rows.push(relink_row);
+    rows.extend(hot_rows);
     println!("{}", report::text(&rows));
     println!("{:<66} {:>12}", "pure part", "ns/op");
     for case in &pure {
@@ -243,6 +273,7 @@ fn main() {
     });
     let markdown = soak::splice(&markdown, &soak_line, &soak_section);
     let markdown = soak::splice_limit(&markdown, &limit_line, &limit_section);
+    let markdown = report::splice_section(&markdown, hot::HEADING, &hot_section);
     let path = proc::repo_file("BENCHMARKS.md");
     std::fs::write(&path, markdown).expect("write BENCHMARKS.md");
     eprintln!("e2e: wrote {}", path.display());

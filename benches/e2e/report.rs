@@ -154,6 +154,30 @@ pub fn splice_rows(markdown: &str, prefix: &str, lines: &[String]) -> String {
     kept.join("\n") + "\n"
 }
 
+/// The section under `heading` (its first line) replaced by `section`, or added before the pure
+/// parts.
+pub fn splice_section(markdown: &str, heading: &str, section: &str) -> String {
+    let mut lines: Vec<String> = markdown.lines().map(str::to_string).collect();
+    let section_lines: Vec<String> = section.trim_end().lines().map(str::to_string).collect();
+    match lines.iter().position(|l| l == heading) {
+        Some(start) => {
+            let end = lines[start + 1..]
+                .iter()
+                .position(|l| l.starts_with("## "))
+                .map_or(lines.len(), |i| start + 1 + i);
+            lines.splice(start..end, section_lines.into_iter().chain([String::new()]));
+        }
+        None => {
+            let at = lines
+                .iter()
+                .position(|l| l == "## Pure parts")
+                .unwrap_or(lines.len());
+            lines.splice(at..at, section_lines.into_iter().chain([String::new()]));
+        }
+    }
+    lines.join("\n") + "\n"
+}
+
 pub fn markdown_line(row: &Row) -> String {
     table_row(&row.cells())
 }
@@ -211,6 +235,9 @@ within the repetitions, so that a busy (or idle) spell of the machine hits both 
     the pty and serves a new one behind LINK after S. Timed from the simulator's `pty PATH` line
     (the new pty is there) to the REPL's `reconnected` (136, 139 and GGP 67 sent again). Only this
     row: `cargo bench --bench e2e -- --reconnect`.
+11. **Hot path**: tmclsh against a bare client on the simulator and the bare pty, with and
+    without a busy loop added, at 115200 baud against the bare client on a paced simulator, and
+    system calls per transaction; its own section above has the method and the conditions.
 ";
 
 /// What the reader should know about targets that were missed.

@@ -369,22 +369,5 @@ fn splice_part(
             lines.insert(end, row_line.trim_end().to_string());
         }
     }
-    let section_lines: Vec<String> = section.trim_end().lines().map(str::to_string).collect();
-    match lines.iter().position(|l| l == heading) {
-        Some(start) => {
-            let end = lines[start + 1..]
-                .iter()
-                .position(|l| l.starts_with("## "))
-                .map_or(lines.len(), |i| start + 1 + i);
-            lines.splice(start..end, section_lines.into_iter().chain([String::new()]));
-        }
-        None => {
-            let at = lines
-                .iter()
-                .position(|l| l == "## Pure parts")
-                .unwrap_or(lines.len());
-            lines.splice(at..at, section_lines.into_iter().chain([String::new()]));
-        }
-    }
-    lines.join("\n") + "\n"
+    crate::report::splice_section(&(lines.join("\n") + "\n"), heading, section)
 }

@@ -4,6 +4,8 @@
 //! after the link was lost, and the line's state (`line/`: what a real serial line adds).
 
 pub mod can;
+#[cfg(unix)]
+mod fd;
 pub mod line;
 mod serial;
 mod tcp;
@@ -90,6 +92,14 @@ pub trait Link: Send {
     /// Seconds per byte on the wire, where the link knows it (serial: 10 bits per byte).
     fn byte_time(&self) -> Option<std::time::Duration> {
         None
+    }
+
+    /// Whether a [`recv`](Self::recv) that returns fewer bytes than `buf` holds took everything
+    /// that had arrived (a read(2) of a port or socket does; a link that hands over one frame
+    /// at a time does not): then what follows a reply that came in one burst is already known
+    /// from that read, and no look of its own is made for it.
+    fn reads_all(&self) -> bool {
+        false
     }
 
     /// Whether the link carries only whole binary frames (CAN): a dialect with a text mode

@@ -6,12 +6,14 @@
 //! device file anew through the link's [`Resolve`]: a replugged adapter usually comes back under
 //! another name (ttyUSB0 → ttyUSB1), which a `/dev/serial/by-id` link or a `usb:` name follows.
 
-use std::io::{Read, Write};
+use std::io::Read;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
 use serialport::{DataBits, FlowControl, Parity, SerialPort, StopBits};
 
+#[cfg(unix)]
+use super::fd;
 use super::line::{
     LineOptions, LineState, Modem, Os, Rs485, Saved, holder, latency, refusal, sysfs,
 };
@@ -30,6 +32,9 @@ enum Direction {
     /// By tmclsh: RTS raised around each write.
     Software(Rs485),
 }
+
+/// How long a write waits for room in the driver besides the bytes' own time on the wire.
+const WRITE_SLACK: Duration = Duration::from_millis(100);
 
 /// Finds the device file a port name stands for now: the path as given (a symlink is followed
 /// when it is opened), or a `usb:` name looked up again. Run at every reopen.
@@ -275,6 +280,16 @@ impl SerialLink {
         latency::read(&file)
     }
 
+    /// How long a write may wait for room in the driver: the bytes' time on the wire twice, and
+    /// [`WRITE_SLACK`] besides.
+    fn write_bound(&self, len: usize) -> Duration {
+        let len = u32::try_from(len).unwrap_or(u32::MAX);
+        self.byte_time()
+            .unwrap_or_default()
+            .saturating_mul(len.saturating_mul(2))
+            + WRITE_SLACK
+    }
+
     /// Puts the driver's RS-485 settings back as found (the port may be gone: then nothing).
     fn restore(&mut self) {
         if let Some(Direction::Kernel(_, Some(saved))) = self.direction.take() {
@@ -289,7 +304,8 @@ impl SerialLink {
         if !mode.before.is_zero() {
             std::thread::sleep(mode.before);
         }
-        let written = self.port()?.write_all(bytes).map_err(LinkError::from_io);
+        let bound = self.write_bound(bytes.len());
+        let written = write_all(self.port()?, bytes, bound);
         let drained = self.os().drain().map_err(LinkError::Lost);
         if !mode.after.is_zero() {
             std::thread::sleep(mode.after);
@@ -358,16 +374,36 @@ fn open_port(path: &str, baud: u32, notes: &mut Vec<String>) -> Result<Open, Lin
         .map_err(|e| LinkError::Open(refusal::open_hint(path, &e)))?;
     #[cfg(unix)]
     {
-        use std::os::fd::{AsRawFd, BorrowedFd};
-        // SAFETY: the descriptor is the open port's, valid while `port` lives; it is only
-        // borrowed here to be duplicated (serialport's port has no `AsFd`).
-        let borrowed = unsafe { BorrowedFd::borrow_raw(port.as_raw_fd()) };
-        let watch = borrowed.try_clone_to_owned().ok();
+        fd::set_nonblocking(borrow(&port))?;
+        let watch = borrow(&port).try_clone_to_owned().ok();
         Ok(Open { port, watch })
     }
     #[cfg(not(unix))]
     {
         Ok(Open { port })
+    }
+}
+
+/// The open port's descriptor (serialport's port has no `AsFd`).
+#[cfg(unix)]
+fn borrow(port: &Native) -> std::os::fd::BorrowedFd<'_> {
+    use std::os::fd::AsRawFd;
+    // SAFETY: the descriptor is the open port's, valid while `port` lives, which the borrow
+    // cannot outlive.
+    unsafe { std::os::fd::BorrowedFd::borrow_raw(port.as_raw_fd()) }
+}
+
+/// Writes all of `bytes`: on Unix one write(2) to the non-blocking port while the driver has
+/// room (serialport's own `Write` polls before every write).
+fn write_all(port: &mut Native, bytes: &[u8], bound: Duration) -> Result<(), LinkError> {
+    #[cfg(unix)]
+    {
+        fd::write_all(borrow(port), bytes, bound)
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = bound;
+        std::io::Write::write_all(port, bytes).map_err(LinkError::from_io)
     }
 }
 
@@ -379,7 +415,8 @@ impl Link for SerialLink {
             // The port writes straight to the kernel; flush() would be tcdrain, which waits
             // until the bytes have left the UART and so adds a wire time (or, on a pty, a
             // scheduler round trip) to every command for nothing.
-            let result = self.port()?.write_all(bytes).map_err(LinkError::from_io);
+            let bound = self.write_bound(bytes.len());
+            let result = write_all(self.port()?, bytes, bound);
             result.map_err(|e| self.lost(e))?;
         }
         self.bytes_out += bytes.len() as u64;
@@ -436,6 +473,10 @@ impl Link for SerialLink {
     fn watch(&self) -> Option<std::os::fd::OwnedFd> {
         let open = self.port.as_ref()?;
         open.watch.as_ref()?.try_clone().ok()
+    }
+
+    fn reads_all(&self) -> bool {
+        true
     }
 
     fn byte_time(&self) -> Option<Duration> {

@@ -1,10 +1,15 @@
-//! TCP connections (Ethernet modules, serial servers, `tmclsh sim --listen`).
+//! TCP connections (Ethernet modules, serial servers, `tmclsh sim --listen`). On Unix the
+//! socket is non-blocking, so a look at what has arrived is one read(2) and a write one
+//! write(2) (`fd.rs`).
 
-use std::io::{Read, Write};
 use std::net::{TcpStream, ToSocketAddrs};
 use std::time::{Duration, Instant};
 
 use super::{Link, LinkError};
+
+/// How long a write waits for room in the socket's buffer (a peer that stopped reading).
+#[cfg(unix)]
+const WRITE_BOUND: Duration = Duration::from_secs(2);
 
 /// An open TCP connection.
 pub struct TcpLink {
@@ -32,6 +37,8 @@ fn connect(address: &str, timeout: Duration) -> Result<TcpStream, LinkError> {
         match TcpStream::connect_timeout(&addr, timeout) {
             Ok(stream) => {
                 stream.set_nodelay(true).map_err(|e| fail(&e))?;
+                #[cfg(unix)]
+                stream.set_nonblocking(true).map_err(|e| fail(&e))?;
                 return Ok(stream);
             }
             Err(e) => last = Some(e),
@@ -44,11 +51,31 @@ fn connect(address: &str, timeout: Duration) -> Result<TcpStream, LinkError> {
 }
 
 impl Link for TcpLink {
+    #[cfg(unix)]
     fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
-        self.stream.write_all(bytes).map_err(LinkError::from_io)
+        super::fd::write_all(std::os::fd::AsFd::as_fd(&self.stream), bytes, WRITE_BOUND)
     }
 
+    #[cfg(not(unix))]
+    fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
+        std::io::Write::write_all(&mut self.stream, bytes).map_err(LinkError::from_io)
+    }
+
+    #[cfg(unix)]
     fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
+        let fd = std::os::fd::AsFd::as_fd(&self.stream);
+        match super::fd::read(fd, buf, deadline)? {
+            0 => Err(LinkError::Lost(format!(
+                "{} closed the connection",
+                self.address
+            ))),
+            n => Ok(n),
+        }
+    }
+
+    #[cfg(not(unix))]
+    fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
+        use std::io::Read;
         let wait = deadline.saturating_duration_since(Instant::now());
         // A deadline already past still takes what has arrived (a non-blocking read), so the
         // session's drain before each request really empties the socket.
@@ -80,6 +107,10 @@ impl Link for TcpLink {
 
     fn describe(&self) -> String {
         format!("tcp {}", self.address)
+    }
+
+    fn reads_all(&self) -> bool {
+        true
     }
 
     fn reopen(&mut self) -> Result<(), LinkError> {

@@ -18,7 +18,8 @@
 //! - A complete reply is trusted only once the bytes right after it have been seen: a reply cut
 //!   short by a corrupted byte, or glued to more data, is line noise. The wait for them
 //!   ([`Wire::await_more`]) follows the pace at which this reply's bytes arrived, so a link that
-//!   delivers whole replies at once pays only a poll.
+//!   delivers whole replies at once pays nothing: the read that took the burst took all there
+//!   was (a link that [`reads_all`](crate::link::Link::reads_all)), or else a look.
 //! - Whatever is discarded is counted and summarised in one notice per kind and exchange.
 
 mod discard;
@@ -85,6 +86,9 @@ pub(crate) struct Wire {
     /// Discarded bytes not yet written to the transcript.
     discarded: Vec<u8>,
     pace: Pace,
+    /// The last read since the last send took everything that had arrived (a link that
+    /// [`reads_all`](Link::reads_all), a read shorter than its buffer).
+    took_all: bool,
     /// Requests and replies counted, for `:line`.
     pub tally: Tally,
     /// The adapter's echo of what was sent, stripped (`--local-echo`).
@@ -111,6 +115,7 @@ impl Wire {
             discards: Discards::default(),
             discarded: Vec::new(),
             pace: Pace::default(),
+            took_all: false,
             echo: Echo::default(),
         };
         // What the line said of itself on opening (a latency timer left high, modem lines a
@@ -170,6 +175,7 @@ impl Wire {
     /// transcript is being written (pass `format_args!`), so it costs nothing otherwise.
     pub(crate) fn send(&mut self, bytes: &[u8], meaning: impl Display) -> Result<(), SessionError> {
         self.log(Entry::Sent, bytes, meaning);
+        self.took_all = false;
         self.link.send(bytes).map_err(SessionError::from)?;
         self.last_sent = Some(Instant::now());
         self.sent_for_echo(bytes);
@@ -229,6 +235,7 @@ impl Wire {
             match self.link.recv(&mut buf, slice_end) {
                 Ok(n) => {
                     self.pace.record(n);
+                    self.took_all = n < buf.len() && self.link.reads_all();
                     self.last_heard = Some(Instant::now());
                     let before = self.rx.len();
                     let taken = self.take_in(&buf[..n])?;
@@ -310,6 +317,7 @@ impl Wire {
             self.opened = Some(Instant::now());
         }
         self.rx.clear();
+        self.took_all = false;
         self.reset_echo();
         self.discarded.clear();
     }

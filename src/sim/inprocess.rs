@@ -84,6 +84,11 @@ impl Link for SimLink {
         true
     }
 
+    /// A read takes all the output due by now.
+    fn reads_all(&self) -> bool {
+        true
+    }
+
     fn send(&mut self, bytes: &[u8]) -> Result<(), LinkError> {
         let now = self.clock.now();
         let mut device = self.lock();
@@ -101,14 +106,13 @@ impl Link for SimLink {
         // The deadline is wall time; the wait happens on the simulation clock.
         let until = self.clock.now() + deadline.saturating_duration_since(Instant::now());
         loop {
-            if !self.pending.is_empty() {
-                return Ok(self.take(buf));
-            }
+            // Output due now is taken even behind what a full buffer left, so that a read
+            // shorter than `buf` took all there was (`reads_all`).
             let now = self.clock.now();
-            let (due, hung) = {
+            let hung = {
                 let mut device = self.device.lock().unwrap_or_else(|e| e.into_inner());
                 device.poll_output(now, &mut self.pending);
-                (device.next_due(now), device.hung_up())
+                device.hung_up()
             };
             if !self.pending.is_empty() {
                 return Ok(self.take(buf));
@@ -119,6 +123,9 @@ impl Link for SimLink {
             if now >= until {
                 return Err(LinkError::Timeout);
             }
+            // When output is due is asked only before a real wait: a look, and a read whose
+            // reply is there, take none.
+            let due = self.lock().next_due(now);
             let target = due.map_or(until, |d| d.min(until));
             self.clock.wait(target.saturating_sub(now).max(NUDGE));
         }

@@ -54,9 +54,14 @@ pub(crate) fn nothing_benign(_: &[u8]) -> Option<Harmless> {
 impl Wire {
     /// Waits, no later than `deadline`, for more bytes of the transmission that just delivered a
     /// complete reply: as long as the next byte would take at the pace this exchange's bytes came
-    /// in, or just a poll when they came in one burst. True when bytes arrived.
+    /// in. A burst is not waited for: when the read that took it took all there was, that read
+    /// already answered (a look now would only race the sender by microseconds); otherwise one
+    /// look. True when bytes arrived.
     pub(crate) fn await_more(&mut self, deadline: Instant) -> Result<bool, SessionError> {
         let wait = self.settle_time();
+        if wait.is_zero() && self.took_all {
+            return Ok(false);
+        }
         self.fill((Instant::now() + wait).min(deadline))
     }
 

@@ -1,0 +1,277 @@
+//! Row 11, the hot path (`-- --hot` runs only it and row 3): the same `GAP 1, 0` loop over a pty
+//! to the unpaced simulator against what lies under it, measured in one run with no load added
+//! and with a busy loop added on the other core. Under tmclsh are the bare pty round trip (no
+//! program) and the simulator's own turnaround, which a bare client measures: it writes each
+//! request and reads its echo and reply with nothing else, so tmclsh's ratio to that client is
+//! what tmclsh adds. System calls per transaction are counted with strace, which load does not
+//! change.
+
+use std::fs::{File, OpenOptions};
+use std::io::{Read, Write};
+use std::process::Command;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
+
+use crate::host::pty_floor;
+use crate::proc::{Sim, median, repo_file, run, runs, tmclsh};
+use crate::report::Row;
+
+/// The prefix every row of this part starts with.
+pub const PREFIX: &str = "11. Hot path";
+
+/// What one round trip of the bare client sends and reads (character echo, the default).
+const REQUEST: &[u8] = b"AGAP 1, 0\r";
+const ANSWER: &[u8] = b"AGAP 1, 0\rBA 100 0\r";
+
+/// Measures the rows: `n` transactions per run, `reps` runs of each program in turns.
+pub fn measure(n: u32, reps: usize) -> Vec<Row> {
+    let mut rows = Vec::new();
+    for loaded in [false, true] {
+        let busy = loaded.then(Busy::start);
+        rows.push(round_trips(n, reps, loaded));
+        drop(busy);
+    }
+    rows.push(paced(PACED_N, reps.min(3)));
+    rows.push(syscalls(&[], "ASCII"));
+    rows.push(syscalls(&["--binary"], "binary"));
+    rows
+}
+
+/// tmclsh, the bare client on the simulator and the bare pty, in turns.
+fn round_trips(n: u32, reps: usize, loaded: bool) -> Row {
+    let sim = Sim::start(&[]);
+    let bare_sim = Sim::start(&[]);
+    let mut client = BareClient::open(&bare_sim.path);
+    let (mut ours, mut bare, mut floor, mut ratio) = (vec![], vec![], vec![], vec![]);
+    for _ in 0..reps {
+        let done = run(Command::new(tmclsh())
+            .arg("run")
+            .arg(repo_file("benches/e2e/gap_loop.rhai"))
+            .args(["--port", &sim.path, "--", &n.to_string()]))
+        .expect_success("tmclsh run (unpaced pty)");
+        let us = done.number(0) / f64::from(n) * 1e6;
+        let client_us = client.loop_us(n);
+        ours.push(us);
+        bare.push(client_us);
+        floor.push(pty_floor(n) * 1e6);
+        ratio.push(us / client_us);
+    }
+    let (us, bare, floor, ratio) = (median(&ours), median(&bare), median(&floor), median(&ratio));
+    let state = if loaded {
+        "a busy loop added on the other core"
+    } else {
+        "no load added"
+    };
+    Row {
+        name: format!("{PREFIX}, {state} (N = {n}, {})", runs(reps)),
+        measured: format!("tmclsh {us:.1} µs/tx"),
+        reference: format!(
+            "bare client on the simulator {bare:.1} µs/tx = bare pty {floor:.1} µs + the \
+             simulator's turnaround {:.1} µs",
+            bare - floor
+        ),
+        ratio: format!("{ratio:.2}× the bare client"),
+        target: "≤ 1.25×".into(),
+        met: Some(ratio <= 1.25),
+    }
+}
+
+/// Transactions of the paced row: 115200 baud, a transaction takes about 2 ms.
+const PACED_N: u32 = 500;
+
+/// Wire efficiency at 115200 baud split between the simulator and tmclsh: the bare client on a
+/// paced simulator shows how near the limit the simulator's own timer lets any client come.
+fn paced(n: u32, reps: usize) -> Row {
+    let sim = Sim::start(&["--baud", "115200"]);
+    let bare_sim = Sim::start(&["--baud", "115200"]);
+    let mut client = BareClient::open(&bare_sim.path);
+    let (mut ours, mut bare) = (vec![], vec![]);
+    for _ in 0..reps {
+        let done = run(Command::new(tmclsh())
+            .arg("run")
+            .arg(repo_file("benches/e2e/gap_loop.rhai"))
+            .args(["--port", &sim.path, "--", &n.to_string()]))
+        .expect_success("tmclsh run (paced pty)");
+        ours.push(done.number(0) / f64::from(n) * 1e6);
+        bare.push(client.loop_us(n));
+    }
+    let (us, bare) = (median(&ours), median(&bare));
+    // Character echo: the request, the echo of its CR, the reply, 10 bits a byte.
+    let limit = (REQUEST.len() + 1 + ANSWER.len() - REQUEST.len()) as f64 * 10.0 / 115_200.0 * 1e6;
+    Row {
+        name: format!(
+            "{PREFIX}: wire efficiency at 115200 baud, character echo (N = {n}, {})",
+            runs(reps)
+        ),
+        measured: format!(
+            "tmclsh {:.3} ms/tx, {:.1} % of the limit",
+            us / 1e3,
+            limit / us * 100.0
+        ),
+        reference: format!(
+            "bare client {:.3} ms/tx, {:.1} % of the limit {:.3} ms",
+            bare / 1e3,
+            limit / bare * 100.0,
+            limit / 1e3
+        ),
+        ratio: format!("{:.2}× the bare client", us / bare),
+        target: "≥ 97 % of what the simulator allows".into(),
+        met: Some(bare / us >= 0.97),
+    }
+}
+
+/// System calls of tmclsh per transaction: strace's count for a loop of N less one of none.
+fn syscalls(args: &[&str], mode: &str) -> Row {
+    const N: u32 = 1000;
+    let sim = Sim::start(&[]);
+    let count = |n: u32| -> Option<f64> {
+        let out = std::env::temp_dir().join(format!("tmclsh-strace-{}", std::process::id()));
+        let status = Command::new("strace")
+            .args(["-f", "-c", "-o"])
+            .arg(&out)
+            .arg(tmclsh())
+            .arg("run")
+            .args(args)
+            .arg(repo_file("benches/e2e/gap_loop.rhai"))
+            .args(["--port", &sim.path, "--", &n.to_string()])
+            .stdout(std::process::Stdio::null())
+            .status()
+            .ok()?;
+        let text = std::fs::read_to_string(&out).ok()?;
+        let _ = std::fs::remove_file(&out);
+        let total = text.lines().find(|l| l.trim_end().ends_with("total"))?;
+        let calls = total.split_whitespace().nth(3)?.parse::<f64>().ok()?;
+        status.success().then_some(calls)
+    };
+    let name = format!("{PREFIX}: system calls per transaction, TMCL {mode} (strace -f -c)");
+    let per = count(N)
+        .zip(count(0))
+        .map(|(n, none)| (n - none) / f64::from(N));
+    let Some(per) = per else {
+        return Row {
+            name,
+            measured: "skipped (strace not found or refused)".into(),
+            reference: "—".into(),
+            ratio: "—".into(),
+            target: "one wait".into(),
+            met: None,
+        };
+    };
+    Row {
+        name,
+        measured: format!("{per:.2}"),
+        reference: "look, write, wait (poll), read".into(),
+        ratio: "—".into(),
+        target: "one wait, ≤ 4".into(),
+        met: Some(per <= 4.05),
+    }
+}
+
+/// A client with nothing of its own: it enters ASCII mode once, then writes each request and
+/// reads until its echo and reply are in.
+struct BareClient {
+    port: File,
+}
+
+impl BareClient {
+    fn open(path: &str) -> BareClient {
+        let port = OpenOptions::new()
+            .read(true)
+            .write(true)
+            .open(path)
+            .expect("open the simulator's pty");
+        let mut termios = nix::sys::termios::tcgetattr(&port).expect("tcgetattr");
+        nix::sys::termios::cfmakeraw(&mut termios);
+        nix::sys::termios::tcsetattr(&port, nix::sys::termios::SetArg::TCSANOW, &termios)
+            .expect("tcsetattr");
+        let mut client = BareClient { port };
+        // Command 139 to module 1, then its 9-byte binary reply.
+        let enter = [1u8, 139, 0, 0, 0, 0, 0, 0, 140];
+        client.port.write_all(&enter).expect("write 139");
+        client.read_exactly(9);
+        let mut first = Vec::new();
+        client.port.write_all(REQUEST).expect("write a request");
+        while first.len() < ANSWER.len() {
+            let mut buf = [0u8; 64];
+            let n = client.port.read(&mut buf).expect("read");
+            first.extend_from_slice(&buf[..n]);
+        }
+        assert_eq!(first, ANSWER, "the simulator's echo and reply");
+        client
+    }
+
+    fn read_exactly(&mut self, len: usize) {
+        let mut buf = [0u8; 64];
+        let mut got = 0;
+        while got < len {
+            got += self.port.read(&mut buf).expect("read the reply");
+        }
+    }
+
+    /// µs per round trip over `n` of them.
+    fn loop_us(&mut self, n: u32) -> f64 {
+        let start = Instant::now();
+        for _ in 0..n {
+            self.port.write_all(REQUEST).expect("write a request");
+            self.read_exactly(ANSWER.len());
+        }
+        start.elapsed().as_secs_f64() * 1e6 / f64::from(n)
+    }
+}
+
+/// A thread spinning while it lives: load on the other core.
+struct Busy {
+    stop: Arc<AtomicBool>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl Busy {
+    fn start() -> Busy {
+        let stop = Arc::new(AtomicBool::new(false));
+        let flag = stop.clone();
+        let thread = std::thread::spawn(move || {
+            while !flag.load(Ordering::Relaxed) {
+                std::hint::spin_loop();
+            }
+        });
+        Busy {
+            stop,
+            thread: Some(thread),
+        }
+    }
+}
+
+impl Drop for Busy {
+    fn drop(&mut self) {
+        self.stop.store(true, Ordering::Relaxed);
+        if let Some(thread) = self.thread.take() {
+            let _ = thread.join();
+        }
+    }
+}
+
+/// The heading of this part's section.
+pub const HEADING: &str = "## Hot path";
+
+/// The section that says how row 11 was measured and under what load.
+pub fn section(date: &str, load_before: &str, load_after: &str) -> String {
+    format!(
+        "{HEADING}\n\n\
+         Row 11, measured on {date} with load averages (1, 5, 15 min) {load_before} before and \
+         {load_after} after: the machine is shared, so \"no load added\" is not an idle machine, \
+         and \"a busy loop added\" adds a thread spinning in the benchmark's process for the \
+         whole run. Each repetition runs, one after the other, `tmclsh run \
+         benches/e2e/gap_loop.rhai` over a pty to `tmclsh sim --pty`, a bare client (the \
+         benchmark itself: raw pty, 139 once, then each request written and its echo and reply \
+         read, nothing checked) on a second simulator, and the bare pty round trip of row 2's \
+         floor; the ratio is the median of the ratios within the repetitions. The bare client's \
+         time is the floor plus the simulator's own turnaround, so tmclsh's ratio to it is what \
+         tmclsh adds. The paced row does the same at 115200 baud: the bare client shows how \
+         near the limit the simulator's timer lets any client come, and tmclsh is judged \
+         against that. System calls are strace's count (`strace -f -c`) of a loop of 1000 less \
+         one of none, divided by 1000: a count that load does not change. The same count at the \
+         level of the link (sends, looks, waits) is pinned by a test (`tests/hot_path.rs`). \
+         Only these rows and row 3: `cargo bench --bench e2e -- --hot`.\n"
+    )
+}
