@@ -308,7 +308,7 @@ pub struct Aborted {
 fn per_parameter(error: &SessionError) -> bool {
     matches!(
         error,
-        SessionError::Device { .. } | SessionError::Refused(_) | SessionError::Rejected(_)
+        SessionError::Device { .. } | SessionError::Refused(_)
     )
 }
 

@@ -38,7 +38,6 @@ use super::transcript::{Entry, Transcript};
 use super::{SessionError, interrupt};
 
 use discard::Discards;
-pub(crate) use echo::MISMATCH as ECHO_MISMATCH;
 use echo::{Echo, Taken};
 use pace::Pace;
 pub(crate) use tally::Tally;
@@ -247,7 +246,7 @@ impl Wire {
                         self.log(Entry::Received, &held, "receive buffer full, discarded");
                         self.log(Entry::Received, &buf[..n], "receive buffer full, discarded");
                         self.note("line noise: 64 KiB arrived without a usable line");
-                        return Err(SessionError::Link(
+                        return Err(SessionError::noise(
                             "line noise: 64 KiB arrived without a usable line; check the port, the \
                              baud rate and what else talks on the line"
                                 .into(),

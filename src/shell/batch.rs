@@ -201,9 +201,7 @@ fn transcript_written(shell: &Shell) -> Result<(), SessionError> {
         .transcript()
         .is_some_and(|t| t.failure().is_some());
     if failed {
-        return Err(SessionError::Link(
-            "the run stops: it asked for a transcript that cannot be written".into(),
-        ));
+        return Err(SessionError::TranscriptLost);
     }
     Ok(())
 }

@@ -15,7 +15,6 @@ use std::io::Write;
 use std::path::Path;
 
 use crate::dialect::DialectSession;
-use crate::exit::{Exit, ExitStatus};
 use crate::script::Limits;
 use crate::session::{SessionError, Transcript, interrupt};
 
@@ -171,11 +170,7 @@ impl Shell {
             writeln!(out, "transcript stopped")?;
         } else {
             let header = session.header();
-            let transcript =
-                Transcript::open(Path::new(arg), &header).map_err(|e| match e.exit() {
-                    Exit::Refused => SessionError::Usage(e.to_string()),
-                    _ => SessionError::Link(e.to_string()),
-                })?;
+            let transcript = Transcript::open(Path::new(arg), &header)?;
             session.set_transcript(Some(transcript));
             writeln!(out, "logging to {arg}")?;
         }

@@ -93,7 +93,9 @@ fn ask(
                 .filter(|t| !t.is_empty())
         })),
         Err(e) if e.is_echo_mismatch() => Err(e),
-        Err(SessionError::Timeout { .. } | SessionError::Link(_)) => Ok(None),
+        Err(SessionError::Timeout { .. } | SessionError::Link(_) | SessionError::Noise { .. }) => {
+            Ok(None)
+        }
         Err(e) => Err(e),
     }
 }

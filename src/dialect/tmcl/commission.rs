@@ -231,7 +231,7 @@ fn word(param: &ParamRef, value: &ParamValue) -> Result<i32, SessionError> {
         .as_i64()
         .and_then(|v| i32::try_from(v).ok())
         .ok_or_else(|| {
-            SessionError::Rejected(format!(
+            SessionError::Refused(format!(
                 "{} = {value} is not a 32-bit integer, as TMCL values are",
                 param.name
             ))

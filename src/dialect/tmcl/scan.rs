@@ -246,7 +246,10 @@ fn absent(error: &SessionError) -> bool {
     !error.is_echo_mismatch()
         && matches!(
             error,
-            SessionError::Timeout { .. } | SessionError::Link(_) | SessionError::Device { .. }
+            SessionError::Timeout { .. }
+                | SessionError::Link(_)
+                | SessionError::Noise { .. }
+                | SessionError::Device { .. }
         )
 }
 

@@ -10,7 +10,7 @@
 use std::collections::VecDeque;
 use std::fmt::Write as _;
 
-use super::super::{LocalEcho, SessionError};
+use super::super::{LocalEcho, NoiseKind, SessionError};
 use super::Wire;
 use crate::session::transcript::Entry;
 
@@ -182,7 +182,10 @@ impl Wire {
             hex(&wanted[..wanted.len().min(12)])
         );
         self.note(&message);
-        SessionError::Link(message)
+        SessionError::Noise {
+            said: message,
+            kind: NoiseKind::Echo,
+        }
     }
 
     /// Forgets echo still expected (a link opened anew).

@@ -185,7 +185,7 @@ impl Wire {
             if now >= give_up {
                 self.flush_discarded();
                 self.note("the line did not go quiet");
-                return Err(SessionError::Link(format!(
+                return Err(SessionError::noise(format!(
                     "line noise: the line did not go quiet for {} ms within {} ms after a failed \
                      request, so nothing was sent; check what else talks on the line",
                     window.as_millis(),

@@ -174,7 +174,7 @@ impl Smd4Session {
         let typed =
             crate::dialect::smd4::protocol::request::without_comment(&self.spec.commands, line);
         Request::parse(typed)
-            .map_err(|e| SessionError::Rejected(e.to_string()))
+            .map_err(|e| SessionError::Refused(e.to_string()))
             .and_then(|request| self.request(request))
             .map_err(|e| {
                 crate::dialect::elsewhere::explain(&crate::dialect::smd4::DIALECT, line, e)
@@ -212,7 +212,7 @@ impl Smd4Session {
         match validate(&request, &self.spec.commands) {
             Ok(_) => {}
             Err(error) if self.core.options.validate => {
-                return Err(SessionError::Rejected(error.to_string()));
+                return Err(SessionError::Refused(error.to_string()));
             }
             Err(error) => self
                 .core

@@ -264,7 +264,7 @@ impl Smd4Session {
                     )
                 };
                 self.core.wire.note(&message);
-                Err(SessionError::Link(message))
+                Err(SessionError::noise(message))
             }
         }
     }
@@ -284,7 +284,7 @@ impl Smd4Session {
             self.smd4.quiet_gap.as_millis()
         );
         self.core.wire.note(&message);
-        SessionError::Link(message)
+        SessionError::noise(message)
     }
 
     /// A complete reply, checked against what the command declares: one that fails is line
@@ -309,7 +309,7 @@ impl Smd4Session {
                 request.format(self.smd4.prefix)
             );
             self.core.wire.note(&message);
-            return Err(SessionError::Link(message));
+            return Err(SessionError::noise(message));
         }
         let meaning = match &reply.error {
             Some(error) => format!("error {error}"),

@@ -422,7 +422,7 @@ impl TmclSession {
                     ModuleName(module)
                 );
                 self.core.wire.note(&message);
-                Err(SessionError::Link(message))
+                Err(SessionError::noise(message))
             }
         }
     }
@@ -438,7 +438,7 @@ impl TmclSession {
             format_args!("{what}: line noise, discarded"),
         );
         self.core.wire.note(&message);
-        SessionError::Link(message)
+        SessionError::noise(message)
     }
 
     fn timed_out(

@@ -15,8 +15,8 @@ use super::{TmclExchange, TmclReply, TmclSession, WireMode};
 
 /// Global parameter 76, the serial host address binary replies begin with.
 const HOST_ADDRESS: u8 = 76;
-use crate::session::SessionError;
 use crate::session::transcript::Entry;
+use crate::session::{NoiseKind, SessionError};
 
 impl TmclSession {
     /// Sends one instruction as a binary frame and reads its reply, after a barrier when a reply
@@ -139,12 +139,12 @@ impl TmclSession {
             if !raw[1..].iter().all(u8::is_ascii_graphic) {
                 return Err(self.binary_noise(
                     "not a version string",
-                    format!(
+                    SessionError::noise(format!(
                         "line noise: {} answered command 136 with {}, which is not a firmware \
                          version (8 printable characters, such as 142V1.06); not taken",
                         ModuleName(module),
                         hex(raw)
-                    ),
+                    )),
                 ));
             }
             self.settle_binary(module, raw, deadline)?;
@@ -158,7 +158,7 @@ impl TmclSession {
         let reply = ReplyFrame::decode(raw).map_err(|e| {
             self.binary_noise(
                 "bad checksum",
-                format!("corrupted reply from {}: {e}", ModuleName(module)),
+                SessionError::Link(format!("corrupted reply from {}: {e}", ModuleName(module))),
             )
         })?;
         if reply.is_position_event() {
@@ -180,10 +180,10 @@ impl TmclSession {
         if let Status::Other(code) = reply.status {
             return Err(self.binary_noise(
                 "unknown status",
-                format!(
+                SessionError::noise(format!(
                     "line noise: {} answered with status {code}, which no module sends; not taken",
                     ModuleName(module)
-                ),
+                )),
             ));
         }
         self.settle_binary(module, raw, deadline)?;
@@ -309,7 +309,8 @@ impl TmclSession {
     fn trailing_noise(&mut self, module: u8, reply: &[u8; FRAME_LEN]) -> SessionError {
         let rest = &self.core.wire.rx.bytes()[FRAME_LEN..];
         let after = hex(&rest[..rest.len().min(3 * FRAME_LEN)]);
-        let clash = answered_too(module, reply[0], rest)
+        let other = answered_too(module, reply[0], rest);
+        let clash = other
             .map(|other| {
                 format!(
                     " — a reply from {}, which takes the replies of others for requests: its \
@@ -318,26 +319,31 @@ impl TmclSession {
                 )
             })
             .unwrap_or_default();
+        let said = format!(
+            "line noise: the reply {} from {} was followed by {after}{clash}; not taken",
+            hex(reply),
+            ModuleName(module)
+        );
+        let kind = match other {
+            Some(_) => NoiseKind::HostClash,
+            None => NoiseKind::Garbled,
+        };
         self.binary_noise(
             "a reply followed by more data",
-            format!(
-                "line noise: the reply {} from {} was followed by {after}{clash}; not taken",
-                hex(reply),
-                ModuleName(module)
-            ),
+            SessionError::Noise { said, kind },
         )
     }
 
     /// Ends a binary exchange on line noise, logging what was received.
-    fn binary_noise(&mut self, what: &str, message: String) -> SessionError {
+    fn binary_noise(&mut self, what: &str, error: SessionError) -> SessionError {
         let bytes = self.core.wire.rx.clear();
         self.core.wire.log(
             Entry::Received,
             &bytes,
             format_args!("{what}: line noise, discarded"),
         );
-        self.core.wire.note(&message);
-        SessionError::Link(message)
+        self.core.wire.note(&error.to_string());
+        error
     }
 }
 

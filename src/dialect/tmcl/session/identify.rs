@@ -24,7 +24,7 @@ use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
 use crate::exit::{Exit, Failure};
 
 use super::{TmclReply, TmclSession};
-use crate::session::SessionError;
+use crate::session::{NoiseKind, SessionError};
 
 /// What the session knows about the module it talks to, for the banner and `-v`.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -197,7 +197,9 @@ impl TmclSession {
         }
         match self.assume_ascii(module) {
             Ok(()) => Ok(true),
-            Err(SessionError::Timeout { .. } | SessionError::Link(_)) => {
+            Err(
+                SessionError::Timeout { .. } | SessionError::Link(_) | SessionError::Noise { .. },
+            ) => {
                 self.modules.remove(&module);
                 // The line holds the unanswered line's bytes: quiet before the next frame.
                 self.ascii_sent = true;
@@ -240,11 +242,11 @@ impl TmclSession {
             }
             // Something came back that is no version string: said, and no profile is
             // picked from it.
-            Err(SessionError::Link(message)) if message.starts_with("line noise") => {
+            Err(SessionError::Noise { said, kind }) => {
                 return Ok(Err(Unidentified {
                     short: "no usable answer to 136",
-                    clash: message.contains("host address"),
-                    said: message,
+                    clash: kind == NoiseKind::HostClash,
+                    said,
                     silent: false,
                 }));
             }
