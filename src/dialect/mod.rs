@@ -3,12 +3,13 @@
 //! helpers, completion, commissioning adapter, scan and replay — and one line in [`DIALECTS`].
 //!
 //! The layers above (shell, REPL, CLI) know a dialect only through its [`Dialect`] descriptor, the
-//! [`DialectConfig`] the command line configures from it, and the [`DialectSession`] it opens. A
-//! dialect's own code that needs its concrete session type gets it back by downcasting inside its
-//! folder, never outside it.
+//! [`DialectConfig`] the command line configures from it, and the [`DialectSession`] it opens
+//! with its [`Faces`]. A dialect's own code that needs its concrete session type gets it back by
+//! downcasting inside its folder, never outside it.
 
 mod config;
 pub mod elsewhere;
+pub mod faces;
 pub mod functions;
 pub mod grammar;
 pub mod guard;
@@ -25,6 +26,7 @@ use std::path::Path;
 use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 
 pub use config::{Configured, DialectConfig, Opening, Purpose};
+pub use faces::Faces;
 pub use grammar::Grammar;
 pub use helper::{ArgKind, Helper, Section};
 pub use session::{DialectSession, Reply};

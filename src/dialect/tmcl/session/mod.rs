@@ -17,6 +17,7 @@ mod mode;
 mod probe;
 mod relink;
 mod reset;
+mod seam;
 mod sniff;
 mod stop;
 mod unanswered;
