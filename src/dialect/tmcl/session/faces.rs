@@ -73,7 +73,7 @@ impl TmclSession {
     /// target's, assumed until the module answers.
     fn typed_lines(&self, module: u8) -> ModuleLines {
         let unasked = !self.known.contains_key(&module) && !self.modules.contains_key(&module);
-        if self.identify_each && self.core.options.enter && !self.profile_given && unasked {
+        if self.identify_each && !self.no_enter && !self.profile_given && unasked {
             // Reached the way a module of the target's type would be.
             let profile = self.profile.clone();
             let binary =

@@ -61,7 +61,7 @@ impl DialectSession for TmclSession {
 
     /// Every module goes back to the mode it was found in (unless `--stay-ascii`).
     fn close(&mut self) -> Vec<String> {
-        if self.core.options.stay_ascii {
+        if self.stay_ascii {
             return Vec::new();
         }
         // Mode restores carry no value for anyone: they need not wait for a suspect line.
