@@ -333,8 +333,6 @@ impl SessionArgs {
             module: self.module,
             timeout: Duration::from_millis(self.timeout),
             validate: !self.no_validate,
-            enter: !self.no_enter,
-            stay_ascii: self.stay_ascii,
             reconnect: self.reconnect,
             local_echo: self.local_echo.into(),
         }

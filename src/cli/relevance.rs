@@ -168,7 +168,7 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
     }
     if let Some(chosen) = dialect(leaf) {
         for other in DIALECTS.iter().filter(|d| !std::ptr::eq(**d, chosen)) {
-            let why = other.refusal.replace("{protocol}", chosen.name);
+            let why = other.refusal(chosen);
             let ids = own_options(other);
             refuse(&ids.iter().map(String::as_str).collect::<Vec<_>>(), why);
         }

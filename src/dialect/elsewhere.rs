@@ -27,7 +27,8 @@ pub fn line_dialect(this: &Dialect, line: &str) -> Option<&'static Dialect> {
 pub fn line_message(other: &Dialect) -> String {
     format!(
         "this looks like {} command — add `--protocol {}`",
-        other.indefinite, other.name
+        other.indefinite(),
+        other.name
     )
 }
 
@@ -60,7 +61,8 @@ pub fn script_dialect(this: &Dialect, name: &str) -> Option<&'static Dialect> {
 pub fn script_message(other: &Dialect) -> String {
     format!(
         "this looks like {} script — add `--protocol {}`",
-        other.indefinite, other.name
+        other.indefinite(),
+        other.name
     )
 }
 

@@ -3,12 +3,13 @@
 //! helpers, completion, commissioning adapter, scan and replay — and one line in [`DIALECTS`].
 //!
 //! The layers above (shell, REPL, CLI) know a dialect only through its [`Dialect`] descriptor, the
-//! [`DialectConfig`] the command line configures from it, and the [`DialectSession`] it opens. A
-//! dialect's own code that needs its concrete session type gets it back by downcasting inside its
-//! folder, never outside it.
+//! [`DialectConfig`] the command line configures from it, and the [`DialectSession`] it opens
+//! with its [`Faces`]. A dialect's own code that needs its concrete session type gets it back by
+//! downcasting inside its folder, never outside it.
 
 mod config;
 pub mod elsewhere;
+pub mod faces;
 pub mod functions;
 pub mod grammar;
 pub mod guard;
@@ -25,6 +26,7 @@ use std::path::Path;
 use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 
 pub use config::{Configured, DialectConfig, Opening, Purpose};
+pub use faces::Faces;
 pub use grammar::Grammar;
 pub use helper::{ArgKind, Helper, Section};
 pub use session::{DialectSession, Reply};
@@ -46,8 +48,6 @@ pub struct Dialect {
     pub summary: &'static str,
     /// What its modules are called in messages (`TMCL modules`, `SMD4 drives`).
     pub devices: &'static str,
-    /// Its name for messages with the indefinite article (`a TMCL`, `an SMD4`).
-    pub indefinite: &'static str,
     /// Whether a typed line reads as one of its commands by its own grammar and built-in
     /// tables, right arguments or not: how a line typed in the wrong session is told
     /// ([`elsewhere`]).
@@ -62,8 +62,6 @@ pub struct Dialect {
     /// Options of the shared group only this dialect uses (its own flags count too): refused
     /// when another dialect is chosen.
     pub own_options: &'static [&'static str],
-    /// Why one of its options is refused under another dialect; `{protocol}` names that one.
-    pub refusal: &'static str,
     /// Adds its session flags (`tmclsh --protocol NAME --FLAG`) to a command.
     #[cfg(feature = "cli")]
     pub session_flags: fn(clap::Command) -> clap::Command,
@@ -74,16 +72,11 @@ pub struct Dialect {
     /// simulators refuse.
     #[cfg(feature = "cli")]
     pub sim_flag_given: fn(&CommandLine) -> Option<&'static str>,
-    /// The module its simulator stands for in messages (`TMCM-142`).
-    pub simulated: &'static str,
     /// The commands of its simulator's console, for `tmclsh sim --help` and the console's `help`.
     pub console: &'static crate::sim::console::Section,
     /// The note that opens its sessions in a transcript written before transcripts had headers;
     /// a file with none of these notes is read as the default dialect's.
     pub legacy_note: Option<&'static str>,
-    /// Whether a line (not a helper line) of the history file earlier versions shared between
-    /// the dialects was typed in this one, from its look.
-    pub typed_here: fn(&str) -> bool,
     /// What `:scan` and `tmclsh scan` try by default (`1-26`).
     pub scan_addresses: &'static str,
     /// The highest bus address a scan may name.
@@ -108,6 +101,26 @@ pub enum CommandLine {}
 /// How a dialect reads its tables: from the `--profile` file, if one is given; the error is a
 /// refusal (exit 2).
 pub type Configure = fn(profile: Option<&Path>) -> Result<Box<dyn DialectConfig>, String>;
+
+impl Dialect {
+    /// Its name for messages with the indefinite article (`a TMCL`, `an SMD4`).
+    pub fn indefinite(&self) -> String {
+        crate::article::with_article(&self.name.to_uppercase())
+    }
+
+    /// Why one of its options is refused when `chosen` is the protocol: the default dialect's
+    /// name the protocol chosen, the others' the `--protocol` that takes them.
+    pub fn refusal(&self, chosen: &Dialect) -> String {
+        if self == default_dialect() {
+            format!(
+                "is for {}, and the protocol is {}",
+                self.devices, chosen.name
+            )
+        } else {
+            format!("is for {} (--protocol {})", self.devices, self.name)
+        }
+    }
+}
 
 impl fmt::Debug for Dialect {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -159,4 +172,23 @@ pub fn protocol_parser() -> impl TypedValueParser<Value = &'static Dialect> {
 #[cfg(feature = "cli")]
 pub(crate) fn no_flags(cmd: clap::Command) -> clap::Command {
     cmd
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_name_each_dialect_as_its_descriptor_derives_it() {
+        assert_eq!(tmcl::DIALECT.indefinite(), "a TMCL");
+        assert_eq!(smd4::DIALECT.indefinite(), "an SMD4");
+        assert_eq!(
+            tmcl::DIALECT.refusal(&smd4::DIALECT),
+            "is for TMCL modules, and the protocol is smd4"
+        );
+        assert_eq!(
+            smd4::DIALECT.refusal(&tmcl::DIALECT),
+            "is for SMD4 drives (--protocol smd4)"
+        );
+    }
 }

@@ -1,12 +1,12 @@
 //! An open session of any dialect, as the faces (the REPL, `-c`/stdin lines, scripts, the
-//! commissioning helpers, the CLI) use it: one object-safe trait. What every dialect does alike
+//! commissioning helpers, the CLI) use it: one object-safe trait for the wire, its presentation
+//! in [`Faces`]. What every dialect does alike
 //! is written here once, over the [`SessionCore`] each session holds; a dialect implements only
 //! what differs. Code that needs a dialect's own session type downcasts inside that dialect's
 //! folder ([`AsAny`]).
 
 use std::any::Any;
 use std::fmt;
-use std::io::{self, Write};
 use std::sync::Arc;
 use std::time::Duration;
 
@@ -17,7 +17,7 @@ use crate::session::core::SessionCore;
 use crate::session::transcript::{Header, Transcript};
 use crate::session::{SessionError, SessionOptions};
 
-use super::{Dialect, Grammar, Helper};
+use super::{Dialect, Faces};
 
 /// A typed line's outcome, in the forms the faces show it.
 #[derive(Debug, Clone)]
@@ -128,8 +128,8 @@ impl<T: Any> AsAny for T {
     }
 }
 
-/// An open session of one dialect.
-pub trait DialectSession: AsAny {
+/// An open session of one dialect: the wire. What the faces show of it is its [`Faces`].
+pub trait DialectSession: Faces + AsAny {
     /// The dialect spoken.
     fn dialect(&self) -> &'static Dialect;
 
@@ -155,40 +155,8 @@ pub trait DialectSession: AsAny {
     /// done.
     fn close(&mut self) -> Vec<String>;
 
-    /// The REPL's prompt: which module typed lines go to, and how.
-    fn prompt(&self) -> String;
-
-    /// The banner's words for what is talked to (`TMCM-142, module 1`).
-    fn banner(&self) -> String;
-
     /// The header of this session's transcripts (`:log FILE`).
     fn header(&self) -> Header;
-
-    /// What typed lines mean, for the line editor: a snapshot of the current state (the REPL
-    /// asks again before each prompt).
-    fn grammar(&self) -> Arc<dyn Grammar>;
-
-    /// Runs a helper command the dialect answers: one of its own ([`Dialect::helpers`]), or
-    /// `:params` and `:target`, which every dialect has in its own way.
-    fn run_helper(
-        &mut self,
-        helper: &Helper,
-        arg: &str,
-        out: &mut dyn Write,
-    ) -> Result<(), SessionError>;
-
-    /// The first lines of `:help`: how this dialect's lines are typed.
-    fn help_intro(&self, out: &mut dyn Write) -> io::Result<()>;
-
-    /// The topics `:help` names at its end (`:help COMMAND, :help exit …`).
-    fn help_more(&self) -> &'static str;
-
-    /// `:help TOPIC` for a topic of this dialect (`ascii`, `addressing`); false when `topic`
-    /// (lower case) is none of them.
-    fn help_topic(&self, topic: &str, out: &mut dyn Write) -> io::Result<bool>;
-
-    /// `:help WORD` for one of its commands; false when `word` names none.
-    fn help_command(&self, word: &str, out: &mut dyn Write) -> io::Result<bool>;
 
     /// The module talked to, as the commissioning tools see it (snapshots, watches,
     /// recordings).

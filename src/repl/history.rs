@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use rustyline::Editor;
 use rustyline::history::{DefaultHistory, History};
 
-use crate::dialect::Dialect;
+use crate::dialect::{Dialect, elsewhere};
 
 use super::editor::ReplHelper;
 
@@ -51,11 +51,12 @@ pub(super) fn save(editor: &mut Editor<ReplHelper, DefaultHistory>, dialect: &Di
     let _ = editor.save_history(Path::new(&path));
 }
 
-/// Whether a line of the shared history was typed in `dialect` (its descriptor says, from the
-/// line's look); helper lines (`:help`) belong to every dialect.
+/// Whether a line of the shared history was typed in `dialect`: not one another dialect's
+/// grammar knows and its own does not ([`elsewhere`]); helper lines (`:help`) belong to every
+/// dialect.
 fn belongs(line: &str, dialect: &Dialect) -> bool {
     let line = line.trim_start();
-    line.starts_with(':') || (dialect.typed_here)(line)
+    line.starts_with(':') || elsewhere::line_dialect(dialect, line).is_none()
 }
 
 #[cfg(test)]

@@ -33,10 +33,6 @@ pub struct SessionOptions {
     pub timeout: Duration,
     /// Refuse invalid lines before sending (off with `--no-validate`).
     pub validate: bool,
-    /// Send the enter-ASCII-mode frame on open (off with `--no-enter`).
-    pub enter: bool,
-    /// Leave modules in ASCII mode on exit (`--stay-ascii`).
-    pub stay_ascii: bool,
     /// How long a run that is not interactive waits for a lost link to come back
     /// (`--reconnect`); `None`: it fails at once (exit 3).
     pub reconnect: Option<Duration>,
@@ -63,8 +59,6 @@ impl Default for SessionOptions {
             module: 1,
             timeout: Duration::from_millis(1000),
             validate: true,
-            enter: true,
-            stay_ascii: false,
             reconnect: None,
             local_echo: LocalEcho::Auto,
         }

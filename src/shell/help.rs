@@ -3,8 +3,8 @@
 
 use std::io::{self, Write};
 
-use crate::dialect::DialectSession;
 use crate::dialect::helper::Helper;
+use crate::dialect::{Dialect, Faces};
 
 use super::helpers;
 
@@ -30,22 +30,22 @@ fn helper_rows(h: &Helper, indent: &str, width: Option<usize>) -> String {
     )
 }
 
-/// Writes the help on `topic` (empty: the overview).
+/// Writes the help on `topic` (empty: the overview) in a session of `dialect` showing `faces`.
 pub(super) fn write_help(
     topic: &str,
-    session: &dyn DialectSession,
+    dialect: &'static Dialect,
+    faces: &(impl Faces + ?Sized),
     out: &mut dyn Write,
 ) -> io::Result<()> {
     let topic = topic.trim().trim_start_matches(':');
-    let dialect = session.dialect();
     if topic.is_empty() {
-        session.help_intro(out)?;
+        faces.help_intro(out)?;
         writeln!(out, "Helper commands:")?;
         let width = crate::wrap::terminal_width();
         for h in helpers::available(dialect) {
             writeln!(out, "{}", helper_rows(h, "  ", width))?;
         }
-        let more = format!("More: {}", session.help_more());
+        let more = format!("More: {}", faces.help_more());
         return writeln!(out, "\n{}", crate::wrap::fit(&more, 6, width));
     }
     let word = topic.to_ascii_lowercase();
@@ -85,13 +85,13 @@ pub(super) fn write_help(
             crate::wrap::fit(TIMES, 0, crate::wrap::terminal_width())
         );
     }
-    if session.help_topic(&word, out)? {
+    if faces.help_topic(&word, out)? {
         return Ok(());
     }
     if let Ok(h) = helpers::find(&word, dialect) {
         return writeln!(out, "{}", helper_rows(h, "", crate::wrap::terminal_width()));
     }
-    if session.help_command(&word, out)? {
+    if faces.help_command(&word, out)? {
         return Ok(());
     }
     if let Some(function) = crate::dialect::functions::find(dialect, topic) {

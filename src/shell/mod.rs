@@ -101,7 +101,7 @@ impl Shell {
             )));
         }
         match helper.name {
-            "help" => help::write_help(arg, self.session_ref(), out)?,
+            "help" => help::write_help(arg, dialect, self.session_ref(), out)?,
             "log" => self.set_log(arg, out)?,
             "raw" => {
                 self.raw = !self.raw;

@@ -28,23 +28,19 @@ pub static DIALECT: Dialect = Dialect {
     name: "smd4",
     summary: "AML SMD4 text protocol",
     devices: "SMD4 drives",
-    indefinite: "an SMD4",
     recognises: protocol::request::recognises,
     script_functions: script::FUNCTIONS,
     helpers: helpers::HELPERS,
     configure: config::configure,
     own_options: &[],
-    refusal: "is for SMD4 drives (--protocol smd4)",
     #[cfg(feature = "cli")]
     session_flags: <flags::SessionFlags as clap::Args>::augment_args,
     #[cfg(feature = "cli")]
     sim_flags: sim::flags::add,
     #[cfg(feature = "cli")]
     sim_flag_given: sim::flags::given,
-    simulated: "SMD4",
     console: &sim::CONSOLE,
     legacy_note: Some(replay::OPENED),
-    typed_here,
     scan_addresses: "1-247",
     // 247 fits a byte; a test of the descriptor compares the two.
     max_address: protocol::MAX_ADDRESS as u8,
@@ -52,8 +48,3 @@ pub static DIALECT: Dialect = Dialect {
     param_example: "MOTOR:PACT,MOTOR:VACT",
 };
 
-/// SMD4 mnemonics have colons (`MOTOR:VMAX`, `@3,SYS:FW`): how the history of earlier versions,
-/// shared with TMCL, is split.
-fn typed_here(line: &str) -> bool {
-    line.contains(':')
-}

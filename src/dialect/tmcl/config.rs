@@ -84,17 +84,19 @@ impl TmclConfig {
     }
 }
 
-/// Whether `--binary` (or a configuration file) asks for binary direct mode.
+/// Whether the switch `id` (`--binary`, `--no-enter`, `--stay-ascii`) is on, by the command
+/// line or a configuration file.
 #[cfg(feature = "cli")]
-fn binary_flag(flags: Option<&CommandLine>) -> bool {
+fn switch(flags: Option<&CommandLine>, id: &str) -> bool {
     flags
-        .and_then(|m| m.try_get_one::<bool>("binary").ok().flatten().copied())
+        .and_then(|m| m.try_get_one::<bool>(id).ok().flatten().copied())
         .unwrap_or(false)
 }
 
-/// Without a command line, the session enters ASCII mode where the module has it.
+/// Without a command line every switch is off: the session enters ASCII mode where the module
+/// has it, and puts the modules back at the end.
 #[cfg(not(feature = "cli"))]
-fn binary_flag(flags: Option<&CommandLine>) -> bool {
+fn switch(flags: Option<&CommandLine>, _id: &str) -> bool {
     flags.is_some_and(|never| match *never {})
 }
 
@@ -161,7 +163,9 @@ impl DialectConfig for TmclConfig {
             Purpose::Talk => {
                 let connect = Connect {
                     profile_given: self.given,
-                    binary: binary_flag(flags),
+                    binary: switch(flags, "binary"),
+                    no_enter: switch(flags, "no_enter"),
+                    stay_ascii: switch(flags, "stay_ascii"),
                 };
                 let mut session =
                     TmclSession::connect(link, profile, connect, options, transcript)?;

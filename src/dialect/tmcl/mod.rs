@@ -34,7 +34,6 @@ pub static DIALECT: Dialect = Dialect {
     name: "tmcl",
     summary: "Trinamic TMCL: ASCII interface (manual §6.6), binary frames after `:bin`",
     devices: "TMCL modules",
-    indefinite: "a TMCL",
     recognises: protocol::line::recognises,
     script_functions: script::FUNCTIONS,
     helpers: helpers::HELPERS,
@@ -47,17 +46,14 @@ pub static DIALECT: Dialect = Dialect {
         "echo",
         "binary",
     ],
-    refusal: "is for TMCL modules, and the protocol is {protocol}",
     #[cfg(feature = "cli")]
     session_flags: crate::dialect::no_flags,
     #[cfg(feature = "cli")]
     sim_flags: sim::flags::add,
     #[cfg(feature = "cli")]
     sim_flag_given: sim::flags::given,
-    simulated: "TMCM-142",
     console: &sim::CONSOLE,
     legacy_note: None,
-    typed_here,
     scan_addresses: "1-26",
     max_address: 255,
     scan_example: "1-26 200ms",
@@ -74,8 +70,3 @@ pub fn session(session: &mut dyn DialectSession) -> Option<&mut TmclSession> {
     session.as_any_mut().downcast_mut()
 }
 
-/// TMCL lines have no colons (SMD4 mnemonics do): how the history of earlier versions, shared
-/// with SMD4, is split.
-fn typed_here(line: &str) -> bool {
-    !line.contains(':')
-}

@@ -15,6 +15,7 @@
 mod barrier;
 mod faces;
 mod receive;
+mod seam;
 mod sniff;
 
 use std::time::Duration;

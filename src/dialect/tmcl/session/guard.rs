@@ -11,7 +11,7 @@ impl Drop for TmclSession {
         on_panic(self, |session| {
             let mut restored = session.close();
             if restored.is_empty() {
-                restored.push(if session.options().stay_ascii {
+                restored.push(if session.stay_ascii {
                     "modules left in ASCII mode (--stay-ascii)".to_string()
                 } else {
                     "modules returned to the mode they were found in".to_string()

@@ -107,7 +107,7 @@ impl TmclSession {
     /// has (a module identified before a reconnect, which says so itself).
     pub(super) fn settle_identity(&mut self, module: u8, strict: bool) -> Result<(), SessionError> {
         self.identify_each = true;
-        if !self.core.options.enter {
+        if self.no_enter {
             return Ok(());
         }
         let identity = self.ask_identity(module, strict)?;

@@ -17,6 +17,7 @@ mod mode;
 mod probe;
 mod relink;
 mod reset;
+mod seam;
 mod sniff;
 mod stop;
 mod unanswered;
@@ -48,6 +49,10 @@ use unanswered::{Unanswered, harmless};
 /// A TMCL conversation with the modules on one link.
 pub struct TmclSession {
     core: SessionCore,
+    /// `--no-enter`: no enter-ASCII-mode frame (see [`Connect`]).
+    no_enter: bool,
+    /// `--stay-ascii`: the modules are not put back at the end.
+    stay_ascii: bool,
     profile: Arc<Profile>,
     target: u8,
     modules: BTreeMap<u8, mode::ModuleState>,
@@ -105,10 +110,14 @@ pub struct Connect {
     pub profile_given: bool,
     /// Binary direct mode for every module (`--binary`).
     pub binary: bool,
+    /// No enter-ASCII-mode frame: the modules are in ASCII mode already (`--no-enter`).
+    pub no_enter: bool,
+    /// Modules left in ASCII mode at the end instead of put back (`--stay-ascii`).
+    pub stay_ascii: bool,
 }
 
 impl TmclSession {
-    /// Opens a session: enters ASCII mode on the target module (unless `options.enter` is off)
+    /// Opens a session: enters ASCII mode on the target module
     /// and learns its echo behaviour.
     pub fn open(
         link: Box<dyn Link>,
@@ -133,6 +142,8 @@ impl TmclSession {
     ) -> Result<Self, SessionError> {
         let mut session = Self::open_idle(link, profile, options, transcript)?;
         session.binary_only = connect.binary || session.frames_only;
+        session.no_enter = connect.no_enter;
+        session.stay_ascii = connect.stay_ascii;
         session.identify(connect.profile_given)?;
         session.contact(session.target)?;
         Ok(session)
@@ -154,6 +165,8 @@ impl TmclSession {
         let frames_only = link.frames_only();
         let mut session = TmclSession {
             target: options.module,
+            no_enter: false,
+            stay_ascii: false,
             core: SessionCore::new(link, options, transcript),
             fallback: profile.clone(),
             known: BTreeMap::new(),

@@ -131,7 +131,7 @@ impl TmclSession {
             self.start_binary(module, &why)?;
             return Ok(WireMode::Binary);
         }
-        if self.core.options.enter {
+        if !self.no_enter {
             match self.enter_ascii(module) {
                 Ok(()) => {}
                 // It answered 136 in binary: it is there, without (working) ASCII mode.

@@ -272,6 +272,15 @@ fn open_with(
     quirks: Quirks,
     options: SessionOptions,
 ) -> (Result<TmclSession, SessionError>, Arc<Mutex<Wire>>) {
+    let (link, wire) = fake_link(quirks);
+    (
+        TmclSession::open(link, Profile::builtin(), options, None),
+        wire,
+    )
+}
+
+/// A link to a fake module with `quirks`, and what crossed it.
+fn fake_link(quirks: Quirks) -> (Box<FakeLink>, Arc<Mutex<Wire>>) {
     let wire = Arc::new(Mutex::new(Wire::default()));
     let module = FakeModule {
         quirks,
@@ -283,11 +292,7 @@ fn open_with(
         held: Vec::new(),
         holding: false,
     };
-    let link = Box::new(FakeLink { module });
-    (
-        TmclSession::open(link, Profile::builtin(), options, None),
-        wire,
-    )
+    (Box::new(FakeLink { module }), wire)
 }
 
 /// How many times the frame of `instruction` to module 1 went out on `wire`.
@@ -437,14 +442,10 @@ fn no_enter_skips_the_139_frame() {
         gp67: 0x20,
         ..Quirks::default()
     };
-    let (s, wire) = open_with(
-        quirks,
-        SessionOptions {
-            enter: false,
-            ..options()
-        },
-    );
-    let mut s = s.unwrap();
+    let (link, wire) = fake_link(quirks);
+    let mut s = TmclSession::open_idle(link, Profile::builtin(), options(), None).unwrap();
+    s.no_enter = true;
+    s.contact(1).unwrap();
     assert!(wire.lock().unwrap().sent.starts_with(b"AGGP 67, 0\r"));
     s.close();
     assert!(!sent_text(&wire).contains("BIN"));
