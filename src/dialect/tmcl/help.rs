@@ -99,10 +99,7 @@ pub(super) fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io:
         (false, false) => "stand-alone programs only",
     };
     writeln!(out, "  usable in: {place}")?;
-    if spec
-        .operand_for(Field::Type)
-        .is_some_and(|o| o.kind == OperandKind::Port)
-    {
+    if spec.field_is(Field::Type, OperandKind::Port) {
         let writes = spec.operand_for(Field::Value).is_some();
         let line = format!("  {}", ports::help_line(profile, writes));
         write_fitted(out, &line, 2)?;
