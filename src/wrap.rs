@@ -3,7 +3,7 @@
 //! whatever letter meets the edge. Output that is not a terminal is left as it is, one row a line,
 //! for the programs that read it.
 
-use std::io::IsTerminal;
+use std::io::{self, IsTerminal, Write};
 
 /// The terminal's width, when stdout is a terminal that tells it (never without the `cli`
 /// feature, which brings the terminal).
@@ -20,6 +20,11 @@ pub fn terminal_width() -> Option<usize> {
     }
     #[cfg(not(feature = "cli"))]
     None
+}
+
+/// Writes `row` as a line fitted to the terminal's width (see [`fit`]).
+pub fn write_fitted(out: &mut dyn Write, row: &str, indent: usize) -> io::Result<()> {
+    writeln!(out, "{}", fit(row, indent, terminal_width()))
 }
 
 /// `row` fitted to `width` columns (none: as it is): what follows column `indent` is wrapped at

@@ -85,6 +85,20 @@ pub fn describe_addresses(addresses: &[u8]) -> String {
     parts.join(", ")
 }
 
+/// A scan's summary line: how many of `noun` answered where, and how long each reply was
+/// awaited (`3 modules answered at 1-26 (at most 200 ms per reply)`, `no drive answered at …`).
+pub fn scan_summary(found: usize, noun: &str, scanned: &[u8], per_reply: Duration) -> String {
+    let who = match found {
+        0 => format!("no {noun} answered"),
+        n => format!("{} answered", crate::count::counted(n, noun)),
+    };
+    format!(
+        "{who} at {} (at most {} ms per reply)",
+        describe_addresses(scanned),
+        per_reply.as_millis()
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -5,6 +5,7 @@ use std::io::{self, Write};
 
 use crate::dialect::helper::Helper;
 use crate::dialect::{Dialect, Faces};
+use crate::wrap::write_fitted;
 
 use super::helpers;
 
@@ -50,40 +51,17 @@ pub(super) fn write_help(
     }
     let word = topic.to_ascii_lowercase();
     if word == "exit" {
-        writeln!(
-            out,
-            "{}",
-            crate::wrap::fit(
-                "Leave with :quit, quit or exit (anything typed after them is ignored: exit 1 leaves with the session's own exit code) or Ctrl-D; the modules go back to the mode they were found in.",
-                0,
-                crate::wrap::terminal_width()
-            )
-        )?;
-        writeln!(
-            out,
-            "{}",
-            crate::wrap::fit(
-                "Ctrl-C stops a command and the motor; at the prompt it stops the motors this session set moving.",
-                0,
-                crate::wrap::terminal_width()
-            )
-        )?;
-        return writeln!(
-            out,
-            "{}",
-            crate::wrap::fit(
-                "Exit codes: 0 success, 1 device error or failed assertion, 2 refused before sending, 3 connection/timeout/lost link, 130 Ctrl-C.",
-                0,
-                crate::wrap::terminal_width()
-            )
-        );
+        for line in [
+            "Leave with :quit, quit or exit (anything typed after them is ignored: exit 1 leaves with the session's own exit code) or Ctrl-D; the modules go back to the mode they were found in.",
+            "Ctrl-C stops a command and the motor; at the prompt it stops the motors this session set moving.",
+            "Exit codes: 0 success, 1 device error or failed assertion, 2 refused before sending, 3 connection/timeout/lost link, 130 Ctrl-C.",
+        ] {
+            write_fitted(out, line, 0)?;
+        }
+        return Ok(());
     }
     if word == "time" || word == "times" {
-        return writeln!(
-            out,
-            "{}",
-            crate::wrap::fit(TIMES, 0, crate::wrap::terminal_width())
-        );
+        return write_fitted(out, TIMES, 0);
     }
     if faces.help_topic(&word, out)? {
         return Ok(());
@@ -96,11 +74,7 @@ pub(super) fn write_help(
     }
     if let Some(function) = crate::dialect::functions::find(dialect, topic) {
         let text = crate::script::registry::help_line(function);
-        return writeln!(
-            out,
-            "{}",
-            crate::wrap::fit(&text, 0, crate::wrap::terminal_width())
-        );
+        return write_fitted(out, &text, 0);
     }
     writeln!(out, "no help on '{topic}'; :help lists topics")
 }

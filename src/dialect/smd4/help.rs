@@ -6,28 +6,17 @@ use super::protocol::flags::FlagTable;
 use super::protocol::{ADDRESSING_HELP, Smd4Spec, hints};
 use super::values;
 use crate::dialect::UNCERTAIN;
-use crate::wrap::{fit, terminal_width};
+use crate::wrap::write_fitted;
 
 /// How SMD4 requests are typed: the first lines of `:help`.
 pub(super) fn intro(out: &mut dyn Write) -> io::Result<()> {
-    writeln!(
-        out,
-        "{}",
-        fit(
-            "Type SMD4 requests, e.g. MOTOR:VMAX (read) or MOTOR:VMAX,2000 (write); @N addresses a drive.",
-            0,
-            terminal_width()
-        )
-    )?;
-    writeln!(
-        out,
-        "{}\n",
-        fit(
-            "Tab completes the hierarchical mnemonics (MOTOR:, SYS:, LIMIT:, BAKE:, BOOST:, COMS:NET:, COMS:SERIAL:).",
-            0,
-            terminal_width()
-        )
-    )
+    for line in [
+        "Type SMD4 requests, e.g. MOTOR:VMAX (read) or MOTOR:VMAX,2000 (write); @N addresses a drive.",
+        "Tab completes the hierarchical mnemonics (MOTOR:, SYS:, LIMIT:, BAKE:, BOOST:, COMS:NET:, COMS:SERIAL:).",
+    ] {
+        write_fitted(out, line, 0)?;
+    }
+    writeln!(out)
 }
 
 /// The topics named at the end of `:help`.
@@ -71,7 +60,7 @@ pub(super) fn command(table: &Smd4Spec, word: &str, out: &mut dyn Write) -> io::
         "  {}",
         hint.strip_prefix(&usage).unwrap_or(&hint).trim_start()
     );
-    writeln!(out, "{}", fit(&text, 2, terminal_width()))?;
+    write_fitted(out, &text, 2)?;
     if spec.uncertain {
         writeln!(out, "  ({UNCERTAIN}: see :help params)")?;
     }
@@ -84,11 +73,10 @@ pub(super) fn command(table: &Smd4Spec, word: &str, out: &mut dyn Write) -> io::
 /// The bits of both flag words, for `:help SYS:FLAGS`: what the reply's two words say, and what
 /// the fixed item after them is.
 fn flag_bits(spec: &Smd4Spec, out: &mut dyn Write) -> io::Result<()> {
-    let width = terminal_width();
     let note = "  The reply is the two flag words every reply starts with, read bit by bit below. \
                 The item 1 after them is in the protocol document's example, which does not \
                 explain it: it is checked and not shown (:raw shows it).";
-    writeln!(out, "{}", fit(note, 2, width))?;
+    write_fitted(out, note, 2)?;
     let words = [
         ("Status (SFLAGS, the first word):", &spec.sflags, "status"),
         (
@@ -100,7 +88,7 @@ fn flag_bits(spec: &Smd4Spec, out: &mut dyn Write) -> io::Result<()> {
     ];
     let mut reserved = Vec::new();
     for (title, table, word) in words {
-        writeln!(out, "{}", fit(&format!("  {title}"), 2, width))?;
+        write_fitted(out, &format!("  {title}"), 2)?;
         for bit in table
             .bits()
             .iter()
@@ -112,7 +100,7 @@ fn flag_bits(spec: &Smd4Spec, out: &mut dyn Write) -> io::Result<()> {
                 String::new()
             };
             let row = format!("  {:>4}  {}{mark} — {}", bit.bit, bit.name, bit.meaning);
-            writeln!(out, "{}", fit(&row, 8, width))?;
+            write_fitted(out, &row, 8)?;
         }
         let bits = reserved_bits(table);
         if !bits.is_empty() {
@@ -121,7 +109,7 @@ fn flag_bits(spec: &Smd4Spec, out: &mut dyn Write) -> io::Result<()> {
     }
     if !reserved.is_empty() {
         let row = format!("  Reserved, reading 0: {}.", reserved.join("; "));
-        writeln!(out, "{}", fit(&row, 2, width))?;
+        write_fitted(out, &row, 2)?;
     }
     Ok(())
 }

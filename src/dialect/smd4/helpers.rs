@@ -27,11 +27,7 @@ pub fn run(
         "params" => {
             let mut any = false;
             for spec in hints::matching(&session.spec().commands, arg) {
-                writeln!(
-                    out,
-                    "{}",
-                    hints::fitted_row(spec, crate::wrap::terminal_width())
-                )?;
+                super::params::write_row(spec, out)?;
                 any = true;
             }
             if !any {
@@ -54,26 +50,21 @@ pub fn run(
                 .map(|r| (r.sflags.0, r.eflags.0))
                 .unwrap_or((0, 0));
             let spec = session.spec();
-            writeln!(out, "SFLAGS {sflags:#06X}")?;
-            for bit in spec.sflags.bits() {
-                let mark = if sflags & (1 << bit.bit) != 0 {
-                    'X'
-                } else {
-                    ' '
-                };
-                writeln!(out, "  [{mark}] {:>2} {}", bit.bit, bit.name)?;
-            }
-            writeln!(
-                out,
-                "EFLAGS {eflags:#06X} (latching; SYS:CLR clears; any set bit disables the motor)"
-            )?;
-            for bit in spec.eflags.bits() {
-                let mark = if eflags & (1 << bit.bit) != 0 {
-                    'X'
-                } else {
-                    ' '
-                };
-                writeln!(out, "  [{mark}] {:>2} {}", bit.bit, bit.name)?;
+            let words = [
+                (format!("SFLAGS {sflags:#06X}"), sflags, &spec.sflags),
+                (
+                    format!(
+                        "EFLAGS {eflags:#06X} (latching; SYS:CLR clears; any set bit disables the motor)"
+                    ),
+                    eflags,
+                    &spec.eflags,
+                ),
+            ];
+            for (title, word, table) in words {
+                writeln!(out, "{title}")?;
+                for bit in table.bits() {
+                    writeln!(out, "  [{}] {:>2} {}", bit.mark(word), bit.bit, bit.name)?;
+                }
             }
         }
         other => unreachable!("helper table and SMD4 dispatch disagree on :{other}"),

@@ -3,7 +3,7 @@
 
 use std::io::{self, Write};
 
-use super::protocol::{Smd4Spec, hints};
+use super::protocol::{Smd4Command, Smd4Spec, hints};
 use crate::json::{Value, json};
 
 /// The SMD4 commands matching `filter`, one row each, as the shell's `:params` shows them; when
@@ -15,13 +15,15 @@ pub fn write_params(filter: &str, out: &mut dyn Write) -> io::Result<bool> {
         return Ok(false);
     }
     for spec in rows {
-        writeln!(
-            out,
-            "{}",
-            hints::fitted_row(spec, crate::wrap::terminal_width())
-        )?;
+        write_row(spec, out)?;
     }
     Ok(true)
+}
+
+/// One row of the command table fitted to the terminal: what the argument accepts continues
+/// under itself.
+pub(super) fn write_row(spec: &Smd4Command, out: &mut dyn Write) -> io::Result<()> {
+    crate::wrap::write_fitted(out, &hints::table_row(spec), 29)
 }
 
 /// The SMD4 commands matching `filter` as JSON objects (`params --json`); the error says that

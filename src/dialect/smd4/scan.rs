@@ -16,7 +16,7 @@ use crate::dialect::smd4::session::Smd4Session;
 use crate::json::json;
 use crate::session::SessionError;
 
-use crate::commission::scan::describe_addresses;
+use crate::commission::scan::scan_summary;
 use crate::dialect::session::{BusScan, DialectSession};
 use crate::progress::Progress;
 
@@ -142,21 +142,12 @@ addressing mode until they restart: talk to them with --address N (:target N)";
 
 /// "2 drives answered at 1-247 (at most 100 ms per reply)".
 pub fn summary(report: &Smd4Scan) -> String {
-    let who = match report.found.len() {
-        0 => "no drive answered".to_string(),
-        1 => "1 drive answered".to_string(),
-        n => format!("{n} drives answered"),
-    };
     let scanned: Vec<u8> = report
         .scanned
         .iter()
         .filter_map(|a| u8::try_from(*a).ok())
         .collect();
-    format!(
-        "{who} at {} (at most {} ms per reply)",
-        describe_addresses(&scanned),
-        report.per_reply.as_millis()
-    )
+    scan_summary(report.found.len(), "drive", &scanned, report.per_reply)
 }
 
 #[cfg(test)]

@@ -7,37 +7,18 @@ use super::ports;
 use super::profile::commands::{Field, OperandKind};
 use super::profile::{Param, ParamKind, Profile};
 use crate::dialect::UNCERTAIN;
-use crate::wrap::{fit, terminal_width};
+use crate::wrap::write_fitted;
 
 /// How TMCL lines are typed: the first lines of `:help`.
 pub(super) fn intro(out: &mut dyn Write) -> io::Result<()> {
-    writeln!(
-        out,
-        "{}",
-        fit(
-            "Type TMCL commands as in the TMCL-IDE, e.g. GAP actual_position, 0 or MVP ABS, 0, 1000.",
-            0,
-            terminal_width()
-        )
-    )?;
-    writeln!(
-        out,
-        "{}",
-        fit(
-            "Parameter names work in place of numbers; Tab completes, hints show units and ranges.",
-            0,
-            terminal_width()
-        )
-    )?;
-    writeln!(
-        out,
-        "{}\n",
-        fit(
-            "A leading address character reaches another module: CGAP 4, 0.",
-            0,
-            terminal_width()
-        )
-    )
+    for line in [
+        "Type TMCL commands as in the TMCL-IDE, e.g. GAP actual_position, 0 or MVP ABS, 0, 1000.",
+        "Parameter names work in place of numbers; Tab completes, hints show units and ranges.",
+        "A leading address character reaches another module: CGAP 4, 0.",
+    ] {
+        write_fitted(out, line, 0)?;
+    }
+    writeln!(out)
 }
 
 /// The topics named at the end of `:help`.
@@ -107,10 +88,10 @@ pub(super) fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io:
         };
     };
     let first = format!("{} — {} (command {})", spec.usage(), spec.name, spec.number);
-    writeln!(out, "{}", fit(&first, 0, terminal_width()))?;
+    write_fitted(out, &first, 0)?;
     for k in &spec.keywords {
         let row = format!("  {:<8} {}", k.name, k.meaning);
-        writeln!(out, "{}", fit(&row, 11, terminal_width()))?;
+        write_fitted(out, &row, 11)?;
     }
     let place = match (spec.ascii_allowed, spec.direct_mode) {
         (true, _) => "ASCII and binary direct mode",
@@ -118,13 +99,10 @@ pub(super) fn command(profile: &Profile, word: &str, out: &mut dyn Write) -> io:
         (false, false) => "stand-alone programs only",
     };
     writeln!(out, "  usable in: {place}")?;
-    if spec
-        .operand_for(Field::Type)
-        .is_some_and(|o| o.kind == OperandKind::Port)
-    {
+    if spec.field_is(Field::Type, OperandKind::Port) {
         let writes = spec.operand_for(Field::Value).is_some();
         let line = format!("  {}", ports::help_line(profile, writes));
-        writeln!(out, "{}", fit(&line, 2, terminal_width()))?;
+        write_fitted(out, &line, 2)?;
     }
     Ok(true)
 }
@@ -154,7 +132,7 @@ fn describe_param(p: &Param, out: &mut dyn Write) -> io::Result<()> {
         mark.trim_end(),
         p.name
     );
-    writeln!(out, "{}", fit(&first, 0, terminal_width()))?;
+    write_fitted(out, &first, 0)?;
     let mut facts = vec![format!("access {}", p.access.letters())];
     if let Some((lo, hi)) = p.range {
         facts.push(format!("range {lo}..{hi}"));
@@ -165,17 +143,13 @@ fn describe_param(p: &Param, out: &mut dyn Write) -> io::Result<()> {
     if let Some(default) = p.default {
         facts.push(format!("default {default}"));
     }
-    writeln!(
-        out,
-        "{}",
-        fit(&format!("  {}", facts.join(", ")), 2, terminal_width())
-    )?;
+    write_fitted(out, &format!("  {}", facts.join(", ")), 2)?;
     for when in &p.range_when {
         writeln!(out, "  {}", when.describe())?;
     }
     if !p.description.is_empty() {
         let row = format!("  {}", p.description);
-        writeln!(out, "{}", fit(&row, 2, terminal_width()))?;
+        write_fitted(out, &row, 2)?;
     }
     let decoding = &p.decoding;
     for (value, meaning) in &decoding.values {

@@ -33,10 +33,7 @@ pub fn hint(line: &str, profile: &Profile) -> Option<String> {
     let Some(first) = args.first() else {
         return line.ends_with(' ').then(|| format!("  {}", spec.usage()));
     };
-    if spec
-        .operand_for(Field::Type)
-        .is_some_and(|o| o.kind == OperandKind::Port)
-    {
+    if spec.field_is(Field::Type, OperandKind::Port) {
         return port(spec, args, profile).map(|text| format!("  ← {text}"));
     }
     let param = match spec.operand_for(Field::Type).map(|o| o.kind) {

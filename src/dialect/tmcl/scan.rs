@@ -27,11 +27,11 @@ use crate::dialect::tmcl::profile::family::AsciiInterface;
 use crate::dialect::tmcl::protocol::host_clash;
 use crate::dialect::tmcl::protocol::line::address_char;
 use crate::dialect::tmcl::protocol::{Instruction, Opcode};
-use crate::dialect::tmcl::session::{Echo, TmclReply, TmclSession, WireMode};
+use crate::dialect::tmcl::session::{Echo, TmclExchange, TmclReply, TmclSession, WireMode};
 use crate::json::{Value, json};
 use crate::session::SessionError;
 
-use crate::commission::scan::describe_addresses;
+use crate::commission::scan::scan_summary;
 use crate::dialect::session::{BusScan, DialectSession};
 use crate::progress::Progress;
 
@@ -253,6 +253,23 @@ fn absent(error: &SessionError) -> bool {
         )
 }
 
+/// The exchange, `None` when its error means nobody (usable) answered, or the error that ends
+/// the scan.
+fn present(
+    result: Result<TmclExchange, SessionError>,
+) -> Result<Option<TmclExchange>, SessionError> {
+    match result {
+        Ok(x) => Ok(Some(x)),
+        Err(e) if absent(&e) => Ok(None),
+        Err(e) => Err(e),
+    }
+}
+
+/// The value of an answer with a good status.
+fn ok_value(answer: Option<TmclExchange>) -> Option<i32> {
+    answer.filter(TmclExchange::ok).and_then(|x| x.value())
+}
+
 /// Round 1: a module in binary mode answers 136 type 1; then its version string.
 fn probe_binary(
     session: &mut TmclSession,
@@ -261,17 +278,13 @@ fn probe_binary(
     if session.module_state(address).is_some() {
         return Ok(None); // already reached by this session: round 2 reports it
     }
-    match session.probe_binary(address, Instruction::new(Opcode::FirmwareVersion, 1, 0, 0)) {
-        Ok(x) if x.value().is_some() => {}
-        Ok(_) => return Ok(None),
-        Err(e) if absent(&e) => return Ok(None),
-        Err(e) => return Err(e),
+    let binary = Instruction::new(Opcode::FirmwareVersion, 1, 0, 0);
+    let answer = present(session.probe_binary(address, binary))?;
+    if answer.and_then(|x| x.value()).is_none() {
+        return Ok(None);
     }
-    let firmware = match session.probe_binary(address, Instruction::new(136, 0, 0, 0)) {
-        Ok(x) => version_text(&x.reply),
-        Err(e) if absent(&e) => None,
-        Err(e) => return Err(e),
-    };
+    let text = Instruction::new(Opcode::FirmwareVersion, 0, 0, 0);
+    let firmware = present(session.probe_binary(address, text))?.and_then(version_text);
     Ok(Some(FoundModule {
         address,
         mode: WireMode::Binary,
@@ -299,19 +312,10 @@ fn probe_ascii(
     let version = session.in_binary(address, |s| {
         s.request(address, Instruction::new(Opcode::FirmwareVersion, 0, 0, 0))
     });
-    let firmware = match version {
-        Ok(x) => version_text(&x.reply),
-        Err(e) if absent(&e) => None,
-        Err(e) => return Err(e),
-    };
+    let firmware = present(version)?.and_then(version_text);
     let host = if has_host_address(session, address, firmware.as_deref()) {
-        let (bank, number) = host_clash::HOST_ADDRESS;
-        match session.request(address, Instruction::new(Opcode::Ggp, number, bank, 0)) {
-            Ok(x) if x.ok() => x.value().and_then(|v| u8::try_from(v).ok()),
-            Ok(_) => None,
-            Err(e) if absent(&e) => None,
-            Err(e) => return Err(e),
-        }
+        let answer = present(session.request(address, host_request()))?;
+        ok_value(answer).and_then(|v| u8::try_from(v).ok())
     } else {
         None
     };
@@ -326,23 +330,21 @@ fn probe_ascii(
 
 /// Round 3: global parameter 67 over a binary frame.
 fn read_echo_binary(session: &mut TmclSession, address: u8) -> Result<Option<Echo>, SessionError> {
-    match session.probe_binary(address, Instruction::new(Opcode::Ggp, 67, 0, 0)) {
-        Ok(x) if x.ok() => Ok(x.value().map(Echo::from_gp67)),
-        Ok(_) => Ok(None),
-        Err(e) if absent(&e) => Ok(None),
-        Err(e) => Err(e),
-    }
+    let request = Instruction::new(Opcode::Ggp, 67, 0, 0);
+    let answer = present(session.probe_binary(address, request))?;
+    Ok(ok_value(answer).map(Echo::from_gp67))
 }
 
 /// Round 3: global parameter 76 over a binary frame.
 fn read_host_binary(session: &mut TmclSession, address: u8) -> Result<Option<u8>, SessionError> {
+    let answer = present(session.probe_binary(address, host_request()))?;
+    Ok(ok_value(answer).and_then(|v| u8::try_from(v).ok()))
+}
+
+/// GGP of the host address parameter.
+fn host_request() -> Instruction {
     let (bank, number) = host_clash::HOST_ADDRESS;
-    match session.probe_binary(address, Instruction::new(Opcode::Ggp, number, bank, 0)) {
-        Ok(x) if x.ok() => Ok(x.value().and_then(|v| u8::try_from(v).ok())),
-        Ok(_) => Ok(None),
-        Err(e) if absent(&e) => Ok(None),
-        Err(e) => Err(e),
-    }
+    Instruction::new(Opcode::Ggp, number, bank, 0)
 }
 
 /// Whether the module's profile — the one its version string names, else the one the session
@@ -357,8 +359,9 @@ fn has_host_address(session: &TmclSession, address: u8, firmware: Option<&str>) 
     profile.global_param(bank, number).is_some()
 }
 
-fn version_text(answer: &TmclReply) -> Option<String> {
-    match answer {
+/// The version string of a 136 type 0 answer.
+fn version_text(answer: TmclExchange) -> Option<String> {
+    match &answer.reply {
         TmclReply::Version(text) if !text.trim().is_empty() => Some(text.trim().to_string()),
         _ => None,
     }
@@ -393,16 +396,11 @@ pub fn write_report(report: &TmclScan, out: &mut dyn Write) -> io::Result<()> {
 
 /// "3 modules answered at 1-26 (at most 200 ms per reply)".
 pub fn summary(report: &TmclScan) -> String {
-    let n = report.found.len();
-    let who = match n {
-        0 => "no module answered".to_string(),
-        1 => "1 module answered".to_string(),
-        n => format!("{n} modules answered"),
-    };
-    format!(
-        "{who} at {} (at most {} ms per reply)",
-        describe_addresses(&report.scanned),
-        report.per_reply.as_millis()
+    scan_summary(
+        report.found.len(),
+        "module",
+        &report.scanned,
+        report.per_reply,
     )
 }
 

@@ -216,11 +216,6 @@ impl Smd4Command {
             .map(|c| c.label.as_str())
     }
 
-    /// Whether the command takes an argument.
-    pub fn takes_arg(&self) -> bool {
-        self.arg.is_some()
-    }
-
     pub(crate) fn from_row(row: &CommandRow) -> Result<Smd4Command, String> {
         let name = &row.mnemonic;
         let kind = kind(row)?;

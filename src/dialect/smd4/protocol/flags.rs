@@ -18,6 +18,17 @@ pub struct FlagBit {
     pub uncertain: bool,
 }
 
+impl FlagBit {
+    /// `X` when the bit is set in `word`, a space otherwise (the SYS:FLAGSV listing's mark).
+    pub fn mark(&self, word: u16) -> char {
+        if word & (1 << self.bit) != 0 {
+            'X'
+        } else {
+            ' '
+        }
+    }
+}
+
 /// The sixteen bits of one flag word.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct FlagTable {
@@ -96,10 +107,7 @@ impl FlagTable {
     pub fn listing(&self, word: u16) -> Vec<String> {
         self.bits
             .iter()
-            .map(|b| {
-                let mark = if word & (1 << b.bit) != 0 { 'X' } else { ' ' };
-                format!("[{mark}]{}", b.label)
-            })
+            .map(|b| format!("[{}]{}", b.mark(word), b.label))
             .collect()
     }
 }
@@ -125,8 +133,6 @@ impl Sflags {
     pub const BAKING: u8 = 8;
     /// Bit 9: at target velocity.
     pub const AT_TARGET_VELOCITY: u8 = 9;
-    /// Bit 10: encoder module fitted.
-    pub const ENCODER_PRESENT: u8 = 10;
     /// Bit 11: boost supply running.
     pub const BOOST_OPERATIONAL: u8 = 11;
 
@@ -155,14 +161,8 @@ impl Sflags {
 pub struct Eflags(pub u16);
 
 impl Eflags {
-    /// Bit 0: temperature sensor short.
-    pub const TEMP_SHORT: u8 = 0;
     /// Bit 1: temperature sensor open.
     pub const TEMP_OPEN: u8 = 1;
-    /// Bit 2: over temperature.
-    pub const TEMP_OVER: u8 = 2;
-    /// Bit 3: motor short.
-    pub const MOTOR_SHORT: u8 = 3;
     /// Bit 4: disabled by the external enable input.
     pub const EXTERNAL_DISABLE: u8 = 4;
     /// Bit 5: emergency stop.

@@ -94,12 +94,6 @@ pub fn table_row(spec: &Smd4Command) -> String {
     )
 }
 
-/// [`table_row`] fitted to `width` columns (the terminal's, which the face asks for): what the
-/// argument accepts continues under itself.
-pub fn fitted_row(spec: &Smd4Command, width: Option<usize>) -> String {
-    crate::wrap::fit(&table_row(spec), 29, width)
-}
-
 /// One line of help: usage, accepted values, access, the reply and the description.
 pub fn hint(spec: &Smd4Command) -> String {
     let access = match (spec.readable, spec.writable, spec.arg.is_some()) {

@@ -75,14 +75,6 @@ impl ItemType {
             ItemType::Hms => "a time h:m:s",
         }
     }
-
-    /// Whether values of this type are numbers (ranges apply).
-    pub fn is_numeric(self) -> bool {
-        matches!(
-            self,
-            ItemType::Int | ItemType::Uint | ItemType::Float | ItemType::Bool | ItemType::Enum
-        )
-    }
 }
 
 /// An argument that passed its type's grammar.

@@ -97,9 +97,7 @@ fn mnemonic_form<'p>(instruction: &Instruction, profile: &'p Profile) -> Option<
 
 /// The address a jump or call of the program goes to, if a label can stand for it.
 fn jump_target(instruction: &Instruction, spec: &CommandSpec, len: usize) -> Option<usize> {
-    let jumps = spec
-        .operand_for(Field::Value)
-        .is_some_and(|o| o.kind == OperandKind::Address);
+    let jumps = spec.field_is(Field::Value, OperandKind::Address);
     let target = usize::try_from(instruction.value).ok()?;
     (jumps && target <= len).then_some(target)
 }

@@ -154,9 +154,7 @@ fn mnemonic(
         Refused::Operand(refusal) => refusal,
     })?;
     let mut columns = Columns::new(statement, spec.operands.iter().map(|o| o.kind.field()));
-    columns.coordinate_in_type = spec
-        .operand_for(Field::Type)
-        .is_some_and(|o| o.kind == OperandKind::Coord);
+    columns.coordinate_in_type = spec.field_is(Field::Type, OperandKind::Coord);
     Ok((instruction, columns))
 }
 

@@ -187,6 +187,11 @@ impl CommandSpec {
         self.operands.iter().find(|o| o.kind.field() == field)
     }
 
+    /// Whether `field` holds an operand of `kind`.
+    pub fn field_is(&self, field: Field, kind: OperandKind) -> bool {
+        self.operand_for(field).is_some_and(|o| o.kind == kind)
+    }
+
     /// The name users type: the mnemonic, or the number for control functions.
     pub fn display_name(&self) -> String {
         if self.mnemonic.is_empty() {

@@ -62,17 +62,6 @@ impl FirmwareVersion {
             text: text.to_string(),
         })
     }
-
-    /// "1.31".
-    pub fn release(&self) -> String {
-        format!("{}.{:02}", self.major, self.minor)
-    }
-
-    /// Whether the string has `format` (`NNNNVabc`: N, a, b, c digits, other characters as
-    /// written), as a profile's `version_format` or `bootloader_format` gives it.
-    pub fn fits(&self, format: &str) -> bool {
-        fits(&self.text, format)
-    }
 }
 
 /// Whether `text` has the 136 format `format` (`N`, `a`, `b`, `c` digits, others literal).
@@ -110,10 +99,6 @@ mod tests {
         assert_eq!(parsed("142B1.06"), (142, 1, 6, true));
         assert_eq!(parsed("1141V1.17"), (1141, 1, 17, false));
         assert_eq!(parsed("1640V200\0"), (1640, 2, 0, false));
-        assert_eq!(
-            FirmwareVersion::parse("6110V131").unwrap().release(),
-            "1.31"
-        );
     }
 
     #[test]
@@ -155,6 +140,5 @@ mod tests {
         assert!(fits("6110B131", "NNNNBabc"));
         assert!(!fits("6110V131", "NNNNBabc"));
         assert!(!fits("142V1.06", "NNNNVabc"));
-        assert!(FirmwareVersion::parse("6110V131").unwrap().fits("NNNNVabc"));
     }
 }

@@ -147,25 +147,11 @@ fn verify(
     for (address, expected) in program.iter().enumerate() {
         let at = address as i32;
         let value = s.request(module, Instruction::new(Opcode::ReadMemory, 0, 0, at))?;
-        if matches!(
-            value.status(),
-            Some(Status::NotAvailable | Status::InvalidCommand | Status::WrongType)
-        ) {
+        if unreadable(value.status()) {
             s.annotate("the module does not read its program memory back; download not verified");
             return Ok(false);
         }
-        let value = value.checked()?.value().unwrap_or(0);
-        let fields = s
-            .request(module, Instruction::new(Opcode::ReadMemory, 1, 0, at))?
-            .checked()?
-            .value()
-            .unwrap_or(0);
-        let got = Instruction::new(
-            (fields >> 16) as u8,
-            (fields >> 8) as u8,
-            fields as u8,
-            value,
-        );
+        let got = with_fields(s, module, at, value)?;
         if got != *expected {
             return Err(SessionError::Link(format!(
                 "verification failed at address {address}: stored {got:?}, expected {expected:?}"
@@ -174,6 +160,36 @@ fn verify(
         progress(program.len() + address + 1, program.len() * 2);
     }
     Ok(true)
+}
+
+/// Whether a 134 answer's status says the module does not read its program memory back.
+fn unreadable(status: Option<Status>) -> bool {
+    matches!(
+        status,
+        Some(Status::NotAvailable | Status::InvalidCommand | Status::WrongType)
+    )
+}
+
+/// The instruction at `address` whose value `value` (134 type 0) answered, completed by its
+/// command, type and motor read with 134 type 1.
+fn with_fields(
+    s: &mut TmclSession,
+    module: u8,
+    address: i32,
+    value: TmclExchange,
+) -> Result<Instruction, SessionError> {
+    let value = value.checked()?.value().unwrap_or(0);
+    let fields = s
+        .request(module, Instruction::new(Opcode::ReadMemory, 1, 0, address))?
+        .checked()?
+        .value()
+        .unwrap_or(0);
+    Ok(Instruction::new(
+        (fields >> 16) as u8,
+        (fields >> 8) as u8,
+        fields as u8,
+        value,
+    ))
 }
 
 /// A control function (130 step, 131 reset, 135 status) sent in binary mode, switching there and

@@ -11,6 +11,8 @@ use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode, Status};
 use crate::dialect::tmcl::session::TmclSession;
 use crate::session::SessionError;
 
+use super::{unreadable, with_fields};
+
 /// Where the reading stopped.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum End {
@@ -115,7 +117,7 @@ fn read_at(
     let value = s.request(module, Instruction::new(Opcode::ReadMemory, 0, 0, address))?;
     match value.status() {
         Some(Status::InvalidValue) if at > 0 => return Ok(None),
-        Some(Status::NotAvailable | Status::InvalidCommand | Status::WrongType) => {
+        status if unreadable(status) => {
             return Err(SessionError::Device {
                 module: ModuleName(module).to_string(),
                 sent: "134 (read program memory)".into(),
@@ -128,26 +130,13 @@ fn read_at(
         }
         _ => {}
     }
-    let value = value.checked()?.value().unwrap_or(0);
-    let fields = s
-        .request(module, Instruction::new(Opcode::ReadMemory, 1, 0, address))?
-        .checked()?
-        .value()
-        .unwrap_or(0);
-    Ok(Some(Instruction::new(
-        (fields >> 16) as u8,
-        (fields >> 8) as u8,
-        fields as u8,
-        value,
-    )))
+    with_fields(s, module, address, value).map(Some)
 }
 
 /// The address a jump, call or vector goes to, as the command table says.
 fn target(instruction: &Instruction, profile: &Profile) -> Option<usize> {
     let spec = profile.commands.by_number(instruction.command)?;
-    let jumps = spec
-        .operand_for(Field::Value)
-        .is_some_and(|o| o.kind == OperandKind::Address);
+    let jumps = spec.field_is(Field::Value, OperandKind::Address);
     if !jumps {
         return None;
     }

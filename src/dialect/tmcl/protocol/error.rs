@@ -153,7 +153,7 @@ pub enum InputError {
     /// A value outside the documented range.
     #[error(
         "{value} is out of range for {what}: allowed {lo}..{hi}{}",
-        unit_suffix(unit)
+        in_parentheses(unit)
     )]
     OutOfRange {
         /// What the value is for.
@@ -182,7 +182,7 @@ pub enum InputError {
     /// A bank the command does not accept on this module (STGP/RSGP: user variables only).
     #[error(
         "{mnemonic} accepts bank {accepted}, not bank {bank}{}",
-        note_text(note)
+        in_parentheses(note)
     )]
     BankNotAccepted {
         /// The command.
@@ -239,11 +239,12 @@ fn param_text(error: &LookupError) -> String {
     }
 }
 
-fn note_text(note: &str) -> String {
-    if note.is_empty() {
+/// ` (text)`, or nothing for no text: a note or unit after a message.
+fn in_parentheses(text: &str) -> String {
+    if text.is_empty() {
         String::new()
     } else {
-        format!(" ({note})")
+        format!(" ({text})")
     }
 }
 
@@ -251,14 +252,6 @@ fn plural(n: u8, word: &str) -> String {
     match n {
         1 => format!("one {word}"),
         n => format!("{n} {word}s"),
-    }
-}
-
-fn unit_suffix(unit: &str) -> String {
-    if unit.is_empty() {
-        String::new()
-    } else {
-        format!(" ({unit})")
     }
 }
 

@@ -126,9 +126,7 @@ fn check_motor(
     instruction: &Instruction,
     profile: &Profile,
 ) -> Result<(), InputError> {
-    let names_motor = spec
-        .operand_for(Field::Motor)
-        .is_some_and(|o| o.kind == OperandKind::Motor);
+    let names_motor = spec.field_is(Field::Motor, OperandKind::Motor);
     if names_motor && !spec.motor_ignored && instruction.motor >= profile.axes {
         return Err(InputError::BadMotor {
             motor: instruction.motor,
@@ -169,10 +167,7 @@ fn check_ranges(
     } else {
         Vec::new()
     };
-    if spec
-        .operand_for(Field::Type)
-        .is_some_and(|o| o.kind == OperandKind::Coord)
-    {
+    if spec.field_is(Field::Type, OperandKind::Coord) {
         out_of(
             "the coordinate number".into(),
             instruction.type_.into(),
@@ -256,10 +251,10 @@ fn read_line(param: &Param, profile: &Profile) -> String {
         ParamKind::Axis => (OperandKind::AxisParam, 0),
         ParamKind::Global { bank } => (OperandKind::GlobalParam, bank),
     };
-    let reader = profile.commands.iter().find(|c| {
-        c.param_use == Some(ParamUse::Read)
-            && c.operand_for(Field::Type).is_some_and(|o| o.kind == kind)
-    });
+    let reader = profile
+        .commands
+        .iter()
+        .find(|c| c.param_use == Some(ParamUse::Read) && c.field_is(Field::Type, kind));
     match reader {
         Some(reader) => format_instruction(
             &Instruction::new(reader.number, param.number, motor, 0),

@@ -3,6 +3,7 @@ use std::path::PathBuf;
 
 use super::*;
 use crate::dialect::tmcl::profile::family::AsciiInterface;
+use crate::dialect::tmcl::profile::version::fits;
 
 #[test]
 fn every_file_of_data_profiles_is_built_in_and_loads() {
@@ -108,14 +109,17 @@ fn every_simulated_version_string_identifies_its_own_profile() {
             Identified::Known { version, profile } => {
                 assert!(Arc::ptr_eq(&profile, p), "{answer}");
                 let format = p.identity.version_format.as_deref().unwrap();
-                assert!(version.fits(format), "{answer} fits {format}");
+                assert!(fits(&version.text, format), "{answer} fits {format}");
             }
             other => panic!("{answer}: {other:?}"),
         }
         let loader = answer.replacen('V', "B", 1);
         match identify(&loader).unwrap() {
             Identified::BootLoader { version, profile } => {
-                assert!(version.fits(p.identity.bootloader_format.as_deref().unwrap()));
+                assert!(fits(
+                    &version.text,
+                    p.identity.bootloader_format.as_deref().unwrap()
+                ));
                 assert!(Arc::ptr_eq(profile.as_ref().unwrap(), p));
             }
             other => panic!("{loader}: {other:?}"),

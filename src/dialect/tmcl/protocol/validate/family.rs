@@ -27,9 +27,7 @@ pub(super) fn check_bank(
     let Some(banks) = &spec.banks else {
         return Ok(());
     };
-    let names_bank = spec
-        .operand_for(Field::Motor)
-        .is_some_and(|o| o.kind == OperandKind::Bank);
+    let names_bank = spec.field_is(Field::Motor, OperandKind::Bank);
     if !names_bank || banks.contains(&instruction.motor) {
         return Ok(());
     }
@@ -51,9 +49,7 @@ pub(super) fn check_ascii_start_bit(
     profile: &Profile,
 ) -> Result<(), InputError> {
     let changes = matches!(spec.param_use, Some(ParamUse::Write | ParamUse::Store));
-    let gp67 = spec
-        .operand_for(Field::Type)
-        .is_some_and(|o| o.kind == OperandKind::GlobalParam)
+    let gp67 = spec.field_is(Field::Type, OperandKind::GlobalParam)
         && instruction.type_ == ASCII_SETTINGS
         && instruction.motor == 0;
     if changes && gp67 && profile.identity.ascii_interface() == AsciiInterface::No {
@@ -71,9 +67,7 @@ pub(super) fn check_port(
     instruction: &Instruction,
     profile: &Profile,
 ) -> Result<(), InputError> {
-    let addresses_port = spec
-        .operand_for(Field::Type)
-        .is_some_and(|o| o.kind == OperandKind::Port);
+    let addresses_port = spec.field_is(Field::Type, OperandKind::Port);
     if !addresses_port || profile.io_ports.is_empty() {
         return Ok(());
     }
