@@ -131,7 +131,7 @@ pub fn tmclsh(args: &[String]) -> Run {
 /// VmHWM of a running process, KiB, once it is tmclsh: until its exec completes the child is
 /// still an image of this test process (`Name:` the test thread's, the test binary's 100+ MB
 /// mapped), which is where the rare 108–180 MB "peaks" of this check came from.
-fn high_water_mark(pid: u32) -> Option<i64> {
+pub fn high_water_mark(pid: u32) -> Option<i64> {
     let status = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
     let name = status.lines().find_map(|l| l.strip_prefix("Name:"))?.trim();
     if name != "tmclsh" {

@@ -118,18 +118,8 @@ fn memory_stays_flat_under_an_endless_line() {
     assert!(sim.console("silent on").starts_with("ok"));
     stdin.write_all(b"GAP 4, 0\n").unwrap();
     stdin.write_all(&vec![b'7'; 64 << 20]).unwrap();
-    let peak = peak_kib(child.id());
+    let peak = crate::hostile::high_water_mark(child.id()).expect("tmclsh's own status");
     child.kill().unwrap();
     child.wait().unwrap();
     assert!(peak < 40 * 1024, "peak RSS {peak} KiB for a 64 MiB line");
-}
-
-/// The peak resident set size of a running process (VmHWM), in KiB.
-fn peak_kib(pid: u32) -> u64 {
-    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap();
-    let line = status
-        .lines()
-        .find(|l| l.starts_with("VmHWM:"))
-        .expect("VmHWM in /proc/PID/status");
-    line.split_whitespace().nth(1).unwrap().parse().unwrap()
 }

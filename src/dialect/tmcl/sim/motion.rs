@@ -348,13 +348,14 @@ impl Axis {
         self.end_distance
     }
 
-    /// Whether a switch is active at `t`.
+    /// Whether a switch is active at `t`: judged on the whole microstep the counter shows, so a
+    /// host that reads the switch's position from the counter also reads the switch active.
     pub(super) fn switch_active(&self, t: f64, which: Switch) -> bool {
-        let x = self.state(t).x;
+        let x = self.state(t).x.round();
         match (which, self.switches.get(which)) {
             (_, None) => false,
-            (Switch::Left, Some(p)) => x <= p as f64 + EPS,
-            (Switch::Right | Switch::Home, Some(p)) => x >= p as f64 - EPS,
+            (Switch::Left, Some(p)) => x <= p as f64,
+            (Switch::Right | Switch::Home, Some(p)) => x >= p as f64,
         }
     }
 
