@@ -112,7 +112,9 @@ pub fn render() -> io::Result<Vec<u8>> {
         subcommand(&mut page, sub, &format!("tmclsh {}", sub.get_name()))?;
     }
     examples(&mut page)?;
-    page.extend_from_slice(TAIL.as_bytes());
+    page.extend_from_slice(EXIT_STATUS.as_bytes());
+    environment(&mut page, &cmd)?;
+    files(&mut page)?;
     man.render_version_section(&mut page)?;
     Ok(page)
 }
@@ -232,8 +234,8 @@ fn roff_text(text: &str) -> String {
     }
 }
 
-/// What the clap definitions do not hold: exit codes, environment, files.
-const TAIL: &str = r#".SH "EXIT STATUS"
+/// The exit codes (`exit::Exit`), which the clap definitions do not hold.
+const EXIT_STATUS: &str = r#".SH "EXIT STATUS"
 .TP
 0
 success
@@ -258,10 +260,38 @@ session set moving were stopped first
 .TP
 101
 internal error; the motors the session set moving were stopped first
-.SH ENVIRONMENT
-.TP
-\fBTMCLSH_PORT\fR, \fBTMCLSH_BAUD\fR, \fBTMCLSH_PROTOCOL\fR, \fBTMCLSH_PROFILE\fR, \fBTMCLSH_MODULE\fR, \fBTMCLSH_TIMEOUT\fR
-the value of the option of the same name, below the command line and above the configuration
+"#;
+
+/// The ENVIRONMENT section: the options' variables, as the clap definitions name them, then the
+/// variables tmclsh reads besides.
+fn environment(page: &mut Vec<u8>, cmd: &Command) -> io::Result<()> {
+    let mut names = Vec::new();
+    option_variables(cmd, &mut names);
+    let names: Vec<String> = names
+        .iter()
+        .map(|name| format!("\\fB{}\\fR", roff_text(name)))
+        .collect();
+    writeln!(page, ".SH ENVIRONMENT\n.TP\n{}", names.join(", "))?;
+    page.extend_from_slice(OTHER_VARIABLES.as_bytes());
+    Ok(())
+}
+
+/// The variables of `cmd`'s options and its subcommands', each once, in the order of the help.
+fn option_variables(cmd: &Command, names: &mut Vec<String>) {
+    for arg in cmd.get_arguments() {
+        let Some(name) = arg.get_env() else { continue };
+        let name = name.to_string_lossy().into_owned();
+        if !names.contains(&name) {
+            names.push(name);
+        }
+    }
+    for sub in cmd.get_subcommands() {
+        option_variables(sub, names);
+    }
+}
+
+/// What the options' variables mean, and the variables that belong to no option.
+const OTHER_VARIABLES: &str = r#"the value of the option of the same name, below the command line and above the configuration
 files; an empty variable counts as unset
 .TP
 \fBNO_COLOR\fR
@@ -269,7 +299,16 @@ plain output in the interactive shell
 .TP
 \fBXDG_CONFIG_HOME\fR, \fBXDG_DATA_HOME\fR
 where the user's configuration file and the shell's history are
-.SH FILES
+"#;
+
+/// The FILES section, the keys of the configuration files from their table (`config::KEYS`).
+fn files(page: &mut Vec<u8>) -> io::Result<()> {
+    let keys: Vec<&str> = super::config::KEYS.iter().map(|key| key.name).collect();
+    let (last, rest) = keys.split_last().expect("configuration files have keys");
+    let keys = roff_text(&format!("{} and {last}", rest.join(", ")));
+    write!(
+        page,
+        r#".SH FILES
 .TP
 \fBtmclsh.toml\fR
 the project's configuration file, in the working directory or the nearest directory above it;
@@ -277,9 +316,10 @@ used only when it is the user's (or root's) and nobody else may write it, otherw
 note
 .TP
 \fB$XDG_CONFIG_HOME/tmclsh/config.toml\fR (\fB~/.config/tmclsh/config.toml\fR)
-the user's configuration file; keys port, baud, protocol, profile, module, timeout, echo,
-log_dir, dtr, rts, rs485, rs485_delay and keep_latency; \fBtmclsh config\fR shows each setting and where it came from
+the user's configuration file; keys {keys}; \fBtmclsh config\fR shows each setting and where it came from
 .TP
 \fB$XDG_DATA_HOME/tmclsh/history\-tmcl\fR, \fBhistory\-smd4\fR
 the interactive shell's history, one file per protocol
-"#;
+"#
+    )
+}

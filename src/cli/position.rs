@@ -12,7 +12,7 @@ use clap::{Arg, ArgMatches, Command};
 
 /// Moves the options given before the subcommand behind the name of the (innermost) subcommand.
 /// `cmd` is the built command and `first` the result of parsing `argv` with it once, so the
-/// arguments are known to be well formed. Global options (none today) stay where they are.
+/// arguments are known to be well formed.
 pub(super) fn behind_subcommand(
     cmd: &mut Command,
     first: &ArgMatches,
@@ -34,7 +34,7 @@ pub(super) fn behind_subcommand(
                 .expect("clap found a deeper subcommand");
         }
     }
-    let moved: Vec<&Span> = top.spans.iter().filter(|s| !s.global).collect();
+    let moved = &top.spans;
     let refused: Vec<String> = moved
         .iter()
         .flat_map(|span| &span.args)
@@ -56,7 +56,7 @@ pub(super) fn behind_subcommand(
             out.push(token.clone());
         }
         if i == name_at {
-            for span in &moved {
+            for span in moved {
                 out.extend(argv[span.tokens.clone()].iter().cloned());
             }
         }
@@ -127,7 +127,6 @@ fn not_taken(cmd: &Command, leaf: &Command, id: &str, path: &[String]) -> String
 struct Span {
     tokens: Range<usize>,
     args: Vec<String>,
-    global: bool,
 }
 
 /// The options of one command level written from `argv[from]` on, and where the subcommand's
@@ -166,7 +165,6 @@ fn scan(cmd: &Command, argv: &[OsString], from: usize) -> Level {
         };
         spans.push(Span {
             tokens: i..(i + len).min(argv.len()),
-            global: !args.is_empty() && args.iter().all(|a| a.is_global_set()),
             args: args.iter().map(|a| a.get_id().to_string()).collect(),
         });
         i += len;

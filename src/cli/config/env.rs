@@ -1,8 +1,8 @@
-//! The options' environment variables (`TMCLSH_PORT`, `TMCLSH_BAUD`, `TMCLSH_PROTOCOL`,
-//! `TMCLSH_PROFILE`, `TMCLSH_MODULE`, `TMCLSH_TIMEOUT`): an empty one counts as unset, as a
-//! missing one does, for every variable alike (`TMCLSH_PORT= tmclsh` is the built-in simulator,
-//! `TMCLSH_TIMEOUT=` the built-in timeout); a value its option would refuse is refused with exit
-//! 2 naming the variable, before anything is opened.
+//! The options' environment variables (each option's `env`, listed by the manual page's
+//! ENVIRONMENT section): an empty one counts as unset, as a missing one does, for every variable
+//! alike (`TMCLSH_PORT= tmclsh` is the built-in simulator, `TMCLSH_TIMEOUT=` the built-in
+//! timeout); a value its option would refuse is refused with exit 2 naming the variable, before
+//! anything is opened.
 
 use clap::Command;
 use clap::error::ErrorKind;
