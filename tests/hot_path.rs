@@ -123,8 +123,8 @@ fn a_tmcl_ascii_transaction_is_one_look_one_send_one_wait() {
 fn a_tmcl_binary_transaction_is_one_look_one_send_one_wait() {
     let (link, ops) = counted(Box::new(Bus::builtin()));
     let connect = Connect {
-        profile_given: false,
         binary: true,
+        ..Connect::default()
     };
     let options = SessionOptions::default();
     let mut session =

@@ -47,4 +47,3 @@ pub static DIALECT: Dialect = Dialect {
     scan_example: "1-247 50ms",
     param_example: "MOTOR:PACT,MOTOR:VACT",
 };
-

@@ -69,4 +69,3 @@ pub fn is(dialect: &Dialect) -> bool {
 pub fn session(session: &mut dyn DialectSession) -> Option<&mut TmclSession> {
     session.as_any_mut().downcast_mut()
 }
-
