@@ -95,6 +95,12 @@ pub(crate) struct Wire {
 }
 
 impl Wire {
+    /// How long `bytes` take on the line at its bit rate; nothing on a link without one (TCP,
+    /// the in-process simulator).
+    pub(crate) fn wire_time(&self, bytes: u32) -> Duration {
+        self.link.byte_time().map_or(Duration::ZERO, |b| b * bytes)
+    }
+
     pub(crate) fn new(mut link: Box<dyn Link>, transcript: Option<Transcript>) -> Self {
         precise_timers();
         let state = link.line_state();

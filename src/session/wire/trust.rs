@@ -145,10 +145,7 @@ impl Wire {
     /// timeout (a reply that missed it gets as long again to turn up) up to [`RESYNC_MAX`], and
     /// at least [`RESYNC_BYTES`] byte times (a slow line still delivering).
     pub(crate) fn resync_window(&self, timeout: Duration) -> Duration {
-        let bytes = self
-            .link
-            .byte_time()
-            .map_or(Duration::ZERO, |b| b * RESYNC_BYTES);
+        let bytes = self.wire_time(RESYNC_BYTES);
         timeout.min(RESYNC_MAX).max(bytes)
     }
 

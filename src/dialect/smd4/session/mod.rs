@@ -291,12 +291,7 @@ impl Smd4Session {
     /// Stops every drive this session set moving (MOTOR:STOP). Returns what was done.
     fn stop_drives(&mut self) -> Vec<String> {
         let moved: Vec<Option<u32>> = std::mem::take(&mut self.core.moved).into_iter().collect();
-        let wire = self
-            .core
-            .wire
-            .link
-            .byte_time()
-            .map_or(Duration::ZERO, |b| b * 64);
+        let wire = self.core.wire.wire_time(64);
         let wait = self
             .core
             .options

@@ -60,12 +60,7 @@ impl Smd4Session {
     /// Sends `probe` and reads what comes until a TMCL reply is recognised or the wait is over.
     fn probe(&mut self, probe: &[u8], meaning: &str) -> Option<String> {
         self.core.wire.send(probe, meaning).ok()?;
-        let wire = self
-            .core
-            .wire
-            .link
-            .byte_time()
-            .map_or(Duration::ZERO, |b| b * 64);
+        let wire = self.core.wire.wire_time(64);
         let deadline = Instant::now() + PROBE_WAIT.min(self.core.options.timeout) + wire;
         let mut heard = None;
         while heard.is_none() && Instant::now() < deadline && self.core.wire.rx.len() < 256 {

@@ -280,12 +280,7 @@ impl TmclSession {
     /// the module's reaction time (no longer than the timeout, so scans stay quick) plus the
     /// bytes' wire time, whatever the timeout.
     pub(super) fn optional_wait(&self, bytes: u32) -> Duration {
-        let wire = self
-            .core
-            .wire
-            .link
-            .byte_time()
-            .map_or(Duration::ZERO, |b| b * bytes);
+        let wire = self.core.wire.wire_time(bytes);
         OPTIONAL_REPLY_WAIT.min(self.core.options.timeout) + wire
     }
 

@@ -31,12 +31,7 @@ impl TmclSession {
     /// time of the exchange and [`crate::session::STOP_CONFIRMATION`]; whoever pressed Ctrl-C hears within
     /// that that the stop went out, however slow the interrupted reply was.
     fn stop_wait(&self) -> Duration {
-        let wire = self
-            .core
-            .wire
-            .link
-            .byte_time()
-            .map_or(Duration::ZERO, |b| b * 32);
+        let wire = self.core.wire.wire_time(32);
         self.core
             .options
             .timeout
