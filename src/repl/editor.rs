@@ -50,7 +50,7 @@ impl ReplHelper {
             return match helpers::find(name, dialect) {
                 Ok(_) => Check::Valid,
                 Err(_) if on_its_way => Check::Incomplete,
-                Err(e) => Check::Invalid(e),
+                Err(e) => Check::Invalid(e.to_string()),
             };
         }
         self.grammar.check(text)

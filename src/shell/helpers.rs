@@ -112,8 +112,43 @@ pub fn available(dialect: &'static Dialect) -> impl Iterator<Item = &'static Hel
     all.into_iter().map(|(_, _, h)| h)
 }
 
+/// Why a helper name names no helper (refused like any usage mistake).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum HelperError {
+    /// A helper of another dialect.
+    #[error(":{name} works with {devices} only")]
+    Elsewhere {
+        /// The name typed, lower case.
+        name: String,
+        /// The devices of the dialect that has it.
+        devices: &'static str,
+    },
+    /// No helper has this name or prefix.
+    #[error(
+        "unknown helper ':{name}' (:help lists them){}",
+        crate::suggest::did_you_mean(&nearest.as_ref().map(|n| format!(":{n}")))
+    )]
+    Unknown {
+        /// The name typed, lower case.
+        name: String,
+        /// The nearest helper's name, if one is close.
+        nearest: Option<String>,
+    },
+    /// The prefix fits several helpers.
+    #[error(
+        "':{name}' is ambiguous: {}",
+        candidates.iter().map(|c| format!(":{c}")).collect::<Vec<_>>().join(", ")
+    )]
+    Ambiguous {
+        /// The name typed, lower case.
+        name: String,
+        /// The helpers it could mean.
+        candidates: Vec<&'static str>,
+    },
+}
+
 /// The helper with this name (without colon), or the unique one it is a prefix of.
-pub fn find(name: &str, dialect: &'static Dialect) -> Result<&'static Helper, String> {
+pub fn find(name: &str, dialect: &'static Dialect) -> Result<&'static Helper, HelperError> {
     let name = name.to_ascii_lowercase();
     if let Some(h) = available(dialect).find(|h| h.name == name) {
         return Ok(h);
@@ -122,7 +157,10 @@ pub fn find(name: &str, dialect: &'static Dialect) -> Result<&'static Helper, St
         .iter()
         .find(|d| d.helpers.iter().any(|h| h.name == name));
     if let Some(other) = elsewhere {
-        return Err(format!(":{name} works with {} only", other.devices));
+        return Err(HelperError::Elsewhere {
+            name,
+            devices: other.devices,
+        });
     }
     let matches: Vec<&Helper> = available(dialect)
         .filter(|h| h.name.starts_with(&name))
@@ -131,18 +169,12 @@ pub fn find(name: &str, dialect: &'static Dialect) -> Result<&'static Helper, St
         [one] => Ok(one),
         [] => {
             let nearest = crate::suggest::nearest(&name, available(dialect).map(|h| h.name));
-            Err(format!(
-                "unknown helper ':{name}' (:help lists them){}",
-                crate::suggest::did_you_mean(&nearest.map(|n| format!(":{n}")))
-            ))
+            Err(HelperError::Unknown { name, nearest })
         }
-        many => Err(format!(
-            "':{name}' is ambiguous: {}",
-            many.iter()
-                .map(|h| format!(":{}", h.name))
-                .collect::<Vec<_>>()
-                .join(", ")
-        )),
+        many => Err(HelperError::Ambiguous {
+            name,
+            candidates: many.iter().map(|h| h.name).collect(),
+        }),
     }
 }
 
@@ -160,16 +192,18 @@ mod tests {
         assert!(
             find("r", &TMCL)
                 .unwrap_err()
+                .to_string()
                 .contains("ambiguous: :raw, :run, :reset, :record")
         );
         assert!(
             find("r", &SMD4)
                 .unwrap_err()
+                .to_string()
                 .contains("ambiguous: :raw, :record")
         );
         assert_eq!(find("ra", &SMD4).unwrap().name, "raw");
         assert_eq!(
-            find("prams", &TMCL).unwrap_err(),
+            find("prams", &TMCL).unwrap_err().to_string(),
             "unknown helper ':prams' (:help lists them); did you mean :params?"
         );
     }
@@ -177,11 +211,11 @@ mod tests {
     #[test]
     fn dialect_specific_helpers_say_where_they_belong() {
         assert_eq!(
-            find("flags", &TMCL).unwrap_err(),
+            find("flags", &TMCL).unwrap_err().to_string(),
             ":flags works with SMD4 drives only"
         );
         assert_eq!(
-            find("bin", &SMD4).unwrap_err(),
+            find("bin", &SMD4).unwrap_err().to_string(),
             ":bin works with TMCL modules only"
         );
         assert!(find("flags", &SMD4).is_ok());

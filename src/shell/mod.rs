@@ -93,7 +93,8 @@ impl Shell {
             None => (body, ""),
         };
         let dialect = self.session_ref().dialect();
-        let helper = helpers::find(name, dialect).map_err(SessionError::Usage)?;
+        let helper =
+            helpers::find(name, dialect).map_err(|e| SessionError::Usage(e.to_string()))?;
         if helper.arg == crate::dialect::ArgKind::None && !arg.is_empty() {
             return Err(SessionError::Usage(format!(
                 "{} takes no argument",
