@@ -84,24 +84,46 @@ pub(super) enum Read {
     Ignored(String),
 }
 
+/// Why a configuration file could not be read at all: listed with the other errors, its keys
+/// unread.
+#[derive(Debug, thiserror::Error)]
+pub(super) enum Unreadable {
+    /// Not a regular file, missing, too large, not allowed.
+    #[error(transparent)]
+    File(#[from] crate::file::FileError),
+    /// Its owner and mode could not be read.
+    #[error("{}: {source}", path.display())]
+    Metadata {
+        path: std::path::PathBuf,
+        source: std::io::Error,
+    },
+    /// Bytes that are not UTF-8.
+    #[error("{}: not UTF-8 text", path.display())]
+    NotText { path: std::path::PathBuf },
+    /// Text that is not TOML, at `place` (`file:line`).
+    #[error("{place}: {message}")]
+    NotToml { place: String, message: String },
+}
+
 /// Reads and checks one file against the options of `cmd`; a project file is used only when it
 /// is trusted (see [`distrust`]).
-pub(super) fn read(path: &Path, scope: Scope, cmd: &Command) -> Result<Read, String> {
+pub(super) fn read(path: &Path, scope: Scope, cmd: &Command) -> Result<Read, Unreadable> {
     use crate::file::{Follow, Mode};
-    let file = crate::file::open(path, Mode::Read, Follow::Yes).map_err(|e| e.to_string())?;
+    let file = crate::file::open(path, Mode::Read, Follow::Yes)?;
     if scope == Scope::Project {
-        let opened = file
-            .metadata()
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let opened = file.metadata().map_err(|source| Unreadable::Metadata {
+            path: path.to_path_buf(),
+            source,
+        })?;
         let link = path.symlink_metadata().ok();
         if let Some(why) = distrust(&opened).or_else(|| link.as_ref().and_then(distrust_link)) {
             return Ok(Read::Ignored(why));
         }
     }
-    let bytes = crate::file::read_opened(&file, path, crate::file::READ_LIMIT)
-        .map_err(|e| e.to_string())?;
-    let text =
-        String::from_utf8(bytes).map_err(|_| format!("{}: not UTF-8 text", path.display()))?;
+    let bytes = crate::file::read_opened(&file, path, crate::file::READ_LIMIT)?;
+    let text = String::from_utf8(bytes).map_err(|_| Unreadable::NotText {
+        path: path.to_path_buf(),
+    })?;
     parse(path, &text, scope, cmd).map(Read::Entries)
 }
 
@@ -158,13 +180,13 @@ fn distrust_link(_meta: &std::fs::Metadata) -> Option<String> {
 
 /// Checks one file's text against the options of `cmd`: an error for text that is not TOML,
 /// else every key checked on its own.
-fn parse(path: &Path, text: &str, scope: Scope, cmd: &Command) -> Result<Parsed, String> {
+fn parse(path: &Path, text: &str, scope: Scope, cmd: &Command) -> Result<Parsed, Unreadable> {
     let at = |offset: usize| format!("{}:{}", path.display(), line_at(text, offset));
-    let root = DeTable::parse(text).map_err(|e| {
-        let place = e
+    let root = DeTable::parse(text).map_err(|e| Unreadable::NotToml {
+        place: e
             .span()
-            .map_or_else(|| path.display().to_string(), |s| at(s.start));
-        format!("{place}: {}", e.message().trim_end())
+            .map_or_else(|| path.display().to_string(), |s| at(s.start)),
+        message: e.message().trim_end().to_string(),
     })?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let mut parsed = Parsed::default();

@@ -317,9 +317,9 @@ impl Defaults {
 }
 
 /// A file that could not be read at all.
-fn unreadable(why: String) -> Parsed {
+fn unreadable(why: file::Unreadable) -> Parsed {
     Parsed {
-        errors: vec![why],
+        errors: vec![why.to_string()],
         ..Parsed::default()
     }
 }
