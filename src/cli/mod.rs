@@ -270,7 +270,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
     let configs = Configured::load(cli.profile.as_deref()).map_err(|message| {
         let message = match &cli.profile_origin {
             Some(origin) => format!("{origin}: {message}"),
-            None => message,
+            None => message.to_string(),
         };
         Failure::new(Exit::Refused, message)
     })?;

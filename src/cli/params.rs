@@ -70,7 +70,7 @@ pub(crate) fn run(
                 true
             }
             Err(message) => {
-                super::diagnose(&message);
+                super::diagnose(&message.to_string());
                 false
             }
         }

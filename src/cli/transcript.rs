@@ -47,7 +47,7 @@ pub(super) fn run(
     let refused = |what: String| Failure::new(Exit::Refused, format!("{}: {what}", log.display()));
     let text = read_transcript(&log).map_err(refused)?;
     let entries = replay::parse::parse(&text).map_err(refused)?;
-    let kind = replay::recognise(&entries).map_err(refused)?;
+    let kind = replay::recognise(&entries).map_err(|e| refused(e.to_string()))?;
     if let Some(notice) = &kind.notice {
         eprintln!("tmclsh: {}: {notice}", log.display());
     }
@@ -58,7 +58,7 @@ pub(super) fn run(
     let script = configs
         .of(kind.dialect)
         .replay(&entries, kind.header.as_ref(), &name, wait)
-        .map_err(refused)?;
+        .map_err(|e| refused(e.to_string()))?;
     let written = match &output {
         Some(path) => crate::file::write(path, script.as_bytes())
             .map_err(|e| std::io::Error::other(e.to_string())),

@@ -5,6 +5,7 @@ use std::io::{self, Write};
 use std::path::Path;
 
 use crate::commission::ParamRef;
+use crate::exit::{Exit, ExitStatus};
 use crate::link::Link;
 use crate::link::can::Framer;
 use crate::session::transcript::{Header, Transcript};
@@ -12,6 +13,7 @@ use crate::session::{SessionError, SessionOptions};
 use crate::sim::Device;
 use crate::sim::slcan::CanDevice;
 
+use super::replay::ReplayError;
 use super::replay::parse::Entry;
 use super::session::{AsAny, DialectSession};
 use super::{CommandLine, DIALECTS, Dialect};
@@ -87,21 +89,41 @@ pub trait DialectConfig: AsAny {
 
     /// Its parameters matching `filter` as JSON objects (`tmclsh params --json`, fields in
     /// docs/machine-output.md); the error says why none matches.
-    fn params_json(&self, filter: &str) -> Result<Vec<crate::json::Value>, String>;
+    fn params_json(&self, filter: &str) -> Result<Vec<crate::json::Value>, DialectError>;
 
     /// Every parameter a snapshot of its modules holds (to compare two files offline).
     fn snapshot_params(&self) -> Vec<ParamRef>;
 
     /// A Rhai script replaying the transcript `entries` (whose first header, if any, is
     /// `header`), named `name` in its comments, waiting at most `wait_ms` for live values; the
-    /// error says why it replays nothing (exit 2).
+    /// error says why it replays nothing.
     fn replay(
         &self,
         entries: &[Entry],
         header: Option<&Header>,
         name: &str,
         wait_ms: u64,
-    ) -> Result<String, String>;
+    ) -> Result<String, ReplayError>;
+}
+
+/// Why a dialect cannot be configured: a refusal (exit 2) of whatever command was asked, as the
+/// tables are read before any command runs.
+#[derive(Debug, thiserror::Error)]
+pub enum DialectError {
+    /// Its tables could not be read (TMCL: the `--profile` name or file); the dialect's own
+    /// error says why.
+    #[error("{0}")]
+    Tables(Box<dyn std::error::Error + Send + Sync>),
+    /// No parameter matches a filter (`tmclsh params FILTER`), or the tables name none; says
+    /// which.
+    #[error("{0}")]
+    NoParams(String),
+}
+
+impl ExitStatus for DialectError {
+    fn exit(&self) -> Exit {
+        Exit::Refused
+    }
 }
 
 /// Every dialect configured, in list order: a bad `--profile` is refused whatever the command,
@@ -112,7 +134,7 @@ pub struct Configured {
 
 impl Configured {
     /// Configures every dialect of the list with the `--profile` file.
-    pub fn load(profile: Option<&Path>) -> Result<Configured, String> {
+    pub fn load(profile: Option<&Path>) -> Result<Configured, DialectError> {
         let configs = DIALECTS
             .iter()
             .map(|d| (d.configure)(profile))

@@ -25,7 +25,7 @@ use std::path::Path;
 #[cfg(feature = "cli")]
 use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 
-pub use config::{Configured, DialectConfig, Opening, Purpose};
+pub use config::{Configured, DialectConfig, DialectError, Opening, Purpose};
 pub use faces::Faces;
 pub use grammar::Grammar;
 pub use helper::{ArgKind, Helper, Section};
@@ -100,7 +100,7 @@ pub enum CommandLine {}
 
 /// How a dialect reads its tables: from the `--profile` file, if one is given; the error is a
 /// refusal (exit 2).
-pub type Configure = fn(profile: Option<&Path>) -> Result<Box<dyn DialectConfig>, String>;
+pub type Configure = fn(profile: Option<&Path>) -> Result<Box<dyn DialectConfig>, DialectError>;
 
 impl Dialect {
     /// Its name for messages with the indefinite article (`a TMCL`, `an SMD4`).

@@ -8,6 +8,8 @@ mod recognise;
 
 use std::fmt::Write as _;
 
+use crate::exit::{Exit, ExitStatus};
+
 use parse::{Entry, Record};
 pub use recognise::{Recognised, recognise};
 
@@ -63,10 +65,30 @@ pub fn rhai_string(text: &str) -> String {
     out
 }
 
-/// Why a transcript of `dialect` replays nothing.
-pub fn nothing_to_replay(dialect: &str) -> String {
-    format!(
+/// Why a transcript replays nothing: each a refusal (exit 2), the file being read but not
+/// replayable as it is.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ReplayError {
+    /// Sessions with different modules in one file, or (TMCL) a bus of different modules: one
+    /// script checks every line against one set of tables. Says which, and what to do.
+    #[error("{0}")]
+    Mixed(String),
+    /// A transcript of another module than the tables in use. Says which, and what to give.
+    #[error("{0}")]
+    OtherModule(String),
+    /// No exchange in it that a script could replay.
+    #[error(
         "no {dialect} exchange to replay: no command in it got a reply that could be read \
          (a transcript of another dialect, or of a session that only failed?)"
-    )
+    )]
+    Nothing {
+        /// The dialect the transcript was read as (`TMCL`, `SMD4`).
+        dialect: &'static str,
+    },
+}
+
+impl ExitStatus for ReplayError {
+    fn exit(&self) -> Exit {
+        Exit::Refused
+    }
 }

@@ -4,6 +4,7 @@
 use crate::dialect::{DIALECTS, Dialect, by_name, default_dialect};
 use crate::session::transcript::Header;
 
+use super::ReplayError;
 use super::parse::{Entry, Record};
 
 /// What a transcript is of, as read from it.
@@ -20,7 +21,7 @@ pub struct Recognised {
 /// What `entries` are a transcript of: the dialect and module its headers name, all sessions
 /// alike. A file written before transcripts had headers is read as the dialect whose session note
 /// ([`Dialect::legacy_note`]) it has, as the default dialect otherwise, with a notice saying so.
-pub fn recognise(entries: &[Entry]) -> Result<Recognised, String> {
+pub fn recognise(entries: &[Entry]) -> Result<Recognised, ReplayError> {
     let headers: Vec<(usize, &Header)> = entries
         .iter()
         .filter_map(|e| match &e.record {
@@ -34,14 +35,14 @@ pub fn recognise(entries: &[Entry]) -> Result<Recognised, String> {
     let dialect = by_name(&first.dialect).expect("headers are read with the dialects listed");
     for &(line, header) in &headers[1..] {
         if header.dialect != first.dialect || header.module != first.module {
-            return Err(format!(
+            return Err(ReplayError::Mixed(format!(
                 "it holds sessions with different modules: {} {} (line {first_line}) and {} {} \
                  (line {line}); split it",
                 first.dialect.to_uppercase(),
                 first.module,
                 header.dialect.to_uppercase(),
                 header.module
-            ));
+            )));
         }
     }
     let unheaded = entries

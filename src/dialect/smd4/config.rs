@@ -5,8 +5,9 @@ use std::io::{self, Write};
 use std::path::Path;
 
 use crate::commission::ParamRef;
+use crate::dialect::replay::ReplayError;
 use crate::dialect::replay::parse::Entry;
-use crate::dialect::{Dialect, DialectConfig, DialectSession, Opening};
+use crate::dialect::{Dialect, DialectConfig, DialectError, DialectSession, Opening};
 use crate::session::SessionError;
 use crate::session::transcript::Header;
 use crate::sim::Device;
@@ -19,7 +20,7 @@ use super::sim::{Smd4Sim, Smd4SimOptions};
 pub struct Smd4Config;
 
 /// SMD4 needs no tables from the command line (`--profile` is TMCL's).
-pub fn configure(_: Option<&Path>) -> Result<Box<dyn DialectConfig>, String> {
+pub fn configure(_: Option<&Path>) -> Result<Box<dyn DialectConfig>, DialectError> {
     Ok(Box::new(Smd4Config))
 }
 
@@ -71,7 +72,7 @@ impl DialectConfig for Smd4Config {
         super::params::write_params(filter, out)
     }
 
-    fn params_json(&self, filter: &str) -> Result<Vec<crate::json::Value>, String> {
+    fn params_json(&self, filter: &str) -> Result<Vec<crate::json::Value>, DialectError> {
         super::params::params_json(filter)
     }
 
@@ -85,7 +86,7 @@ impl DialectConfig for Smd4Config {
         _: Option<&Header>,
         name: &str,
         wait_ms: u64,
-    ) -> Result<String, String> {
+    ) -> Result<String, ReplayError> {
         super::replay::script(entries, name, wait_ms)
     }
 }

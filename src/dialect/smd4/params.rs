@@ -4,6 +4,7 @@
 use std::io::{self, Write};
 
 use super::protocol::{Smd4Command, Smd4Spec, hints};
+use crate::dialect::DialectError;
 use crate::json::{Value, json};
 
 /// The SMD4 commands matching `filter`, one row each, as the shell's `:params` shows them; when
@@ -28,7 +29,7 @@ pub(super) fn write_row(spec: &Smd4Command, out: &mut dyn Write) -> io::Result<(
 
 /// The SMD4 commands matching `filter` as JSON objects (`params --json`); the error says that
 /// none matches.
-pub fn params_json(filter: &str) -> Result<Vec<Value>, String> {
+pub fn params_json(filter: &str) -> Result<Vec<Value>, DialectError> {
     let rows: Vec<Value> = hints::matching(&Smd4Spec::builtin().commands, filter)
         .map(|spec| {
             json!({
@@ -45,7 +46,9 @@ pub fn params_json(filter: &str) -> Result<Vec<Value>, String> {
         })
         .collect();
     if rows.is_empty() {
-        return Err(format!("no SMD4 command matches '{filter}'"));
+        return Err(DialectError::NoParams(format!(
+            "no SMD4 command matches '{filter}'"
+        )));
     }
     Ok(rows)
 }

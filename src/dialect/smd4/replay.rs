@@ -17,7 +17,7 @@ use crate::dialect::smd4::protocol::{
 };
 
 use crate::dialect::replay::parse::{Entry, Record};
-use crate::dialect::replay::{comment, nothing_to_replay, reply_after, rhai_string};
+use crate::dialect::replay::{ReplayError, comment, reply_after, rhai_string};
 
 /// The session's first note in an SMD4 transcript, which tells one written before transcripts
 /// had headers.
@@ -40,11 +40,11 @@ pub enum Step {
 }
 
 /// The Rhai script replaying an SMD4 transcript; refused when no exchange in it replays.
-pub fn script(entries: &[Entry], name: &str, wait_ms: u64) -> Result<String, String> {
+pub fn script(entries: &[Entry], name: &str, wait_ms: u64) -> Result<String, ReplayError> {
     let spec = Smd4Spec::builtin();
     let steps = steps(entries, spec);
     if !steps.iter().any(|s| matches!(s, Step::Exchange { .. })) {
-        return Err(nothing_to_replay("SMD4"));
+        return Err(ReplayError::Nothing { dialect: "SMD4" });
     }
     Ok(to_rhai(&steps, spec, name, wait_ms))
 }

@@ -7,8 +7,11 @@ use std::path::Path;
 use std::sync::Arc;
 
 use crate::commission::ParamRef;
+use crate::dialect::replay::ReplayError;
 use crate::dialect::replay::parse::Entry;
-use crate::dialect::{CommandLine, Dialect, DialectConfig, DialectSession, Opening, Purpose};
+use crate::dialect::{
+    CommandLine, Dialect, DialectConfig, DialectError, DialectSession, Opening, Purpose,
+};
 use crate::link::can::Framer;
 use crate::session::SessionError;
 use crate::session::transcript::Header;
@@ -32,11 +35,11 @@ pub struct TmclConfig {
 
 /// Loads the profile `--profile` names (a built-in name, alias or module number, or a file), or
 /// the default one.
-pub fn configure(profile: Option<&Path>) -> Result<Box<dyn DialectConfig>, String> {
+pub fn configure(profile: Option<&Path>) -> Result<Box<dyn DialectConfig>, DialectError> {
     let given = profile.is_some();
     let profile = match profile {
         None => Profile::builtin(),
-        Some(arg) => catalogue::resolve(arg).map_err(|e| e.to_string())?,
+        Some(arg) => catalogue::resolve(arg).map_err(|e| DialectError::Tables(Box::new(e)))?,
     };
     Ok(Box::new(TmclConfig { profile, given }))
 }
@@ -184,7 +187,7 @@ impl DialectConfig for TmclConfig {
         super::params::write_params(&self.profile, filter, out)
     }
 
-    fn params_json(&self, filter: &str) -> Result<Vec<crate::json::Value>, String> {
+    fn params_json(&self, filter: &str) -> Result<Vec<crate::json::Value>, DialectError> {
         super::params::params_json(&self.profile, filter)
     }
 
@@ -198,7 +201,7 @@ impl DialectConfig for TmclConfig {
         header: Option<&Header>,
         name: &str,
         wait_ms: u64,
-    ) -> Result<String, String> {
+    ) -> Result<String, ReplayError> {
         super::replay::script(entries, header, &self.profile, name, wait_ms)
     }
 }

@@ -3,7 +3,7 @@
 use std::io::{self, Write};
 
 use super::profile::{Param, ParamKind, Profile};
-use crate::dialect::UNCERTAIN;
+use crate::dialect::{DialectError, UNCERTAIN};
 use crate::json::{Value, json};
 use crate::wrap::{fit, terminal_width};
 
@@ -20,25 +20,25 @@ pub fn write_params(profile: &Profile, filter: &str, out: &mut dyn Write) -> io:
 }
 
 /// The parameters of `profile` matching `filter`; the error says why there are none.
-fn matching<'a>(profile: &'a Profile, filter: &str) -> Result<Vec<&'a Param>, String> {
+fn matching<'a>(profile: &'a Profile, filter: &str) -> Result<Vec<&'a Param>, DialectError> {
     if profile.generic {
-        return Err(format!(
+        return Err(DialectError::NoParams(format!(
             "the {} profile knows parameters by number only (0..255): it has none to list",
             profile.module
-        ));
+        )));
     }
     let rows: Vec<&Param> = profile.matching(filter).collect();
     if rows.is_empty() {
-        return Err(format!(
+        return Err(DialectError::NoParams(format!(
             "no {} parameter matches '{filter}'",
             profile.module
-        ));
+        )));
     }
     Ok(rows)
 }
 
 /// The parameters of `profile` matching `filter` as JSON objects (`params --json`).
-pub fn params_json(profile: &Profile, filter: &str) -> Result<Vec<Value>, String> {
+pub fn params_json(profile: &Profile, filter: &str) -> Result<Vec<Value>, DialectError> {
     Ok(matching(profile, filter)?
         .into_iter()
         .map(|p| {

@@ -24,7 +24,7 @@ use crate::dialect::tmcl::protocol::reply::parse_reply;
 use crate::dialect::tmcl::protocol::{AsciiWord, Instruction, ModuleName, Opcode, Status};
 
 use crate::dialect::replay::parse::{Entry, Record};
-use crate::dialect::replay::{comment, nothing_to_replay, reply_after, rhai_string};
+use crate::dialect::replay::{ReplayError, comment, reply_after, rhai_string};
 use crate::session::transcript::Header;
 
 /// The Rhai script replaying a TMCL transcript with the modules of `profile`; refused when the
@@ -35,7 +35,7 @@ pub fn script(
     profile: &Profile,
     name: &str,
     wait_ms: u64,
-) -> Result<String, String> {
+) -> Result<String, ReplayError> {
     refuse_mixed_bus(entries)?;
     if let Some(header) = header {
         let (module, origin) = match identified_profile(entries) {
@@ -46,16 +46,16 @@ pub fn script(
             ),
         };
         if module != profile.module {
-            return Err(format!(
+            return Err(ReplayError::OtherModule(format!(
                 "a transcript of a {module} (profile {origin}), but the profile in use is the \
                  {}'s; give --profile",
                 profile.module
-            ));
+            )));
         }
     }
     let steps = steps(entries, profile);
     if !replays_something(&steps) {
-        return Err(nothing_to_replay("TMCL"));
+        return Err(ReplayError::Nothing { dialect: "TMCL" });
     }
     Ok(to_rhai(&steps, profile, name, wait_ms))
 }
@@ -118,7 +118,7 @@ fn identifications(entries: &[Entry]) -> Vec<(&str, &str)> {
 /// A session on a bus of different modules checked each module's lines with its own profile; a
 /// replay script has one profile for all of them, so it would check module 2's lines against
 /// module 1's tables. Refused, naming the modules.
-fn refuse_mixed_bus(entries: &[Entry]) -> Result<(), String> {
+fn refuse_mixed_bus(entries: &[Entry]) -> Result<(), ReplayError> {
     let found = identifications(entries);
     let Some((_, first)) = found.first() else {
         return Ok(());
@@ -132,12 +132,12 @@ fn refuse_mixed_bus(entries: &[Entry]) -> Result<(), String> {
         .collect();
     modules.sort();
     modules.dedup();
-    Err(format!(
+    Err(ReplayError::Mixed(format!(
         "a transcript of a bus of different modules: {}; a replay checks every line against one \
          profile, so it cannot replay this one (log one session per module, or give the \
          same --profile to every session)",
         modules.join("; ")
-    ))
+    )))
 }
 
 /// The built-in profile the session took from the module's answer on connect, where its note

@@ -2,7 +2,7 @@
 
 use super::*;
 use crate::dialect::replay::parse;
-use crate::dialect::replay::{Recognised, recognise};
+use crate::dialect::replay::{Recognised, ReplayError, recognise};
 use crate::dialect::smd4::config::header as smd4_header;
 use crate::dialect::tmcl::config::header as tmcl_header;
 use crate::dialect::tmcl::protocol::frame::encode_version_string;
@@ -230,7 +230,7 @@ impl Log {
         self.0.push('\n');
         self
     }
-    fn recognised(&self) -> Result<Recognised, String> {
+    fn recognised(&self) -> Result<Recognised, ReplayError> {
         recognise(&parse::parse(&self.0).unwrap())
     }
 }
@@ -258,7 +258,7 @@ fn sessions_of_different_modules_in_one_file_are_refused() {
     log.header(&tmcl_header(&Profile::builtin()))
         .exchange("AGAP 4, 0", 100, 5)
         .header(&smd4_header());
-    let error = log.recognised().unwrap_err();
+    let error = log.recognised().unwrap_err().to_string();
     assert!(
         error.contains("TMCL TMCM-142 (line 1) and SMD4 SMD4 (line 4)"),
         "{error}"
