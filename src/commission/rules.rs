@@ -35,6 +35,16 @@ pub enum SnapshotRole {
     ReadOnly,
 }
 
+/// A snapshot rule naming no parameter of the tables it came with.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("[snapshot] {list} names '{ident}', which is not a parameter")]
+pub struct UnknownRuleName {
+    /// The rule's list (`live`, `first`, `last`, `manual`).
+    pub list: &'static str,
+    /// The name it holds.
+    pub ident: String,
+}
+
 impl SnapshotRules {
     /// The role of the parameter `ident`, writable or not, under these rules.
     pub fn role_of(&self, ident: &str, writable: bool) -> SnapshotRole {
@@ -63,7 +73,7 @@ impl SnapshotRules {
     }
 
     /// Checks every listed identifier with `known` (a typo would silently not apply).
-    pub fn check_names(&self, known: impl Fn(&str) -> bool) -> Result<(), String> {
+    pub fn check_names(&self, known: impl Fn(&str) -> bool) -> Result<(), UnknownRuleName> {
         let lists = [
             ("live", &self.live),
             ("first", &self.first),
@@ -73,9 +83,10 @@ impl SnapshotRules {
         for (list, idents) in lists {
             for ident in idents {
                 if !known(ident) {
-                    return Err(format!(
-                        "[snapshot] {list} names '{ident}', which is not a parameter"
-                    ));
+                    return Err(UnknownRuleName {
+                        list,
+                        ident: ident.clone(),
+                    });
                 }
             }
         }

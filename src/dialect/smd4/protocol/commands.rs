@@ -216,7 +216,7 @@ impl Smd4Command {
             .map(|c| c.label.as_str())
     }
 
-    pub(crate) fn from_row(row: &CommandRow) -> Result<Smd4Command, String> {
+    pub(crate) fn from_row(row: &CommandRow) -> Result<Smd4Command, RowError> {
         let name = &row.mnemonic;
         let kind = kind(row)?;
         let reply = reply_shape(row)?;
@@ -225,13 +225,14 @@ impl Smd4Command {
         let value_type = match &row.value_type {
             Some(ty) => Some(
                 ItemType::from_name(ty)
-                    .ok_or_else(|| format!("{name}: unknown value_type '{ty}'"))?,
+                    .ok_or_else(|| RowError::of(row, format!("unknown value_type '{ty}'")))?,
             ),
             None => None,
         };
         if reply == ReplyShape::Value && value_type.is_none() && arg.is_none() {
-            return Err(format!(
-                "{name}: a value reply needs value_type or arg_type"
+            return Err(RowError::of(
+                row,
+                "a value reply needs value_type or arg_type",
             ));
         }
         Ok(Smd4Command {
@@ -264,20 +265,38 @@ impl Smd4Command {
     }
 }
 
+/// A command row that cannot be right, named by its mnemonic as the data writes it.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{command}: {why}")]
+pub struct RowError {
+    /// The row's mnemonic.
+    pub command: String,
+    /// What is wrong with it.
+    pub why: String,
+}
+
+impl RowError {
+    fn of(row: &CommandRow, why: impl Into<String>) -> Self {
+        RowError {
+            command: row.mnemonic.clone(),
+            why: why.into(),
+        }
+    }
+}
+
 /// The row's `kind`.
-fn kind(row: &CommandRow) -> Result<Kind, String> {
+fn kind(row: &CommandRow) -> Result<Kind, RowError> {
     match row.kind.as_str() {
         "setting" => Ok(Kind::Setting),
         "query" => Ok(Kind::Query),
         "action" => Ok(Kind::Action),
         "motion" => Ok(Kind::Motion),
-        other => Err(format!("{}: unknown kind '{other}'", row.mnemonic)),
+        other => Err(RowError::of(row, format!("unknown kind '{other}'"))),
     }
 }
 
 /// The row's `reply`, with the text of a literal one.
-fn reply_shape(row: &CommandRow) -> Result<ReplyShape, String> {
-    let name = &row.mnemonic;
+fn reply_shape(row: &CommandRow) -> Result<ReplyShape, RowError> {
     Ok(match row.reply.as_str() {
         "none" => ReplyShape::None,
         "value" => ReplyShape::Value,
@@ -287,15 +306,14 @@ fn reply_shape(row: &CommandRow) -> Result<ReplyShape, String> {
         "literal" => ReplyShape::Literal(
             row.reply_literal
                 .clone()
-                .ok_or_else(|| format!("{name}: reply = \"literal\" needs reply_literal"))?,
+                .ok_or_else(|| RowError::of(row, "reply = \"literal\" needs reply_literal"))?,
         ),
-        other => return Err(format!("{name}: unknown reply '{other}'")),
+        other => return Err(RowError::of(row, format!("unknown reply '{other}'"))),
     })
 }
 
 /// The labels of an enumerated value, one per value: a reply's value must read one way.
-fn labels(row: &CommandRow) -> Result<Vec<Choice>, String> {
-    let name = &row.mnemonic;
+fn labels(row: &CommandRow) -> Result<Vec<Choice>, RowError> {
     let labels: Vec<Choice> = row
         .enum_
         .iter()
@@ -306,27 +324,26 @@ fn labels(row: &CommandRow) -> Result<Vec<Choice>, String> {
         .collect();
     for (i, choice) in labels.iter().enumerate() {
         if choice.label.trim().is_empty() {
-            return Err(format!("{name}: enum value {} has no label", choice.value));
+            let why = format!("enum value {} has no label", choice.value);
+            return Err(RowError::of(row, why));
         }
         if labels[..i].iter().any(|c| c.value == choice.value) {
-            return Err(format!(
-                "{name}: enum value {} is given twice",
-                choice.value
-            ));
+            let why = format!("enum value {} is given twice", choice.value);
+            return Err(RowError::of(row, why));
         }
     }
     Ok(labels)
 }
 
 /// The argument of a write, if the command takes one: its type, limits and accepted values.
-fn arg_spec(row: &CommandRow, labels: &[Choice]) -> Result<Option<ArgSpec>, String> {
+fn arg_spec(row: &CommandRow, labels: &[Choice]) -> Result<Option<ArgSpec>, RowError> {
     let ty = match row.arg_type.as_str() {
         "none" => return Ok(None),
         ty => ty,
     };
     Ok(Some(ArgSpec {
         ty: ItemType::from_name(ty)
-            .ok_or_else(|| format!("{}: unknown arg_type '{ty}'", row.mnemonic))?,
+            .ok_or_else(|| RowError::of(row, format!("unknown arg_type '{ty}'")))?,
         min: row.min.as_ref().and_then(Scalar::as_f64),
         max: row.max.as_ref().and_then(Scalar::as_f64),
         choices: choices(row, labels),
@@ -374,7 +391,7 @@ pub struct Smd4CommandTable {
 }
 
 impl Smd4CommandTable {
-    pub(crate) fn from_rows(rows: &[CommandRow]) -> Result<Smd4CommandTable, String> {
+    pub(crate) fn from_rows(rows: &[CommandRow]) -> Result<Smd4CommandTable, RowError> {
         let commands = rows
             .iter()
             .map(Smd4Command::from_row)

@@ -35,23 +35,37 @@ pub struct FlagTable {
     bits: Vec<FlagBit>,
 }
 
+/// A flag row that would make a reply's flags read wrongly.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{word} bit {bit} {why}")]
+pub struct FlagError {
+    /// The flag word (`sflag`, `eflag`).
+    pub word: String,
+    /// The row's bit.
+    pub bit: u8,
+    /// What is wrong with it.
+    pub why: &'static str,
+}
+
 impl FlagTable {
     /// The table of `rows` (`word` names them in messages); a bit beyond 15, given twice or
     /// without a name is refused, since a reply's flags would then read wrongly.
-    pub(crate) fn from_rows(word: &str, rows: &[FlagRow]) -> Result<FlagTable, String> {
+    pub(crate) fn from_rows(word: &str, rows: &[FlagRow]) -> Result<FlagTable, FlagError> {
         let mut seen = [false; 16];
         for row in rows {
+            let refused = |why| FlagError {
+                word: word.to_string(),
+                bit: row.bit,
+                why,
+            };
             let Some(slot) = seen.get_mut(usize::from(row.bit)) else {
-                return Err(format!(
-                    "{word} bit {} is beyond bit 15 of a flag word",
-                    row.bit
-                ));
+                return Err(refused("is beyond bit 15 of a flag word"));
             };
             if std::mem::replace(slot, true) {
-                return Err(format!("{word} bit {} is given twice", row.bit));
+                return Err(refused("is given twice"));
             }
             if row.name.trim().is_empty() {
-                return Err(format!("{word} bit {} has no name", row.bit));
+                return Err(refused("has no name"));
             }
         }
         let mut bits: Vec<FlagBit> = rows

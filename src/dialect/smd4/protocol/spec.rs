@@ -6,11 +6,12 @@ use std::sync::OnceLock;
 use std::time::Duration;
 
 use super::check::RealTolerance;
-use super::commands::Smd4CommandTable;
+use super::commands::{RowError, Smd4CommandTable};
 use super::errors::ErrorInfo;
-use super::flags::FlagTable;
+use super::flags::{FlagError, FlagTable};
 use super::load::Smd4File;
 use crate::commission::SnapshotRules;
+use crate::commission::rules::UnknownRuleName;
 
 /// The data file, kept in the repository as the single source of truth and built into the binary.
 pub const BUILTIN_TOML: &str = include_str!("../../../../data/smd4.toml");
@@ -60,6 +61,24 @@ pub struct Smd4Spec {
     pub snapshot: SnapshotSpec,
 }
 
+/// Why a dialect table is refused: its text, a command row, a flag row, or a value elsewhere
+/// (an address, the tolerance, a snapshot rule naming no command). The built-in one never is.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum SpecError {
+    /// A command row that cannot be right.
+    #[error(transparent)]
+    Command(#[from] RowError),
+    /// A flag row that would read two ways.
+    #[error(transparent)]
+    Flag(#[from] FlagError),
+    /// A snapshot rule naming no command.
+    #[error(transparent)]
+    Rule(#[from] UnknownRuleName),
+    /// Anything else, in words.
+    #[error("{0}")]
+    Data(String),
+}
+
 impl Smd4Spec {
     /// The built-in dialect (`data/smd4.toml`).
     pub fn builtin() -> &'static Smd4Spec {
@@ -70,21 +89,27 @@ impl Smd4Spec {
     }
 
     /// Reads a dialect from TOML text with the schema of `data/smd4.toml`.
-    pub fn from_toml(text: &str) -> Result<Smd4Spec, String> {
-        let file = Smd4File::parse(text).map_err(|e| e.to_string())?;
+    pub fn from_toml(text: &str) -> Result<Smd4Spec, SpecError> {
+        let file = Smd4File::parse(text).map_err(|e| SpecError::Data(e.to_string()))?;
         let sim = &file.simulation;
         let ip = |text: &Option<String>, fallback: Ipv4Addr| {
             text.as_deref()
-                .map(|t| t.parse().map_err(|_| format!("bad IPv4 address '{t}'")))
+                .map(|t| {
+                    t.parse()
+                        .map_err(|_| SpecError::Data(format!("bad IPv4 address '{t}'")))
+                })
                 .unwrap_or(Ok(fallback))
         };
         let mut commands = Smd4CommandTable::from_rows(&file.command)?;
         let float_digits = file.snapshot.float_digits.unwrap_or(5);
-        commands.set_real_tolerance(RealTolerance::from_data(
-            file.user_real.relative_tolerance,
-            file.user_real.absolute_tolerance,
-            float_digits,
-        )?);
+        commands.set_real_tolerance(
+            RealTolerance::from_data(
+                file.user_real.relative_tolerance,
+                file.user_real.absolute_tolerance,
+                float_digits,
+            )
+            .map_err(SpecError::Data)?,
+        );
         let rules = file.snapshot.rules.clone();
         rules.check_names(|name| commands.get(name).is_some_and(|c| c.mnemonic == name))?;
         Ok(Smd4Spec {
@@ -182,15 +207,18 @@ mod tests {
         assert!(
             Smd4Spec::from_toml(bad)
                 .unwrap_err()
+                .to_string()
                 .contains("unknown kind")
         );
         let bad = "[[command]]\nmnemonic = \"X\"\nkind = \"query\"\nreply = \"value\"\n";
-        assert!(Smd4Spec::from_toml(bad).unwrap_err().contains("value_type"));
+        let error = Smd4Spec::from_toml(bad).unwrap_err().to_string();
+        assert!(error.contains("value_type"));
         assert!(Smd4Spec::from_toml("not toml [").is_err());
         let bad = "[snapshot]\nfirst = [\"MOTOR:NOPE\"]\n";
         assert!(
             Smd4Spec::from_toml(bad)
                 .unwrap_err()
+                .to_string()
                 .contains("[snapshot] first names 'MOTOR:NOPE'")
         );
     }
@@ -198,7 +226,8 @@ mod tests {
     #[test]
     fn each_field_of_a_command_row_is_checked_by_name() {
         let refused = |fields: &str| {
-            Smd4Spec::from_toml(&format!("[[command]]\nmnemonic = \"X:Y\"\n{fields}")).unwrap_err()
+            let text = format!("[[command]]\nmnemonic = \"X:Y\"\n{fields}");
+            Smd4Spec::from_toml(&text).unwrap_err().to_string()
         };
         assert_eq!(
             refused("kind = \"query\"\nreply = \"loud\"\n"),
@@ -224,7 +253,7 @@ mod tests {
 
     #[test]
     fn a_flag_or_enumerated_value_that_would_read_two_ways_is_refused() {
-        let refused = |text: &str| Smd4Spec::from_toml(text).unwrap_err();
+        let refused = |text: &str| Smd4Spec::from_toml(text).unwrap_err().to_string();
         let flags = "[[sflag]]\nbit = 3\nname = \"A\"\n[[sflag]]\nbit = 3\nname = \"B\"\n";
         assert_eq!(refused(flags), "sflag bit 3 is given twice");
         let flags = "[[eflag]]\nbit = 16\nname = \"A\"\n";

@@ -301,7 +301,7 @@ impl Profile {
         let (axis, global) = parameters(&file);
         file.snapshot
             .check_names(|ident| axis.iter().chain(&global).any(|p| p.ident == ident))
-            .map_err(|message| at(vec![check::Step::Key("snapshot")], message))?;
+            .map_err(|e| at(vec![check::Step::Key("snapshot")], e.to_string()))?;
         Ok(Profile {
             module: file.meta.module.clone(),
             axes: file.meta.axes,
