@@ -445,7 +445,7 @@ impl ModuleArgs {
     /// The link chosen (see `link_kinds`): the id of its kind, `sim`, or `None`; exit 2 when
     /// two of one source name different links.
     fn chosen(&self) -> Result<Option<&'static str>, Failure> {
-        link_kinds::chosen(&self.command_line.0).map_err(|why| Failure::new(Exit::Refused, why))
+        link_kinds::chosen(&self.command_line.0).map_err(Failure::from)
     }
 
     /// Whether the built-in simulator answers: chosen, or (for the interactive shell) nothing

@@ -7,6 +7,8 @@
 //! source are refused, since nobody can tell which was meant.
 
 use clap::ArgMatches;
+
+use crate::exit::{Exit, ExitStatus};
 use clap::parser::ValueSource;
 
 /// A kind of link to hardware: its option id (which is its long flag and its configuration key)
@@ -84,9 +86,23 @@ fn rank(source: Option<ValueSource>) -> u8 {
     }
 }
 
+/// Two settings of the same source naming different links (`--port` and `--tcp`): refused.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{} name different links; give one", named.join(" and "))]
+pub(super) struct LinkClash {
+    /// The settings, as the user gave them.
+    named: Vec<String>,
+}
+
+impl ExitStatus for LinkClash {
+    fn exit(&self) -> Exit {
+        Exit::Refused
+    }
+}
+
 /// The link `matches` (a leaf command's) choose: the id of the winning kind or [`SIM`], `None`
 /// when nothing chooses one; an error when two of the same source do.
-pub(super) fn chosen(matches: &ArgMatches) -> Result<Option<&'static str>, String> {
+pub(super) fn chosen(matches: &ArgMatches) -> Result<Option<&'static str>, LinkClash> {
     let has = |id: &str| matches.try_contains_id(id).unwrap_or(false);
     let mut set: Vec<(&'static str, u8)> = LINK_KINDS
         .iter()
@@ -120,10 +136,7 @@ pub(super) fn chosen(matches: &ArgMatches) -> Result<Option<&'static str>, Strin
                     _ => format!("`{id}` in the configuration"),
                 })
                 .collect();
-            Err(format!(
-                "{} name different links; give one",
-                named.join(" and ")
-            ))
+            Err(LinkClash { named })
         }
     }
 }
