@@ -58,7 +58,7 @@ pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Res
         super::diagnose(&message);
     }
     let text = result?;
-    writeln!(out, "{text}").map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
+    writeln!(out, "{text}")?;
     Ok(Exit::Success)
 }
 

@@ -43,9 +43,7 @@ pub(super) fn run(args: &ProfilesArgs, out: &mut dyn Write) -> Result<Exit, Fail
             }
         }
     };
-    result
-        .map(|()| Exit::Success)
-        .map_err(|e| Failure::new(Exit::Link, e.to_string()))
+    result.map(|()| Exit::Success).map_err(Failure::from)
 }
 
 /// One row of the list.

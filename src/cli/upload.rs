@@ -51,5 +51,5 @@ pub fn run(args: UploadArgs, configs: &Configured, out: &mut dyn Write) -> Resul
     // A closed stdout is decided in `cli::main` (quietly, 141).
     out.write_all(text.as_bytes())
         .map(|()| Exit::Success)
-        .map_err(|e| Failure::new(Exit::Link, e.to_string()))
+        .map_err(Failure::from)
 }
