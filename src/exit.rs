@@ -134,4 +134,24 @@ mod tests {
         assert_eq!(failure.to_string(), "link lost");
         assert_eq!(Failure::refused("no").exit.code(), 2);
     }
+
+    #[test]
+    fn the_worse_outcome_is_the_one_that_says_least_about_the_module() {
+        use Exit::*;
+        let order = [
+            Success,
+            Refused,
+            DeviceError,
+            Link,
+            Interrupted,
+            Terminated(15),
+        ];
+        for (i, a) in order.iter().enumerate() {
+            for b in &order[i..] {
+                assert_eq!(a.worse(*b), *b, "{a:?} then {b:?}");
+                assert_eq!(b.worse(*a), *b, "{b:?} then {a:?}");
+            }
+        }
+        assert_eq!(Terminated(1).worse(Terminated(15)), Terminated(1));
+    }
 }
