@@ -131,17 +131,17 @@ fn wait_for_port(module: &ModuleArgs) -> Result<Waited, Failure> {
     if present()? {
         return Ok(Waited::No);
     }
-    println!("waiting for {port}… (Ctrl-C to give up)");
+    crate::stdout::line(&format!("waiting for {port}… (Ctrl-C to give up)"));
     let mut next_look = Instant::now() + PORT_POLL;
     loop {
         if interrupt::take() {
-            println!("gave up waiting for {port}");
+            crate::stdout::line(&format!("gave up waiting for {port}"));
             return Ok(Waited::GaveUp);
         }
         std::thread::sleep(interrupt::SLICE);
         if Instant::now() >= next_look {
             if present()? {
-                println!("{port} is there");
+                crate::stdout::line(&format!("{port} is there"));
                 return Ok(Waited::Appeared);
             }
             next_look = Instant::now() + PORT_POLL;
