@@ -5,10 +5,7 @@
 
 use std::sync::{Mutex, OnceLock, PoisonError};
 
-use super::{Dialect, smd4, tmcl};
-
-/// The dialects built in, the default first: `--protocol` offers them in this order.
-static BUILT_IN: &[&Dialect] = &[&tmcl::DIALECT, &smd4::DIALECT];
+use super::{BUILT_IN, Dialect};
 
 /// The list, fixed at its first use.
 static FIXED: OnceLock<&'static [&'static Dialect]> = OnceLock::new();
@@ -98,6 +95,7 @@ pub fn default_dialect() -> &'static Dialect {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dialect::{smd4, tmcl};
 
     /// A dialect of another name, for a registry of this test's own (the crate's list is shared
     /// by every test of the binary, and stays as built).

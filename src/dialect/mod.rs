@@ -39,6 +39,10 @@ pub use session::{DialectSession, Reply};
 /// help; `:help params` explains it.
 pub const UNCERTAIN: &str = "*";
 
+/// The dialects built in, the default first: `--protocol` offers them in this order, and
+/// [`all`] lists those registered after them.
+static BUILT_IN: &[&Dialect] = &[&tmcl::DIALECT, &smd4::DIALECT];
+
 /// A dialect: what the layers above need to know about it without knowing it. One static value
 /// per dialect, listed in [`all`].
 pub struct Dialect {
