@@ -39,8 +39,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rhai::{Dynamic, Engine, EvalAltResult, INT, OptimizationLevel, Position, Scope};
 
 use crate::escape::escape_control;
-use crate::exit::{Exit, Failure};
-use crate::session::interrupt;
+use crate::exit::{Exit, ExitStatus, Failure};
+use crate::session::{SessionError, interrupt};
 
 pub use limits::Limits;
 use memory::Budget;
@@ -498,14 +498,13 @@ fn report(context: &Context<'_>, error: EvalAltResult) -> Failure {
             exit: Exit::DeviceError,
             message: at(name, position, memory::MESSAGE),
         },
-        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == TRANSCRIPT => Failure {
-            exit: Exit::Link,
-            message: at(
-                name,
-                position,
-                "the run stops: it asked for a transcript that cannot be written",
-            ),
-        },
+        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == TRANSCRIPT => {
+            let lost = SessionError::TranscriptLost;
+            Failure {
+                exit: lost.exit(),
+                message: at(name, position, &lost.to_string()),
+            }
+        }
         EvalAltResult::ErrorTerminated(token, _) if token.to_string() == STDOUT => Failure {
             exit: crate::stdout::EXIT,
             message: at(name, position, "stdout was closed"),
