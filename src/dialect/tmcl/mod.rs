@@ -3,6 +3,8 @@
 //! and stand-alone programs, and the faces the shell, the REPL and scripts use.
 
 pub mod asm;
+#[cfg(feature = "cli")]
+pub mod cli;
 pub mod commission;
 pub mod complete;
 pub mod config;
