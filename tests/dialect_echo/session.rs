@@ -5,8 +5,8 @@
 use std::sync::Arc;
 use std::time::Duration;
 
-use tmclsh::commission::{ParamDevice, ParamRef, ParamValue, Reading, StoreStep};
-use tmclsh::dialect::session::{BusScan, Refusal, ReplyForms};
+use tmclsh::commission::{ParamDevice, ParamError, ParamRef, ParamValue, Reading, StoreStep};
+use tmclsh::dialect::session::{BusScan, Refusal, ReplyForms, run_script};
 use tmclsh::dialect::{Dialect, DialectSession, Opening, Reply, elsewhere};
 use tmclsh::exit::Failure;
 use tmclsh::script::Script;
@@ -112,15 +112,9 @@ impl DialectSession for EchoSession {
         self: Box<Self>,
         script: &Script,
     ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
-        let (session, result) = script.run(
-            *self,
-            |s, text| s.annotate(text),
-            |s| s.take_notices(),
-            |s| s.transcript().is_some_and(|t| t.failure().is_some()),
-            |s| s.stop_motion(),
-            |engine, s, _| super::script::register(engine, s),
-        );
-        (Box::new(session), result)
+        run_script(*self, script, |engine, s, _| {
+            super::script::register(engine, s)
+        })
     }
 }
 
@@ -150,8 +144,8 @@ impl ParamDevice for EchoSession {
         Vec::new()
     }
 
-    fn find(&self, _: &str) -> Result<ParamRef, String> {
-        Err(NO_PARAMS.to_string())
+    fn find(&self, _: &str) -> Result<ParamRef, ParamError> {
+        Err(ParamError::Unknown(NO_PARAMS.to_string()))
     }
 
     fn read(&mut self, _: &ParamRef) -> Result<Reading, SessionError> {
@@ -162,8 +156,8 @@ impl ParamDevice for EchoSession {
         Err(SessionError::Refused(NO_PARAMS.to_string()))
     }
 
-    fn check_write(&self, _: &ParamRef, _: &ParamValue) -> Result<(), String> {
-        Err(NO_PARAMS.to_string())
+    fn check_write(&self, _: &ParamRef, _: &ParamValue) -> Result<(), ParamError> {
+        Err(ParamError::Unknown(NO_PARAMS.to_string()))
     }
 
     fn write_line(&self, _: &ParamRef, _: &ParamValue) -> String {
