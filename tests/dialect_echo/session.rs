@@ -157,7 +157,7 @@ impl ParamDevice for EchoSession {
     }
 
     fn check_write(&self, _: &ParamRef, _: &ParamValue) -> Result<(), ParamError> {
-        Err(ParamError::Unknown(NO_PARAMS.to_string()))
+        Err(ParamError::Value(NO_PARAMS.to_string()))
     }
 
     fn write_line(&self, _: &ParamRef, _: &ParamValue) -> String {
