@@ -130,7 +130,7 @@ impl Script {
     }
 
     /// Runs over a session of type `S`, with the functions `register` adds (a dialect's device
-    /// functions) besides those every script has; `log` lines go to the transcript through
+    /// functions) besides those every script has, the commissioning functions among them; `log` lines go to the transcript through
     /// `annotate` (to stderr when none is written). What the session noticed (`notices`: bytes
     /// discarded before a reply, an event) goes out before the next `print` line, which may show
     /// that reply; what is left when the script ends is the caller's. With
@@ -138,7 +138,7 @@ impl Script {
     /// `lost_transcript` says the transcript can no longer be written. After a failed `test`
     /// block, `stop` stops what the session set moving (its messages go to stderr). The engine
     /// holds the session for the run and gives it back when dropped.
-    pub fn run<S: 'static>(
+    pub fn run<S: crate::commission::ParamDevice + 'static>(
         &self,
         session: S,
         annotate: fn(&mut S, &str) -> bool,
@@ -182,6 +182,7 @@ impl Script {
                 },
             );
             register(&mut engine, &shared, &self.sandbox);
+            commission::register(&mut engine, &shared, &self.sandbox);
             let record = blocks::Record::default();
             let session = shared.clone();
             let after_failure: Rc<dyn Fn()> = Rc::new(move || {
