@@ -136,7 +136,7 @@ impl DialectConfig for TmclConfig {
         flags: &CommandLine,
         state: Option<&Path>,
         verbose: bool,
-    ) -> Result<Box<dyn Device>, String> {
+    ) -> Result<Box<dyn Device>, crate::sim::error::SimStartError> {
         super::sim::flags::served(&self.simulated_profile(), flags, state, verbose)
     }
 
