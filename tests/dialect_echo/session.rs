@@ -5,7 +5,7 @@
 use std::sync::Arc;
 use std::time::Duration;
 
-use tmclsh::commission::{ParamDevice, ParamRef, ParamValue, Reading, StoreStep};
+use tmclsh::commission::{ParamDevice, ParamError, ParamRef, ParamValue, Reading, StoreStep};
 use tmclsh::dialect::session::{BusScan, Refusal, ReplyForms};
 use tmclsh::dialect::{Dialect, DialectSession, Opening, Reply, elsewhere};
 use tmclsh::exit::Failure;
@@ -150,8 +150,8 @@ impl ParamDevice for EchoSession {
         Vec::new()
     }
 
-    fn find(&self, _: &str) -> Result<ParamRef, String> {
-        Err(NO_PARAMS.to_string())
+    fn find(&self, _: &str) -> Result<ParamRef, ParamError> {
+        Err(ParamError::Unknown(NO_PARAMS.to_string()))
     }
 
     fn read(&mut self, _: &ParamRef) -> Result<Reading, SessionError> {
@@ -162,8 +162,8 @@ impl ParamDevice for EchoSession {
         Err(SessionError::Refused(NO_PARAMS.to_string()))
     }
 
-    fn check_write(&self, _: &ParamRef, _: &ParamValue) -> Result<(), String> {
-        Err(NO_PARAMS.to_string())
+    fn check_write(&self, _: &ParamRef, _: &ParamValue) -> Result<(), ParamError> {
+        Err(ParamError::Value(NO_PARAMS.to_string()))
     }
 
     fn write_line(&self, _: &ParamRef, _: &ParamValue) -> String {
