@@ -12,12 +12,16 @@ use tmclsh::dialect::session::DialectSession;
 use tmclsh::dialect::smd4::session::{Smd4Session, Smd4SessionOptions};
 use tmclsh::dialect::smd4::sim::{Smd4Sim, Smd4SimOptions};
 use tmclsh::dialect::tmcl::profile::Profile;
+use tmclsh::dialect::tmcl::protocol::can::TmclFramer;
 use tmclsh::dialect::tmcl::session::{Connect, TmclSession};
 use tmclsh::dialect::tmcl::sim::Bus;
+use tmclsh::dialect::tmcl::sim::can::CanBus;
+use tmclsh::link::can::{CanLink, SlcanLink};
 use tmclsh::link::{Link, LinkError};
 use tmclsh::session::SessionOptions;
 use tmclsh::sim::Device;
 use tmclsh::sim::inprocess::SimLink;
+use tmclsh::sim::slcan::{SlcanAdapter, SlcanOptions};
 
 /// The link operations counted.
 #[derive(Debug, Default, Clone, Copy, PartialEq, Eq)]
@@ -139,4 +143,25 @@ fn an_smd4_transaction_is_one_look_one_send_one_wait() {
     let smd4 = Smd4SessionOptions::default();
     let mut session = Smd4Session::open(link, options, smd4, None).unwrap();
     assert_eq!(per_transaction(&mut session, &ops, "SYS:FW"), ONE_WAIT);
+}
+
+#[test]
+fn a_tmcl_transaction_over_slcan_is_one_look_one_send_one_wait_on_the_serial_line() {
+    // Counted under the adapter, on its serial line, where each operation is a system call:
+    // the acknowledgement and the reply frame come in one read, and what follows is known.
+    let adapter = SlcanAdapter::new(
+        Box::new(CanBus::new(Box::new(Bus::builtin()))),
+        SlcanOptions::default(),
+    );
+    let (serial, ops) = counted(Box::new(adapter));
+    let bus = SlcanLink::open(serial, "sim", 1_000_000, Duration::from_secs(1)).unwrap();
+    let link = Box::new(CanLink::new(Box::new(bus), Box::new(TmclFramer::new(2))));
+    let connect = Connect {
+        binary: true,
+        ..Connect::default()
+    };
+    let options = SessionOptions::default();
+    let mut session =
+        TmclSession::connect(link, Profile::builtin(), connect, options, None).unwrap();
+    assert_eq!(per_transaction(&mut session, &ops, "GAP 1, 0"), ONE_WAIT);
 }

@@ -4,7 +4,7 @@
 //! program) and the simulator's own turnaround, which a bare client measures: it writes each
 //! request and reads its echo and reply with nothing else, so tmclsh's ratio to that client is
 //! what tmclsh adds. System calls per transaction are counted with strace, which load does not
-//! change.
+//! change, for TMCL ASCII and binary, SMD4 and TMCL over slcan.
 
 use std::fs::{File, OpenOptions};
 use std::io::{Read, Write};
@@ -33,8 +33,9 @@ pub fn measure(n: u32, reps: usize) -> Vec<Row> {
         drop(busy);
     }
     rows.push(paced(PACED_N, reps.min(3)));
-    rows.push(syscalls(&[], "ASCII"));
-    rows.push(syscalls(&["--binary"], "binary"));
+    for session in SESSIONS {
+        rows.push(syscalls(&session));
+    }
     rows
 }
 
@@ -47,7 +48,7 @@ fn round_trips(n: u32, reps: usize, loaded: bool) -> Row {
     for _ in 0..reps {
         let done = run(Command::new(tmclsh())
             .arg("run")
-            .arg(repo_file("benches/e2e/gap_loop.rhai"))
+            .arg(repo_file(GAP_LOOP))
             .args(["--port", &sim.path, "--", &n.to_string()]))
         .expect_success("tmclsh run (unpaced pty)");
         let us = done.number(0) / f64::from(n) * 1e6;
@@ -90,7 +91,7 @@ fn paced(n: u32, reps: usize) -> Row {
     for _ in 0..reps {
         let done = run(Command::new(tmclsh())
             .arg("run")
-            .arg(repo_file("benches/e2e/gap_loop.rhai"))
+            .arg(repo_file(GAP_LOOP))
             .args(["--port", &sim.path, "--", &n.to_string()]))
         .expect_success("tmclsh run (paced pty)");
         ours.push(done.number(0) / f64::from(n) * 1e6);
@@ -121,10 +122,55 @@ fn paced(n: u32, reps: usize) -> Row {
     }
 }
 
+/// A session whose system calls are counted: its name, the simulator's arguments, the loop
+/// script and tmclsh's arguments besides the link.
+struct Session {
+    name: &'static str,
+    sim: &'static [&'static str],
+    script: &'static str,
+    client: &'static [&'static str],
+}
+
+/// Every kind of session a loop can run: TMCL in both modes, SMD4, TMCL over slcan.
+const SESSIONS: [Session; 4] = [
+    Session {
+        name: "TMCL ASCII",
+        sim: &[],
+        script: GAP_LOOP,
+        client: &[],
+    },
+    Session {
+        name: "TMCL binary",
+        sim: &[],
+        script: GAP_LOOP,
+        client: &["--binary"],
+    },
+    Session {
+        name: "SMD4",
+        sim: &["--protocol", "smd4"],
+        script: "benches/e2e/smd4_loop.rhai",
+        client: &["--protocol", "smd4"],
+    },
+    Session {
+        name: "TMCL over slcan",
+        sim: &["--slcan"],
+        script: GAP_LOOP,
+        client: &[],
+    },
+];
+
+const GAP_LOOP: &str = "benches/e2e/gap_loop.rhai";
+
 /// System calls of tmclsh per transaction: strace's count for a loop of N less one of none.
-fn syscalls(args: &[&str], mode: &str) -> Row {
+fn syscalls(session: &Session) -> Row {
     const N: u32 = 1000;
-    let sim = Sim::start(&[]);
+    let sim = Sim::start(session.sim);
+    // An slcan adapter is reached with --can, every other simulator as a serial port.
+    let link = if session.sim.contains(&"--slcan") {
+        ["--can".to_string(), format!("slcan:{}", sim.path)]
+    } else {
+        ["--port".to_string(), sim.path.clone()]
+    };
     let count = |n: u32| -> Option<f64> {
         let out = std::env::temp_dir().join(format!("tmclsh-strace-{}", std::process::id()));
         let status = Command::new("strace")
@@ -132,9 +178,10 @@ fn syscalls(args: &[&str], mode: &str) -> Row {
             .arg(&out)
             .arg(tmclsh())
             .arg("run")
-            .args(args)
-            .arg(repo_file("benches/e2e/gap_loop.rhai"))
-            .args(["--port", &sim.path, "--", &n.to_string()])
+            .args(session.client)
+            .arg(repo_file(session.script))
+            .args(&link)
+            .args(["--", &n.to_string()])
             .stdout(std::process::Stdio::null())
             .status()
             .ok()?;
@@ -144,7 +191,10 @@ fn syscalls(args: &[&str], mode: &str) -> Row {
         let calls = total.split_whitespace().nth(3)?.parse::<f64>().ok()?;
         status.success().then_some(calls)
     };
-    let name = format!("{PREFIX}: system calls per transaction, TMCL {mode} (strace -f -c)");
+    let name = format!(
+        "{PREFIX}: system calls per transaction, {} (strace -f -c)",
+        session.name
+    );
     let per = count(N)
         .zip(count(0))
         .map(|(n, none)| (n - none) / f64::from(N));
@@ -270,7 +320,10 @@ pub fn section(date: &str, load_before: &str, load_after: &str) -> String {
          tmclsh adds. The paced row does the same at 115200 baud: the bare client shows how \
          near the limit the simulator's timer lets any client come, and tmclsh is judged \
          against that. System calls are strace's count (`strace -f -c`) of a loop of 1000 less \
-         one of none, divided by 1000: a count that load does not change. The same count at the \
+         one of none, divided by 1000: a count that load does not change. They are counted for \
+         each kind of session: TMCL in ASCII and in binary over a pty, SMD4 (`send(\"MOTOR:PACT\")` \
+         in `benches/e2e/smd4_loop.rhai`) against `tmclsh sim --pty --protocol smd4`, and TMCL \
+         over slcan (`--can slcan:PTY`) against `tmclsh sim --pty --slcan`. The same count at the \
          level of the link (sends, looks, waits) is pinned by a test (`tests/hot_path.rs`). \
          Only these rows and row 3: `cargo bench --bench e2e -- --hot`.\n"
     )

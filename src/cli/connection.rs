@@ -8,8 +8,8 @@ use std::time::Duration;
 use clap::{ArgMatches, Args, Command, FromArgMatches};
 
 use crate::dialect::{
-    Configured, DIALECTS, Dialect, DialectConfig, DialectSession, Opening, Purpose,
-    default_dialect, protocol_parser,
+    Configured, Dialect, DialectConfig, DialectSession, Opening, Purpose, default_dialect,
+    protocol_parser,
 };
 use crate::exit::{Exit, Failure};
 use crate::link::Link;
@@ -227,7 +227,7 @@ impl FromArgMatches for DialectFlags {
 
 impl Args for DialectFlags {
     fn augment_args(cmd: Command) -> Command {
-        DIALECTS
+        crate::dialect::all()
             .iter()
             .fold(cmd, |cmd, d| (d.session_flags)(cmd))
             .next_help_heading(None::<&str>)

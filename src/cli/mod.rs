@@ -278,7 +278,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Params(args)) if args.values => {
             return params::read_values(&args, &configs, out);
         }
-        Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
+        Some(Command::Params(args)) => return Ok(params::run(&args, &configs, out)?),
         Some(Command::Ports(args)) => ports::run(&args, &configs, out),
         Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),
         Some(Command::Completions(args)) if args.install => {
@@ -295,15 +295,11 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Scan(args)) => return scan::run(args, &configs, out),
         Some(Command::Transcript(args)) => return transcript::run(args, &configs, out),
         Some(Command::Sim(args)) => return sim::run(&args, &configs, out),
-        Some(Command::Config(args)) => return finish_io(config::run(&args, out)),
+        Some(Command::Config(args)) => return Ok(config::run(&args, out)?),
         None => return shell::run(cli.shell, &configs),
     };
-    finish_io(result.map(|()| Exit::Success))
-}
-
-/// The exit code of a command that only writes output (a closed stdout is decided in [`main`]).
-fn finish_io(result: std::io::Result<Exit>) -> Result<Exit, Failure> {
-    result.map_err(|e| Failure::new(Exit::Link, e.to_string()))
+    result?;
+    Ok(Exit::Success)
 }
 
 /// The TMCL profile, for the subcommands only TMCL has (`asm`, `disasm`, `download`).

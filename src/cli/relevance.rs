@@ -8,7 +8,7 @@ use clap::error::ErrorKind;
 use clap::parser::ValueSource;
 use clap::{ArgMatches, Args, Command};
 
-use crate::dialect::{DIALECTS, Dialect};
+use crate::dialect::{Dialect, all};
 
 use super::connection::ModuleArgs;
 use super::position::{flag, leaf_matches, subcommand_mut, subcommand_path};
@@ -167,7 +167,7 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
         }
     }
     if let Some(chosen) = dialect(leaf) {
-        for other in DIALECTS.iter().filter(|d| !std::ptr::eq(**d, chosen)) {
+        for other in all().iter().filter(|d| !std::ptr::eq(**d, chosen)) {
             let why = other.refusal(chosen);
             let ids = own_options(other);
             refuse(&ids.iter().map(String::as_str).collect::<Vec<_>>(), why);
@@ -322,7 +322,7 @@ mod tests {
     #[test]
     fn the_dialect_options_are_options_of_the_shell() {
         let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
-        for id in DIALECTS.iter().flat_map(|d| own_options(d)) {
+        for id in all().iter().flat_map(|d| own_options(d)) {
             assert!(cmd.get_arguments().any(|a| a.get_id() == &id), "{id}");
         }
     }

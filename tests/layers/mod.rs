@@ -248,7 +248,7 @@ fn the_checks_see_an_upward_use_and_a_dialect_crossing() {
         "src/dialect/a/x.rs",
         &["dialect", a, "x"],
         &format!(
-            "use crate::dialect::{b}::Thing;\nuse crate::dialect::{a}::Own;\nuse crate::dialect::DIALECTS;"
+            "use crate::dialect::{b}::Thing;\nuse crate::dialect::{a}::Own;\nuse crate::dialect::all;"
         ),
     );
     let wrong = crossings(&[crossing], &folders);

@@ -461,7 +461,7 @@ pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults)
             }
         }
         let dialect = dialect?;
-        let owner = crate::dialect::DIALECTS
+        let owner = crate::dialect::all()
             .iter()
             .find(|d| d.own_options.contains(&key.id))?;
         (owner.name != dialect.name).then(|| {

@@ -52,6 +52,21 @@ pub trait CanBus: Send {
     fn notes(&self) -> Vec<String> {
         Vec::new()
     }
+
+    /// Whether [`frame_at_hand`](Self::frame_at_hand) knows every frame that has arrived (an
+    /// adapter on a line whose reads take everything there is): then the link above reads all
+    /// too, and what follows a reply needs no look of its own.
+    fn reads_all(&self) -> bool {
+        false
+    }
+
+    /// A frame that has already arrived, taken without waiting and, where the last read took
+    /// everything there was, without reading again; `None` when there is none. An adapter's
+    /// error found meanwhile stays for the next [`recv_frame`](Self::recv_frame), as if it came
+    /// a moment later.
+    fn frame_at_hand(&mut self) -> Result<Option<CanFrame>, LinkError> {
+        Ok(None)
+    }
 }
 
 /// A dialect's mapping between its byte frames and CAN frames.
@@ -90,6 +105,15 @@ impl CanLink {
         }
     }
 
+    /// Takes a frame from the bus: its bytes, or one more foreign frame.
+    fn take(&mut self, frame: &CanFrame) {
+        self.frames_in += 1;
+        match self.framer.bytes(frame) {
+            Some(bytes) => self.pending.extend(bytes),
+            None => self.foreign += 1,
+        }
+    }
+
     /// Frames from the bus not meant for the host, ignored so far.
     pub fn foreign_frames(&self) -> u64 {
         self.foreign
@@ -108,10 +132,13 @@ impl Link for CanLink {
     fn recv(&mut self, buf: &mut [u8], deadline: Instant) -> Result<usize, LinkError> {
         while self.pending.is_empty() {
             let frame = self.bus.recv_frame(deadline)?;
-            self.frames_in += 1;
-            match self.framer.bytes(&frame) {
-                Some(bytes) => self.pending.extend(bytes),
-                None => self.foreign += 1,
+            self.take(&frame);
+        }
+        // Every frame already at hand comes along, so a read shorter than `buf` took all. A
+        // line lost meanwhile is found again by the next read; these bytes go up first.
+        if self.bus.reads_all() {
+            while let Ok(Some(frame)) = self.bus.frame_at_hand() {
+                self.take(&frame);
             }
         }
         let n = buf.len().min(self.pending.len());
@@ -141,6 +168,10 @@ impl Link for CanLink {
 
     fn frames_only(&self) -> bool {
         true
+    }
+
+    fn reads_all(&self) -> bool {
+        self.bus.reads_all()
     }
 
     fn line_state(&mut self) -> LineState {

@@ -21,6 +21,8 @@ pub struct SlcanLink {
     events: VecDeque<Event>,
     acks: u64,
     other_lines: u64,
+    /// The last read of the line filled its buffer: more may have arrived than it took.
+    read_full: bool,
 }
 
 impl SlcanLink {
@@ -41,6 +43,7 @@ impl SlcanLink {
             events: VecDeque::new(),
             acks: 0,
             other_lines: 0,
+            read_full: false,
         };
         link.start()?;
         Ok(link)
@@ -118,12 +121,37 @@ impl SlcanLink {
             if let Some(event) = self.events.pop_front() {
                 return Ok(event);
             }
-            let mut buf = [0u8; 256];
-            let n = self.serial.recv(&mut buf, deadline)?;
-            let mut events = Vec::new();
-            self.decoder.push(&buf[..n], &mut events);
-            self.events.extend(events);
+            self.read(deadline)?;
         }
+    }
+
+    /// Reads the line until `deadline` and decodes what came.
+    fn read(&mut self, deadline: Instant) -> Result<(), LinkError> {
+        let mut buf = [0u8; 256];
+        let n = self.serial.recv(&mut buf, deadline)?;
+        self.read_full = n == buf.len();
+        let mut events = Vec::new();
+        self.decoder.push(&buf[..n], &mut events);
+        self.events.extend(events);
+        Ok(())
+    }
+
+    /// Counts an event that is no frame, or names the adapter's error.
+    fn not_a_frame(&mut self, event: Event) -> Result<(), LinkError> {
+        match event {
+            Event::Frame(_) => {}
+            Event::Ack(_) => self.acks += 1,
+            Event::Line(_) => self.other_lines += 1,
+            Event::Bell => {
+                return Err(LinkError::Adapter(format!(
+                    "the slcan adapter on {} reported an error (BEL): a frame it could not \
+                     send, or its bus is off (no other node acknowledging, wrong bit rate, \
+                     missing termination)",
+                    self.name
+                )));
+            }
+        }
+        Ok(())
     }
 }
 
@@ -136,16 +164,31 @@ impl CanBus for SlcanLink {
         loop {
             match self.next_event(deadline)? {
                 Event::Frame(frame) => return Ok(frame),
-                Event::Ack(_) => self.acks += 1,
-                Event::Line(_) => self.other_lines += 1,
-                Event::Bell => {
-                    return Err(LinkError::Adapter(format!(
-                        "the slcan adapter on {} reported an error (BEL): a frame it could not \
-                         send, or its bus is off (no other node acknowledging, wrong bit rate, \
-                         missing termination)",
-                        self.name
-                    )));
+                event => self.not_a_frame(event)?,
+            }
+        }
+    }
+
+    fn reads_all(&self) -> bool {
+        self.serial.reads_all()
+    }
+
+    fn frame_at_hand(&mut self) -> Result<Option<CanFrame>, LinkError> {
+        loop {
+            match self.events.pop_front() {
+                Some(Event::Frame(frame)) => return Ok(Some(frame)),
+                Some(Event::Bell) => {
+                    self.events.push_front(Event::Bell);
+                    return Ok(None);
                 }
+                Some(event) => self.not_a_frame(event)?,
+                // Only a read that filled its buffer can have left bytes on the line.
+                None if !self.read_full => return Ok(None),
+                None => match self.read(Instant::now()) {
+                    Ok(()) => {}
+                    Err(LinkError::Timeout) => return Ok(None),
+                    Err(e) => return Err(e),
+                },
             }
         }
     }

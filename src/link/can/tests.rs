@@ -17,6 +17,8 @@ struct Scripted {
     incoming: VecDeque<u8>,
     answer: Answer,
     line: Vec<u8>,
+    /// Whether a read takes everything there is, as a port's read(2) does.
+    reads_all: bool,
 }
 
 impl Scripted {
@@ -29,6 +31,7 @@ impl Scripted {
             incoming: VecDeque::new(),
             answer: Box::new(answer),
             line: Vec::new(),
+            reads_all: false,
         };
         (link, sent)
     }
@@ -62,6 +65,10 @@ impl Link for Scripted {
 
     fn describe(&self) -> String {
         "scripted".into()
+    }
+
+    fn reads_all(&self) -> bool {
+        self.reads_all
     }
 }
 
@@ -193,4 +200,47 @@ fn answers_left_by_an_earlier_program_are_not_taken_for_the_open_sequences() {
     let (mut serial, _) = Scripted::new(|line: &str| if line == "C" { vec![7] } else { vec![13] });
     serial.incoming.extend(b"\rt0021FF\r");
     SlcanLink::open(Box::new(serial), "/dev/x", 1_000_000, TIMEOUT).unwrap();
+}
+
+/// An adapter on a line that reads all, answering a frame with `frames` one-byte frames to the
+/// host, then `tail`.
+fn answering(frames: usize, tail: &'static [u8]) -> CanLink {
+    let (mut serial, _) = Scripted::new(move |line: &str| {
+        let mut out = b"\r".to_vec();
+        if line.starts_with('t') {
+            for i in 0..frames {
+                out.extend_from_slice(format!("t00210{}\r", i % 10).as_bytes());
+            }
+            out.extend_from_slice(tail);
+        }
+        out
+    });
+    serial.reads_all = true;
+    let bus = SlcanLink::open(Box::new(serial), "test", 1_000_000, TIMEOUT).unwrap();
+    let link = CanLink::new(Box::new(bus), Box::new(Echoing));
+    assert!(link.reads_all());
+    link
+}
+
+#[test]
+fn on_a_line_that_reads_all_every_frame_at_hand_comes_in_one_read_and_a_bell_stays() {
+    let mut link = answering(2, b"\x07");
+    link.send(&[1]).unwrap();
+    let mut buf = [0u8; 16];
+    let n = link.recv(&mut buf, Instant::now() + TIMEOUT).unwrap();
+    assert_eq!(&buf[..n], &[0, 1], "both frames, so a short read took all");
+    assert!(matches!(
+        link.recv(&mut buf, Instant::now()),
+        Err(LinkError::Adapter(why)) if why.contains("BEL")
+    ));
+}
+
+#[test]
+fn a_read_that_filled_its_buffer_is_followed_by_a_look() {
+    // 40 frames of 8 characters: more than one read of the line takes.
+    let mut link = answering(40, b"");
+    link.send(&[1]).unwrap();
+    let mut buf = [0u8; 64];
+    let n = link.recv(&mut buf, Instant::now() + TIMEOUT).unwrap();
+    assert_eq!(n, 40);
 }
