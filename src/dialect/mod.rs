@@ -63,8 +63,8 @@ pub struct Dialect {
     pub helpers: &'static [Helper],
     /// Reads the dialect's tables (TMCL: the `--profile` file) into a [`DialectConfig`].
     pub configure: Configure,
-    /// Options of the shared group only this dialect uses (its own flags count too): refused
-    /// when another dialect is chosen.
+    /// Options of the shared group only this dialect uses (TMCL: `--module`, `--profile`); with
+    /// its session flags, refused when another dialect is chosen ([`Dialect::owned_options`]).
     pub own_options: &'static [&'static str],
     /// Adds its session flags (`tmclsh --protocol NAME --FLAG`) to a command.
     #[cfg(feature = "cli")]
@@ -126,6 +126,20 @@ impl Dialect {
     }
 }
 
+#[cfg(feature = "cli")]
+impl Dialect {
+    /// The ids of every option only this dialect uses: those of the shared group it lists, and
+    /// its session flags.
+    pub fn owned_options(&self) -> Vec<String> {
+        let flags = (self.session_flags)(clap::Command::new("flags"));
+        self.own_options
+            .iter()
+            .map(|id| id.to_string())
+            .chain(flags.get_arguments().map(|a| a.get_id().to_string()))
+            .collect()
+    }
+}
+
 impl fmt::Debug for Dialect {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_tuple("Dialect").field(&self.name).finish()
@@ -160,12 +174,6 @@ pub fn protocol_parser() -> impl TypedValueParser<Value = &'static Dialect> {
         .iter()
         .map(|d| PossibleValue::new(d.name).help(d.summary));
     PossibleValuesParser::new(values).map(|name| by_name(&name).expect("a listed name"))
-}
-
-/// No flags.
-#[cfg(feature = "cli")]
-pub(crate) fn no_flags(cmd: clap::Command) -> clap::Command {
-    cmd
 }
 
 #[cfg(test)]

@@ -77,3 +77,66 @@ fn round_trip(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use std::time::Duration;
+
+    use super::*;
+    use crate::session::SessionOptions;
+    use crate::sim::{Device, builtin_link};
+
+    /// Answers each line it receives with the same bytes.
+    struct Answering(&'static [u8], Vec<u8>);
+
+    impl Device for Answering {
+        fn receive(&mut self, _: Duration, bytes: &[u8]) {
+            if bytes.contains(&b'\n') {
+                self.1.extend_from_slice(self.0);
+            }
+        }
+
+        fn poll_output(&mut self, _: Duration, out: &mut Vec<u8>) {
+            out.append(&mut self.1);
+        }
+
+        fn next_due(&self, now: Duration) -> Option<Duration> {
+            (!self.1.is_empty()).then_some(now)
+        }
+    }
+
+    fn core(answer: &'static [u8]) -> SessionCore {
+        let link = builtin_link(Box::new(Answering(answer, Vec::new())), "it".into());
+        let options = SessionOptions {
+            timeout: Duration::from_millis(20),
+            ..SessionOptions::default()
+        };
+        SessionCore::new(link, options, None)
+    }
+
+    #[test]
+    fn the_first_line_that_comes_back_is_the_reply() {
+        let reply = core(b"\r\nhello\r\n").exchange_line("ECHO hello", "the loopback");
+        assert_eq!(reply.unwrap(), "hello");
+    }
+
+    #[test]
+    fn a_reply_followed_by_more_data_is_line_noise() {
+        let error = core(b"hello\r\nworld\r\n").exchange_line("ECHO hello", "it");
+        let error = error.unwrap_err();
+        assert!(matches!(error, SessionError::Noise { .. }), "{error}");
+        assert!(
+            error
+                .to_string()
+                .contains("\"hello\" was followed by more data")
+        );
+    }
+
+    #[test]
+    fn silence_is_a_time_out_naming_the_device() {
+        let error = core(b"")
+            .exchange_line("ECHO hello", "the loopback")
+            .unwrap_err();
+        assert_eq!(error.to_string(), "no reply from the loopback within 20 ms");
+    }
+}

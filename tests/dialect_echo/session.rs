@@ -6,7 +6,7 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use tmclsh::commission::{ParamDevice, ParamError, ParamRef, ParamValue, Reading, StoreStep};
-use tmclsh::dialect::session::{BusScan, Refusal, ReplyForms};
+use tmclsh::dialect::session::{BusScan, Refusal, ReplyForms, run_script};
 use tmclsh::dialect::{Dialect, DialectSession, Opening, Reply, elsewhere};
 use tmclsh::exit::Failure;
 use tmclsh::script::Script;
@@ -112,15 +112,9 @@ impl DialectSession for EchoSession {
         self: Box<Self>,
         script: &Script,
     ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
-        let (session, result) = script.run(
-            *self,
-            |s, text| s.annotate(text),
-            |s| s.take_notices(),
-            |s| s.transcript().is_some_and(|t| t.failure().is_some()),
-            |s| s.stop_motion(),
-            |engine, s, _| super::script::register(engine, s),
-        );
-        (Box::new(session), result)
+        run_script(*self, script, |engine, s, _| {
+            super::script::register(engine, s)
+        })
     }
 }
 
