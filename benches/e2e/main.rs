@@ -5,7 +5,8 @@
 //! for trying a change, not for publishing. `-- --soak` runs only the fault soak (row 7) and
 //! rewrites only its row and section; `-- --limit` likewise for late replies (row 8);
 //! `-- --latency` for the latency timer rows (row 9), `-- --reconnect` for the reconnect time
-//! (row 10, its row only), `-- --hot` for the hot path (row 11) and the in-process rate (row 3).
+//! (row 10, its row only), `-- --hot` for the hot path (row 11) and the in-process rate (row 3),
+//! `-- --in-process` for the in-process rate and the pure parts alone.
 //! With `-- --reads N` the soak's and late replies' cells make N reads each instead of 20,000
 //! (the table says how many). Linux only: it uses ptys, wait4 and /proc.
 
@@ -177,6 +178,27 @@ fn main() {
         }
         return;
     }
+    if std::env::args().any(|a| a == "--in-process") {
+        eprintln!("e2e: the in-process rate and the pure parts only");
+        let in_process = local::in_process(plan.in_process_n, plan.in_process_reps);
+        let pure = cases::run();
+        println!("{}", report::text(std::slice::from_ref(&in_process)));
+        print_pure(&pure);
+        if !quick {
+            let path = proc::repo_file("BENCHMARKS.md");
+            let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+            let row3 = [report::markdown_line(&in_process)];
+            let new = report::splice_rows(&old, "3. In-process", &row3);
+            let section = report::pure_section(&pure);
+            let new = report::splice_section(&new, report::PURE_HEADING, &section);
+            std::fs::write(&path, new).expect("write BENCHMARKS.md");
+            eprintln!(
+                "e2e: wrote row 3 and the pure parts into {}",
+                path.display()
+            );
+        }
+        return;
+    }
     if std::env::args().any(|a| a == "--reconnect") {
         eprintln!("e2e: the reconnect time only");
         let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("e2e");
@@ -253,10 +275,7 @@ fn main() {
     rows.push(relink_row);
     rows.extend(hot_rows);
     println!("{}", report::text(&rows));
-    println!("{:<66} {:>12}", "pure part", "ns/op");
-    for case in &pure {
-        println!("{:<66} {:>12.1}", case.name, case.ns);
-    }
+    print_pure(&pure);
     println!("load average before / after: {load_before} / {load_after}");
     if quick {
         eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
@@ -309,4 +328,13 @@ fn show_and_write(
     let new = splice(&old, &report::markdown_line(row), section);
     std::fs::write(&path, new).expect("write BENCHMARKS.md");
     eprintln!("e2e: wrote {what} into {}", path.display());
+}
+
+/// The pure parts' timings, as `cargo bench --bench pure` prints them.
+#[cfg(target_os = "linux")]
+fn print_pure(pure: &[cases::Case]) {
+    println!("{:<66} {:>12}", "pure part", "ns/op");
+    for case in pure {
+        println!("{:<66} {:>12.1}", case.name, case.ns);
+    }
 }

@@ -115,12 +115,23 @@ pub fn markdown(run: &Run) -> String {
     for row in run.rows {
         md.push_str(&table_row(&row.cells()));
     }
-    md.push_str("\n## Pure parts\n\n| operation | ns/op (median of batches) |\n|---|---:|\n");
-    for case in run.pure {
-        let _ = writeln!(md, "| {} | {:.1} |", case.name, case.ns);
-    }
+    md.push('\n');
+    md.push_str(&pure_section(run.pure));
     md.push_str(METHOD);
     md.push_str(&notes(run.rows));
+    md
+}
+
+/// The heading of the pure parts' section.
+pub const PURE_HEADING: &str = "## Pure parts";
+
+/// The pure parts' section: its heading and table.
+pub fn pure_section(pure: &[Case]) -> String {
+    let mut md =
+        format!("{PURE_HEADING}\n\n| operation | ns/op (median of batches) |\n|---|---:|\n");
+    for case in pure {
+        let _ = writeln!(md, "| {} | {:.1} |", case.name, case.ns);
+    }
     md
 }
 
