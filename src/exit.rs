@@ -30,6 +30,28 @@ impl Exit {
             Exit::Terminated(signal) => 128u8.saturating_add(signal),
         }
     }
+
+    /// The worse of two outcomes, by what the failure says about the run: SIGTERM or SIGHUP
+    /// (143, 129) and Ctrl-C (130) ended it; a link failure (3) leaves unknown what the module
+    /// did; a device error (1) means the module is not in the state the input assumed; a refused
+    /// line (2) was not sent at all. On a tie, `self`.
+    pub fn worse(self, other: Exit) -> Exit {
+        fn rank(exit: Exit) -> u8 {
+            match exit {
+                Exit::Success => 0,
+                Exit::Refused => 1,
+                Exit::DeviceError => 2,
+                Exit::Link => 3,
+                Exit::Interrupted => 4,
+                Exit::Terminated(_) => 5,
+            }
+        }
+        if rank(other) > rank(self) {
+            other
+        } else {
+            self
+        }
+    }
 }
 
 impl From<Exit> for std::process::ExitCode {
@@ -42,6 +64,15 @@ impl From<Exit> for std::process::ExitCode {
 pub trait ExitStatus {
     /// The exit code for this error.
     fn exit(&self) -> Exit;
+}
+
+/// Output or a file that cannot be written or read where the command line meets the system
+/// (stdout, an installed file, a listening socket): the user sees nothing more of the command,
+/// which ends as a link failure does.
+impl ExitStatus for std::io::Error {
+    fn exit(&self) -> Exit {
+        Exit::Link
+    }
 }
 
 /// A failure on its way out: what to print and the exit code it means. Every face ends in one —

@@ -62,6 +62,28 @@ pub fn line(text: &str) {
     let _ = Stdout.write_all(format!("{text}\n").as_bytes());
 }
 
+/// Output that ignores a closed pipe (`| head`): the work goes on (the file is written, the scan
+/// finishes), the rest of the report is dropped; the run then ends quietly with [`EXIT`], since
+/// the write underneath (through [`Stdout`]) noted the closed pipe.
+pub struct PipeSafe<'a>(pub &'a mut dyn Write);
+
+fn unbroken<T>(result: io::Result<T>, done: T) -> io::Result<T> {
+    match result {
+        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(done),
+        other => other,
+    }
+}
+
+impl Write for PipeSafe<'_> {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        unbroken(self.0.write(buf), buf.len())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        unbroken(self.0.flush(), ())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -69,5 +91,25 @@ mod tests {
     #[test]
     fn a_closed_pipe_ends_with_141() {
         assert_eq!(EXIT.code(), 141);
+    }
+
+    struct Closed;
+
+    impl Write for Closed {
+        fn write(&mut self, _: &[u8]) -> io::Result<usize> {
+            Err(io::ErrorKind::BrokenPipe.into())
+        }
+
+        fn flush(&mut self) -> io::Result<()> {
+            Err(io::ErrorKind::PermissionDenied.into())
+        }
+    }
+
+    #[test]
+    fn pipe_safe_output_drops_what_a_closed_pipe_refuses_and_passes_other_errors() {
+        let mut closed = Closed;
+        let mut out = PipeSafe(&mut closed);
+        assert!(writeln!(out, "dropped").is_ok());
+        assert!(out.flush().is_err());
     }
 }

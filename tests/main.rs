@@ -10,6 +10,7 @@ mod can;
 mod catalogue;
 mod cli;
 mod commission;
+mod dialect_echo;
 mod fuzz_corpus;
 #[cfg(feature = "hardware")]
 mod hardware;

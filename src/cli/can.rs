@@ -84,20 +84,20 @@ pub fn open(
             ),
         )
     })?;
-    let failed = |e: crate::link::LinkError| Failure::new(Exit::Link, e.to_string());
     let bus: Box<dyn CanBus> = match spec {
         CanSpec::Slcan(path) => {
-            let mut serial =
-                SerialLink::open_with(path, settings.baud, line.clone()).map_err(failed)?;
+            let mut serial = SerialLink::open_with(path, settings.baud, line.clone())?;
             for note in serial.take_notes() {
                 super::diagnose(&note);
             }
-            Box::new(
-                SlcanLink::open(Box::new(serial), path, settings.bitrate, timeout)
-                    .map_err(failed)?,
-            )
+            Box::new(SlcanLink::open(
+                Box::new(serial),
+                path,
+                settings.bitrate,
+                timeout,
+            )?)
         }
-        CanSpec::SocketCan(iface) => socketcan(iface).map_err(failed)?,
+        CanSpec::SocketCan(iface) => socketcan(iface)?,
     };
     Ok(Box::new(CanLink::new(bus, framer)))
 }

@@ -8,8 +8,8 @@ use std::time::Duration;
 use clap::{ArgMatches, Args, Command, FromArgMatches};
 
 use crate::dialect::{
-    Configured, DIALECTS, Dialect, DialectConfig, DialectSession, Opening, Purpose,
-    default_dialect, protocol_parser,
+    Configured, Dialect, DialectConfig, DialectSession, Opening, Purpose, default_dialect,
+    protocol_parser,
 };
 use crate::exit::{Exit, Failure};
 use crate::link::Link;
@@ -227,7 +227,7 @@ impl FromArgMatches for DialectFlags {
 
 impl Args for DialectFlags {
     fn augment_args(cmd: Command) -> Command {
-        DIALECTS
+        crate::dialect::all()
             .iter()
             .fold(cmd, |cmd, d| (d.session_flags)(cmd))
             .next_help_heading(None::<&str>)
@@ -250,10 +250,6 @@ pub struct SessionArgs {
     /// Milliseconds to wait for a reply before giving up (exit code 3).
     #[arg(long, value_name = "MS", env = "TMCLSH_TIMEOUT", default_value_t = DEFAULT_TIMEOUT_MS, value_parser = clap::value_parser!(u64).range(1..))]
     pub timeout: u64,
-    /// Set the target module's echo on opening: char, line (every reply attributed to its
-    /// request) or none (global parameter 67 in RAM; it stays after tmclsh ends).
-    #[arg(long, value_enum, value_name = "MODE")]
-    pub echo: Option<EchoMode>,
     /// Append every byte sent and received, timestamped and decoded, to FILE; given a
     /// directory (or a path ending in /), write a new file there named by device and date.
     #[arg(long, value_name = "FILE", value_hint = clap::ValueHint::AnyPath)]
@@ -261,21 +257,11 @@ pub struct SessionArgs {
     /// Send lines the validator would refuse (still canonicalised where they parse).
     #[arg(long)]
     pub no_validate: bool,
-    /// Do not send the enter-ASCII-mode frame (the module is already in ASCII mode).
-    #[arg(long)]
-    pub no_enter: bool,
-    /// Leave the modules in ASCII mode on exit instead of restoring the mode they were found in.
-    #[arg(long)]
-    pub stay_ascii: bool,
     /// Whether the adapter hands back every byte sent (a 2-wire RS-485 converter without echo
     /// suppression): on strips exactly those bytes from what comes back, comparing them; auto
     /// (the default) finds out at open and says so; off never strips.
     #[arg(long, value_enum, value_name = "WHEN", env = "TMCLSH_LOCAL_ECHO", num_args = 0..=1, default_value = "auto", default_missing_value = "on")]
     pub local_echo: LocalEchoArg,
-    /// Talk to the modules in binary direct mode (typed lines go out as binary frames), whether
-    /// or not they have the ASCII interface.
-    #[arg(long)]
-    pub binary: bool,
     /// Wait up to WAIT (30s, 2m; a bare number is ms) for a lost link to come back instead of
     /// ending the run with exit 3 (`-c`, piped lines, `run`, the subcommands; the REPL always
     /// waits): the port is found again by the name given (a symlink or usb: name follows an
@@ -288,18 +274,6 @@ pub struct SessionArgs {
     // Its own id: `tmclsh sim --verbose` logs traffic, and `-v` before `sim` is not that.
     #[arg(long, short = 'v', id = "say_module")]
     pub verbose: bool,
-}
-
-/// The echo modes of a TMCL module, as `--echo` and `:echo` name them; the TMCL session reads
-/// the word given (see `dialect::tmcl::config`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum EchoMode {
-    /// Every character echoed as it arrives.
-    Char,
-    /// The whole line echoed after its end.
-    Line,
-    /// No echo, only the reply.
-    None,
 }
 
 /// `--local-echo`: whether the adapter echoes what is sent.

@@ -133,8 +133,7 @@ fn install(
 ) -> Result<Exit, Failure> {
     let place = place?;
     write(&place, bytes)?;
-    writeln!(out, "wrote {}; {}", place.path.display(), place.note)
-        .map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
+    writeln!(out, "wrote {}; {}", place.path.display(), place.note)?;
     Ok(Exit::Success)
 }
 
@@ -146,13 +145,12 @@ pub(super) fn completions(shell: Shell, out: &mut dyn Write) -> Result<Exit, Fai
 
 /// `tmclsh man`, printed or installed.
 pub(super) fn man(args: &ManArgs, out: &mut dyn Write) -> Result<Exit, Failure> {
-    let page = super::man::render().map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
+    let page = super::man::render()?;
     if args.install {
         install(man_place(&ProcessEnv), &page, out)
     } else {
-        out.write_all(&page)
-            .map(|()| Exit::Success)
-            .map_err(|e| Failure::new(Exit::Link, e.to_string()))
+        out.write_all(&page)?;
+        Ok(Exit::Success)
     }
 }
 

@@ -2,21 +2,18 @@
 //! Options may be written before or after the subcommand (`position`); options that would change
 //! nothing are refused (`relevance`).
 
-mod asm;
 pub mod can;
 mod completions;
 pub mod config;
 pub mod connection;
-mod disasm;
-pub mod download;
+mod diagnose;
 mod install;
 mod link_kinds;
 pub mod man;
 pub(crate) mod params;
 mod ports;
 mod position;
-mod profile_option;
-mod profiles;
+pub mod profile_option;
 mod progress;
 mod relevance;
 pub mod run;
@@ -26,7 +23,8 @@ mod sim;
 mod snapshot;
 mod target;
 mod transcript;
-pub mod upload;
+
+pub(crate) use diagnose::diagnose;
 
 use std::borrow::Cow;
 use std::ffi::OsString;
@@ -36,6 +34,10 @@ use std::path::PathBuf;
 use clap::{FromArgMatches, Parser, Subcommand};
 
 use crate::dialect::Configured;
+use crate::dialect::tmcl::{
+    self,
+    cli::{asm, disasm, download, profiles, upload},
+};
 use crate::escape::escape_control;
 use crate::exit::{Exit, Failure};
 
@@ -257,11 +259,6 @@ pub fn parse_with(argv: Vec<OsString>, defaults: &config::Defaults) -> Result<Cl
     Ok(cli)
 }
 
-/// One line of diagnostics on stderr, its device and input text escaped.
-pub(crate) fn diagnose(message: &str) {
-    eprintln!("tmclsh: {}", escape_control(message));
-}
-
 /// Runs a parsed command line, printing results to `out`.
 pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
     if let Some(Command::Profiles(args)) = &cli.command {
@@ -278,7 +275,7 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Params(args)) if args.values => {
             return params::read_values(&args, &configs, out);
         }
-        Some(Command::Params(args)) => return finish_io(params::run(&args, &configs, out)),
+        Some(Command::Params(args)) => return Ok(params::run(&args, &configs, out)?),
         Some(Command::Ports(args)) => ports::run(&args, &configs, out),
         Some(Command::Profiles(_)) => unreachable!("listed before the profile is loaded"),
         Some(Command::Completions(args)) if args.install => {
@@ -287,29 +284,21 @@ pub fn run(cli: Cli, out: &mut dyn Write) -> Result<Exit, Failure> {
         Some(Command::Completions(args)) => completions::run(&args, out),
         Some(Command::Man(args)) => return install::man(&args, out),
         Some(Command::Run(args)) => return run::run(args, &configs),
-        Some(Command::Asm(args)) => return asm::run(&args, tmcl_profile(&configs), out),
-        Some(Command::Disasm(args)) => return disasm::run(&args, tmcl_profile(&configs), out),
+        Some(Command::Asm(args)) => return asm::run(&args, tmcl::cli::profile(&configs), out),
+        Some(Command::Disasm(args)) => {
+            return disasm::run(&args, tmcl::cli::profile(&configs), out);
+        }
         Some(Command::Download(args)) => return download::run(args, &configs, out),
         Some(Command::Upload(args)) => return upload::run(args, &configs, out),
         Some(Command::Snapshot(args)) => return snapshot::run(args, &configs, out),
         Some(Command::Scan(args)) => return scan::run(args, &configs, out),
         Some(Command::Transcript(args)) => return transcript::run(args, &configs, out),
         Some(Command::Sim(args)) => return sim::run(&args, &configs, out),
-        Some(Command::Config(args)) => return finish_io(config::run(&args, out)),
+        Some(Command::Config(args)) => return Ok(config::run(&args, out)?),
         None => return shell::run(cli.shell, &configs),
     };
-    finish_io(result.map(|()| Exit::Success))
-}
-
-/// The exit code of a command that only writes output (a closed stdout is decided in [`main`]).
-fn finish_io(result: std::io::Result<Exit>) -> Result<Exit, Failure> {
-    result.map_err(|e| Failure::new(Exit::Link, e.to_string()))
-}
-
-/// The TMCL profile, for the subcommands only TMCL has (`asm`, `disasm`, `download`).
-fn tmcl_profile(configs: &Configured) -> &crate::dialect::tmcl::profile::Profile {
-    let tmcl = configs.of(&crate::dialect::tmcl::DIALECT);
-    crate::dialect::tmcl::config::profile(tmcl).expect("TMCL is configured with its profile")
+    result?;
+    Ok(Exit::Success)
 }
 
 /// The clap command, for completions and docs.

@@ -105,7 +105,7 @@ pub(crate) fn read_values(
     };
     interrupt::install();
     let mut session = module.open(configs, Audience::Batch, Purpose::Talk)?;
-    let mut out = super::snapshot::PipeSafe(out);
+    let mut out = crate::stdout::PipeSafe(out);
     let result = values::write_values(session.param_device(), &wanted, &mut out);
     for notice in session.take_notices() {
         super::diagnose(&notice);

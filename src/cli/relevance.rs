@@ -8,7 +8,7 @@ use clap::error::ErrorKind;
 use clap::parser::ValueSource;
 use clap::{ArgMatches, Args, Command};
 
-use crate::dialect::{DIALECTS, Dialect};
+use crate::dialect::{Dialect, all};
 
 use super::connection::ModuleArgs;
 use super::position::{flag, leaf_matches, subcommand_mut, subcommand_path};
@@ -167,9 +167,9 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
         }
     }
     if let Some(chosen) = dialect(leaf) {
-        for other in DIALECTS.iter().filter(|d| !std::ptr::eq(**d, chosen)) {
+        for other in all().iter().filter(|d| !std::ptr::eq(**d, chosen)) {
             let why = other.refusal(chosen);
-            let ids = own_options(other);
+            let ids = other.owned_options();
             refuse(&ids.iter().map(String::as_str).collect::<Vec<_>>(), why);
         }
         for (at, owner) in ONE_DIALECT {
@@ -274,17 +274,6 @@ fn dialect(matches: &ArgMatches) -> Option<&'static Dialect> {
         .copied()
 }
 
-/// The options only `dialect` uses: those of the shared group it lists, and its own flags.
-fn own_options(dialect: &Dialect) -> Vec<String> {
-    let flags = (dialect.session_flags)(Command::new("flags"));
-    dialect
-        .own_options
-        .iter()
-        .map(|id| id.to_string())
-        .chain(flags.get_arguments().map(|a| a.get_id().to_string()))
-        .collect()
-}
-
 /// Whether `id` has a value from anywhere (command line or environment).
 fn has_value(matches: &ArgMatches, id: &str) -> bool {
     matches.try_contains_id(id).unwrap_or(false) && matches.value_source(id).is_some()
@@ -322,7 +311,7 @@ mod tests {
     #[test]
     fn the_dialect_options_are_options_of_the_shell() {
         let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
-        for id in DIALECTS.iter().flat_map(|d| own_options(d)) {
+        for id in all().iter().flat_map(|d| d.owned_options()) {
             assert!(cmd.get_arguments().any(|a| a.get_id() == &id), "{id}");
         }
     }

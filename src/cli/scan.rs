@@ -46,7 +46,7 @@ pub(super) fn run(
     out: &mut dyn Write,
 ) -> Result<Exit, Failure> {
     interrupt::install();
-    let out = &mut super::snapshot::PipeSafe(out);
+    let out = &mut crate::stdout::PipeSafe(out);
     let dialect = args.module.protocol();
     let list = args.addresses.as_deref().unwrap_or(dialect.scan_addresses);
     let addresses = parse_addresses(list, dialect.max_address)
@@ -77,14 +77,13 @@ pub(super) fn run(
             "summary": scan.summary,
             "modules": scan.modules,
         });
-        crate::json::write(&document, out).map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
+        crate::json::write(&document, out)?;
     }
     if scan.found == 0 {
         return Err(Failure::new(Exit::Link, scan.summary));
     }
     if !args.json {
-        out.write_all(scan.report.as_bytes())
-            .map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
+        out.write_all(scan.report.as_bytes())?;
     }
     Ok(Exit::Success)
 }

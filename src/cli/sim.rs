@@ -10,7 +10,7 @@ use clap::{ArgMatches, Args, Command, FromArgMatches};
 
 use crate::clock::{Clock, ManualClock, SystemClock};
 use crate::dialect::{
-    Configured, DIALECTS, Dialect, DialectConfig, SimFlags, default_dialect, protocol_parser,
+    Configured, Dialect, DialectConfig, SimFlags, all, default_dialect, protocol_parser,
 };
 use crate::exit::{Exit, Failure};
 use crate::link::can::slcan::AckStyle;
@@ -173,9 +173,7 @@ impl<const G: u8> Args for SimFlagGroup<G> {
             MODULE => SimFlags::Module,
             _ => SimFlags::Quirks,
         };
-        DIALECTS
-            .iter()
-            .fold(cmd, |cmd, d| (d.sim_flags)(group, cmd))
+        all().iter().fold(cmd, |cmd, d| (d.sim_flags)(group, cmd))
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {
@@ -185,7 +183,7 @@ impl<const G: u8> Args for SimFlagGroup<G> {
 
 /// The console commands of every dialect's simulator.
 fn console_help() -> String {
-    console::help(DIALECTS.iter().map(|d| d.console))
+    console::help(all().iter().map(|d| d.console))
 }
 
 fn slcan_ack(text: &str) -> Result<AckStyle, String> {
@@ -204,7 +202,7 @@ fn rate(text: &str) -> Result<f64, String> {
 fn device(args: &SimArgs, configs: &Configured) -> Result<Box<dyn Device>, Failure> {
     let chosen = args.protocol;
     let flags = &args.bus.0;
-    for other in DIALECTS.iter().filter(|d| !std::ptr::eq(**d, chosen)) {
+    for other in all().iter().filter(|d| !std::ptr::eq(**d, chosen)) {
         if let Some(flag) = (other.sim_flag_given)(flags) {
             return Err(Failure::new(
                 Exit::Refused,

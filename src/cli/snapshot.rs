@@ -188,26 +188,6 @@ fn finish(result: Result<(), SessionError>) -> Result<Exit, Failure> {
     Ok(Exit::Success)
 }
 
-/// Output that ignores a closed pipe (`| head`): the work goes on (the file is written, the scan
-/// finishes), the rest of the report is dropped; the run then ends quietly with 141 (`crate::stdout`).
-pub(super) struct PipeSafe<'a>(pub &'a mut dyn Write);
-
-impl Write for PipeSafe<'_> {
-    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-        match self.0.write(buf) {
-            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(buf.len()),
-            other => other,
-        }
-    }
-
-    fn flush(&mut self) -> std::io::Result<()> {
-        match self.0.flush() {
-            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
-            other => other,
-        }
-    }
-}
-
 fn confirm_store(question: &str) -> Result<bool, SessionError> {
     eprint!("{question} [y/N] ");
     let mut answer = String::new();

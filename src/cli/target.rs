@@ -85,10 +85,9 @@ impl Target {
         config: &dyn DialectConfig,
         timeout: Duration,
     ) -> Result<Box<dyn Link>, Failure> {
-        let failed = |e: crate::link::LinkError| Failure::new(Exit::Link, e.to_string());
         Ok(match self {
             Target::Tcp(address) => {
-                let link = TcpLink::connect(address, timeout).map_err(failed)?;
+                let link = TcpLink::connect(address, timeout)?;
                 if line.wants_modem_lines() {
                     super::diagnose(&format!(
                         "a TCP link has no modem lines: {} not applied (a serial server sets \
@@ -99,7 +98,7 @@ impl Target {
                 Box::new(link)
             }
             Target::Serial(path) => {
-                let mut link = SerialLink::open_with(path, baud, line.clone()).map_err(failed)?;
+                let mut link = SerialLink::open_with(path, baud, line.clone())?;
                 for note in link.take_notes() {
                     super::diagnose(&note);
                 }
@@ -121,8 +120,7 @@ impl Target {
                         .map(|p| p.to_string_lossy().into_owned())
                         .map_err(|(_, why)| LinkError::Open(why))
                 };
-                let mut link = SerialLink::open_named(name, baud, line.clone(), Box::new(resolve))
-                    .map_err(failed)?;
+                let mut link = SerialLink::open_named(name, baud, line.clone(), Box::new(resolve))?;
                 for note in link.take_notes() {
                     super::diagnose(&note);
                 }

@@ -2,10 +2,29 @@
 //! write and store them. Snapshots, watches and recordings only use this trait, so a dialect that
 //! implements it (each dialect's `commission.rs`) gets them all.
 
+use crate::exit::{Exit, ExitStatus};
 use crate::session::SessionError;
 
 use super::rules::SnapshotRole;
 use super::value::{ParamValue, Reading, Tolerance};
+
+/// Why a parameter named, or a value for one, is refused before anything is sent (exit 2). The
+/// dialect words the message: the name's nearest match, the validator's reason.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ParamError {
+    /// No parameter has that name, or more than one starts with it.
+    #[error("{0}")]
+    Unknown(String),
+    /// The module's validator would refuse the value (its type, range or access).
+    #[error("{0}")]
+    Value(String),
+}
+
+impl ExitStatus for ParamError {
+    fn exit(&self) -> Exit {
+        Exit::Refused
+    }
+}
 
 /// Whether a parameter can be read, written and stored (TMCL: GAP/GGP, SAP/SGP, STAP/STGP and
 /// RSAP/RSGP; SMD4: a read, a write, STORE).
@@ -138,7 +157,7 @@ pub trait ParamDevice {
     fn params(&self) -> Vec<ParamRef>;
 
     /// The parameter a user means by `name` (an identifier or a unique abbreviation of one).
-    fn find(&self, name: &str) -> Result<ParamRef, String>;
+    fn find(&self, name: &str) -> Result<ParamRef, ParamError>;
 
     /// Reads one parameter; a refusal by the module is [`SessionError::Device`].
     fn read(&mut self, param: &ParamRef) -> Result<Reading, SessionError>;
@@ -149,7 +168,7 @@ pub trait ParamDevice {
     /// Whether the module's validator lets [`ParamDevice::write`] send `value` to `param` (its
     /// type, range and access), without sending anything; the error says why not. Under
     /// `--no-validate` only what cannot be sent at all is refused.
-    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String>;
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), ParamError>;
 
     /// The line [`ParamDevice::write`] sends, for dry runs and hints.
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String;

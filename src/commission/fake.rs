@@ -8,7 +8,7 @@ use crate::dialect::tmcl::profile::Profile;
 use crate::dialect::tmcl::protocol::Status;
 use crate::session::SessionError;
 
-use super::device::{ParamDevice, ParamRef, Scope, StoreStep};
+use super::device::{ParamDevice, ParamError, ParamRef, Scope, StoreStep};
 use super::value::{ParamValue, Reading};
 use crate::dialect::tmcl::commission::param_ref;
 
@@ -102,12 +102,12 @@ impl ParamDevice for FakeDevice {
         self.params.clone()
     }
 
-    fn find(&self, name: &str) -> Result<ParamRef, String> {
+    fn find(&self, name: &str) -> Result<ParamRef, ParamError> {
         self.params
             .iter()
             .find(|p| p.name == name)
             .cloned()
-            .ok_or_else(|| format!("unknown parameter '{name}'"))
+            .ok_or_else(|| ParamError::Unknown(format!("unknown parameter '{name}'")))
     }
 
     fn read(&mut self, param: &ParamRef) -> Result<Reading, SessionError> {
@@ -136,7 +136,7 @@ impl ParamDevice for FakeDevice {
         Ok(())
     }
 
-    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), ParamError> {
         crate::dialect::tmcl::commission::check_write(&Profile::builtin(), param, value)
     }
 

@@ -28,7 +28,7 @@ pub mod watch;
 #[cfg(test)]
 mod fake;
 
-pub use device::{Access, ParamDevice, ParamRef, Scope, StoreStep};
+pub use device::{Access, ParamDevice, ParamError, ParamRef, Scope, StoreStep};
 pub use rules::{SnapshotRole, SnapshotRules};
 pub use snapshot::Snapshot;
 pub use value::{ParamValue, Reading, Tolerance};

@@ -277,7 +277,7 @@ mod tests {
         fn params(&self) -> Vec<ParamRef> {
             self.inner.params()
         }
-        fn find(&self, name: &str) -> Result<ParamRef, String> {
+        fn find(&self, name: &str) -> Result<ParamRef, crate::commission::ParamError> {
             self.inner.find(name)
         }
         fn read(&mut self, _: &ParamRef) -> Result<Reading, SessionError> {
@@ -288,7 +288,11 @@ mod tests {
         fn write(&mut self, p: &ParamRef, v: &ParamValue) -> Result<(), SessionError> {
             self.inner.write(p, v)
         }
-        fn check_write(&self, _: &ParamRef, _: &ParamValue) -> Result<(), String> {
+        fn check_write(
+            &self,
+            _: &ParamRef,
+            _: &ParamValue,
+        ) -> Result<(), crate::commission::ParamError> {
             Ok(())
         }
         fn write_line(&self, p: &ParamRef, v: &ParamValue) -> String {

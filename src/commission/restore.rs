@@ -118,7 +118,7 @@ pub fn plan(snapshot: &Snapshot, params: &[ParamRef], device: &dyn ParamDevice) 
                     plan.problems.push(Problem::fatal(
                         Subject::Param(param.name.clone()),
                         "the module would refuse this value (its type, range or access)",
-                        Some(why),
+                        Some(why.to_string()),
                     ));
                     continue;
                 }

@@ -14,7 +14,7 @@ use crate::sim::slcan::CanDevice;
 
 use super::replay::parse::Entry;
 use super::session::{AsAny, DialectSession};
-use super::{CommandLine, DIALECTS, Dialect};
+use super::{CommandLine, Dialect, all};
 
 /// What a session is opened for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -113,7 +113,7 @@ pub struct Configured {
 impl Configured {
     /// Configures every dialect of the list with the `--profile` file.
     pub fn load(profile: Option<&Path>) -> Result<Configured, String> {
-        let configs = DIALECTS
+        let configs = all()
             .iter()
             .map(|d| (d.configure)(profile))
             .collect::<Result<Vec<_>, _>>()?;

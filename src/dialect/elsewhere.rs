@@ -8,7 +8,7 @@
 use crate::exit::{Exit, ExitStatus};
 use crate::session::SessionError;
 
-use super::{DIALECTS, Dialect};
+use super::{Dialect, all};
 
 /// The dialect other than `this` whose command `line` is, if `this` does not know it.
 pub fn line_dialect(this: &Dialect, line: &str) -> Option<&'static Dialect> {
@@ -16,7 +16,7 @@ pub fn line_dialect(this: &Dialect, line: &str) -> Option<&'static Dialect> {
     if line.is_empty() || (this.recognises)(line) {
         return None;
     }
-    DIALECTS
+    all()
         .iter()
         .copied()
         .find(|d| *d != this && (d.recognises)(line))
@@ -50,7 +50,7 @@ pub fn script_dialect(this: &Dialect, name: &str) -> Option<&'static Dialect> {
     if this.script_functions.iter().any(|f| f.name == name) {
         return None;
     }
-    DIALECTS
+    all()
         .iter()
         .copied()
         .find(|d| *d != this && d.script_functions.iter().any(|f| f.name == name))

@@ -3,12 +3,12 @@
 
 use crate::script::registry::{SHARED, ScriptFn};
 
-use super::{DIALECTS, Dialect};
+use super::{Dialect, all};
 
 /// Every script's functions, then each dialect's, each table with its title.
 pub fn tables() -> Vec<(String, &'static [ScriptFn])> {
     let mut tables = vec![("Every script".to_string(), SHARED)];
-    for dialect in DIALECTS {
+    for dialect in all() {
         tables.push((
             format!(
                 "{} scripts (--protocol {})",

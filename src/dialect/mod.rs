@@ -1,6 +1,7 @@
 //! The protocols tmclsh speaks. Each dialect is one folder ([`tmcl`], [`smd4`]) holding
 //! everything about it — pure protocol code, tables, session, simulator, script functions, shell
-//! helpers, completion, commissioning adapter, scan and replay — and one line in [`DIALECTS`].
+//! helpers, completion, commissioning adapter, scan and replay — and one line in the list
+//! ([`all`]), which a program embedding the library extends with [`register`].
 //!
 //! The layers above (shell, REPL, CLI) know a dialect only through its [`Dialect`] descriptor, the
 //! [`DialectConfig`] the command line configures from it, and the [`DialectSession`] it opens
@@ -14,6 +15,7 @@ pub mod functions;
 pub mod grammar;
 pub mod guard;
 pub mod helper;
+mod list;
 pub mod replay;
 pub mod session;
 pub mod smd4;
@@ -29,6 +31,7 @@ pub use config::{Configured, DialectConfig, Opening, Purpose};
 pub use faces::Faces;
 pub use grammar::Grammar;
 pub use helper::{ArgKind, Helper, Section};
+pub use list::{RegisterError, all, by_name, default_dialect, register};
 pub use session::{DialectSession, Reply};
 
 /// The mark of a value the module's documentation does not confirm (a parameter row taken from a
@@ -36,11 +39,12 @@ pub use session::{DialectSession, Reply};
 /// help; `:help params` explains it.
 pub const UNCERTAIN: &str = "*";
 
-/// Every dialect, the default first: `--protocol` offers them in this order.
-pub static DIALECTS: &[&Dialect] = &[&tmcl::DIALECT, &smd4::DIALECT];
+/// The dialects built in, the default first: `--protocol` offers them in this order, and
+/// [`all`] lists those registered after them.
+static BUILT_IN: &[&Dialect] = &[&tmcl::DIALECT, &smd4::DIALECT];
 
 /// A dialect: what the layers above need to know about it without knowing it. One static value
-/// per dialect, listed in [`DIALECTS`].
+/// per dialect, listed in [`all`].
 pub struct Dialect {
     /// The name `--protocol` takes and transcript headers record (`tmcl`).
     pub name: &'static str,
@@ -59,8 +63,8 @@ pub struct Dialect {
     pub helpers: &'static [Helper],
     /// Reads the dialect's tables (TMCL: the `--profile` file) into a [`DialectConfig`].
     pub configure: Configure,
-    /// Options of the shared group only this dialect uses (its own flags count too): refused
-    /// when another dialect is chosen.
+    /// Options of the shared group only this dialect uses (TMCL: `--module`, `--profile`); with
+    /// its session flags, refused when another dialect is chosen ([`Dialect::owned_options`]).
     pub own_options: &'static [&'static str],
     /// Adds its session flags (`tmclsh --protocol NAME --FLAG`) to a command.
     #[cfg(feature = "cli")]
@@ -122,6 +126,20 @@ impl Dialect {
     }
 }
 
+#[cfg(feature = "cli")]
+impl Dialect {
+    /// The ids of every option only this dialect uses: those of the shared group it lists, and
+    /// its session flags.
+    pub fn owned_options(&self) -> Vec<String> {
+        let flags = (self.session_flags)(clap::Command::new("flags"));
+        self.own_options
+            .iter()
+            .map(|id| id.to_string())
+            .chain(flags.get_arguments().map(|a| a.get_id().to_string()))
+            .collect()
+    }
+}
+
 impl fmt::Debug for Dialect {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_tuple("Dialect").field(&self.name).finish()
@@ -149,29 +167,13 @@ pub enum SimFlags {
     Quirks,
 }
 
-/// The dialect named `name` (as `--protocol` and transcript headers write it).
-pub fn by_name(name: &str) -> Option<&'static Dialect> {
-    DIALECTS.iter().copied().find(|d| d.name == name)
-}
-
-/// The default dialect (the first in the list).
-pub fn default_dialect() -> &'static Dialect {
-    DIALECTS[0]
-}
-
 /// The value parser of `--protocol`: the names in the list, each with its summary.
 #[cfg(feature = "cli")]
 pub fn protocol_parser() -> impl TypedValueParser<Value = &'static Dialect> {
-    let values = DIALECTS
+    let values = all()
         .iter()
         .map(|d| PossibleValue::new(d.name).help(d.summary));
     PossibleValuesParser::new(values).map(|name| by_name(&name).expect("a listed name"))
-}
-
-/// No flags.
-#[cfg(feature = "cli")]
-pub(crate) fn no_flags(cmd: clap::Command) -> clap::Command {
-    cmd
 }
 
 #[cfg(test)]

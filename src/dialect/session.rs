@@ -12,7 +12,7 @@ use std::time::Duration;
 
 use crate::commission::ParamDevice;
 use crate::exit::Failure;
-use crate::script::Script;
+use crate::script::{Registrar, Script};
 use crate::session::core::SessionCore;
 use crate::session::transcript::{Header, Transcript};
 use crate::session::{SessionError, SessionOptions};
@@ -393,4 +393,23 @@ pub trait DialectSession: Faces + AsAny {
         report.extend(self.take_notices());
         report
     }
+}
+
+/// Every dialect's [`DialectSession::run_script`]: `script` run over `session` with the dialect's
+/// own functions (`register`), its `log` lines in the session's transcript, its notices before
+/// each `print`, and what the session set moving stopped after a failed `test` block.
+pub fn run_script<S: DialectSession + ParamDevice + 'static>(
+    session: S,
+    script: &Script,
+    register: Registrar<S>,
+) -> (Box<dyn DialectSession>, Result<(), Failure>) {
+    let (session, result) = script.run(
+        session,
+        |s, text| s.annotate(text),
+        |s| s.take_notices(),
+        |s| s.transcript().is_some_and(|t| t.failure().is_some()),
+        |s| s.stop_motion(),
+        register,
+    );
+    (Box::new(session), result)
 }

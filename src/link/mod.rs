@@ -49,6 +49,13 @@ impl LinkError {
     }
 }
 
+/// Every way a link fails leaves unknown what the module did.
+impl crate::exit::ExitStatus for LinkError {
+    fn exit(&self) -> crate::exit::Exit {
+        crate::exit::Exit::Link
+    }
+}
+
 /// A bidirectional byte link to one bus of modules.
 pub trait Link: Send {
     /// Writes all of `bytes`.

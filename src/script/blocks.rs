@@ -107,22 +107,16 @@ pub(super) fn unwrapped(error: EvalAltResult) -> EvalAltResult {
 }
 
 /// The failure a run ends with when blocks failed and nothing else did: "2 of 5 tests failed:
-/// homing, limits", with the worst exit code among them (a link failure before a device error
-/// before a refusal).
+/// homing, limits", with the worst exit code among them ([`Exit::worse`]).
 pub(super) fn verdict(name: &str, cases: &[Case]) -> Option<Failure> {
     let failed: Vec<&Case> = cases.iter().filter(|c| c.failure.is_some()).collect();
     if failed.is_empty() {
         return None;
     }
-    let rank = |exit: Exit| match exit {
-        Exit::Refused => 1,
-        Exit::DeviceError => 2,
-        _ => 3,
-    };
     let exit = failed
         .iter()
         .filter_map(|c| c.failure.as_ref().map(|f| f.exit))
-        .max_by_key(|e| rank(*e))
+        .reduce(Exit::worse)
         .unwrap_or(Exit::DeviceError);
     let names: Vec<&str> = failed.iter().map(|c| c.name.as_str()).collect();
     Some(Failure::new(

@@ -16,7 +16,7 @@ use crate::commission::record::{self, CsvFile};
 use crate::commission::{ParamDevice, ParamValue, Snapshot};
 
 use super::common::duration;
-use super::failure::{Fallible, device, refused};
+use super::failure::{Fallible, device, refused, thrown};
 use super::sandbox::{Kind, READ_LIMIT, Sandbox};
 
 /// Registers the commissioning functions over `session` (any dialect whose session is a
@@ -125,7 +125,7 @@ fn record_csv<S: ParamDevice>(
     let mut session = session.borrow_mut();
     let params = names(params)?
         .iter()
-        .map(|n| session.find(n).map_err(refused))
+        .map(|n| session.find(n).map_err(|e| thrown(e.into())))
         .collect::<Fallible<Vec<_>>>()?;
     let plan = record::Plan {
         params,

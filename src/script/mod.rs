@@ -39,8 +39,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rhai::{Dynamic, Engine, EvalAltResult, INT, OptimizationLevel, Position, Scope};
 
 use crate::escape::escape_control;
-use crate::exit::{Exit, Failure};
-use crate::session::interrupt;
+use crate::exit::{Exit, ExitStatus, Failure};
+use crate::session::{SessionError, interrupt};
 
 pub use limits::Limits;
 use memory::Budget;
@@ -130,7 +130,7 @@ impl Script {
     }
 
     /// Runs over a session of type `S`, with the functions `register` adds (a dialect's device
-    /// functions) besides those every script has; `log` lines go to the transcript through
+    /// functions) besides those every script has, the commissioning functions among them; `log` lines go to the transcript through
     /// `annotate` (to stderr when none is written). What the session noticed (`notices`: bytes
     /// discarded before a reply, an event) goes out before the next `print` line, which may show
     /// that reply; what is left when the script ends is the caller's. With
@@ -138,7 +138,7 @@ impl Script {
     /// `lost_transcript` says the transcript can no longer be written. After a failed `test`
     /// block, `stop` stops what the session set moving (its messages go to stderr). The engine
     /// holds the session for the run and gives it back when dropped.
-    pub fn run<S: 'static>(
+    pub fn run<S: crate::commission::ParamDevice + 'static>(
         &self,
         session: S,
         annotate: fn(&mut S, &str) -> bool,
@@ -182,6 +182,7 @@ impl Script {
                 },
             );
             register(&mut engine, &shared, &self.sandbox);
+            commission::register(&mut engine, &shared, &self.sandbox);
             let record = blocks::Record::default();
             let session = shared.clone();
             let after_failure: Rc<dyn Fn()> = Rc::new(move || {
@@ -497,14 +498,13 @@ fn report(context: &Context<'_>, error: EvalAltResult) -> Failure {
             exit: Exit::DeviceError,
             message: at(name, position, memory::MESSAGE),
         },
-        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == TRANSCRIPT => Failure {
-            exit: Exit::Link,
-            message: at(
-                name,
-                position,
-                "the run stops: it asked for a transcript that cannot be written",
-            ),
-        },
+        EvalAltResult::ErrorTerminated(token, _) if token.to_string() == TRANSCRIPT => {
+            let lost = SessionError::TranscriptLost;
+            Failure {
+                exit: lost.exit(),
+                message: at(name, position, &lost.to_string()),
+            }
+        }
         EvalAltResult::ErrorTerminated(token, _) if token.to_string() == STDOUT => Failure {
             exit: crate::stdout::EXIT,
             message: at(name, position, "stdout was closed"),

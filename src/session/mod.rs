@@ -6,6 +6,7 @@
 
 pub mod core;
 mod error;
+mod exchange;
 pub mod interrupt;
 pub mod notices;
 pub mod relink;

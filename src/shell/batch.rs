@@ -6,8 +6,8 @@
 //! input text. The first failing line stops the run with its exit code (1 device error status,
 //! 2 refused before sending, 3 no reply, link lost or a transcript that cannot be written,
 //! 130 Ctrl-C), after stopping the motors the run set moving. With `--keep-going` a failing line
-//! is reported and the run goes on (the motors too); it ends with the worst code ([`worse`]).
-//! Ctrl-C and a transcript that cannot be written end it all the same.
+//! is reported and the run goes on (the motors too); it ends with the worst code
+//! ([`Exit::worse`]). Ctrl-C and a transcript that cannot be written end it all the same.
 //!
 //! Piped lines end with CR, LF or CRLF ([`lines`]); a line that is too long or not UTF-8 is
 //! refused like a line the validator refuses.
@@ -104,11 +104,11 @@ pub fn run(
         let line = match lines.next() {
             // Ctrl-C at the very moment the input ended still counts as Ctrl-C.
             None if interrupt::pending() => {
-                break worse(worst, fail(shell, &SessionError::Interrupted, err, None));
+                break worst.worse(fail(shell, &SessionError::Interrupted, err, None));
             }
             None => break worst,
             Some(Ok(line)) => line,
-            Some(Err(e)) => break worse(worst, fail(shell, &e, err, None)),
+            Some(Err(e)) => break worst.worse(fail(shell, &e, err, None)),
         };
         number += 1;
         let line = match line {
@@ -118,10 +118,10 @@ pub fn run(
                 show_failure(number, "", &refused, options.output, out);
                 if options.keep_going {
                     diagnose(err, &refused.to_string());
-                    worst = worse(worst, refused.exit());
+                    worst = worst.worse(refused.exit());
                     continue;
                 }
-                break worse(worst, fail(shell, &refused, err, None));
+                break worst.worse(fail(shell, &refused, err, None));
             }
         };
         let text = line.trim();
@@ -137,7 +137,7 @@ pub fn run(
             Err(e) if goes_on(shell, &e, options) => {
                 diagnose(err, &format!("line {number} ({text}): {e}"));
                 interrupt::take();
-                worst = worse(worst, e.exit());
+                worst = worst.worse(e.exit());
             }
             Err(e) => {
                 let e = match e {
@@ -147,7 +147,7 @@ pub fn run(
                     },
                     e => e,
                 };
-                break worse(worst, fail(shell, &e, err, Some((number, text))));
+                break worst.worse(fail(shell, &e, err, Some((number, text))));
             }
         }
     };
@@ -169,24 +169,6 @@ fn goes_on(shell: &Shell, error: &SessionError, options: Options) -> bool {
     options.keep_going
         && !matches!(error, SessionError::Interrupted)
         && transcript_written(shell).is_ok()
-}
-
-/// The worse of two outcomes, by what the failure says about the run: SIGTERM or SIGHUP (143,
-/// 129) and Ctrl-C (130) ended it; a link failure (3) leaves unknown what the module did; a
-/// device error (1) means the module is not in the state the input assumed; a refused line (2)
-/// was not sent at all.
-pub fn worse(a: Exit, b: Exit) -> Exit {
-    fn rank(exit: Exit) -> u8 {
-        match exit {
-            Exit::Success => 0,
-            Exit::Refused => 1,
-            Exit::DeviceError => 2,
-            Exit::Link => 3,
-            Exit::Interrupted => 4,
-            Exit::Terminated(_) => 5,
-        }
-    }
-    if rank(b) > rank(a) { b } else { a }
 }
 
 /// One line of diagnostics on stderr.

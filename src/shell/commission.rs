@@ -165,7 +165,7 @@ fn params_and_times(
     }
     let params = names
         .iter()
-        .map(|n| device.find(n))
+        .map(|n| device.find(n).map_err(|e| e.to_string()))
         .collect::<Result<Vec<_>, _>>()?;
     if let Some(p) = params.iter().find(|p| !p.access.read) {
         return Err(format!("{} cannot be read", p.name));

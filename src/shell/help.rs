@@ -82,11 +82,10 @@ pub(super) fn write_help(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dialect::DIALECTS;
 
     #[test]
     fn every_summary_of_the_helper_table_starts_in_the_same_column() {
-        for dialect in DIALECTS {
+        for dialect in crate::dialect::all() {
             for h in helpers::available(dialect) {
                 let rows = helper_rows(h, "  ", None);
                 let summary = rows.lines().last().unwrap();

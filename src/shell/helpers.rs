@@ -3,7 +3,7 @@
 //! Together they drive dispatch, `:help` and completion.
 
 use crate::dialect::helper::{ArgKind, Helper, Section, helper};
-use crate::dialect::{DIALECTS, Dialect};
+use crate::dialect::{Dialect, all};
 
 /// The helpers every dialect has (`:params` and `:target` are answered by the dialect).
 pub const SHARED: &[Helper] = &[
@@ -118,7 +118,7 @@ pub fn find(name: &str, dialect: &'static Dialect) -> Result<&'static Helper, St
     if let Some(h) = available(dialect).find(|h| h.name == name) {
         return Ok(h);
     }
-    let elsewhere = DIALECTS
+    let elsewhere = all()
         .iter()
         .find(|d| d.helpers.iter().any(|h| h.name == name));
     if let Some(other) = elsewhere {
@@ -189,7 +189,7 @@ mod tests {
 
     #[test]
     fn every_helper_s_usage_and_summary_are_single_spaced() {
-        for dialect in DIALECTS {
+        for dialect in all() {
             for h in available(dialect) {
                 for text in [h.usage, h.summary] {
                     assert!(!text.contains("  "), "{}: {text:?}", dialect.name);
@@ -201,7 +201,7 @@ mod tests {
 
     #[test]
     fn every_helper_has_usage_starting_with_its_name() {
-        let all = SHARED.iter().chain(DIALECTS.iter().flat_map(|d| d.helpers));
+        let all = SHARED.iter().chain(all().iter().flat_map(|d| d.helpers));
         for h in all {
             assert!(h.usage.starts_with(&format!(":{}", h.name)), "{}", h.name);
         }

@@ -6,6 +6,7 @@ use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use super::Device;
+use super::error::ConsoleError;
 use super::inprocess::SharedDevice;
 use crate::clock::{Clock, ManualClock};
 
@@ -90,8 +91,8 @@ pub fn help<'a>(sections: impl IntoIterator<Item = &'a Section>) -> String {
 pub enum Answer {
     /// Done; the text says what.
     Ok(String),
-    /// Refused; the text says why.
-    Error(String),
+    /// Refused, and why.
+    Error(ConsoleError),
     /// End the simulator.
     Quit,
 }
@@ -194,17 +195,21 @@ impl Console {
             ["help"] => Answer::Ok(summary([self.commands, &SHARED])),
             ["time"] => Answer::Ok(format!("{:.6} s", self.clock.now().as_secs_f64())),
             ["advance", amount] => match (&self.manual, crate::duration::parse(amount)) {
-                (None, _) => Answer::Error("advance needs --manual-clock".into()),
-                (_, Err(e)) => Answer::Error(e),
+                (None, _) => Answer::Error(ConsoleError::Needs {
+                    command: "advance",
+                    what: "--manual-clock",
+                }),
+                (_, Err(e)) => Answer::Error(ConsoleError::Time(e)),
                 (Some(clock), Ok(d)) => {
                     clock.advance(d);
                     Answer::Ok(format!("{:.6} s", clock.now().as_secs_f64()))
                 }
             },
             ["unplug", secs] => match (&self.unplug, unplug_time(secs)) {
-                (None, _) => Answer::Error(
-                    "unplug needs a pseudo-terminal (--pty); on TCP use hangup".into(),
-                ),
+                (None, _) => Answer::Error(ConsoleError::Needs {
+                    command: "unplug",
+                    what: "a pseudo-terminal (--pty); on TCP use hangup",
+                }),
                 (_, Err(e)) => Answer::Error(e),
                 (Some(unplug), Ok(outage)) => {
                     unplug.ask(outage);
@@ -218,8 +223,8 @@ impl Console {
                 let now = self.clock.now();
                 match device.control(now, line.trim()) {
                     Some(Ok(text)) => Answer::Ok(text),
-                    Some(Err(text)) => Answer::Error(text),
-                    None => Answer::Error(format!("unknown command '{}'; try help", words[0])),
+                    Some(Err(e)) => Answer::Error(e),
+                    None => Answer::Error(ConsoleError::Unknown(words[0].to_string())),
                 }
             }
         }
@@ -227,14 +232,17 @@ impl Console {
 }
 
 /// The outage of `unplug SECS`: seconds, fractions allowed, at most an hour.
-fn unplug_time(secs: &str) -> Result<Duration, String> {
+fn unplug_time(secs: &str) -> Result<Duration, ConsoleError> {
     secs.parse::<f64>()
         .ok()
         .filter(|s| s.is_finite() && *s >= 0.0)
         .map(Duration::from_secs_f64)
         .filter(|d| *d <= LONGEST_UNPLUG)
         .ok_or_else(|| {
-            format!("'{secs}' is not a time in seconds from 0 to 3600 (unplug 2, unplug 0.5)")
+            ConsoleError::bad(
+                secs,
+                "a time in seconds from 0 to 3600 (unplug 2, unplug 0.5)",
+            )
         })
 }
 

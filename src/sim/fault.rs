@@ -15,6 +15,7 @@ use std::collections::VecDeque;
 use std::time::Duration;
 
 use super::Device;
+use super::error::ConsoleError;
 
 /// Which faults to inject.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -87,6 +88,9 @@ pub struct Injected {
     /// Replies held back by `delay`.
     pub delayed: u64,
 }
+
+/// What `seed N` takes: every `u64` (written out, as a message's hint must be a constant).
+const SEEDS: &str = "a seed (0..18446744073709551615)";
 
 /// A device whose replies suffer the configured faults.
 pub struct Faulty<D> {
@@ -238,13 +242,13 @@ impl<D: Device> Device for Faulty<D> {
         self.inner.reconnect();
     }
 
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, ConsoleError>> {
         let words: Vec<&str> = command.split_whitespace().collect();
-        let rate = |text: &str| -> Result<f64, String> {
+        let rate = |text: &str| {
             text.parse::<f64>()
                 .ok()
                 .filter(|r| (0.0..=1.0).contains(r))
-                .ok_or_else(|| format!("'{text}' is not a rate between 0 and 1"))
+                .ok_or_else(|| ConsoleError::bad(text, "a rate between 0 and 1"))
         };
         let result = match words.as_slice() {
             ["hangup"] => {
@@ -261,7 +265,7 @@ impl<D: Device> Device for Faulty<D> {
             }
             ["seed", n] => n
                 .parse::<u64>()
-                .map_err(|_| format!("'{n}' is not a seed (0..{})", u64::MAX))
+                .map_err(|_| ConsoleError::bad(n, SEEDS))
                 .map(|seed| {
                     self.reseed(seed);
                     format!("seed {seed}")
@@ -289,7 +293,7 @@ impl<D: Device> Device for Faulty<D> {
             ["delay", r, ms] => rate(r).and_then(|r| {
                 let ms: u64 = ms
                     .parse()
-                    .map_err(|_| format!("'{ms}' is not a number of milliseconds"))?;
+                    .map_err(|_| ConsoleError::bad(ms, "a number of milliseconds"))?;
                 self.faults.delay_rate = r;
                 self.faults.delay = Duration::from_millis(ms);
                 Ok(format!("delay rate {r}, {ms} ms"))

@@ -9,6 +9,7 @@ use std::time::{Duration, Instant};
 use crate::link::{Link, LinkError};
 
 use super::Device;
+use super::error::ConsoleError;
 use crate::clock::Clock;
 
 /// A device shared between a link and whoever inspects it (tests, the console).
@@ -61,9 +62,9 @@ impl SimLink {
     }
 
     /// Runs a control command on the device (see the `tmclsh sim` console).
-    pub fn control(&self, command: &str) -> Result<String, String> {
+    pub fn control(&self, command: &str) -> Result<String, ConsoleError> {
         self.with_device(|device, now| device.control(now, command))
-            .unwrap_or_else(|| Err(format!("unknown control command '{command}'")))
+            .unwrap_or_else(|| Err(ConsoleError::Unknown(command.to_string())))
     }
 
     fn lock(&self) -> MutexGuard<'_, dyn Device + 'static> {

@@ -27,7 +27,7 @@ macro_rules! pass_on {
             &mut self,
             now: std::time::Duration,
             command: &str,
-        ) -> Option<Result<String, String>> {
+        ) -> Option<Result<String, $crate::sim::error::ConsoleError>> {
             self.$inner.control(now, command)
         }
     };
@@ -36,6 +36,7 @@ macro_rules! pass_on {
 mod builtin;
 pub mod console;
 pub mod echo;
+pub mod error;
 pub mod fault;
 pub mod inprocess;
 pub mod latency;
@@ -52,6 +53,8 @@ pub use builtin::builtin_link;
 pub type LogSink = Box<dyn FnMut(&str) + Send>;
 
 use std::time::Duration;
+
+use error::ConsoleError;
 
 /// A simulated bus endpoint as a pure state machine. `now` is the simulation time since the device
 /// was created; it never goes backwards between calls.
@@ -83,7 +86,7 @@ pub trait Device: Send {
     /// Runs a control command (from the `tmclsh sim` console or a test): set an input, move a
     /// switch, trigger a fault. `None` when the device does not know the command, so that
     /// decorators can pass it on to the device they wrap.
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, ConsoleError>> {
         let _ = (now, command);
         None
     }
@@ -114,7 +117,7 @@ impl<D: Device + ?Sized> Device for Box<D> {
         (**self).byte_time(time)
     }
 
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, ConsoleError>> {
         (**self).control(now, command)
     }
 }

@@ -7,6 +7,7 @@ use std::collections::VecDeque;
 use std::time::Duration;
 
 use super::Device;
+use super::error::ConsoleError;
 
 /// A device behind a serial line of a given baud rate.
 pub struct Paced<D> {
@@ -148,7 +149,7 @@ impl<D: Device> Device for Paced<D> {
         self.inner.reconnect();
     }
 
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, ConsoleError>> {
         self.run(now);
         self.inner.control(now, command)
     }

@@ -10,6 +10,7 @@ use crate::link::can::CanFrame;
 use crate::link::can::slcan::{self, AckStyle, Decoder, Event};
 
 use super::Device;
+use super::error::ConsoleError;
 
 /// A simulated CAN bus: frames in, frames out, time as an input (see [`Device`]).
 pub trait CanDevice: Send {
@@ -31,7 +32,7 @@ pub trait CanDevice: Send {
     fn reconnect(&mut self) {}
 
     /// A console command for the simulated modules.
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, ConsoleError>> {
         let _ = (now, command);
         None
     }

@@ -2,7 +2,6 @@
 //! dialect that run as shown, and no doubled space inside a text.
 
 use crate::util::{code, run_with_stdin_in, stderr, stdout, tempdir};
-use tmclsh::dialect::DIALECTS;
 use tmclsh::shell::helpers;
 
 /// The example of a usage message: what follows `(e.g. ` up to its `)`.
@@ -17,7 +16,7 @@ fn example(message: &str) -> &str {
 
 #[test]
 fn the_watch_and_record_examples_are_in_the_session_s_dialect_and_run_as_shown() {
-    for dialect in DIALECTS {
+    for dialect in tmclsh::dialect::all() {
         let dir = tempdir();
         let protocol = ["--sim", "--protocol", dialect.name];
         let usage = |helper: &str| {
@@ -64,7 +63,7 @@ fn row_is_single_spaced(row: &str) -> bool {
 
 #[test]
 fn no_help_or_usage_line_of_any_helper_has_a_doubled_space() {
-    for dialect in DIALECTS {
+    for dialect in tmclsh::dialect::all() {
         let names: Vec<&str> = helpers::available(dialect)
             .map(|h| h.name)
             .filter(|&n| n != "quit")

@@ -1,7 +1,7 @@
 //! No circles between the files of a folder: the file a `crate::…` or `super::…` path names is
 //! used by the file naming it, and following those uses must never lead back to where it began.
 //! A circle makes a group of files one file in all but name: none of them can be read, tested or
-//! moved without the others. Checked in the simulators' folders; a parent's `mod.rs` is reached
+//! moved without the others. Checked across the whole library; a parent's `mod.rs` is reached
 //! by its children (its relative paths to them are not read), so it closes no circle.
 
 use std::collections::BTreeMap;
@@ -10,22 +10,9 @@ use std::path::PathBuf;
 use super::paths::{Source, used_paths};
 use super::{library, made_up};
 
-/// The folders whose files must not use each other in a circle: the simulator infrastructure and
-/// each dialect's simulator.
-fn checked(module: &[String]) -> bool {
-    match module {
-        [top, ..] if top == "sim" => true,
-        [dialect, _, sim, ..] => dialect == "dialect" && sim == "sim",
-        _ => false,
-    }
-}
-
 /// The files of `sources` that use each other in a circle, each circle once, in path order.
-fn circles(sources: &[Source], within: impl Fn(&[String]) -> bool) -> Vec<Vec<PathBuf>> {
-    let files: Vec<&Source> = sources
-        .iter()
-        .filter(|s| !s.test_only && within(&s.module))
-        .collect();
+fn circles(sources: &[Source]) -> Vec<Vec<PathBuf>> {
+    let files: Vec<&Source> = sources.iter().filter(|s| !s.test_only).collect();
     let by_module: BTreeMap<&[String], usize> = files
         .iter()
         .enumerate()
@@ -83,8 +70,8 @@ fn circles(sources: &[Source], within: impl Fn(&[String]) -> bool) -> Vec<Vec<Pa
 }
 
 #[test]
-fn the_simulators_files_use_each_other_in_no_circle() {
-    let found = circles(&library(), checked);
+fn the_librarys_files_use_each_other_in_no_circle() {
+    let found = circles(&library());
     assert!(
         found.is_empty(),
         "files using each other in a circle (move what both need below both):\n{}",
@@ -113,7 +100,7 @@ fn the_check_sees_a_circle_of_three_and_not_a_parent_reached_by_its_children() {
         sim("d", "use super::a::A;"),
         parent,
     ];
-    let found = circles(&sources, checked);
+    let found = circles(&sources);
     let names = |c: &Vec<PathBuf>| {
         c.iter()
             .map(|f| f.display().to_string())
@@ -123,10 +110,4 @@ fn the_check_sees_a_circle_of_three_and_not_a_parent_reached_by_its_children() {
         found.iter().map(names).collect::<Vec<_>>(),
         [["src/sim/a.rs", "src/sim/b.rs", "src/sim/c.rs"]]
     );
-    assert!(checked(&["dialect".into(), "smd4".into(), "sim".into()]));
-    assert!(!checked(&[
-        "dialect".into(),
-        "smd4".into(),
-        "session".into()
-    ]));
 }

@@ -461,9 +461,9 @@ pub fn explain(args: &mut ConfigArgs, matches: &ArgMatches, defaults: &Defaults)
             }
         }
         let dialect = dialect?;
-        let owner = crate::dialect::DIALECTS
+        let owner = crate::dialect::all()
             .iter()
-            .find(|d| d.own_options.contains(&key.id))?;
+            .find(|d| d.owned_options().iter().any(|id| id == key.id))?;
         (owner.name != dialect.name).then(|| {
             format!(
                 "{} only; the protocol is {}",

@@ -97,7 +97,7 @@ fn platform() -> std::io::Result<Vec<Port>> {
 mod sysfs {
     use std::path::{Path, PathBuf};
 
-    use super::{Kind, Port, Usb};
+    use crate::cli::ports::list::{Kind, Port, Usb};
 
     /// Where `sys/` and `dev/` are: `/`, or the made-up tree in `TMCLSH_TEST_SYSFS`.
     pub(super) fn root() -> PathBuf {

@@ -1,5 +1,5 @@
 //! Reading a transcript header back: the inverse of [`Header::to_text`], which also checks that
-//! the dialect it names is one of [`crate::dialect::DIALECTS`].
+//! the dialect it names is one of [`crate::dialect::all`].
 
 use crate::dialect::by_name;
 use crate::session::transcript::{HEADER_TITLE, Header, split_quoted, unescape};

@@ -1,7 +1,7 @@
 //! What a transcript is of: the dialect and module its headers name, checked alike across the
 //! sessions appended to one file; a file from before headers gets a reasoned guess and a notice.
 
-use crate::dialect::{DIALECTS, Dialect, by_name, default_dialect};
+use crate::dialect::{Dialect, all, by_name, default_dialect};
 use crate::session::transcript::Header;
 
 use super::parse::{Entry, Record};
@@ -68,11 +68,11 @@ fn without_header(entries: &[Entry]) -> Recognised {
             .iter()
             .any(|e| matches!(&e.record, Record::Note(n) if n.starts_with(note)))
     };
-    let found = DIALECTS.iter().find(|d| d.legacy_note.is_some_and(&noted));
+    let found = all().iter().find(|d| d.legacy_note.is_some_and(&noted));
     let (dialect, why) = match found {
         Some(d) => (*d, format!("its {} session note", d.name.to_uppercase())),
         None => {
-            let noting: Vec<String> = DIALECTS
+            let noting: Vec<String> = all()
                 .iter()
                 .filter(|d| d.legacy_note.is_some())
                 .map(|d| d.name.to_uppercase())

@@ -20,7 +20,7 @@ use crate::dialect::smd4::session::{DriveName, Smd4Exchange, Smd4Session};
 use crate::session::SessionError;
 
 use crate::commission::actions::failed;
-use crate::commission::device::{ParamDevice, ParamRef, Scope, StoreStep};
+use crate::commission::device::{ParamDevice, ParamError, ParamRef, Scope, StoreStep};
 use crate::commission::value::{ParamValue, Reading, Tolerance};
 
 impl ParamDevice for Smd4Session {
@@ -58,15 +58,15 @@ impl ParamDevice for Smd4Session {
         spec_params(self.spec())
     }
 
-    fn find(&self, name: &str) -> Result<ParamRef, String> {
+    fn find(&self, name: &str) -> Result<ParamRef, ParamError> {
         let spec = self.spec();
         let command = find_command(spec, name)?;
         if !is_param(command) {
-            return Err(format!(
+            return Err(ParamError::Unknown(format!(
                 "{} has no value to read ({}); :params lists the settings",
                 command.mnemonic,
                 why_not(command)
-            ));
+            )));
         }
         Ok(param_ref(spec, command))
     }
@@ -89,14 +89,14 @@ impl ParamDevice for Smd4Session {
         Ok(())
     }
 
-    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), ParamError> {
         if !self.options().validate {
             return Ok(()); // --no-validate: the drive judges.
         }
         let request = Request::new(&param.name).arg(argument(value));
         validate(&request, &self.spec().commands)
             .map(|_| ())
-            .map_err(|e| e.to_string())
+            .map_err(|e| ParamError::Value(e.to_string()))
     }
 
     fn write_line(&self, param: &ParamRef, value: &ParamValue) -> String {
@@ -227,7 +227,7 @@ fn tolerance(spec: &Smd4Spec, command: &Smd4Command) -> Tolerance {
 
 /// The command a user means: its mnemonic in any case (or an alias), or the unique command whose
 /// last segment it is (`VACT` for MOTOR:VACT, as the document itself abbreviates).
-fn find_command<'a>(spec: &'a Smd4Spec, name: &str) -> Result<&'a Smd4Command, String> {
+fn find_command<'a>(spec: &'a Smd4Spec, name: &str) -> Result<&'a Smd4Command, ParamError> {
     let wanted = name.trim();
     if let Some(command) = spec.commands.get(wanted) {
         return Ok(command);
@@ -247,13 +247,16 @@ fn find_command<'a>(spec: &'a Smd4Spec, name: &str) -> Result<&'a Smd4Command, S
                 .suggest(wanted)
                 .map(|m| format!("; did you mean {m}?"))
                 .unwrap_or_default();
-            Err(format!(
+            Err(ParamError::Unknown(format!(
                 "unknown setting '{wanted}' (:params lists them){hint}"
-            ))
+            )))
         }
         several => {
             let names: Vec<&str> = several.iter().map(|c| c.mnemonic.as_str()).collect();
-            Err(format!("'{wanted}' could be {}", names.join(" or ")))
+            Err(ParamError::Unknown(format!(
+                "'{wanted}' could be {}",
+                names.join(" or ")
+            )))
         }
     }
 }
@@ -421,12 +424,12 @@ mod tests {
             "MOTOR:VACT"
         );
         assert_eq!(find_command(spec, "VACT").unwrap().mnemonic, "MOTOR:VACT");
-        let ambiguous = find_command(spec, "T").unwrap_err();
+        let ambiguous = find_command(spec, "T").unwrap_err().to_string();
         assert!(
             ambiguous.contains("MOTOR:T") && ambiguous.contains("BAKE:T"),
             "{ambiguous}"
         );
-        let unknown = find_command(spec, "MOTOR:VMAXX").unwrap_err();
+        let unknown = find_command(spec, "MOTOR:VMAXX").unwrap_err().to_string();
         assert!(unknown.contains("did you mean MOTOR:VMAX"), "{unknown}");
     }
 

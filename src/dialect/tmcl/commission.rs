@@ -9,7 +9,7 @@ use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
 use crate::dialect::tmcl::session::{TmclReply, TmclSession};
 use crate::session::SessionError;
 
-use crate::commission::device::{ParamDevice, ParamRef, Scope, StoreStep};
+use crate::commission::device::{ParamDevice, ParamError, ParamRef, Scope, StoreStep};
 use crate::commission::value::{ParamValue, Reading, Tolerance};
 
 impl ParamDevice for TmclSession {
@@ -60,7 +60,7 @@ impl ParamDevice for TmclSession {
         profile_params(self.profile())
     }
 
-    fn find(&self, name: &str) -> Result<ParamRef, String> {
+    fn find(&self, name: &str) -> Result<ParamRef, ParamError> {
         let profile = self.profile();
         match (profile.find_axis(name), profile.find_global(name)) {
             (Ok(p), _) => Ok(param_ref(profile, p, Scope::Axis { motor: 0 })),
@@ -68,7 +68,7 @@ impl ParamDevice for TmclSession {
             (Err(axis), Err(_)) => {
                 let all = profile.axis.iter().chain(&profile.global);
                 let nearest = crate::suggest::nearest(name, all.map(|p| p.ident.as_str()));
-                Err(match axis {
+                Err(ParamError::Unknown(match axis {
                     crate::dialect::tmcl::profile::LookupError::Ambiguous { .. } => {
                         axis.to_string()
                     }
@@ -76,7 +76,7 @@ impl ParamDevice for TmclSession {
                         "unknown parameter '{name}' (:params lists them){}",
                         crate::suggest::did_you_mean(&nearest)
                     ),
-                })
+                }))
             }
         }
     }
@@ -97,10 +97,10 @@ impl ParamDevice for TmclSession {
         Ok(())
     }
 
-    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), String> {
+    fn check_write(&self, param: &ParamRef, value: &ParamValue) -> Result<(), ParamError> {
         if !self.options().validate {
             // --no-validate: the module judges (values still have to be 32-bit integers).
-            return word(param, value).map(|_| ()).map_err(|e| e.to_string());
+            return word(param, value).map(|_| ()).map_err(refused);
         }
         let mode = self.validation_mode(self.target());
         check_write_in(self.profile(), param, value, mode)
@@ -192,7 +192,7 @@ pub(crate) fn check_write(
     profile: &Profile,
     param: &ParamRef,
     value: &ParamValue,
-) -> Result<(), String> {
+) -> Result<(), ParamError> {
     check_write_in(profile, param, value, Mode::Ascii)
 }
 
@@ -202,12 +202,17 @@ fn check_write_in(
     param: &ParamRef,
     value: &ParamValue,
     mode: Mode,
-) -> Result<(), String> {
-    let value = word(param, value).map_err(|e| e.to_string())?;
+) -> Result<(), ParamError> {
+    let value = word(param, value).map_err(refused)?;
     let instruction = instruction(param, [Opcode::Sap, Opcode::Sgp], value);
     validate_instruction(&instruction, profile, mode)
         .map(|_| ())
-        .map_err(|e| e.to_string())
+        .map_err(refused)
+}
+
+/// A value the validator would refuse, in its words.
+fn refused(why: impl std::fmt::Display) -> ParamError {
+    ParamError::Value(why.to_string())
 }
 
 /// The instruction for `param`: `commands[0]` for axis parameters, `commands[1]` for global ones.

@@ -8,7 +8,7 @@ use std::sync::Arc;
 
 use crate::commission::ParamRef;
 use crate::dialect::replay::parse::Entry;
-use crate::dialect::{CommandLine, Dialect, DialectConfig, DialectSession, Opening, Purpose};
+use crate::dialect::{Dialect, DialectConfig, DialectSession, Opening, Purpose};
 use crate::link::can::Framer;
 use crate::session::SessionError;
 use crate::session::transcript::Header;
@@ -17,8 +17,9 @@ use crate::sim::slcan::CanDevice;
 
 use super::protocol::can::TmclFramer;
 
+use super::flags::switch;
 use super::profile::{Profile, catalogue};
-use super::session::{Connect, Echo, TmclSession};
+use super::session::{Connect, TmclSession};
 use super::sim::{Bus, BusOptions};
 
 /// TMCL with the profile of its modules.
@@ -84,35 +85,6 @@ impl TmclConfig {
     }
 }
 
-/// Whether the switch `id` (`--binary`, `--no-enter`, `--stay-ascii`) is on, by the command
-/// line or a configuration file.
-#[cfg(feature = "cli")]
-fn switch(flags: Option<&CommandLine>, id: &str) -> bool {
-    flags
-        .and_then(|m| m.try_get_one::<bool>(id).ok().flatten().copied())
-        .unwrap_or(false)
-}
-
-/// Without a command line every switch is off: the session enters ASCII mode where the module
-/// has it, and puts the modules back at the end.
-#[cfg(not(feature = "cli"))]
-fn switch(flags: Option<&CommandLine>, _id: &str) -> bool {
-    flags.is_some_and(|never| match *never {})
-}
-
-/// The echo `--echo` (or a configuration file) asks the target module to use, by its word.
-#[cfg(feature = "cli")]
-fn echo_flag(flags: Option<&CommandLine>) -> Option<Echo> {
-    let mut words = flags?.try_get_raw("echo").ok().flatten()?;
-    words.next().and_then(|w| Echo::parse(&w.to_string_lossy()))
-}
-
-/// Without a command line, the module's own echo setting is kept.
-#[cfg(not(feature = "cli"))]
-fn echo_flag(flags: Option<&CommandLine>) -> Option<Echo> {
-    flags.map(|never| match *never {})
-}
-
 impl DialectConfig for TmclConfig {
     fn dialect(&self) -> &'static Dialect {
         &super::DIALECT
@@ -133,7 +105,7 @@ impl DialectConfig for TmclConfig {
     #[cfg(feature = "cli")]
     fn served_simulator(
         &self,
-        flags: &CommandLine,
+        flags: &crate::dialect::CommandLine,
         state: Option<&Path>,
         verbose: bool,
     ) -> Result<Box<dyn Device>, String> {
@@ -169,7 +141,7 @@ impl DialectConfig for TmclConfig {
                 };
                 let mut session =
                     TmclSession::connect(link, profile, connect, options, transcript)?;
-                if let Some(echo) = echo_flag(flags) {
+                if let Some(echo) = super::flags::echo(flags) {
                     let target = session.target();
                     session.set_echo(target, echo)?;
                 }

@@ -3,9 +3,12 @@
 //! and stand-alone programs, and the faces the shell, the REPL and scripts use.
 
 pub mod asm;
+#[cfg(feature = "cli")]
+pub mod cli;
 pub mod commission;
 pub mod complete;
 pub mod config;
+pub mod flags;
 mod grammar;
 mod help;
 pub mod helpers;
@@ -38,16 +41,9 @@ pub static DIALECT: Dialect = Dialect {
     script_functions: script::FUNCTIONS,
     helpers: helpers::HELPERS,
     configure: config::configure,
-    own_options: &[
-        "module",
-        "no_enter",
-        "stay_ascii",
-        "profile",
-        "echo",
-        "binary",
-    ],
+    own_options: &["module", "profile"],
     #[cfg(feature = "cli")]
-    session_flags: crate::dialect::no_flags,
+    session_flags: <flags::SessionFlags as clap::Args>::augment_args,
     #[cfg(feature = "cli")]
     sim_flags: sim::flags::add,
     #[cfg(feature = "cli")]

@@ -217,7 +217,11 @@ fn the_console_shows_the_seed_and_the_injected_faults() {
         ))
     );
     assert!(device.control(now, "seed -1").unwrap().is_err());
-    assert!(device.control(now, "seed many").unwrap().is_err());
+    let refused = device.control(now, "seed many").unwrap().unwrap_err();
+    assert_eq!(
+        refused.to_string(),
+        format!("'many' is not a seed (0..{})", u64::MAX)
+    );
 }
 
 #[test]

@@ -32,6 +32,7 @@ use super::commands::ReplyShape;
 use super::format::{FIXED_DECIMALS, FLOAT_DECIMALS};
 use super::items::{DataItem, Value, is_uuid, parse_hms, parse_named, parse_reply_float};
 use super::reply::{Expectation, Smd4Reply, full_width_flags};
+use super::tolerance::RealTolerance;
 use super::types::{ItemType, parse_dotted};
 
 /// Why a reply is line noise rather than the answer to the request.
@@ -87,47 +88,6 @@ pub enum Noise {
         /// What the command declares.
         expected: String,
     },
-}
-
-/// How far the user and real value of a user/real pair may lie apart: the real value is the
-/// closest the drive's clock divider can produce, so it is near the user value, never far.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RealTolerance {
-    /// Fraction of the user value, including the rounding of both printed values.
-    pub relative: f64,
-    /// Hz or Hz/s, for values near zero.
-    pub absolute: f64,
-}
-
-impl RealTolerance {
-    /// The `[user_real]` tolerances, widened by one unit in the last of `float_digits`
-    /// significant digits; `None` when the data gives none.
-    pub(crate) fn from_data(
-        relative: Option<f64>,
-        absolute: Option<f64>,
-        float_digits: u32,
-    ) -> Result<Option<RealTolerance>, String> {
-        let (Some(relative), Some(absolute)) = (relative, absolute) else {
-            return match (relative, absolute) {
-                (None, None) => Ok(None),
-                _ => Err("[user_real] needs both relative_tolerance and absolute_tolerance".into()),
-            };
-        };
-        if !(relative >= 0.0 && absolute >= 0.0 && relative.is_finite() && absolute.is_finite()) {
-            return Err("[user_real] tolerances must be finite and not negative".into());
-        }
-        let rounding = 10f64.powi(1 - float_digits.max(1) as i32);
-        Ok(Some(RealTolerance {
-            relative: relative + rounding,
-            absolute,
-        }))
-    }
-
-    /// Whether `real` may be what the drive produces for `user`.
-    pub fn admits(&self, user: f64, real: f64) -> bool {
-        let scale = user.abs().max(real.abs());
-        (user - real).abs() <= (self.relative * scale).max(self.absolute)
-    }
 }
 
 /// Whether a reply with address prefix `from` answers a request sent to `to`. A drive may leave

@@ -1,8 +1,8 @@
 //! The SMD4 command table, built from `data/smd4.toml`: what each mnemonic reads and writes, its
 //! argument, its reply shape and the rules around it. Nothing here lists commands by hand.
 
-use super::check::RealTolerance;
 use super::load::{CommandRow, Scalar};
+use super::tolerance::RealTolerance;
 use super::types::{ArgValue, ItemType, parse_arg};
 
 /// What kind of command a mnemonic is.

@@ -21,13 +21,14 @@ pub mod reply;
 pub mod request;
 pub mod sniff;
 pub mod spec;
+pub mod tolerance;
 pub mod types;
 pub mod validate;
 
 #[cfg(test)]
 mod tests;
 
-pub use check::{Noise, RealTolerance, check_reply, is_reply_to};
+pub use check::{Noise, check_reply, is_reply_to};
 pub use commands::{
     ArgProblem, ArgSpec, Choice, Example, Kind, ReplyShape, Smd4Command, Smd4CommandTable,
 };
@@ -40,5 +41,6 @@ pub use multiline::{CollectorState, ReplyCollector, default_quiet_gap};
 pub use reply::{Expectation, ReplyError, Smd4Reply, parse_reply};
 pub use request::{ADDRESSING_HELP, PrefixStyle, Request, RequestError};
 pub use spec::{SimConstants, Smd4Spec, SnapshotSpec};
+pub use tolerance::RealTolerance;
 pub use types::{ArgValue, ItemType};
 pub use validate::{Action, Checked, MAX_ADDRESS, ValidationError, validate};

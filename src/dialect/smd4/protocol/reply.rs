@@ -11,12 +11,12 @@ use nom::character::complete::{char, digit1, one_of};
 use nom::combinator::opt;
 use nom::{IResult, Parser};
 
-use super::check::RealTolerance;
 use super::commands::{ReplyShape, Smd4Command, Smd4CommandTable};
 use super::errors::{DeviceError, ErrorCode};
 use super::flags::{Eflags, Sflags};
 use super::items::{DataItem, Value, parse_named};
 use super::request::Request;
+use super::tolerance::RealTolerance;
 use super::types::{ItemType, parse_int};
 
 /// A parsed reply.

@@ -5,11 +5,11 @@ use std::net::Ipv4Addr;
 use std::sync::OnceLock;
 use std::time::Duration;
 
-use super::check::RealTolerance;
 use super::commands::Smd4CommandTable;
 use super::errors::ErrorInfo;
 use super::flags::FlagTable;
 use super::load::Smd4File;
+use super::tolerance::RealTolerance;
 use crate::commission::SnapshotRules;
 
 /// The data file, kept in the repository as the single source of truth and built into the binary.

@@ -6,7 +6,7 @@ use std::time::Duration;
 
 use crate::commission::ParamDevice;
 use crate::dialect::Dialect;
-use crate::dialect::session::{BusScan, DialectSession, Reply};
+use crate::dialect::session::{BusScan, DialectSession, Reply, run_script};
 use crate::dialect::smd4::protocol::Request;
 use crate::dialect::smd4::{config, render, scan};
 use crate::exit::Failure;
@@ -98,18 +98,9 @@ impl DialectSession for Smd4Session {
         self: Box<Self>,
         script: &Script,
     ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
-        let (session, result) = script.run(
-            *self,
-            |s, text| s.annotate(text),
-            |s| s.take_notices(),
-            |s| s.transcript().is_some_and(|t| t.failure().is_some()),
-            |s| s.stop_motion(),
-            |engine, s, files| {
-                crate::dialect::smd4::script::register(engine, s);
-                crate::script::commission::register(engine, s, files);
-            },
-        );
-        (Box::new(session), result)
+        run_script(*self, script, |engine, s, _| {
+            crate::dialect::smd4::script::register(engine, s)
+        })
     }
 }
 

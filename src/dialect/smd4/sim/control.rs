@@ -6,6 +6,7 @@ use std::time::Duration;
 
 use super::{Limit, Smd4Sim};
 use crate::sim::console::Section;
+use crate::sim::error::ConsoleError;
 
 /// The console's commands, for `tmclsh sim --help` and the console's `help`.
 pub(crate) const CONSOLE: Section = Section {
@@ -46,7 +47,7 @@ pub(super) fn run(
     sim: &mut Smd4Sim,
     now: Duration,
     command: &str,
-) -> Option<Result<String, String>> {
+) -> Option<Result<String, ConsoleError>> {
     let words: Vec<&str> = command.split_whitespace().collect();
     let result = match words.as_slice() {
         ["limit", side, level] => side_of(side).and_then(|side| {
@@ -79,7 +80,7 @@ pub(super) fn run(
                 sim.set_flash_failure(false);
                 Ok("STORE works again".to_string())
             }
-            other => Err(format!("'{other}' is not on or off")),
+            other => Err(ConsoleError::bad(other, "on or off")),
         },
         ["power-cycle"] => {
             sim.power_cycle(now);
@@ -104,35 +105,35 @@ pub(super) fn run(
         ["setting", mnemonic] => sim
             .setting(mnemonic)
             .map(|value| format!("{} = {}", mnemonic.to_ascii_uppercase(), value.text()))
-            .ok_or_else(|| format!("no setting {mnemonic}")),
+            .ok_or_else(|| ConsoleError::NoSetting(mnemonic.to_string())),
         _ => return None,
     };
     Some(result)
 }
 
-fn side_of(text: &str) -> Result<Limit, String> {
+fn side_of(text: &str) -> Result<Limit, ConsoleError> {
     match text {
         "pos" | "positive" | "+" | "1" => Ok(Limit::Positive),
         "neg" | "negative" | "-" | "2" => Ok(Limit::Negative),
-        other => Err(format!("'{other}' is not a limit; use pos or neg")),
+        other => Err(ConsoleError::bad(other, "a limit; use pos or neg")),
     }
 }
 
-fn level_of(text: &str) -> Result<bool, String> {
+fn level_of(text: &str) -> Result<bool, ConsoleError> {
     match text {
         "0" | "low" | "off" | "out" => Ok(false),
         "1" | "high" | "on" | "in" => Ok(true),
-        other => Err(format!("'{other}' is not a level; use 0 or 1")),
+        other => Err(ConsoleError::bad(other, "a level; use 0 or 1")),
     }
 }
 
 /// An EFLAGS bit by number or by name (`TempOver`, `Temp Over`), from the flag table.
-fn fault_bit(sim: &Smd4Sim, text: &str) -> Result<u8, String> {
+fn fault_bit(sim: &Smd4Sim, text: &str) -> Result<u8, ConsoleError> {
     if let Ok(bit) = text.parse::<u8>() {
         return if bit < 16 {
             Ok(bit)
         } else {
-            Err(format!("EFLAGS has bits 0..15, not {bit}"))
+            Err(ConsoleError::NoBit(bit))
         };
     }
     let squash = |s: &str| {
@@ -146,13 +147,13 @@ fn fault_bit(sim: &Smd4Sim, text: &str) -> Result<u8, String> {
     bits.iter()
         .find(|b| squash(&b.name) == wanted || squash(&b.label) == wanted)
         .map(|b| b.bit)
-        .ok_or_else(|| {
-            let known: Vec<String> = bits
+        .ok_or_else(|| ConsoleError::NoFlag {
+            name: text.to_string(),
+            known: bits
                 .iter()
                 .filter(|b| !b.label.starts_with("reserved"))
                 .map(|b| format!("{} {}", b.bit, b.label))
-                .collect();
-            format!("no error flag '{text}'; use one of {}", known.join(", "))
+                .collect(),
         })
 }
 
@@ -162,8 +163,9 @@ mod tests {
 
     use crate::dialect::smd4::sim::{Smd4Sim, Smd4SimOptions};
     use crate::sim::Device;
+    use crate::sim::error::ConsoleError;
 
-    fn control(sim: &mut Smd4Sim, command: &str) -> Result<String, String> {
+    fn control(sim: &mut Smd4Sim, command: &str) -> Result<String, ConsoleError> {
         sim.control(Duration::ZERO, command)
             .expect("an SMD4 console command")
     }
@@ -194,7 +196,9 @@ mod tests {
         assert!(control(&mut sim, "fault Motor Short").is_ok());
         assert!(control(&mut sim, "fault 1").is_ok());
         assert_eq!(sim.eflags().0, 0b1110);
-        let err = control(&mut sim, "fault warp core").unwrap_err();
+        let err = control(&mut sim, "fault warp core")
+            .unwrap_err()
+            .to_string();
         assert!(err.contains("5 EmergencyStop"), "{err}");
         assert!(control(&mut sim, "fault 16").is_err());
         assert!(control(&mut sim, "power-cycle").is_ok());

@@ -28,6 +28,7 @@ use std::time::Duration;
 
 use crate::dialect::smd4::protocol::{Eflags, Request, Sflags, Smd4Spec};
 
+use crate::sim::error::ConsoleError;
 use crate::sim::store::{FileStore, MemoryStore, Store};
 use crate::sim::{Device, LogSink};
 pub use config::{Setting, Settings};
@@ -446,7 +447,7 @@ impl Device for Smd4Sim {
         (!self.output.is_empty()).then_some(now)
     }
 
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, ConsoleError>> {
         control::run(self, now, command)
     }
 }

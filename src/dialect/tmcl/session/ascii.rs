@@ -88,6 +88,16 @@ impl TmclSession {
         self.ascii_request_with(module, text, op, Wait::Reply)
     }
 
+    /// Sends the ASCII barrier `text` to `module` and waits for its refusal (see `barrier.rs`,
+    /// which decides when one is due).
+    pub(super) fn ascii_barrier_request(
+        &mut self,
+        module: u8,
+        text: &str,
+    ) -> Result<TmclExchange, SessionError> {
+        self.ascii_request_with(module, text, None, Wait::Barrier)
+    }
+
     /// As [`Self::ascii_request`], waiting for what `wait` says. A request puts a barrier on
     /// the line first when an earlier one's reply may still come without an echo to tell it.
     pub(super) fn ascii_request_with(

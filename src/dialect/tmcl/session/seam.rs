@@ -6,7 +6,7 @@ use std::time::Duration;
 
 use crate::commission::ParamDevice;
 use crate::dialect::Dialect;
-use crate::dialect::session::{BusScan, DialectSession, Reply};
+use crate::dialect::session::{BusScan, DialectSession, Reply, run_script};
 use crate::dialect::tmcl::{config, render, scan};
 use crate::exit::Failure;
 use crate::script::Script;
@@ -92,18 +92,7 @@ impl DialectSession for TmclSession {
         self: Box<Self>,
         script: &Script,
     ) -> (Box<dyn DialectSession>, Result<(), Failure>) {
-        let (session, result) = script.run(
-            *self,
-            |s, text| s.annotate(text),
-            |s| s.take_notices(),
-            |s| s.transcript().is_some_and(|t| t.failure().is_some()),
-            |s| s.stop_motion(),
-            |engine, s, files| {
-                super::super::script::register(engine, s, files);
-                crate::script::commission::register(engine, s, files);
-            },
-        );
-        (Box::new(session), result)
+        run_script(*self, script, super::super::script::register)
     }
 
     /// Asks every module again what it is and re-enters ASCII mode on those that were in it.

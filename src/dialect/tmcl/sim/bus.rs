@@ -8,6 +8,7 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use crate::dialect::tmcl::profile::Profile;
+use crate::sim::error::ConsoleError;
 use crate::sim::{Device, LogSink};
 
 use super::control_cmd::{self, Controlled};
@@ -136,12 +137,12 @@ impl Bus {
         Bus::new(Profile::builtin(), BusOptions::default())
     }
 
-    fn module(&mut self, slot: u8) -> Result<&mut Module, String> {
-        let slots = self.slots();
+    fn module(&mut self, slot: u8) -> Result<&mut Module, ConsoleError> {
+        let on_bus = self.slots();
         self.modules
             .iter_mut()
             .find(|m| m.machine.slot == slot)
-            .ok_or_else(|| format!("no module {slot} on the bus (modules: {slots:?})"))
+            .ok_or(ConsoleError::NoModule { slot, on_bus })
     }
 
     /// Handles events due by `now` and sends what they produce.
@@ -246,7 +247,7 @@ impl Device for Bus {
             .map(|t| Duration::from_nanos((t.max(0.0) * 1e9).ceil() as u64))
     }
 
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, ConsoleError>> {
         control_cmd::run(self, now, command)
     }
 }
@@ -259,7 +260,7 @@ impl Controlled for Bus {
     /// Power-cycles the module at factory address `slot`, or every module: RAM back to the
     /// stored values, motors standing, program stopped, the interface in the mode GP 67 bit 0
     /// says (binary unless set otherwise).
-    fn reset(&mut self, now: Duration, slot: Option<u8>) -> Result<String, String> {
+    fn reset(&mut self, now: Duration, slot: Option<u8>) -> Result<String, ConsoleError> {
         self.advance(now);
         if let Some(slot) = slot {
             self.module(slot)?;
@@ -282,12 +283,24 @@ impl Controlled for Bus {
         Ok(told.join("; "))
     }
     /// Sets a digital input of a module.
-    fn set_input(&mut self, now: Duration, slot: u8, port: u8, high: bool) -> Result<(), String> {
+    fn set_input(
+        &mut self,
+        now: Duration,
+        slot: u8,
+        port: u8,
+        high: bool,
+    ) -> Result<(), ConsoleError> {
         self.advance(now);
         self.module(slot)?.machine.set_input(port, high)
     }
     /// Sets an analog input of a module (0..adc_max).
-    fn set_analog(&mut self, now: Duration, slot: u8, port: u8, value: i32) -> Result<(), String> {
+    fn set_analog(
+        &mut self,
+        now: Duration,
+        slot: u8,
+        port: u8,
+        value: i32,
+    ) -> Result<(), ConsoleError> {
         self.advance(now);
         self.module(slot)?.machine.io.set_analog(port, value)
     }
@@ -300,16 +313,18 @@ impl Controlled for Bus {
         motor: u8,
         which: Switch,
         position: Option<i64>,
-    ) -> Result<(), String> {
+    ) -> Result<(), ConsoleError> {
         self.advance(now);
         let machine = &mut self.module(slot)?.machine;
-        let (module, count) = (machine.profile.module.clone(), machine.axes.len());
-        let axis = machine.axes.get_mut(usize::from(motor)).ok_or_else(|| {
-            format!(
-                "the {module} has no motor {motor} (motors 0..{})",
-                count - 1
-            )
-        })?;
+        let (module, motors) = (machine.profile.module.clone(), machine.axes.len());
+        let axis = machine
+            .axes
+            .get_mut(usize::from(motor))
+            .ok_or(ConsoleError::NoMotor {
+                module,
+                motor,
+                motors,
+            })?;
         axis.switches.set(which, position);
         axis.settle(secs(now));
         Ok(())

@@ -11,6 +11,7 @@ use crate::dialect::tmcl::protocol::can;
 use crate::dialect::tmcl::protocol::frame::FRAME_LEN;
 use crate::link::can::CanFrame;
 use crate::sim::Device;
+use crate::sim::error::ConsoleError;
 use crate::sim::slcan::CanDevice;
 
 /// A byte-level TMCL bus seen through the CAN framing.
@@ -81,7 +82,7 @@ impl CanDevice for CanBus {
         self.bus.reconnect()
     }
 
-    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, String>> {
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, ConsoleError>> {
         self.bus.control(now, command)
     }
 }

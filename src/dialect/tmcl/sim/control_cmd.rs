@@ -16,6 +16,7 @@ use std::time::Duration;
 
 use super::motion::{MotorState, Switch};
 use crate::sim::console::Section;
+use crate::sim::error::ConsoleError;
 
 /// What the console's commands need of a running bus. The bus implements it (`bus.rs`) and hands
 /// itself to [`run`], so this file does not name the bus back.
@@ -23,11 +24,23 @@ pub(crate) trait Controlled {
     /// Factory addresses of the modules, in bus order.
     fn slots(&self) -> Vec<u8>;
     /// Resets one module or all; says what it did.
-    fn reset(&mut self, now: Duration, slot: Option<u8>) -> Result<String, String>;
+    fn reset(&mut self, now: Duration, slot: Option<u8>) -> Result<String, ConsoleError>;
     /// Sets a digital input.
-    fn set_input(&mut self, now: Duration, slot: u8, port: u8, high: bool) -> Result<(), String>;
+    fn set_input(
+        &mut self,
+        now: Duration,
+        slot: u8,
+        port: u8,
+        high: bool,
+    ) -> Result<(), ConsoleError>;
     /// Sets an analog input.
-    fn set_analog(&mut self, now: Duration, slot: u8, port: u8, value: i32) -> Result<(), String>;
+    fn set_analog(
+        &mut self,
+        now: Duration,
+        slot: u8,
+        port: u8,
+        value: i32,
+    ) -> Result<(), ConsoleError>;
     /// Places (or removes) a switch of a module's motor.
     fn set_switch(
         &mut self,
@@ -36,7 +49,7 @@ pub(crate) trait Controlled {
         motor: u8,
         which: Switch,
         position: Option<i64>,
-    ) -> Result<(), String>;
+    ) -> Result<(), ConsoleError>;
     /// The state of an output.
     fn output(&mut self, now: Duration, slot: u8, port: u8) -> Option<bool>;
     /// What a motor is doing.
@@ -80,7 +93,7 @@ pub(crate) fn run(
     bus: &mut dyn Controlled,
     now: Duration,
     command: &str,
-) -> Option<Result<String, String>> {
+) -> Option<Result<String, ConsoleError>> {
     let mut words: Vec<&str> = command.split_whitespace().collect();
     match words.as_slice() {
         ["reset"] => return Some(bus.reset(now, None)),
@@ -88,7 +101,7 @@ pub(crate) fn run(
             let n = n.strip_prefix('@').unwrap_or(n);
             return Some(
                 n.parse::<u8>()
-                    .map_err(|_| format!("'{n}' is not a module address"))
+                    .map_err(|_| ConsoleError::bad(n, "a module address"))
                     .and_then(|slot| bus.reset(now, Some(slot))),
             );
         }
@@ -109,7 +122,7 @@ pub(crate) fn run(
         ["output", port] => number(port).and_then(|port| {
             bus.output(now, slot, port)
                 .map(|on| format!("output {port} = {}", u8::from(on)))
-                .ok_or_else(|| format!("no output {port}"))
+                .ok_or(ConsoleError::NoOutput(port))
         }),
         ["motor"] => motor_state(bus, now, slot, motor),
         _ => return None,
@@ -119,14 +132,14 @@ pub(crate) fn run(
 
 /// The module a leading `@N` names, taken off `words`; without one, the first module (`None`
 /// on a bus without modules).
-fn take_module(bus: &dyn Controlled, words: &mut Vec<&str>) -> Option<Result<u8, String>> {
+fn take_module(bus: &dyn Controlled, words: &mut Vec<&str>) -> Option<Result<u8, ConsoleError>> {
     let first: Option<&str> = words.first().copied();
     let Some(n) = first.and_then(|w| w.strip_prefix('@')) else {
         return bus.slots().first().map(|slot| Ok(*slot));
     };
     let slot = n
         .parse::<u8>()
-        .map_err(|_| format!("'@{n}' is not a module address"));
+        .map_err(|_| ConsoleError::bad(&format!("@{n}"), "a module address"));
     if slot.is_ok() {
         words.remove(0);
     }
@@ -134,14 +147,14 @@ fn take_module(bus: &dyn Controlled, words: &mut Vec<&str>) -> Option<Result<u8,
 }
 
 /// The motor `switch M WHICH POS` and `motor M` name, taken off `words`; without one, motor 0.
-fn take_motor(words: &mut Vec<&str>) -> Result<u8, String> {
+fn take_motor(words: &mut Vec<&str>) -> Result<u8, ConsoleError> {
     let m = match words.as_slice() {
         ["switch", m, _, _] | ["motor", m] => *m,
         _ => return Ok(0),
     };
     let motor = m
         .parse::<u8>()
-        .map_err(|_| format!("'{m}' is not a motor number"))?;
+        .map_err(|_| ConsoleError::bad(m, "a motor number"))?;
     words.remove(1);
     Ok(motor)
 }
@@ -153,12 +166,12 @@ fn set_input(
     slot: u8,
     port: &str,
     level: &str,
-) -> Result<String, String> {
+) -> Result<String, ConsoleError> {
     let port = number(port)?;
     let high = match level {
         "0" | "low" | "off" => false,
         "1" | "high" | "on" => true,
-        other => return Err(format!("'{other}' is not a level; use 0 or 1")),
+        other => return Err(ConsoleError::bad(other, "a level; use 0 or 1")),
     };
     bus.set_input(now, slot, port, high)
         .map(|()| format!("input {port} = {}", u8::from(high)))
@@ -171,11 +184,11 @@ fn set_analog(
     slot: u8,
     port: &str,
     value: &str,
-) -> Result<String, String> {
+) -> Result<String, ConsoleError> {
     let port = number(port)?;
     let value: i32 = value
         .parse()
-        .map_err(|_| format!("'{value}' is not a number"))?;
+        .map_err(|_| ConsoleError::bad(value, "a number"))?;
     bus.set_analog(now, slot, port, value)
         .map(|()| format!("analog {port} = {value}"))
 }
@@ -187,14 +200,15 @@ fn set_switch(
     (slot, motor): (u8, u8),
     which: &str,
     position: &str,
-) -> Result<String, String> {
+) -> Result<String, ConsoleError> {
     let which = match which {
         "left" => Switch::Left,
         "right" => Switch::Right,
         "home" | "ref" | "reference" => Switch::Home,
         other => {
-            return Err(format!(
-                "'{other}' is not a switch; use left, right or home"
+            return Err(ConsoleError::bad(
+                other,
+                "a switch; use left, right or home",
             ));
         }
     };
@@ -202,7 +216,7 @@ fn set_switch(
         "off" | "none" => None,
         p => Some(
             p.parse::<i64>()
-                .map_err(|_| format!("'{p}' is not a position (or 'off')"))?,
+                .map_err(|_| ConsoleError::bad(p, "a position (or 'off')"))?,
         ),
     };
     bus.set_switch(now, slot, motor, which, position)?;
@@ -220,7 +234,7 @@ fn motor_state(
     now: Duration,
     slot: u8,
     motor: u8,
-) -> Result<String, String> {
+) -> Result<String, ConsoleError> {
     bus.motor_of(now, slot, motor)
         .map(|m| {
             format!(
@@ -231,10 +245,10 @@ fn motor_state(
                 u8::from(m.target_reached)
             )
         })
-        .ok_or_else(|| format!("no module {slot} with a motor {motor}"))
+        .ok_or(ConsoleError::NoModuleMotor { slot, motor })
 }
 
-fn number(text: &str) -> Result<u8, String> {
+fn number(text: &str) -> Result<u8, ConsoleError> {
     text.parse()
-        .map_err(|_| format!("'{text}' is not a port number"))
+        .map_err(|_| ConsoleError::bad(text, "a port number"))
 }

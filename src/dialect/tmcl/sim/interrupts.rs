@@ -16,6 +16,7 @@
 
 use crate::dialect::tmcl::profile::family::{ALL_INTERRUPTS, InterruptKind};
 use crate::dialect::tmcl::protocol::Instruction;
+use crate::sim::error::ConsoleError;
 
 use super::machine::Machine;
 use super::motion::Switch;
@@ -106,7 +107,7 @@ impl Machine {
 
     /// A digital input set from outside: an input interrupt on the port raises when the edge
     /// is one its trigger (bank-3 parameter) asks for.
-    pub(super) fn set_input(&mut self, port: u8, high: bool) -> Result<(), String> {
+    pub(super) fn set_input(&mut self, port: u8, high: bool) -> Result<(), ConsoleError> {
         let before = self.io.read(port, 0).map(|v| v != 0).unwrap_or(high);
         self.io.set_input(port, high)?;
         if before == high {

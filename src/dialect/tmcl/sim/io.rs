@@ -4,6 +4,7 @@
 
 use crate::dialect::tmcl::profile::SimConstants;
 use crate::dialect::tmcl::protocol::Status;
+use crate::sim::error::ConsoleError;
 
 /// GIO/SIO bank numbers.
 const DIGITAL: u8 = 0;
@@ -28,10 +29,14 @@ fn find_mut<T>(ports: &mut [(u8, T)], port: u8) -> Option<&mut T> {
 }
 
 /// Sets input `port` of `inputs` (of a `kind`), or says which inputs there are.
-fn set_input<T>(inputs: &mut [(u8, T)], port: u8, value: T, kind: &str) -> Result<(), String> {
-    let ports: Vec<String> = inputs.iter().map(|(p, _)| p.to_string()).collect();
-    let input = find_mut(inputs, port)
-        .ok_or_else(|| format!("no {kind} input {port}; inputs are {}", ports.join(", ")))?;
+fn set_input<T>(
+    inputs: &mut [(u8, T)],
+    port: u8,
+    value: T,
+    kind: &'static str,
+) -> Result<(), ConsoleError> {
+    let ports = inputs.iter().map(|(p, _)| *p).collect();
+    let input = find_mut(inputs, port).ok_or(ConsoleError::NoInput { kind, port, ports })?;
     *input = value;
     Ok(())
 }
@@ -69,17 +74,18 @@ impl Io {
     }
 
     /// Sets a digital input.
-    pub(super) fn set_input(&mut self, port: u8, high: bool) -> Result<(), String> {
+    pub(super) fn set_input(&mut self, port: u8, high: bool) -> Result<(), ConsoleError> {
         set_input(&mut self.digital, port, high, "digital")
     }
 
     /// Sets an analog input (0..adc_max).
-    pub(super) fn set_analog(&mut self, port: u8, value: i32) -> Result<(), String> {
+    pub(super) fn set_analog(&mut self, port: u8, value: i32) -> Result<(), ConsoleError> {
         if !(0..=self.adc_max).contains(&value) {
-            return Err(format!(
-                "analog value {value} is out of range 0..{}",
-                self.adc_max
-            ));
+            return Err(ConsoleError::OutOfRange {
+                what: "analog value",
+                value,
+                max: self.adc_max,
+            });
         }
         set_input(&mut self.analog, port, value, "analog")
     }

@@ -130,7 +130,7 @@ fn the_switches_of_each_motor_are_its_own() {
     assert_eq!(sim.ok(GAP, 9, 5, 0), 1, "motor 5 stands at its home switch");
     assert_eq!(sim.ok(GAP, 9, 3, 0), 0);
     let err = sim.bus.set_switch(sim.now, 1, 6, Switch::Home, Some(0));
-    assert!(err.unwrap_err().contains("no motor 6"));
+    assert!(err.unwrap_err().to_string().contains("no motor 6"));
 }
 
 #[test]

@@ -9,7 +9,7 @@ use crate::exit::{Exit, Failure};
 
 /// Arguments of `asm`.
 #[derive(Debug, clap::Args)]
-pub(super) struct AsmArgs {
+pub struct AsmArgs {
     /// TMCL source file (as the TMCL-IDE writes it).
     #[arg(value_name = "FILE.tmc")]
     pub file: PathBuf,
@@ -21,10 +21,12 @@ pub(super) struct AsmArgs {
     pub list: bool,
     /// The module's tables (its program memory, its commands).
     #[command(flatten)]
-    pub profile: super::profile_option::ProfileOption,
+    pub profile: crate::cli::profile_option::ProfileOption,
 }
 
-pub(super) fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
+/// Assembles the program: checks it against the profile, prints the listing or writes the
+/// program file.
+pub fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
     let name = args.file.display().to_string();
     let bytes = crate::file::read(&args.file, crate::file::READ_LIMIT)
         .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {e}")))?;

@@ -11,7 +11,7 @@ use crate::dialect::{Configured, Purpose, tmcl};
 use crate::exit::{Exit, Failure};
 use crate::session::{SessionError, interrupt};
 
-use super::connection::{Audience, ModuleArgs};
+use crate::cli::connection::{Audience, ModuleArgs};
 
 /// Arguments of `download`.
 #[derive(Debug, Clone, clap::Args)]
@@ -52,10 +52,10 @@ pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Res
         .map_err(|e| SessionError::Failed(Failure::refused(e.to_string())))
         .and_then(|program| download_and_run(tmcl, &program, args.run));
     for notice in session.take_notices() {
-        super::diagnose(&notice);
+        crate::cli::diagnose(&notice);
     }
     for message in session.close() {
-        super::diagnose(&message);
+        crate::cli::diagnose(&message);
     }
     let text = result?;
     writeln!(out, "{text}").map_err(|e| Failure::new(Exit::Link, e.to_string()))?;
@@ -67,7 +67,7 @@ pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Res
 /// module identified takes it is decided once it is identified.
 fn precheck(bytes: &[u8], file: &Path, configs: &Configured) -> Result<(), Failure> {
     let name = file.display().to_string();
-    let refusal = match load_program(bytes, &name, super::tmcl_profile(configs)) {
+    let refusal = match load_program(bytes, &name, super::profile(configs)) {
         Ok(_) => return Ok(()),
         Err(e) => e,
     };

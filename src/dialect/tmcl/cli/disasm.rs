@@ -9,20 +9,18 @@ use crate::exit::{Exit, Failure};
 
 /// Arguments of `disasm`.
 #[derive(Debug, clap::Args)]
-pub(super) struct DisasmArgs {
+pub struct DisasmArgs {
     /// Program file written by `tmclsh asm -o`.
     #[arg(value_name = "FILE.bin")]
     pub file: PathBuf,
     /// The module's tables (its commands).
     #[command(flatten)]
-    pub profile: super::profile_option::ProfileOption,
+    pub profile: crate::cli::profile_option::ProfileOption,
 }
 
-pub(super) fn run(
-    args: &DisasmArgs,
-    profile: &Profile,
-    out: &mut dyn Write,
-) -> Result<Exit, Failure> {
+/// Turns the program file back into source for the profile, warning of instructions no program
+/// may hold.
+pub fn run(args: &DisasmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
     let name = args.file.display().to_string();
     let bytes = crate::file::read(&args.file, crate::file::READ_LIMIT)
         .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {e}")))?;

@@ -12,11 +12,11 @@ use crate::escape::escape_control;
 use crate::exit::Exit;
 use crate::json::{Value, json};
 
-use super::Failure;
+use crate::exit::Failure;
 
 /// Arguments of `profiles`.
 #[derive(Debug, clap::Args)]
-pub(super) struct ProfilesArgs {
+pub struct ProfilesArgs {
     /// Show this profile in full: a built-in name, alias or module number, or a profile file.
     #[arg(value_name = "NAME|FILE")]
     pub name: Option<PathBuf>,
@@ -26,7 +26,7 @@ pub(super) struct ProfilesArgs {
 }
 
 /// Lists the built-in profiles, or shows one.
-pub(super) fn run(args: &ProfilesArgs, out: &mut dyn Write) -> Result<Exit, Failure> {
+pub fn run(args: &ProfilesArgs, out: &mut dyn Write) -> Result<Exit, Failure> {
     let result = match (&args.name, args.json) {
         (None, false) => list(out),
         (None, true) => {

@@ -9,7 +9,7 @@ use crate::dialect::{Configured, Purpose, tmcl};
 use crate::exit::{Exit, Failure};
 use crate::session::interrupt;
 
-use super::connection::{Audience, ModuleArgs};
+use crate::cli::connection::{Audience, ModuleArgs};
 
 /// Arguments of `upload`.
 #[derive(Debug, Clone, clap::Args)]
@@ -42,10 +42,10 @@ pub fn run(args: UploadArgs, configs: &Configured, out: &mut dyn Write) -> Resul
     let tmcl = tmcl::session(&mut *session).expect("a TMCL session");
     let result = upload_to(tmcl, output, args.max);
     for notice in session.take_notices() {
-        super::diagnose(&notice);
+        crate::cli::diagnose(&notice);
     }
     for message in session.close() {
-        super::diagnose(&message);
+        crate::cli::diagnose(&message);
     }
     let text = result.map_err(Failure::from)?;
     // A closed stdout is decided in `cli::main` (quietly, 141).

@@ -1,0 +1,109 @@
+//! Why a simulator refuses: a console command it cannot run ([`ConsoleError`], the text after
+//! `error: ` on the console's answer line). Both simulators share it, so the same mistake reads
+//! the same on each.
+
+/// Why a console command was refused.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ConsoleError {
+    /// No console knows the command (its first word).
+    #[error("unknown command '{0}'; try help")]
+    Unknown(String),
+    /// The command works only when the simulator is served another way.
+    #[error("{command} needs {what}")]
+    Needs {
+        /// The command (`advance`).
+        command: &'static str,
+        /// What it needs, with the way out where there is one (`--manual-clock`).
+        what: &'static str,
+    },
+    /// A word the command cannot read, and what it takes: `'x' is not a level; use 0 or 1`.
+    #[error("'{word}' is not {expected}")]
+    BadArgument {
+        /// The word as typed.
+        word: String,
+        /// What the command takes there, with a hint how to write it.
+        expected: &'static str,
+    },
+    /// A time `advance` cannot read (the duration grammar's own message).
+    #[error("{0}")]
+    Time(String),
+    /// A value beyond what the device takes: `analog value 5000 is out of range 0..4095`.
+    #[error("{what} {value} is out of range 0..{max}")]
+    OutOfRange {
+        /// What the value is (`analog value`).
+        what: &'static str,
+        /// The value given.
+        value: i32,
+        /// The largest the device takes.
+        max: i32,
+    },
+    /// No module at that factory address on the bus.
+    #[error("no module {slot} on the bus (modules: {on_bus:?})")]
+    NoModule {
+        /// The address asked for.
+        slot: u8,
+        /// The addresses there are.
+        on_bus: Vec<u8>,
+    },
+    /// The module has fewer motors.
+    #[error("the {module} has no motor {motor} (motors 0..{})", .motors - 1)]
+    NoMotor {
+        /// The module's name (`TMCM-142`).
+        module: String,
+        /// The motor asked for.
+        motor: u8,
+        /// How many motors it has.
+        motors: usize,
+    },
+    /// No module at that address with that motor (what `motor [M]` asked about).
+    #[error("no module {slot} with a motor {motor}")]
+    NoModuleMotor {
+        /// The module's factory address.
+        slot: u8,
+        /// The motor.
+        motor: u8,
+    },
+    /// The module has no such output.
+    #[error("no output {0}")]
+    NoOutput(u8),
+    /// The module has no such input, and the ones it has.
+    #[error("no {kind} input {port}; inputs are {}", list(.ports))]
+    NoInput {
+        /// `digital` or `analog`.
+        kind: &'static str,
+        /// The port asked for.
+        port: u8,
+        /// The inputs of that kind there are.
+        ports: Vec<u8>,
+    },
+    /// The drive has no such setting.
+    #[error("no setting {0}")]
+    NoSetting(String),
+    /// The drive has no error flag of that name, and the ones it has.
+    #[error("no error flag '{name}'; use one of {}", .known.join(", "))]
+    NoFlag {
+        /// The name as typed.
+        name: String,
+        /// The flags there are, each `BIT LABEL`.
+        known: Vec<String>,
+    },
+    /// An error flag bit past the 16 of EFLAGS.
+    #[error("EFLAGS has bits 0..15, not {0}")]
+    NoBit(u8),
+}
+
+impl ConsoleError {
+    /// `word` is not what the command takes there (`expected`, with its hint).
+    pub fn bad(word: &str, expected: &'static str) -> Self {
+        ConsoleError::BadArgument {
+            word: word.to_string(),
+            expected,
+        }
+    }
+}
+
+/// Ports as a list in a message: `0, 1, 2`.
+fn list(ports: &[u8]) -> String {
+    let ports: Vec<String> = ports.iter().map(u8::to_string).collect();
+    ports.join(", ")
+}
