@@ -251,6 +251,15 @@ within the repetitions, so that a busy (or idle) spell of the machine hits both 
     system calls per transaction; its own section above has the method and the conditions.
 ";
 
+/// The sentence that says when rows were measured and how busy the machine was.
+pub fn measured_under(rows: &str, date: &str, load_before: &str, load_after: &str) -> String {
+    format!(
+        "{rows}, measured on {date} with load averages (1, 5, 15 min) {load_before} before and \
+         {load_after} after: the machine is shared with other work, so the times include waits \
+         for a CPU that an idle machine would not have."
+    )
+}
+
 /// What the reader should know about targets that were missed.
 fn notes(rows: &[Row]) -> String {
     let missed = |prefix: &str| {
