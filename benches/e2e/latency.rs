@@ -58,3 +58,14 @@ pub fn measure(n: u32, reps: usize) -> Vec<Row> {
 pub fn splice(markdown: &str, rows: &[String]) -> String {
     super::report::splice_rows(markdown, "9. Latency timer", rows)
 }
+
+/// The heading of this part's section.
+pub const HEADING: &str = "## Latency timers";
+
+/// The section that says when row 9 was measured and under what load.
+pub fn section(date: &str, load_before: &str, load_after: &str) -> String {
+    format!(
+        "{HEADING}\n\n{} Only these rows: `cargo bench --bench e2e -- --latency`.\n",
+        crate::report::measured_under("Row 9", date, load_before, load_after)
+    )
+}

@@ -5,7 +5,9 @@
 //! for trying a change, not for publishing. `-- --soak` runs only the fault soak (row 7) and
 //! rewrites only its row and section; `-- --limit` likewise for late replies (row 8);
 //! `-- --latency` for the latency timer rows (row 9), `-- --reconnect` for the reconnect time
-//! (row 10, its row only), `-- --hot` for the hot path (row 11) and the in-process rate (row 3).
+//! (row 10, its row only), `-- --hot` for the hot path (row 11) and the in-process rate (row 3;
+//! `-- --hot --no-in-process` leaves it out), `-- --in-process` for the in-process rate and the
+//! pure parts alone, `-- --wire` for wire efficiency (row 1).
 //! With `-- --reads N` the soak's and late replies' cells make N reads each instead of 20,000
 //! (the table says how many). Linux only: it uses ptys, wait4 and /proc.
 
@@ -143,37 +145,95 @@ fn main() {
     }
     if std::env::args().any(|a| a == "--latency") {
         eprintln!("e2e: the latency timer rows only");
+        let load_before = machine::load();
         let rows = latency::measure(plan.latency_n, plan.latency_reps);
         println!("{}", report::text(&rows));
-        if !quick {
-            let path = proc::repo_file("BENCHMARKS.md");
-            let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-            let lines: Vec<String> = rows.iter().map(report::markdown_line).collect();
-            std::fs::write(&path, latency::splice(&old, &lines)).expect("write BENCHMARKS.md");
-            eprintln!("e2e: wrote the latency rows into {}", path.display());
-        }
-        return;
-    }
-    if std::env::args().any(|a| a == "--hot") {
-        eprintln!("e2e: the hot path and the in-process rate only");
-        let load_before = machine::load();
-        let in_process = local::in_process(plan.in_process_n, plan.in_process_reps);
-        let hot = hot::measure(plan.host_n, plan.host_reps);
-        println!("{}", report::text(std::slice::from_ref(&in_process)));
-        println!("{}", report::text(&hot));
         let load_after = machine::load();
         println!("load average before / after: {load_before} / {load_after}");
         if !quick {
             let path = proc::repo_file("BENCHMARKS.md");
             let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-            let row3 = [report::markdown_line(&in_process)];
-            let new = report::splice_rows(&old, "3. In-process", &row3);
+            let lines: Vec<String> = rows.iter().map(report::markdown_line).collect();
+            let new = latency::splice(&old, &lines);
+            let section = latency::section(&date(), &load_before, &load_after);
+            let new = report::splice_section(&new, latency::HEADING, &section);
+            std::fs::write(&path, new).expect("write BENCHMARKS.md");
+            eprintln!("e2e: wrote the latency rows into {}", path.display());
+        }
+        return;
+    }
+    if std::env::args().any(|a| a == "--wire") {
+        eprintln!("e2e: wire efficiency only (the 9600 baud runs take a while)");
+        let load_before = machine::load();
+        let rows = wire::measure(&plan.wire);
+        println!("{}", report::text(&rows));
+        let load_after = machine::load();
+        println!("load average before / after: {load_before} / {load_after}");
+        if !quick {
+            let path = proc::repo_file("BENCHMARKS.md");
+            let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+            let (lateness, lines) = rows.split_last().expect("the timer lateness row");
+            let lines: Vec<String> = lines.iter().map(report::markdown_line).collect();
+            let new = report::splice_rows(&old, wire::PREFIX, &lines);
+            let new = report::splice_rows(
+                &new,
+                wire::LATENESS_PREFIX,
+                &[report::markdown_line(lateness)],
+            );
+            let section = wire::section(&date(), &load_before, &load_after);
+            let new = report::splice_section(&new, wire::HEADING, &section);
+            std::fs::write(&path, new).expect("write BENCHMARKS.md");
+            eprintln!("e2e: wrote the row 1 lines into {}", path.display());
+        }
+        return;
+    }
+    if std::env::args().any(|a| a == "--hot") {
+        // `--no-in-process`: row 11 alone, row 3 left as it is.
+        let row3 = !std::env::args().any(|a| a == "--no-in-process");
+        eprintln!("e2e: the hot path (row 11) and, unless --no-in-process, the in-process rate");
+        let load_before = machine::load();
+        let in_process = row3.then(|| local::in_process(plan.in_process_n, plan.in_process_reps));
+        let hot = hot::measure(plan.host_n, plan.host_reps);
+        if let Some(row) = &in_process {
+            println!("{}", report::text(std::slice::from_ref(row)));
+        }
+        println!("{}", report::text(&hot));
+        let load_after = machine::load();
+        println!("load average before / after: {load_before} / {load_after}");
+        if !quick {
+            let path = proc::repo_file("BENCHMARKS.md");
+            let mut new = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+            if let Some(row) = &in_process {
+                let row3 = [report::markdown_line(row)];
+                new = report::splice_rows(&new, "3. In-process", &row3);
+            }
             let lines: Vec<String> = hot.iter().map(report::markdown_line).collect();
             let new = report::splice_rows(&new, hot::PREFIX, &lines);
             let section = hot::section(&date(), &load_before, &load_after);
             let new = report::splice_section(&new, hot::HEADING, &section);
             std::fs::write(&path, new).expect("write BENCHMARKS.md");
-            eprintln!("e2e: wrote rows 3 and 11 into {}", path.display());
+            eprintln!("e2e: wrote the hot path rows into {}", path.display());
+        }
+        return;
+    }
+    if std::env::args().any(|a| a == "--in-process") {
+        eprintln!("e2e: the in-process rate and the pure parts only");
+        let in_process = local::in_process(plan.in_process_n, plan.in_process_reps);
+        let pure = cases::run();
+        println!("{}", report::text(std::slice::from_ref(&in_process)));
+        print_pure(&pure);
+        if !quick {
+            let path = proc::repo_file("BENCHMARKS.md");
+            let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
+            let row3 = [report::markdown_line(&in_process)];
+            let new = report::splice_rows(&old, "3. In-process", &row3);
+            let section = report::pure_section(&pure);
+            let new = report::splice_section(&new, report::PURE_HEADING, &section);
+            std::fs::write(&path, new).expect("write BENCHMARKS.md");
+            eprintln!(
+                "e2e: wrote row 3 and the pure parts into {}",
+                path.display()
+            );
         }
         return;
     }
@@ -245,6 +305,8 @@ fn main() {
     let soak_section = soak::section(&soak_cells, &soak_plan, &date);
     let limit_section = soak::limit_section(&limit_cells, &limit_plan, &date);
     let hot_section = hot::section(&date, &load_before, &load_after);
+    let wire_section = wire::section(&date, &load_before, &load_after);
+    let latency_section = latency::section(&date, &load_before, &load_after);
 
     let soak_line = report::markdown_line(rows.last().expect("the soak row"));
     let limit_line = report::markdown_line(&limit_row);
@@ -253,10 +315,7 @@ fn main() {
     rows.push(relink_row);
     rows.extend(hot_rows);
     println!("{}", report::text(&rows));
-    println!("{:<66} {:>12}", "pure part", "ns/op");
-    for case in &pure {
-        println!("{:<66} {:>12.1}", case.name, case.ns);
-    }
+    print_pure(&pure);
     println!("load average before / after: {load_before} / {load_after}");
     if quick {
         eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
@@ -274,6 +333,8 @@ fn main() {
     let markdown = soak::splice(&markdown, &soak_line, &soak_section);
     let markdown = soak::splice_limit(&markdown, &limit_line, &limit_section);
     let markdown = report::splice_section(&markdown, hot::HEADING, &hot_section);
+    let markdown = report::splice_section(&markdown, wire::HEADING, &wire_section);
+    let markdown = report::splice_section(&markdown, latency::HEADING, &latency_section);
     let path = proc::repo_file("BENCHMARKS.md");
     std::fs::write(&path, markdown).expect("write BENCHMARKS.md");
     eprintln!("e2e: wrote {}", path.display());
@@ -309,4 +370,13 @@ fn show_and_write(
     let new = splice(&old, &report::markdown_line(row), section);
     std::fs::write(&path, new).expect("write BENCHMARKS.md");
     eprintln!("e2e: wrote {what} into {}", path.display());
+}
+
+/// The pure parts' timings, as `cargo bench --bench pure` prints them.
+#[cfg(target_os = "linux")]
+fn print_pure(pure: &[cases::Case]) {
+    println!("{:<66} {:>12}", "pure part", "ns/op");
+    for case in pure {
+        println!("{:<66} {:>12.1}", case.name, case.ns);
+    }
 }

@@ -115,12 +115,23 @@ pub fn markdown(run: &Run) -> String {
     for row in run.rows {
         md.push_str(&table_row(&row.cells()));
     }
-    md.push_str("\n## Pure parts\n\n| operation | ns/op (median of batches) |\n|---|---:|\n");
-    for case in run.pure {
-        let _ = writeln!(md, "| {} | {:.1} |", case.name, case.ns);
-    }
+    md.push('\n');
+    md.push_str(&pure_section(run.pure));
     md.push_str(METHOD);
     md.push_str(&notes(run.rows));
+    md
+}
+
+/// The heading of the pure parts' section.
+pub const PURE_HEADING: &str = "## Pure parts";
+
+/// The pure parts' section: its heading and table.
+pub fn pure_section(pure: &[Case]) -> String {
+    let mut md =
+        format!("{PURE_HEADING}\n\n| operation | ns/op (median of batches) |\n|---|---:|\n");
+    for case in pure {
+        let _ = writeln!(md, "| {} | {:.1} |", case.name, case.ns);
+    }
     md
 }
 
@@ -239,6 +250,15 @@ within the repetitions, so that a busy (or idle) spell of the machine hits both 
     without a busy loop added, at 115200 baud against the bare client on a paced simulator, and
     system calls per transaction; its own section above has the method and the conditions.
 ";
+
+/// The sentence that says when rows were measured and how busy the machine was.
+pub fn measured_under(rows: &str, date: &str, load_before: &str, load_after: &str) -> String {
+    format!(
+        "{rows}, measured on {date} with load averages (1, 5, 15 min) {load_before} before and \
+         {load_after} after: the machine is shared with other work, so the times include waits \
+         for a CPU that an idle machine would not have."
+    )
+}
 
 /// What the reader should know about targets that were missed.
 fn notes(rows: &[Row]) -> String {

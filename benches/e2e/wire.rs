@@ -22,6 +22,12 @@ use tmclsh::dialect::tmcl::protocol::{AsciiReply, Status, format_line, parse};
 use crate::proc::{Sim, median, repo_file, run, tmclsh};
 use crate::report::Row;
 
+/// The prefix of this part's rows.
+pub const PREFIX: &str = "1. Wire efficiency";
+
+/// The prefix of the timer lateness row under them.
+pub const LATENESS_PREFIX: &str = "↳ timer wake-up lateness";
+
 /// The echo modes: name, GP 67 value.
 const MODES: [(&str, i64); 3] = [("character echo", 0), ("line echo", 16), ("no echo", 32)];
 
@@ -77,7 +83,7 @@ pub fn measure(lines: &[Line]) -> Vec<Row> {
             let efficiency = limit / measured * 100.0;
             rows.push(Row {
                 name: format!(
-                    "1. Wire efficiency, {} baud, {mode} (N = {}, {})",
+                    "{PREFIX}, {} baud, {mode} (N = {}, {})",
                     line.baud,
                     line.n,
                     crate::proc::runs(line.reps)
@@ -92,7 +98,7 @@ pub fn measure(lines: &[Line]) -> Vec<Row> {
     }
     let late = timer_lateness(2000) * 1e6;
     rows.push(Row {
-        name: "↳ timer wake-up lateness: ppoll for one byte time at 115200 baud, slack 1 ns".into(),
+        name: format!("{LATENESS_PREFIX}: ppoll for one byte time at 115200 baud, slack 1 ns"),
         measured: format!("{late:.1} µs (median of 2000)"),
         reference: "—".into(),
         ratio: "—".into(),
@@ -121,4 +127,17 @@ fn timer_lateness(samples: usize) -> f64 {
     })
     .join()
     .expect("the timer thread")
+}
+
+/// The heading of this part's section.
+pub const HEADING: &str = "## Wire efficiency";
+
+/// The section that says when row 1 was measured, under what load, and how the simulator paces.
+pub fn section(date: &str, load_before: &str, load_after: &str) -> String {
+    format!(
+        "{HEADING}\n\n{} The simulator delivers each byte at its wire time and never before, \
+         waking for it with a timed ppoll (timer slack 1 ns), which comes late by about the \
+         timer lateness row. Only these rows: `cargo bench --bench e2e -- --wire`.\n",
+        crate::report::measured_under("Row 1", date, load_before, load_after)
+    )
 }

@@ -210,10 +210,10 @@ fn device(args: &SimArgs, configs: &Configured) -> Result<Box<dyn Device>, Failu
             ));
         }
     }
-    configs
+    let served = configs
         .of(chosen)
-        .served_simulator(flags, args.state.as_deref(), args.verbose)
-        .map_err(|message| Failure::new(Exit::Refused, message))
+        .served_simulator(flags, args.state.as_deref(), args.verbose)?;
+    Ok(served)
 }
 
 /// The refusal of a simulator flag of `owner` given to the simulation of `chosen`: `--no-ascii

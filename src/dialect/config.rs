@@ -57,14 +57,14 @@ pub trait DialectConfig: AsAny {
     fn simulator(&self) -> Box<dyn Device>;
 
     /// The simulator `tmclsh sim` serves, set up by its flags; `state` keeps what it stores
-    /// across restarts, `verbose` logs its traffic to stderr. The error is a refusal (exit 2).
+    /// across restarts, `verbose` logs its traffic to stderr.
     #[cfg(feature = "cli")]
     fn served_simulator(
         &self,
         flags: &CommandLine,
         state: Option<&Path>,
         verbose: bool,
-    ) -> Result<Box<dyn Device>, String>;
+    ) -> Result<Box<dyn Device>, crate::sim::error::SimStartError>;
 
     /// The framing that carries its sessions over CAN (`--can`), replies taken at `reply_id`;
     /// `None` for a dialect without one.

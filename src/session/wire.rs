@@ -92,7 +92,12 @@ pub(crate) struct Wire {
     pub tally: Tally,
     /// The adapter's echo of what was sent, stripped (`--local-echo`).
     echo: Echo,
+    /// The buffer of [`Wire::fill`] and the drain between exchanges, reused.
+    scratch: Vec<u8>,
 }
+
+/// How much one read of the link takes at most.
+const READ_SIZE: usize = 4096;
 
 impl Wire {
     /// How long `bytes` take on the line at its bit rate; nothing on a link without one (TCP,
@@ -122,6 +127,7 @@ impl Wire {
             pace: Pace::default(),
             took_all: false,
             echo: Echo::default(),
+            scratch: Vec::new(),
         };
         // What the line said of itself on opening (a latency timer left high, modem lines a
         // port lacks) belongs in the transcript too: a log shared later explains itself.
@@ -231,17 +237,31 @@ impl Wire {
     /// `Err(Interrupted)` on Ctrl-C. Callers bound their loops with their own deadline, so a
     /// line that never stops talking cannot keep them.
     pub(crate) fn fill(&mut self, until: Instant) -> Result<bool, SessionError> {
-        let mut buf = [0u8; 4096];
+        let mut buf = self.take_scratch();
+        let result = self.fill_from(until, &mut buf);
+        self.scratch = buf;
+        result
+    }
+
+    /// The buffer reads go through, kept between them: a transaction clears no 4 KiB of stack.
+    fn take_scratch(&mut self) -> Vec<u8> {
+        let mut buf = std::mem::take(&mut self.scratch);
+        buf.resize(READ_SIZE, 0);
+        buf
+    }
+
+    fn fill_from(&mut self, until: Instant, buf: &mut [u8]) -> Result<bool, SessionError> {
         loop {
             if interrupt::pending() {
                 return Err(SessionError::Interrupted);
             }
             let slice_end = until.min(Instant::now() + interrupt::SLICE);
-            match self.link.recv(&mut buf, slice_end) {
+            match self.link.recv(buf, slice_end) {
                 Ok(n) => {
-                    self.pace.record(n);
+                    let heard = Instant::now();
+                    self.pace.record(n, heard);
                     self.took_all = n < buf.len() && self.link.reads_all();
-                    self.last_heard = Some(Instant::now());
+                    self.last_heard = Some(heard);
                     let before = self.rx.len();
                     let taken = self.take_in(&buf[..n])?;
                     if matches!(taken, Taken::Kept) && self.rx.len() == before {

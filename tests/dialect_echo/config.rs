@@ -10,6 +10,7 @@ use tmclsh::dialect::{CommandLine, Dialect, DialectConfig, DialectError, Dialect
 use tmclsh::session::SessionError;
 use tmclsh::session::transcript::Header;
 use tmclsh::sim::Device;
+use tmclsh::sim::error::SimStartError;
 
 use super::session::{EchoSession, NO_PARAMS};
 use super::sim::EchoDevice;
@@ -55,7 +56,7 @@ impl DialectConfig for EchoConfig {
         _: &CommandLine,
         _: Option<&Path>,
         _: bool,
-    ) -> Result<Box<dyn Device>, String> {
+    ) -> Result<Box<dyn Device>, SimStartError> {
         Ok(self.simulator())
     }
 

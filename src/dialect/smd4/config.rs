@@ -58,7 +58,7 @@ impl DialectConfig for Smd4Config {
         flags: &crate::dialect::CommandLine,
         state: Option<&Path>,
         verbose: bool,
-    ) -> Result<Box<dyn Device>, String> {
+    ) -> Result<Box<dyn Device>, crate::sim::error::SimStartError> {
         super::sim::flags::served(flags, state, verbose)
     }
 

@@ -109,7 +109,7 @@ impl DialectConfig for TmclConfig {
         flags: &crate::dialect::CommandLine,
         state: Option<&Path>,
         verbose: bool,
-    ) -> Result<Box<dyn Device>, String> {
+    ) -> Result<Box<dyn Device>, crate::sim::error::SimStartError> {
         super::sim::flags::served(&self.simulated_profile(), flags, state, verbose)
     }
 

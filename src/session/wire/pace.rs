@@ -12,8 +12,8 @@ pub(super) struct Pace {
 }
 
 impl Pace {
-    pub(super) fn record(&mut self, bytes: usize) {
-        let now = Instant::now();
+    /// Notes `bytes` read at `now`.
+    pub(super) fn record(&mut self, bytes: usize, now: Instant) {
         if self.first.is_none() {
             self.first = Some(now);
         } else {

@@ -78,7 +78,9 @@ impl Wire {
         deadline: Instant,
         benign: &mut dyn FnMut(&[u8]) -> bool,
     ) -> Result<Settled, SessionError> {
-        let hard_end = deadline.max(Instant::now() + self.settle_time());
+        // Read from the clock only when there is something to wait for (see below).
+        let settle = self.settle_time();
+        let mut hard_end = None;
         let mut pos = from;
         // The byte that ended the last line: after a CR one LF may complete it, nothing more.
         let mut ended_by = from
@@ -109,20 +111,20 @@ impl Wire {
                     None => break,
                 }
             }
-            let partial = pos < self.rx.len();
-            if Instant::now() >= hard_end {
-                return Ok(if partial {
-                    Settled::Noise
-                } else {
-                    Settled::Clean(pos)
-                });
+            let done = if pos < self.rx.len() {
+                Settled::Noise
+            } else {
+                Settled::Clean(pos)
+            };
+            // A burst the last read took whole has nothing after it: `await_more` says so
+            // without a clock, and so would an end already passed.
+            if self.settle_time().is_zero() && self.took_all {
+                return Ok(done);
             }
-            if !self.await_more(hard_end)? {
-                return Ok(if partial {
-                    Settled::Noise
-                } else {
-                    Settled::Clean(pos)
-                });
+            let now = Instant::now();
+            let hard_end = *hard_end.get_or_insert(deadline.max(now + settle));
+            if now >= hard_end || !self.await_more(hard_end)? {
+                return Ok(done);
             }
         }
     }
@@ -200,10 +202,16 @@ impl Wire {
     /// Takes what arrived outside any exchange (late replies, line noise, events), logging it;
     /// anything but line ends and benign data makes the line suspect.
     pub(crate) fn drain(&mut self, benign: Benign) -> Result<(), SessionError> {
-        let mut buf = [0u8; 4096];
+        let mut buf = self.take_scratch();
+        let result = self.drain_into(benign, &mut buf);
+        self.scratch = buf;
+        result
+    }
+
+    fn drain_into(&mut self, benign: Benign, buf: &mut [u8]) -> Result<(), SessionError> {
         let mut read = 0;
         while read < DRAIN_BUDGET {
-            match self.link.recv(&mut buf, Instant::now()) {
+            match self.link.recv(buf, Instant::now()) {
                 Ok(n) => {
                     read += n;
                     self.last_heard = Some(Instant::now());

@@ -357,6 +357,62 @@ mod tests {
         assert_eq!(device.0, b"SYS:FW\n", "the connection ended");
     }
 
+    /// A device that sends one byte at each of its times, then hangs up.
+    struct Timed {
+        due: Vec<Duration>,
+        sent: usize,
+    }
+
+    impl Device for Timed {
+        fn receive(&mut self, _: Duration, _: &[u8]) {}
+        fn poll_output(&mut self, now: Duration, out: &mut Vec<u8>) {
+            while self.due.get(self.sent).is_some_and(|&d| d <= now) {
+                out.push(self.sent as u8);
+                self.sent += 1;
+            }
+        }
+        fn next_due(&self, _: Duration) -> Option<Duration> {
+            self.due.get(self.sent).copied()
+        }
+        fn hung_up(&self) -> bool {
+            self.sent == self.due.len()
+        }
+    }
+
+    #[test]
+    fn a_paced_byte_never_leaves_before_its_time() {
+        // Bytes 87 µs apart, as at 115200 baud: late by a wake-up at most, never early.
+        let due: Vec<Duration> = (0..20u32)
+            .map(|i| Duration::from_millis(2) + Duration::from_micros(87) * i)
+            .collect();
+        let device: SharedDevice = Arc::new(Mutex::new(Timed {
+            due: due.clone(),
+            sent: 0,
+        }));
+        let clock = Arc::new(crate::clock::SystemClock::new());
+        // Taken after the clock's start, so a byte's time here is never ahead of the clock's.
+        let start = std::time::Instant::now();
+        let (mut client, mut port) = UnixStream::pair().unwrap();
+        let (_waker, wake) = wake_pair().unwrap();
+        let serving = std::thread::spawn(move || {
+            let mut server = Server::new(device, clock, wake, Box::new(|_| {}));
+            server.pump(&mut port, None).unwrap()
+        });
+        let mut arrived = Vec::new();
+        let mut buf = [0u8; 64];
+        while arrived.len() < due.len() {
+            let n = client.read(&mut buf).unwrap();
+            assert!(n > 0, "the server ended early");
+            let at = start.elapsed();
+            arrived.extend(buf[..n].iter().map(|&b| (b, at)));
+        }
+        assert_eq!(serving.join().unwrap(), End::HungUp);
+        for (byte, at) in arrived {
+            let due = due[usize::from(byte)];
+            assert!(at >= due, "byte {byte} came at {at:?}, before {due:?}");
+        }
+    }
+
     #[test]
     fn the_waker_is_polled_until_every_waker_is_gone() {
         let (waker, mut receiver) = wake_pair().unwrap();

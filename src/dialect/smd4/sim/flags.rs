@@ -8,6 +8,7 @@ use clap::{ArgMatches, Args, Command, FromArgMatches};
 use crate::dialect::SimFlags;
 use crate::dialect::smd4::protocol::{ErrorSpelling, FlagCase, FloatStyle, PrefixStyle, Smd4Spec};
 use crate::sim::Device;
+use crate::sim::error::SimStartError;
 
 use super::{PositionFormat, PrefixAcceptance, Smd4Sim, Smd4SimOptions};
 
@@ -147,7 +148,7 @@ pub fn served(
     matches: &ArgMatches,
     state: Option<&Path>,
     verbose: bool,
-) -> Result<Box<dyn Device>, String> {
-    let flags = QuirkFlags::from_arg_matches(matches).map_err(|e| e.to_string())?;
+) -> Result<Box<dyn Device>, SimStartError> {
+    let flags = QuirkFlags::from_arg_matches(matches)?;
     Ok(flags.device(state, verbose))
 }

@@ -40,11 +40,18 @@ impl AsciiReply {
     /// The bytes a module sends for this reply, without line ending (the host character as one
     /// byte, whatever it is).
     pub fn to_bytes(&self) -> Vec<u8> {
-        let mut bytes = vec![host_byte(self.host)];
-        bytes.extend_from_slice(
-            format!("{} {} {}", self.module, self.status.code(), self.value).as_bytes(),
-        );
+        let mut bytes = Vec::new();
+        self.write_to(&mut bytes);
         bytes
+    }
+
+    /// Appends [`AsciiReply::to_bytes`] to `out` (the simulator's reply path, without a buffer
+    /// of its own).
+    pub fn write_to(&self, out: &mut Vec<u8>) {
+        use std::io::Write as _;
+        out.push(host_byte(self.host));
+        // Writing to a Vec cannot fail.
+        let _ = write!(out, "{} {} {}", self.module, self.status.code(), self.value);
     }
 }
 
@@ -86,6 +93,10 @@ pub fn parse_reply(line: &str) -> Option<AsciiReply> {
 /// Parses a reply line as received: each byte is one character, so a host character above 0x7F
 /// is read as what it is.
 pub fn parse_reply_bytes(line: &[u8]) -> Option<AsciiReply> {
+    // ASCII reads the same as UTF-8 and Latin-1: only other bytes need a copy.
+    if line.is_ascii() {
+        return std::str::from_utf8(line).ok().and_then(parse_reply);
+    }
     let text: String = line.iter().map(|&b| char::from(b)).collect();
     parse_reply(&text)
 }

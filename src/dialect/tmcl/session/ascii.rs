@@ -11,6 +11,7 @@
 //! module is preceded by a barrier the module refuses, and every reply before that refusal is
 //! discarded (see `barrier.rs`).
 
+use std::borrow::Cow;
 use std::time::{Duration, Instant};
 
 use crate::dialect::tmcl::protocol::line::{Op, address_char};
@@ -129,7 +130,9 @@ impl TmclSession {
             Err(SessionError::Timeout { .. }) if optional => {}
             // A barrier's failure is the barrier's to record.
             Err(_) if wait == Wait::Barrier => {}
-            Err(_) => self.unanswered.remember(wire_text.into_bytes(), echoed),
+            Err(_) => self
+                .unanswered
+                .remember(wire_text.into_owned().into_bytes(), echoed),
         }
         result
     }
@@ -164,7 +167,8 @@ impl TmclSession {
             echo_seen: false,
             in_junk: false,
             barrier: wait == Wait::Barrier,
-            held: Vec::new(),
+            // Room for the echo and the line ends around it, taken without growing.
+            held: Vec::with_capacity(wire_text.len() + 8),
         };
         loop {
             let found = self.scan(&mut scan, module, echo_required);
@@ -494,13 +498,16 @@ impl TmclSession {
 
     /// The line as it goes on the wire: the canonical text, or — while an identical request is
     /// unanswered — the same with spaces after the address character, so each echo is unique.
-    fn spelling(&self, text: &str) -> String {
+    fn spelling<'a>(&self, text: &'a str) -> Cow<'a, str> {
+        if !self.unanswered.contains(text.as_bytes()) {
+            return Cow::Borrowed(text);
+        }
         let split = text.chars().next().map_or(0, char::len_utf8);
         let (address, rest) = text.split_at(split);
         (0..=MAX_SPACES)
             .map(|spaces| format!("{address}{}{rest}", " ".repeat(spaces)))
             .find(|t| !self.unanswered.contains(t.as_bytes()))
-            .unwrap_or_else(|| text.to_string())
+            .map_or(Cow::Borrowed(text), Cow::Owned)
     }
 }
 

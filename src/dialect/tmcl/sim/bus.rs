@@ -74,6 +74,14 @@ pub struct Bus {
 /// talk for ever.
 const ANSWERS_TO_ANSWERS: usize = 16;
 
+/// Batches of bytes still to reach the modules on a shared line, each with its sender, and how
+/// many answers to answers there were.
+#[derive(Default)]
+struct Relay {
+    queue: std::collections::VecDeque<(Option<usize>, Vec<u8>)>,
+    answers: usize,
+}
+
 fn secs(now: Duration) -> f64 {
     now.as_secs_f64()
 }
@@ -165,36 +173,39 @@ impl Bus {
             }
         }
         if self.shared_line {
-            self.deliver(t, sent);
+            let queue = sent.into();
+            self.deliver(t, Relay { queue, answers: 0 });
         }
     }
 
-    /// Bytes on the line at `t`, each batch with the module that sent it (`None`: the host),
-    /// reach every other module; on a shared line what those send back reaches the others in
-    /// turn (at most [`ANSWERS_TO_ANSWERS`] times).
-    fn deliver(&mut self, t: f64, sent: Vec<(Option<usize>, Vec<u8>)>) {
-        let mut queue: std::collections::VecDeque<_> = sent.into();
-        let mut answers = 0;
-        while let Some((from, bytes)) = queue.pop_front() {
-            for (i, module) in self.modules.iter_mut().enumerate() {
-                if from == Some(i) {
-                    continue;
-                }
-                let mut out = Vec::new();
-                let mut sink = Sink {
-                    out: &mut out,
-                    quirks: &self.quirks,
-                    log: self.log.as_deref_mut(),
-                    t,
-                };
-                module.receive(t, self.byte_time, &bytes, &mut sink);
-                self.out.extend_from_slice(&out);
-                let heard = self.shared_line && answers < ANSWERS_TO_ANSWERS;
-                if heard && !out.is_empty() {
-                    answers += 1;
-                    queue.push_back((Some(i), out));
-                }
+    /// Bytes on the line at `t` from the module `from` (`None`: the host) reach every other
+    /// module, each answer straight into the bus's output; on a shared line what they send back
+    /// is queued to reach the others in turn (at most [`ANSWERS_TO_ANSWERS`] times in all).
+    fn hear(&mut self, t: f64, from: Option<usize>, bytes: &[u8], relay: &mut Relay) {
+        for (i, module) in self.modules.iter_mut().enumerate() {
+            if from == Some(i) {
+                continue;
             }
+            let start = self.out.len();
+            let mut sink = Sink {
+                out: &mut self.out,
+                quirks: &self.quirks,
+                log: self.log.as_deref_mut(),
+                t,
+            };
+            module.receive(t, self.byte_time, bytes, &mut sink);
+            let heard = self.shared_line && relay.answers < ANSWERS_TO_ANSWERS;
+            if heard && self.out.len() > start {
+                relay.answers += 1;
+                relay.queue.push_back((Some(i), self.out[start..].to_vec()));
+            }
+        }
+    }
+
+    /// Delivers what `relay` holds, and the answers to it, in order.
+    fn deliver(&mut self, t: f64, mut relay: Relay) {
+        while let Some((from, bytes)) = relay.queue.pop_front() {
+            self.hear(t, from, &bytes, &mut relay);
         }
     }
 
@@ -223,7 +234,10 @@ impl Bus {
 impl Device for Bus {
     fn receive(&mut self, now: Duration, bytes: &[u8]) {
         self.advance(now);
-        self.deliver(secs(now), vec![(None, bytes.to_vec())]);
+        // The host's bytes are heard where they lie: only answers on a shared line are copied.
+        let mut relay = Relay::default();
+        self.hear(secs(now), None, bytes, &mut relay);
+        self.deliver(secs(now), relay);
         self.save_if_changed(false);
     }
 

@@ -3,12 +3,14 @@
 //! and the choices the manual leaves open.
 
 use std::path::Path;
+use std::str::FromStr;
 use std::sync::Arc;
 
 use clap::{ArgMatches, Args, Command, FromArgMatches};
 
 use crate::dialect::SimFlags;
 use crate::dialect::tmcl::profile::Profile;
+use crate::sim::error::SimStartError;
 use crate::sim::store::FileStore;
 use crate::sim::{Device, LogSink};
 
@@ -176,25 +178,17 @@ pub struct ModuleFlags {
     pub no_ascii: bool,
 
     /// Ending of ASCII replies: none, cr, lf or crlf.
-    #[arg(long, value_name = "END", default_value = "cr", value_parser = line_end, help_heading = "Choices the manual leaves open")]
+    #[arg(long, value_name = "END", default_value = "cr", value_parser = LineEnd::from_str, help_heading = "Choices the manual leaves open")]
     pub reply_end: LineEnd,
 
     /// What follows an echoed line: none, cr, lf or crlf (stands for the typed CR in character
     /// echo mode).
-    #[arg(long, value_name = "END", default_value = "cr", value_parser = line_end, help_heading = "Choices the manual leaves open")]
+    #[arg(long, value_name = "END", default_value = "cr", value_parser = LineEnd::from_str, help_heading = "Choices the manual leaves open")]
     pub echo_end: LineEnd,
 
     /// Echo of a backspace in character echo mode: erase (BS SP BS) or plain (BS).
-    #[arg(long, value_name = "HOW", default_value = "erase", value_parser = backspace, help_heading = "Choices the manual leaves open")]
+    #[arg(long, value_name = "HOW", default_value = "erase", value_parser = Backspace::from_str, help_heading = "Choices the manual leaves open")]
     pub backspace_echo: Backspace,
-}
-
-fn line_end(text: &str) -> Result<LineEnd, String> {
-    text.parse()
-}
-
-fn backspace(text: &str) -> Result<Backspace, String> {
-    text.parse()
 }
 
 /// Adds the flags of `group` to `tmclsh sim`.
@@ -244,16 +238,13 @@ pub fn served(
     matches: &ArgMatches,
     state: Option<&Path>,
     verbose: bool,
-) -> Result<Box<dyn Device>, String> {
-    let bus = BusFlags::from_arg_matches(matches).map_err(|e| e.to_string())?;
-    let module = ModuleFlags::from_arg_matches(matches).map_err(|e| e.to_string())?;
+) -> Result<Box<dyn Device>, SimStartError> {
+    let bus = BusFlags::from_arg_matches(matches)?;
+    let module = ModuleFlags::from_arg_matches(matches)?;
     let mut seen = Vec::new();
     for spec in &bus.modules {
         if seen.contains(&spec.address) {
-            return Err(format!(
-                "module address {} is given twice in --modules",
-                spec.address
-            ));
+            return Err(SimStartError::Twice(spec.address));
         }
         seen.push(spec.address);
     }
@@ -272,18 +263,14 @@ pub fn served(
         Some(BootLoaders::All) => seen.clone(),
         Some(BootLoaders::At(addresses)) => {
             if let Some(a) = addresses.iter().find(|a| !seen.contains(a)) {
-                return Err(format!(
-                    "--boot-loader names module {a}, which is not on the bus (--modules)"
-                ));
+                return Err(SimStartError::BootLoaderOffBus(*a));
             }
             addresses
         }
     };
     let (switches, motor_switches) = switch_layout(&module, &module_profiles)?;
     let eeprom = match state {
-        Some(path) => {
-            Some(Eeprom::open(Box::new(FileStore::new(path))).map_err(|e| e.to_string())?)
-        }
+        Some(path) => Some(Eeprom::open(Box::new(FileStore::new(path)))?),
         None => None,
     };
     let log: Option<LogSink> = verbose.then(|| Box::new(|line: &str| eprintln!("sim {line}")) as _);
@@ -317,7 +304,7 @@ type MotorSwitch = (u8, Switch, i64);
 fn switch_layout(
     flags: &ModuleFlags,
     modules: &[(u8, Arc<Profile>)],
-) -> Result<(Switches, Vec<MotorSwitch>), String> {
+) -> Result<(Switches, Vec<MotorSwitch>), SimStartError> {
     let most = modules
         .iter()
         .map(|(_, p)| p.axes.max(1))
@@ -334,12 +321,13 @@ fn switch_layout(
         for spec in specs {
             match spec.motor {
                 None => every.set(which, Some(spec.position)),
-                Some(m) if m >= most => {
-                    return Err(format!(
-                        "{flag} {m}:{}: no module on the bus has a motor {m} (motors 0..{})",
-                        spec.position,
-                        most - 1
-                    ));
+                Some(motor) if motor >= most => {
+                    return Err(SimStartError::NoMotor {
+                        flag,
+                        motor,
+                        position: spec.position,
+                        motors: most,
+                    });
                 }
                 Some(m) => single.push((m, which, spec.position)),
             }

@@ -36,7 +36,7 @@ pub(crate) use control_cmd::CONSOLE;
 pub use motion::MotorState;
 pub use motion::{Switch, Switches};
 pub use options::{Backspace, LineEnd, Quirks};
-pub use state::{BusImage, Eeprom, ModuleImage, StateError};
+pub use state::{BusImage, Eeprom, ModuleImage};
 
 #[cfg(test)]
 mod tests;

@@ -42,6 +42,10 @@ pub(crate) struct Module {
     decoder: FrameDecoder,
     last_byte: f64,
     line: LineInput,
+    /// The completed line being executed, kept to be filled again by the next one.
+    text: String,
+    /// The last line read and what it asked for (see [`Module::read_line`]).
+    last_line: Option<(String, Result<Op, Status>)>,
 }
 
 impl Module {
@@ -53,6 +57,8 @@ impl Module {
             decoder: FrameDecoder::new(),
             last_byte: 0.0,
             line: LineInput::new(),
+            text: String::new(),
+            last_line: None,
         };
         module.power_up();
         module
@@ -212,9 +218,12 @@ impl Module {
         if !self.line.feed(byte, &cx, sink.out) {
             return;
         }
-        let text = self.line.line().unwrap_or("\u{FFFD}").to_string();
+        let mut text = std::mem::take(&mut self.text);
+        text.clear();
+        text.push_str(self.line.line().unwrap_or("\u{FFFD}"));
         sink.log(|| format!("module {} <- {text:?}", self.machine.slot));
         let (outcome, binary_after) = self.ascii_line(t, &text);
+        self.text = text;
         let reply_wanted = !binary_after || sink.quirks.reply_to_bin;
         if let (Reply::Normal(status, value), true) = (outcome.reply, reply_wanted) {
             self.send_line(status, value, sink);
@@ -226,10 +235,17 @@ impl Module {
         self.apply(outcome.effect);
     }
 
-    /// Executes one ASCII line; the flag says the module goes back to binary mode (BIN).
-    fn ascii_line(&mut self, t: f64, text: &str) -> (Outcome, bool) {
-        let profile = self.machine.profile.clone();
-        let parsed = parse_line(text, |w| profile.commands.is_word(w))
+    /// What a line after its address character asks for, or the status it is refused with. The
+    /// answer depends only on the text and the module's profile, so the last line's is kept: a
+    /// host repeating a request (a polling loop) is not parsed again.
+    fn read_line(&mut self, text: &str) -> Result<Op, Status> {
+        if let Some((last, read)) = &self.last_line {
+            if last == text {
+                return *read;
+            }
+        }
+        let profile = &self.machine.profile;
+        let read = parse_line(text, |w| profile.commands.is_word(w))
             .map_err(InputError::from)
             .and_then(|raw| match raw.address {
                 // The address character was the line's first; another one is not a command.
@@ -237,13 +253,29 @@ impl Module {
                     word: text.to_string(),
                     suggestion: None,
                 }),
-                None => resolve(&raw, &profile),
-            });
-        let line = match parsed {
-            Ok(line) => line,
-            Err(error) => return (Outcome::status(ascii_status(&error), 0), false),
+                None => resolve(&raw, profile),
+            })
+            .map(|line| line.op)
+            .map_err(|error| ascii_status(&error));
+        let mut last = self
+            .last_line
+            .take()
+            .map(|(last, _)| last)
+            .unwrap_or_default();
+        last.clear();
+        last.push_str(text);
+        self.last_line = Some((last, read));
+        read
+    }
+
+    /// Executes one ASCII line; the flag says the module goes back to binary mode (BIN).
+    fn ascii_line(&mut self, t: f64, text: &str) -> (Outcome, bool) {
+        let op = match self.read_line(text) {
+            Ok(op) => op,
+            Err(status) => return (Outcome::status(status, 0), false),
         };
-        match line.op {
+        let profile = &self.machine.profile;
+        match op {
             Op::Ascii(AsciiWord::Bin) => (Outcome::ok(0), true),
             Op::Ascii(AsciiWord::Run) => {
                 let run = Instruction::new(Opcode::RunApplication, 1, 0, 0);
@@ -276,7 +308,7 @@ impl Module {
             value,
         };
         sink.log(|| format!("module {} -> {:?}", self.machine.slot, reply.format()));
-        sink.out.extend_from_slice(&reply.to_bytes());
+        reply.write_to(sink.out);
         sink.out.extend_from_slice(sink.quirks.reply_end.bytes());
     }
 

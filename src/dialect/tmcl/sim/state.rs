@@ -5,7 +5,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::sim::store::{Store, StoreError};
+use crate::sim::error::SimStartError;
+use crate::sim::store::Store;
 
 /// The EEPROM contents of every module on a bus.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
@@ -48,22 +49,6 @@ impl BusImage {
     }
 }
 
-/// Why a state file cannot be used.
-#[derive(Debug, thiserror::Error)]
-pub enum StateError {
-    /// The file exists but cannot be read.
-    #[error(transparent)]
-    Store(#[from] StoreError),
-    /// The file is not a state file.
-    #[error("state file {path} is damaged ({message}); delete it to start from factory settings")]
-    Parse {
-        /// The file.
-        path: String,
-        /// What is wrong.
-        message: String,
-    },
-}
-
 /// The EEPROM image of a bus in its [`Store`]: read once when the simulator starts (a damaged file
 /// is refused then, before anything runs), written whenever a stored value changes.
 pub struct Eeprom {
@@ -73,9 +58,9 @@ pub struct Eeprom {
 
 impl Eeprom {
     /// Reads the image in `store`; an empty store means factory state.
-    pub fn open(store: Box<dyn Store>) -> Result<Eeprom, StateError> {
+    pub fn open(store: Box<dyn Store>) -> Result<Eeprom, SimStartError> {
         let loaded = match store.load()? {
-            Some(text) => Some(toml::from_str(&text).map_err(|e| StateError::Parse {
+            Some(text) => Some(toml::from_str(&text).map_err(|e| SimStartError::Damaged {
                 path: store.name(),
                 message: e.message().to_string(),
             })?),
