@@ -6,6 +6,12 @@ use std::process::{Command, Stdio};
 use crate::sim::Sim;
 use crate::util::{bin, code, repo, stderr, stdout};
 
+/// The reply timeout the example lines run with (`TMCLSH_TIMEOUT`, so a line's own `--timeout`
+/// still wins). These runs prove the examples work, not how fast a reply comes: the default
+/// 1000 ms was overrun once by a `tmclsh sim` process over a pty on a machine loaded ~10 on 2
+/// cores.
+const LOADED_MACHINE_TIMEOUT_MS: &str = "10000";
+
 /// The command lines under "On the simulator" at the top of an example file.
 fn simulator_lines(text: &str) -> Vec<Vec<String>> {
     let mut lines = text
@@ -53,6 +59,7 @@ fn every_example_runs_on_the_simulator_as_its_header_says() {
                 .current_dir(repo())
                 .stdin(Stdio::null())
                 .env("NO_COLOR", "1")
+                .env("TMCLSH_TIMEOUT", LOADED_MACHINE_TIMEOUT_MS)
                 .output()
                 .unwrap();
             assert_eq!(
