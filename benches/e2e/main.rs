@@ -52,6 +52,9 @@ struct Plan {
     wire: Vec<wire::Line>,
     host_n: u32,
     host_reps: usize,
+    /// Row 11: short repetitions, many of them, so each compares runs made close together.
+    hot_n: u32,
+    hot_reps: usize,
     in_process_n: u32,
     in_process_reps: usize,
     start_up_runs: usize,
@@ -80,6 +83,8 @@ impl Plan {
             ],
             host_n: 10_000,
             host_reps: 7,
+            hot_n: 2000,
+            hot_reps: 31,
             in_process_n: 100_000,
             in_process_reps: 5,
             start_up_runs: 51,
@@ -107,6 +112,8 @@ impl Plan {
             ],
             host_n: 2000,
             host_reps: 1,
+            hot_n: 500,
+            hot_reps: 3,
             in_process_n: 20_000,
             in_process_reps: 1,
             start_up_runs: 11,
@@ -193,7 +200,7 @@ fn main() {
         eprintln!("e2e: the hot path (row 11) and, unless --no-in-process, the in-process rate");
         let load_before = machine::load();
         let in_process = row3.then(|| local::in_process(plan.in_process_n, plan.in_process_reps));
-        let hot = hot::measure(plan.host_n, plan.host_reps);
+        let hot = hot::measure(plan.hot_n, plan.hot_reps);
         if let Some(row) = &in_process {
             println!("{}", report::text(std::slice::from_ref(row)));
         }
@@ -297,7 +304,7 @@ fn main() {
     let limit_cells = soak::measure_faults(&limit_plan, &soak::LIMIT_FAULTS);
     let limit_row = soak::limit_row(&limit_cells, &limit_plan);
     step("the hot path: round trips with and without load, system calls");
-    let hot_rows = hot::measure(plan.host_n, plan.host_reps);
+    let hot_rows = hot::measure(plan.hot_n, plan.hot_reps);
     step("the reconnect time: an adapter unplugged under an idle REPL");
     let relink_row = relink::measure(plan.reconnects, &scratch);
     let load_after = machine::load();
