@@ -158,14 +158,12 @@ fn main() {
         let load_after = machine::load();
         println!("load average before / after: {load_before} / {load_after}");
         if !quick {
-            let path = proc::repo_file("BENCHMARKS.md");
-            let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-            let lines: Vec<String> = rows.iter().map(report::markdown_line).collect();
-            let new = latency::splice(&old, &lines);
-            let section = latency::section(&date(), &load_before, &load_after);
-            let new = report::splice_section(&new, latency::HEADING, &section);
-            std::fs::write(&path, new).expect("write BENCHMARKS.md");
-            eprintln!("e2e: wrote the latency rows into {}", path.display());
+            edit_benchmarks("the latency rows", |old| {
+                let lines: Vec<String> = rows.iter().map(report::markdown_line).collect();
+                let new = latency::splice(old, &lines);
+                let section = latency::section(&date(), &load_before, &load_after);
+                report::splice_section(&new, latency::HEADING, &section)
+            });
         }
         return;
     }
@@ -177,20 +175,18 @@ fn main() {
         let load_after = machine::load();
         println!("load average before / after: {load_before} / {load_after}");
         if !quick {
-            let path = proc::repo_file("BENCHMARKS.md");
-            let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-            let (lateness, lines) = rows.split_last().expect("the timer lateness row");
-            let lines: Vec<String> = lines.iter().map(report::markdown_line).collect();
-            let new = report::splice_rows(&old, wire::PREFIX, &lines);
-            let new = report::splice_rows(
-                &new,
-                wire::LATENESS_PREFIX,
-                &[report::markdown_line(lateness)],
-            );
-            let section = wire::section(&date(), &load_before, &load_after);
-            let new = report::splice_section(&new, wire::HEADING, &section);
-            std::fs::write(&path, new).expect("write BENCHMARKS.md");
-            eprintln!("e2e: wrote the row 1 lines into {}", path.display());
+            edit_benchmarks("the row 1 lines", |old| {
+                let (lateness, lines) = rows.split_last().expect("the timer lateness row");
+                let lines: Vec<String> = lines.iter().map(report::markdown_line).collect();
+                let new = report::splice_rows(old, wire::PREFIX, &lines);
+                let new = report::splice_rows(
+                    &new,
+                    wire::LATENESS_PREFIX,
+                    &[report::markdown_line(lateness)],
+                );
+                let section = wire::section(&date(), &load_before, &load_after);
+                report::splice_section(&new, wire::HEADING, &section)
+            });
         }
         return;
     }
@@ -208,18 +204,17 @@ fn main() {
         let load_after = machine::load();
         println!("load average before / after: {load_before} / {load_after}");
         if !quick {
-            let path = proc::repo_file("BENCHMARKS.md");
-            let mut new = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-            if let Some(row) = &in_process {
-                let row3 = [report::markdown_line(row)];
-                new = report::splice_rows(&new, "3. In-process", &row3);
-            }
-            let lines: Vec<String> = hot.iter().map(report::markdown_line).collect();
-            let new = report::splice_rows(&new, hot::PREFIX, &lines);
-            let section = hot::section(&date(), &load_before, &load_after);
-            let new = report::splice_section(&new, hot::HEADING, &section);
-            std::fs::write(&path, new).expect("write BENCHMARKS.md");
-            eprintln!("e2e: wrote the hot path rows into {}", path.display());
+            edit_benchmarks("the hot path rows", |old| {
+                let mut new = old.to_string();
+                if let Some(row) = &in_process {
+                    let row3 = [report::markdown_line(row)];
+                    new = report::splice_rows(&new, "3. In-process", &row3);
+                }
+                let lines: Vec<String> = hot.iter().map(report::markdown_line).collect();
+                let new = report::splice_rows(&new, hot::PREFIX, &lines);
+                let section = hot::section(&date(), &load_before, &load_after);
+                report::splice_section(&new, hot::HEADING, &section)
+            });
         }
         return;
     }
@@ -230,17 +225,12 @@ fn main() {
         println!("{}", report::text(std::slice::from_ref(&in_process)));
         print_pure(&pure);
         if !quick {
-            let path = proc::repo_file("BENCHMARKS.md");
-            let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-            let row3 = [report::markdown_line(&in_process)];
-            let new = report::splice_rows(&old, "3. In-process", &row3);
-            let section = report::pure_section(&pure);
-            let new = report::splice_section(&new, report::PURE_HEADING, &section);
-            std::fs::write(&path, new).expect("write BENCHMARKS.md");
-            eprintln!(
-                "e2e: wrote row 3 and the pure parts into {}",
-                path.display()
-            );
+            edit_benchmarks("row 3 and the pure parts", |old| {
+                let row3 = [report::markdown_line(&in_process)];
+                let new = report::splice_rows(old, "3. In-process", &row3);
+                let section = report::pure_section(&pure);
+                report::splice_section(&new, report::PURE_HEADING, &section)
+            });
         }
         return;
     }
@@ -254,11 +244,9 @@ fn main() {
             eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
             return;
         }
-        let path = proc::repo_file("BENCHMARKS.md");
-        let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-        let new = relink::splice(&old, &report::markdown_line(&row));
-        std::fs::write(&path, new).expect("write BENCHMARKS.md");
-        eprintln!("e2e: wrote the reconnect row into {}", path.display());
+        edit_benchmarks("the reconnect row", |old| {
+            relink::splice(old, &report::markdown_line(&row))
+        });
         return;
     }
     if std::env::args().any(|a| a == "--soak") {
@@ -372,10 +360,17 @@ fn show_and_write(
         eprintln!("e2e: --quick: BENCHMARKS.md is left as it is");
         return;
     }
+    edit_benchmarks(what, |old| {
+        splice(old, &report::markdown_line(row), section)
+    });
+}
+
+/// Rewrites BENCHMARKS.md with `edit`, which splices `what` (named in the message) into it.
+#[cfg(target_os = "linux")]
+fn edit_benchmarks(what: &str, edit: impl FnOnce(&str) -> String) {
     let path = proc::repo_file("BENCHMARKS.md");
     let old = std::fs::read_to_string(&path).expect("read BENCHMARKS.md");
-    let new = splice(&old, &report::markdown_line(row), section);
-    std::fs::write(&path, new).expect("write BENCHMARKS.md");
+    std::fs::write(&path, edit(&old)).expect("write BENCHMARKS.md");
     eprintln!("e2e: wrote {what} into {}", path.display());
 }
 
