@@ -65,17 +65,23 @@ pub fn code(output: &Output) -> i32 {
     output.status.code().expect("tmclsh exited normally")
 }
 
-/// A fresh directory under the target dir (in the system temp dir).
+/// A fresh, empty directory in the system temp dir. Process ids wrap (a container's `pid_max` may
+/// be 32768), so a name left by an earlier run is skipped, never reused.
 pub fn tempdir() -> std::path::PathBuf {
     use std::sync::atomic::{AtomicUsize, Ordering};
     static NEXT: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!(
-        "tmclsh-test-{}-{}",
-        std::process::id(),
-        NEXT.fetch_add(1, Ordering::Relaxed)
-    ));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    loop {
+        let dir = std::env::temp_dir().join(format!(
+            "tmclsh-test-{}-{}",
+            std::process::id(),
+            NEXT.fetch_add(1, Ordering::Relaxed)
+        ));
+        match std::fs::create_dir(&dir) {
+            Ok(()) => return dir,
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => panic!("cannot create {}: {e}", dir.display()),
+        }
+    }
 }
 
 /// `tmclsh ARGS` in a pseudo-terminal, with extra environment variables.

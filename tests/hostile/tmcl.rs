@@ -112,10 +112,7 @@ fn without_an_echo_a_reply_later_than_the_quiet_wait_is_discarded_before_a_barri
     for via in BOTH {
         let fake = Fake::tmcl(via, on("GAP 1, 0", 1, || Act::HoldUntilNext(stale)));
         set_echo(&fake, "none");
-        let log = std::env::temp_dir().join(format!(
-            "tmclsh-hostile-barrier-{}-{via:?}.log",
-            std::process::id()
-        ));
+        let log = crate::util::tempdir().join(format!("barrier-{via:?}.log"));
         let log_arg = log.to_str().unwrap();
         let run = run_script(
             &fake,
