@@ -231,6 +231,13 @@ fn a_module_refusing_139_is_talked_to_in_binary() {
     let out = on(&sim, &log, &["--profile", "tmcm-3110", "-c", "GAP 4, 0"]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert_eq!(stdout(&out).trim_end(), "BA 100 51200");
+    assert!(
+        stderr(&out).contains(
+            "module 1 (A) in binary direct mode: it answered in binary, not in ASCII mode"
+        ),
+        "the operator is told which mode the module is in: {}",
+        stderr(&out)
+    );
     let text = std::fs::read_to_string(&log).unwrap();
     assert!(text.contains("binary reply to 139: status 2"), "{text}");
     assert!(

@@ -134,14 +134,16 @@ impl TmclSession {
         if !self.no_enter {
             match self.enter_ascii(module) {
                 Ok(()) => {}
-                // It answered 136 in binary: it is there, without (working) ASCII mode.
+                // It answered 136 in binary: it is there, without (working) ASCII mode. The
+                // operator asked for ASCII mode (or the profile promised it), so the change is
+                // said on stderr too, not only in the transcript.
                 Err(e @ (SessionError::Timeout { .. } | SessionError::Device { .. }))
                     if self.answered_binary(module) =>
                 {
-                    self.start_binary(
-                        module,
-                        &format!("it answered in binary, not in ASCII mode ({e})"),
-                    )?;
+                    let why = format!("it answered in binary, not in ASCII mode ({e})");
+                    self.start_binary(module, &why)?;
+                    let notice = format!("{} in binary direct mode: {why}", ModuleName(module));
+                    self.core.wire.notices.push(notice);
                     return Ok(WireMode::Binary);
                 }
                 Err(e) => return Err(e),
