@@ -3,8 +3,9 @@
 //!
 //! Scripts reach the module only through the session, reach files only through their
 //! [`sandbox::Sandbox`] (snapshots, recordings and programs, in the script's and the working
-//! directory), cannot touch processes or the network (no module resolver, no I/O functions), and
-//! run with capped operations, call depth, memory and time ([`limits`]).
+//! directory), cannot touch processes or the network (Rhai is built without modules, so an
+//! `import` does not compile; there are no I/O functions), and run with capped operations, call
+//! depth, memory and time ([`limits`]).
 //! Device functions are registered as volatile, so Rhai's optimiser never runs them while
 //! compiling.
 
@@ -271,7 +272,6 @@ fn base_engine(
     engine.set_max_operations(limits.max_operations);
     engine.set_max_call_levels(limits.max_call_depth);
     engine.set_max_expr_depths(128, 64);
-    engine.set_module_resolver(rhai::module_resolvers::DummyModuleResolver::new());
     engine.disable_symbol("eval");
     let print = print.clone();
     engine.on_print(move |text| print(&escape_control(text)));
