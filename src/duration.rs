@@ -10,36 +10,28 @@ use std::time::Duration;
 /// The longest time accepted: a week of recording or simulated time is plenty.
 pub const MAX: Duration = Duration::from_secs(7 * 24 * 3600);
 
-/// Why a text is not an accepted time.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// Why a text is not an accepted time: the text, and what is wrong with it, with examples.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum DurationError {
     /// Not written as a time at all.
-    NotATime,
+    #[error("'{0}' is not a time (e.g. 100ms, 2s, or a number of milliseconds)")]
+    NotATime(String),
     /// A time, but longer than [`MAX`].
-    TooLong,
-}
-
-/// Parses a time; the error says what was wrong, with examples.
-pub fn parse(text: &str) -> Result<Duration, String> {
-    read(text).map_err(|error| match error {
-        DurationError::NotATime => {
-            format!("'{text}' is not a time (e.g. 100ms, 2s, or a number of milliseconds)")
-        }
-        DurationError::TooLong => format!(
-            "'{text}' is longer than {} days, the longest time allowed here",
-            MAX.as_secs() / (24 * 3600)
-        ),
-    })
+    #[error(
+        "'{0}' is longer than {days} days, the longest time allowed here",
+        days = MAX.as_secs() / (24 * 3600)
+    )]
+    TooLong(String),
 }
 
 /// Whether `text` is written as a time, allowed or too long (so a time too long is refused as
 /// such, not taken for a name).
 pub fn is_duration(text: &str) -> bool {
-    !matches!(read(text), Err(DurationError::NotATime))
+    !matches!(parse(text), Err(DurationError::NotATime(_)))
 }
 
-/// Reads a time, telling a text that is no time from one that is too long.
-pub fn read(text: &str) -> Result<Duration, DurationError> {
+/// Parses a time, telling a text that is no time from one that is too long.
+pub fn parse(text: &str) -> Result<Duration, DurationError> {
     let bare = !text.is_empty()
         && text.bytes().any(|b| b.is_ascii_digit())
         && text.bytes().all(|b| b.is_ascii_digit() || b == b'.');
@@ -49,11 +41,11 @@ pub fn read(text: &str) -> Result<Duration, DurationError> {
         humantime::parse_duration(text)
     };
     let time = time.map_err(|e| match e {
-        humantime::DurationError::NumberOverflow => DurationError::TooLong,
-        _ => DurationError::NotATime,
+        humantime::DurationError::NumberOverflow => DurationError::TooLong(text.to_string()),
+        _ => DurationError::NotATime(text.to_string()),
     })?;
     if time > MAX {
-        return Err(DurationError::TooLong);
+        return Err(DurationError::TooLong(text.to_string()));
     }
     Ok(time)
 }
@@ -95,11 +87,15 @@ mod tests {
             "1e3",
             "+5",
         ] {
-            assert_eq!(read(text), Err(DurationError::NotATime), "{text:?}");
+            assert_eq!(
+                parse(text),
+                Err(DurationError::NotATime(text.into())),
+                "{text:?}"
+            );
             assert!(!is_duration(text), "{text:?}");
         }
         assert_eq!(
-            parse("soon").unwrap_err(),
+            parse("soon").unwrap_err().to_string(),
             "'soon' is not a time (e.g. 100ms, 2s, or a number of milliseconds)"
         );
     }
@@ -117,7 +113,11 @@ mod tests {
             "99999999999999999999999",
             "99999999999999999999999y",
         ] {
-            assert_eq!(read(text), Err(DurationError::TooLong), "{text}");
+            assert_eq!(
+                parse(text),
+                Err(DurationError::TooLong(text.into())),
+                "{text}"
+            );
             assert!(is_duration(text), "{text}");
         }
         for text in [
@@ -127,7 +127,7 @@ mod tests {
             "18446744073709551615",
         ] {
             assert_eq!(
-                parse(text).unwrap_err(),
+                parse(text).unwrap_err().to_string(),
                 format!("'{text}' is longer than 7 days, the longest time allowed here"),
             );
         }

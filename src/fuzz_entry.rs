@@ -275,11 +275,11 @@ pub fn profile_toml(data: &[u8]) {
 
 /// A parameter snapshot file: what loads saves to text that loads to the same text.
 pub fn snapshot_toml(data: &[u8]) {
-    let Ok(snapshot) = Snapshot::from_toml(&text(data)) else {
+    let Ok(snapshot) = Snapshot::parse(&text(data)) else {
         return;
     };
     let saved = snapshot.to_toml();
-    let again = Snapshot::from_toml(&saved)
+    let again = Snapshot::parse(&saved)
         .unwrap_or_else(|e| panic!("a saved snapshot does not load: {e}\n{saved}"));
     assert_eq!(again.to_toml(), saved);
 }

@@ -9,6 +9,8 @@ use crate::exit::{Exit, Failure};
 use crate::link::can::{CanBus, CanLink, SlcanLink};
 use crate::link::{LineOptions, Link, SerialLink};
 
+use super::value::ValueError;
+
 /// The modules' CAN bit rate unless told otherwise (the TMCL modules' default, and PyTrinamic's
 /// for every CAN interface).
 pub const DEFAULT_BITRATE: u32 = 1_000_000;
@@ -28,15 +30,13 @@ pub enum CanSpec {
 
 impl CanSpec {
     /// `slcan:PATH` or `socketcan:IFACE`.
-    pub fn parse(text: &str) -> Result<CanSpec, String> {
-        let hint = "give slcan:PATH (a serial-line CAN adapter, e.g. slcan:/dev/ttyACM0) or \
-                    socketcan:IFACE (Linux, e.g. socketcan:can0)";
+    pub fn parse(text: &str) -> Result<CanSpec, ValueError> {
         match text.split_once(':') {
             Some(("slcan", path)) if !path.is_empty() => Ok(CanSpec::Slcan(path.to_string())),
             Some(("socketcan", iface)) if !iface.is_empty() => {
                 Ok(CanSpec::SocketCan(iface.to_string()))
             }
-            _ => Err(format!("'{text}' names no CAN adapter: {hint}")),
+            _ => Err(ValueError::CanAdapter(text.to_string())),
         }
     }
 

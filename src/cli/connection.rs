@@ -20,6 +20,7 @@ use crate::session::{LocalEcho, SessionOptions, Transcript};
 use super::can::{CanSettings, CanSpec, DEFAULT_BITRATE, DEFAULT_REPLY_ID};
 use super::link_kinds::{self, SIM};
 use super::target::{Target, is_log_dir, log_file};
+use super::value::ValueError;
 
 /// Where the module is: a serial port, a TCP address, or the built-in simulator (`--sim`; the
 /// interactive shell's when nothing is given). The kinds of link are listed in `link_kinds`.
@@ -81,31 +82,25 @@ pub struct LineArgs {
     pub keep_latency: bool,
 }
 
-fn parse_can(text: &str) -> Result<CanSpec, String> {
+fn parse_can(text: &str) -> Result<CanSpec, ValueError> {
     CanSpec::parse(text)
 }
 
 /// A bit rate slcan has a code for (`S0`…`S8`).
-fn parse_can_bitrate(text: &str) -> Result<u32, String> {
-    let rates = crate::link::can::slcan::BITRATES;
+fn parse_can_bitrate(text: &str) -> Result<u32, ValueError> {
+    let rates = &crate::link::can::slcan::BITRATES;
     text.trim()
         .parse::<u32>()
         .ok()
         .filter(|bps| rates.contains(bps))
-        .ok_or_else(|| {
-            let list: Vec<String> = rates.iter().map(u32::to_string).collect();
-            format!("a CAN bit rate is one of {}", list.join(", "))
-        })
+        .ok_or(ValueError::CanBitrate(rates))
 }
 
 /// A `--port` value (also `port` in a configuration file, `TMCLSH_PORT`): a device, never a
 /// TCP address, which would otherwise be opened as a file of that name.
-fn parse_port(text: &str) -> Result<String, String> {
+fn parse_port(text: &str) -> Result<String, ValueError> {
     if looks_like_tcp(text) {
-        return Err(format!(
-            "{text} is a TCP address (HOST:PORT), not a serial port: give it with --tcp (or \
-             TMCLSH_TCP, or tcp = \"{text}\" in tmclsh.toml)"
-        ));
+        return Err(ValueError::TcpAsPort(text.to_string()));
     }
     Ok(text.to_string())
 }
@@ -128,13 +123,12 @@ fn looks_like_tcp(text: &str) -> bool {
         && (bracketed || named)
 }
 
-fn modem(text: &str) -> Result<Modem, String> {
-    text.parse()
-        .map_err(|e: crate::link::line::SettingError| e.to_string())
+fn modem(text: &str) -> Result<Modem, ValueError> {
+    Ok(text.parse::<Modem>()?)
 }
 
-fn rs485_delay(text: &str) -> Result<Rs485, String> {
-    Rs485::parse_delay(text).map_err(|e| e.to_string())
+fn rs485_delay(text: &str) -> Result<Rs485, ValueError> {
+    Ok(Rs485::parse_delay(text)?)
 }
 
 impl LineArgs {
@@ -156,22 +150,20 @@ pub const BAUD_RANGE: std::ops::RangeInclusive<u32> = 50..=12_000_000;
 /// A `--baud` value (also `baud` in a configuration file, `TMCLSH_BAUD`): a whole number in
 /// [`BAUD_RANGE`], refused otherwise before anything is opened (0 used to reach the serial link
 /// after the module had been put into ASCII mode).
-pub(super) fn parse_baud(text: &str) -> Result<u32, String> {
-    let hint = format!(
-        "a bit rate is a whole number from {} to {}, such as 9600 or 115200",
-        BAUD_RANGE.start(),
-        BAUD_RANGE.end()
-    );
+pub(super) fn parse_baud(text: &str) -> Result<u32, ValueError> {
     match text.trim().parse::<u32>() {
         Ok(baud) if BAUD_RANGE.contains(&baud) => Ok(baud),
-        _ => Err(hint),
+        _ => Err(ValueError::Baud {
+            lowest: *BAUD_RANGE.start(),
+            highest: *BAUD_RANGE.end(),
+        }),
     }
 }
 
 /// A `--reconnect` time: people's times (`30s`, `2m`, a bare number of milliseconds), at most
 /// 7 days.
-fn parse_wait(text: &str) -> Result<Duration, String> {
-    crate::duration::parse(text.trim())
+fn parse_wait(text: &str) -> Result<Duration, ValueError> {
+    Ok(crate::duration::parse(text.trim())?)
 }
 
 /// Which protocol the module speaks: shared by the faces that talk to a module and by `params`.

@@ -23,6 +23,7 @@ mod sim;
 mod snapshot;
 mod target;
 mod transcript;
+pub mod value;
 
 pub(crate) use diagnose::diagnose;
 

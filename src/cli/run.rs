@@ -177,10 +177,10 @@ fn script_functions() -> String {
 }
 
 /// A time for `--max-time`: `500ms`, `30s`, `2m`, or a number of milliseconds; at least 1 ms.
-fn parse_time(text: &str) -> Result<Duration, String> {
+fn parse_time(text: &str) -> Result<Duration, super::value::ValueError> {
     let time = crate::duration::parse(text)?;
     if time.is_zero() {
-        return Err("the time must be at least 1 ms".into());
+        return Err(super::value::ValueError::ZeroTime);
     }
     Ok(time)
 }

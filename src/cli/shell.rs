@@ -127,7 +127,7 @@ fn wait_for_port(module: &ModuleArgs) -> Result<Waited, Failure> {
     let Some(port) = module.chosen_port() else {
         return Ok(Waited::No);
     };
-    let present = || ports::present(port).map_err(|why| Failure::new(Exit::Refused, why));
+    let present = || ports::present(port).map_err(Failure::from);
     if present()? {
         return Ok(Waited::No);
     }

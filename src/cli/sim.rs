@@ -23,6 +23,8 @@ use crate::sim::latency::Latency;
 use crate::sim::pacing::Paced;
 use crate::sim::slcan::{SlcanAdapter, SlcanOptions};
 
+use super::value::ValueError;
+
 /// Arguments of `sim`.
 #[derive(Debug, clap::Args)]
 #[command(after_long_help = console_help())]
@@ -186,15 +188,15 @@ fn console_help() -> String {
     console::help(all().iter().map(|d| d.console))
 }
 
-fn slcan_ack(text: &str) -> Result<AckStyle, String> {
-    AckStyle::parse(text).ok_or_else(|| format!("'{text}' is no acknowledgement: z, Z, cr or none"))
+fn slcan_ack(text: &str) -> Result<AckStyle, ValueError> {
+    AckStyle::parse(text).ok_or_else(|| ValueError::Acknowledgement(text.to_string()))
 }
 
-fn rate(text: &str) -> Result<f64, String> {
+fn rate(text: &str) -> Result<f64, ValueError> {
     text.parse::<f64>()
         .ok()
         .filter(|r| (0.0..=1.0).contains(r))
-        .ok_or_else(|| format!("'{text}' is not a rate between 0 and 1"))
+        .ok_or_else(|| ValueError::Rate(text.to_string()))
 }
 
 /// The simulated modules of the chosen dialect, after refusing the flags only another

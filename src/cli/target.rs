@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
 
 use crate::dialect::{Dialect, DialectConfig};
-use crate::exit::{Exit, Failure};
+use crate::exit::Failure;
 use crate::link::{LineOptions, Link, LinkError, SerialLink, TcpLink};
 
 use super::can::{CanSettings, CanSpec};
@@ -52,10 +52,7 @@ impl Target {
         match UsbSpec::parse(port) {
             None => Ok(Target::Serial(port.to_string())),
             Some(spec) => {
-                let spec = spec.map_err(|why| Failure::new(Exit::Refused, why))?;
-                let path = find(&spec)
-                    .path()
-                    .map_err(|(exit, why)| Failure::new(exit, why))?;
+                let path = find(&spec?)?;
                 Ok(Target::Usb {
                     name: port.to_string(),
                     path: path.to_string_lossy().into_owned(),
@@ -116,9 +113,8 @@ impl Target {
                         .as_ref()
                         .ok_or_else(|| LinkError::Open("bad name".into()))?;
                     find(spec)
-                        .path()
                         .map(|p| p.to_string_lossy().into_owned())
-                        .map_err(|(_, why)| LinkError::Open(why))
+                        .map_err(|why| LinkError::Open(why.to_string()))
                 };
                 let mut link = SerialLink::open_named(name, baud, line.clone(), Box::new(resolve))?;
                 for note in link.take_notes() {

@@ -44,10 +44,12 @@ pub(super) fn run(
     let Action::ToRhai {
         log, output, wait, ..
     } = args.action;
-    let refused = |what: String| Failure::new(Exit::Refused, format!("{}: {what}", log.display()));
-    let text = read_transcript(&log).map_err(refused)?;
-    let entries = replay::parse::parse(&text).map_err(refused)?;
-    let kind = replay::recognise(&entries).map_err(|e| refused(e.to_string()))?;
+    let refused = |what: &dyn std::fmt::Display| {
+        Failure::new(Exit::Refused, format!("{}: {what}", log.display()))
+    };
+    let text = read_transcript(&log).map_err(|e| refused(&e))?;
+    let entries = replay::parse::parse(&text).map_err(|e| refused(&e))?;
+    let kind = replay::recognise(&entries).map_err(|e| refused(&e))?;
     if let Some(notice) = &kind.notice {
         eprintln!("tmclsh: {}: {notice}", log.display());
     }
@@ -58,10 +60,9 @@ pub(super) fn run(
     let script = configs
         .of(kind.dialect)
         .replay(&entries, kind.header.as_ref(), &name, wait)
-        .map_err(|e| refused(e.to_string()))?;
+        .map_err(|e| refused(&e))?;
     let written = match &output {
-        Some(path) => crate::file::write(path, script.as_bytes())
-            .map_err(|e| std::io::Error::other(e.to_string())),
+        Some(path) => crate::file::write(path, script.as_bytes()).map_err(std::io::Error::other),
         None => out.write_all(script.as_bytes()),
     };
     match written {
@@ -77,14 +78,28 @@ pub(super) fn run(
 const MAX_TRANSCRIPT: u64 = 256 << 20;
 
 /// The transcript's text, refused when it is not text or larger than [`MAX_TRANSCRIPT`].
-fn read_transcript(path: &Path) -> Result<String, String> {
-    let bytes = crate::file::read(path, MAX_TRANSCRIPT).map_err(|e| e.reason)?;
+fn read_transcript(path: &Path) -> Result<String, Unreadable> {
+    let bytes = crate::file::read(path, MAX_TRANSCRIPT).map_err(Unreadable::File)?;
     String::from_utf8(bytes).map_err(|e| {
         let line = e.as_bytes()[..e.utf8_error().valid_up_to()]
             .iter()
             .filter(|&&b| b == b'\n')
             .count()
             + 1;
-        format!("line {line}: not text (transcripts escape every byte they record)")
+        Unreadable::NotText { line }
     })
+}
+
+/// Why a transcript cannot be read (its path goes before the message).
+#[derive(Debug, thiserror::Error)]
+enum Unreadable {
+    /// Not a regular file, missing, too large, not allowed.
+    #[error("{}", .0.reason)]
+    File(crate::file::FileError),
+    /// Bytes that are not UTF-8: a transcript escapes every byte it records.
+    #[error("line {line}: not text (transcripts escape every byte they record)")]
+    NotText {
+        /// The line of the first such byte, from 1.
+        line: usize,
+    },
 }

@@ -53,7 +53,7 @@ impl Side {
                 real: *real,
                 label: label.clone(),
             }),
-            Some(Entry { value: Err(e), .. }) => Side::Unreadable(e.clone()),
+            Some(Entry { value: Err(e), .. }) => Side::Unreadable(e.0.clone()),
             None => Side::Missing,
         }
     }

@@ -142,12 +142,12 @@ impl Recording {
     }
 
     /// Reads a recording back from CSV (as written by tmclsh: a `time_ms` column, then values).
-    pub fn from_csv(text: &str) -> Result<Recording, String> {
+    pub fn from_csv(text: &str) -> Result<Recording, CsvError> {
         let mut lines = text.lines().filter(|l| !l.trim().is_empty());
-        let header = lines.next().ok_or("the file is empty")?;
+        let header = lines.next().ok_or(CsvError::Empty)?;
         let mut names = header.split(',').map(str::trim);
         if names.next() != Some("time_ms") {
-            return Err("the first column is not time_ms".into());
+            return Err(CsvError::NoTime);
         }
         let columns: Vec<String> = names.map(String::from).collect();
         let mut samples = Vec::new();
@@ -155,17 +155,19 @@ impl Recording {
             let row = i + 2;
             let cells: Vec<&str> = line.split(',').map(str::trim).collect();
             if cells.len() != columns.len() + 1 {
-                return Err(format!(
-                    "line {row} has {}, the header {}",
-                    crate::count::counted(cells.len(), "value"),
-                    columns.len() + 1
-                ));
+                return Err(CsvError::Width {
+                    row,
+                    cells: cells.len(),
+                    header: columns.len() + 1,
+                });
             }
             let time_ms = cells[0]
                 .parse::<i64>()
-                .map_err(|_| format!("line {row}: '{}' is not an integer", cells[0]))?;
-            let time_ms =
-                u64::try_from(time_ms).map_err(|_| format!("line {row}: time is negative"))?;
+                .map_err(|_| CsvError::NotAnInteger {
+                    row,
+                    cell: cells[0].to_string(),
+                })?;
+            let time_ms = u64::try_from(time_ms).map_err(|_| CsvError::NegativeTime { row })?;
             let values = cells[1..].iter().map(|c| ParamValue::from_csv(c)).collect();
             samples.push(Sample { time_ms, values });
         }
@@ -187,6 +189,41 @@ impl Recording {
             .iter()
             .all(|s| s.values[column].as_f64().is_some())
     }
+}
+
+/// Why a text is not a recording tmclsh wrote.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum CsvError {
+    /// No line at all.
+    #[error("the file is empty")]
+    Empty,
+    /// The header does not start with the time column.
+    #[error("the first column is not time_ms")]
+    NoTime,
+    /// A row with more or fewer values than the header has columns.
+    #[error("line {row} has {}, the header {header}", crate::count::counted(*cells, "value"))]
+    Width {
+        /// The line, from 1.
+        row: usize,
+        /// How many values it has.
+        cells: usize,
+        /// How many columns the header has.
+        header: usize,
+    },
+    /// A time that is not a whole number.
+    #[error("line {row}: '{cell}' is not an integer")]
+    NotAnInteger {
+        /// The line, from 1.
+        row: usize,
+        /// The time as written.
+        cell: String,
+    },
+    /// A time before the recording started.
+    #[error("line {row}: time is negative")]
+    NegativeTime {
+        /// The line, from 1.
+        row: usize,
+    },
 }
 
 /// The largest recording read back (`:plot FILE`): hours of samples, more than other files.
@@ -383,16 +420,19 @@ mod tests {
         assert!(
             Recording::from_csv("time_ms,a\nx,1\n")
                 .unwrap_err()
+                .to_string()
                 .contains("line 2: 'x'")
         );
         assert!(
             Recording::from_csv("t,a\n")
                 .unwrap_err()
+                .to_string()
                 .contains("time_ms")
         );
         assert!(
             Recording::from_csv("time_ms,a\n0\n")
                 .unwrap_err()
+                .to_string()
                 .contains("line 2 has 1")
         );
     }

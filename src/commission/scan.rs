@@ -21,8 +21,8 @@ pub fn scan_wait(timeout: Duration) -> Duration {
 
 /// Parses an address list: numbers 1..`max` and letters A..Z, single or as ranges, comma
 /// separated (`1-26`, `A-Z`, `A,C,30-40`).
-pub fn parse_addresses(text: &str, max: u8) -> Result<Vec<u8>, String> {
-    let one = |word: &str| -> Result<u8, String> {
+pub fn parse_addresses(text: &str, max: u8) -> Result<Vec<u8>, AddressError> {
+    let one = |word: &str| -> Result<u8, AddressError> {
         let word = word.trim();
         if let Ok(n) = word.parse::<u8>() {
             if (1..=max).contains(&n) {
@@ -32,7 +32,10 @@ pub fn parse_addresses(text: &str, max: u8) -> Result<Vec<u8>, String> {
         let mut chars = word.chars();
         match (chars.next().and_then(letter), chars.next()) {
             (Some(a), None) => Ok(a),
-            _ => Err(format!("'{word}' is not a bus address (1..{max} or A..Z)")),
+            _ => Err(AddressError::NotAnAddress {
+                word: word.to_string(),
+                max,
+            }),
         }
     };
     let mut addresses = Vec::new();
@@ -45,7 +48,7 @@ pub fn parse_addresses(text: &str, max: u8) -> Result<Vec<u8>, String> {
             }
         };
         if lo > hi {
-            return Err(format!("the range '{}' runs backwards", part.trim()));
+            return Err(AddressError::Backwards(part.trim().to_string()));
         }
         for a in lo..=hi {
             if !addresses.contains(&a) {
@@ -55,6 +58,22 @@ pub fn parse_addresses(text: &str, max: u8) -> Result<Vec<u8>, String> {
     }
     addresses.sort_unstable();
     Ok(addresses)
+}
+
+/// Why an address list is refused.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum AddressError {
+    /// A word that is neither a number in range nor a letter.
+    #[error("'{word}' is not a bus address (1..{max} or A..Z)")]
+    NotAnAddress {
+        /// The word as written.
+        word: String,
+        /// The highest address of the dialect.
+        max: u8,
+    },
+    /// A range whose end comes before its start (`5-2`).
+    #[error("the range '{0}' runs backwards")]
+    Backwards(String),
 }
 
 /// A letter as an address: A is 1 … Z is 26 (TMCL's address characters; any dialect may take
@@ -121,11 +140,13 @@ mod tests {
         assert!(
             parse_addresses("0", 255)
                 .unwrap_err()
+                .to_string()
                 .contains("'0' is not a bus address")
         );
         assert!(
             parse_addresses("5-2", 255)
                 .unwrap_err()
+                .to_string()
                 .contains("runs backwards")
         );
         assert!(parse_addresses("AA", 255).is_err());
@@ -133,6 +154,7 @@ mod tests {
         assert!(
             parse_addresses("248", 247)
                 .unwrap_err()
+                .to_string()
                 .contains("'248' is not a bus address (1..247 or A..Z)")
         );
     }

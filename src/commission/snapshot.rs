@@ -71,7 +71,7 @@ pub struct Entry {
     /// Its number, where the dialect numbers parameters.
     pub number: Option<u32>,
     /// The value, or why the module would not tell it.
-    pub value: Result<ParamValue, String>,
+    pub value: Result<ParamValue, Refusal>,
     /// The real value of a user/real pair (informative: the drive derives it).
     pub real: Option<f64>,
     /// The name of an enumerated value (informative).
@@ -98,7 +98,7 @@ impl Snapshot {
             progress.step(&param.name);
             let (value, real, label) = match device.read(param) {
                 Ok(Reading { value, real, label }) => (Ok(value), real, label),
-                Err(e @ SessionError::Device { .. }) => (Err(e.to_string()), None, None),
+                Err(e @ SessionError::Device { .. }) => (Err(Refusal(e.to_string())), None, None),
                 Err(e) => return Err(e),
             };
             entries.push(Entry {
@@ -166,7 +166,7 @@ impl Snapshot {
             }
             match &entry.value {
                 Ok(v) => fields.push(format!("value = {}", v.to_toml())),
-                Err(e) => fields.push(format!("error = {}", quoted(e))),
+                Err(e) => fields.push(format!("error = {}", quoted(&e.0))),
             }
             if let Some(real) = entry.real {
                 fields.push(format!("real = {}", ParamValue::Float(real).to_toml()));
@@ -181,12 +181,8 @@ impl Snapshot {
         out
     }
 
-    /// Parses a snapshot file's text; the error may quote the text.
-    pub fn from_toml(text: &str) -> Result<Snapshot, String> {
-        Snapshot::parse(text).map_err(|e| e.message)
-    }
-
-    /// Parses a snapshot file's text; the error can also be told without quoting it.
+    /// Parses a snapshot file's text; the error may quote the text, and can also be told
+    /// without quoting it.
     pub fn parse(text: &str) -> Result<Snapshot, FileError> {
         let file: File = toml::from_str(text).map_err(|e| FileError {
             message: e.to_string(),
@@ -228,11 +224,11 @@ impl Snapshot {
     pub fn load(path: &Path) -> Result<Snapshot, SessionError> {
         let text = crate::file::read_text(path, crate::file::READ_LIMIT)
             .map_err(|e| SessionError::Usage(format!("cannot read snapshot {e}")))?;
-        Snapshot::from_toml(&text).map_err(|e| {
+        Snapshot::parse(&text).map_err(|e| {
             SessionError::Usage(format!(
                 "{} is not a tmclsh snapshot: {}",
                 path.display(),
-                e.trim_end()
+                e.message.trim_end()
             ))
         })
     }
@@ -293,7 +289,7 @@ impl Row {
                 ),
                 at: Some(line_and_column(text, v.span().start)),
             })?),
-            (None, Some(e)) => Err(e.clone()),
+            (None, Some(e)) => Err(Refusal(e.clone())),
             (None, None) => {
                 return Err(FileError {
                     message: format!("[{section}] {name}: no value"),
@@ -314,8 +310,15 @@ impl Row {
     }
 }
 
+/// Why the module would not tell a parameter's value, as a snapshot keeps it: the module's
+/// refusal when captured, the `error` field when read back.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct Refusal(pub String);
+
 /// Why a text is not a snapshot.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
 pub struct FileError {
     /// What is wrong; it may quote the text.
     pub message: String,

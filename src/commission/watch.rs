@@ -49,7 +49,7 @@ pub fn watch(
         for param in params {
             values.push(match device.read(param) {
                 Ok(v) => Ok(v),
-                Err(e @ SessionError::Device { .. }) => Err(e.to_string()),
+                Err(e @ SessionError::Device { .. }) => Err(e),
                 Err(e) => return Err(e),
             });
         }
@@ -74,7 +74,7 @@ pub fn watch(
 pub fn render(
     header: &str,
     params: &[ParamRef],
-    values: &[Result<Reading, String>],
+    values: &[Result<Reading, SessionError>],
 ) -> Vec<String> {
     let name_width = params
         .iter()
@@ -104,7 +104,7 @@ pub fn render(
     ];
     for ((param, value), original) in params.iter().zip(&shown).zip(values) {
         let tail = match original {
-            Err(e) => e.clone(),
+            Err(e) => e.to_string(),
             Ok(Reading {
                 real: Some(real), ..
             }) => format!("{} (real {})", param.unit, ParamValue::Float(*real)),

@@ -47,6 +47,11 @@ impl LinkError {
             _ => LinkError::Lost(error.to_string()),
         }
     }
+
+    /// A system call on a line that failed: the link is gone, whatever the error.
+    pub(crate) fn from_os(error: io::Error) -> LinkError {
+        LinkError::Lost(error.to_string())
+    }
 }
 
 /// Every way a link fails leaves unknown what the module did.

@@ -189,7 +189,7 @@ impl SerialLink {
         }
         let os = self.os();
         // Reading them first tells a port without modem lines before anything is changed.
-        let mut failed = os.modem_lines().err();
+        let mut failed = os.modem_lines().err().map(|e| e.to_string());
         if let (true, Some(open)) = (failed.is_none(), self.port.as_mut()) {
             let port = &mut open.port;
             let mut results = Vec::new();
@@ -306,7 +306,7 @@ impl SerialLink {
         }
         let bound = self.write_bound(bytes.len());
         let written = write_all(self.port()?, bytes, bound);
-        let drained = self.os().drain().map_err(LinkError::Lost);
+        let drained = self.os().drain().map_err(LinkError::from_os);
         if !mode.after.is_zero() {
             std::thread::sleep(mode.after);
         }

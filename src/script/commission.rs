@@ -69,7 +69,7 @@ fn snapshot_save<S: ParamDevice>(
     // Checked before the module is read, so a refused path costs no time.
     sandbox
         .check_writable(path, Kind::Snapshot)
-        .map_err(|r| refused(r.to_string()))?;
+        .map_err(|r| thrown(r.into()))?;
     let mut session = session.borrow_mut();
     let mut write = |snapshot: &Snapshot| {
         let mut file = sandbox
@@ -135,7 +135,7 @@ fn record_csv<S: ParamDevice>(
     let columns: Vec<String> = plan.params.iter().map(|p| p.name.clone()).collect();
     let file = sandbox
         .create(path, Kind::Recording)
-        .map_err(|r| refused(r.to_string()))?;
+        .map_err(|r| thrown(r.into()))?;
     let mut csv = device(CsvFile::start(file, &columns))?;
     let recording = device(record::record(
         &mut *session,
@@ -151,7 +151,7 @@ fn record_csv<S: ParamDevice>(
 fn load(sandbox: &Sandbox, path: &str) -> Fallible<Snapshot> {
     let bytes = sandbox
         .read(path, READ_LIMIT)
-        .map_err(|r| refused(r.to_string()))?;
+        .map_err(|r| thrown(r.into()))?;
     let text = std::str::from_utf8(&bytes).map_err(|_| {
         refused(format!(
             "{path} is not a tmclsh snapshot: it is not UTF-8 text"

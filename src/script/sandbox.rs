@@ -73,6 +73,13 @@ pub struct PathRefusal {
     pub reason: String,
 }
 
+/// A path a script may not use is refused: nothing was read or written.
+impl crate::exit::ExitStatus for PathRefusal {
+    fn exit(&self) -> crate::exit::Exit {
+        crate::exit::Exit::Refused
+    }
+}
+
 impl Sandbox {
     /// A sandbox of the script's directory, the working directory and `allowed`; `overwrite`
     /// lets file functions replace files tmclsh did not write.

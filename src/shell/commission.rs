@@ -17,6 +17,7 @@ use crate::commission::watch::{self, Key, Screen};
 use crate::dialect::DialectSession;
 use crate::session::SessionError;
 
+use super::helpers::HelperError;
 use super::terminal::{TerminalScreen, interactive, width};
 
 /// What the helpers remember between commands.
@@ -148,7 +149,7 @@ fn params_and_times(
     device: &dyn ParamDevice,
     words: &[&str],
     times: usize,
-) -> Result<(Vec<ParamRef>, Vec<Duration>), String> {
+) -> Result<(Vec<ParamRef>, Vec<Duration>), HelperError> {
     let mut split = words.len();
     while split > 1 && words.len() - split < times && crate::duration::is_duration(words[split - 1])
     {
@@ -161,17 +162,17 @@ fn params_and_times(
     let joined = words[..split].join(",");
     let names: Vec<&str> = joined.split(',').filter(|n| !n.is_empty()).collect();
     if names.is_empty() {
-        return Err("name at least one parameter".into());
+        return Err(HelperError::NoParameter);
     }
     let params = names
         .iter()
-        .map(|n| device.find(n).map_err(|e| e.to_string()))
+        .map(|n| device.find(n))
         .collect::<Result<Vec<_>, _>>()?;
     if let Some(p) = params.iter().find(|p| !p.access.read) {
-        return Err(format!("{} cannot be read", p.name));
+        return Err(HelperError::Unreadable(p.name.clone()));
     }
     if durations.iter().any(Duration::is_zero) {
-        return Err("a time of 0 makes no sense here".into());
+        return Err(HelperError::ZeroTime);
     }
     Ok((params, durations))
 }

@@ -112,7 +112,8 @@ pub fn available(dialect: &'static Dialect) -> impl Iterator<Item = &'static Hel
     all.into_iter().map(|(_, _, h)| h)
 }
 
-/// Why a helper name names no helper (refused like any usage mistake).
+/// Why a helper line is refused, like any usage mistake: its name names no helper, or its
+/// arguments are not what it takes.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum HelperError {
     /// A helper of another dialect.
@@ -145,6 +146,21 @@ pub enum HelperError {
         /// The helpers it could mean.
         candidates: Vec<&'static str>,
     },
+    /// A helper that reads parameters was given none.
+    #[error("name at least one parameter")]
+    NoParameter,
+    /// A parameter name that fits none, or more than one.
+    #[error(transparent)]
+    Parameter(#[from] crate::commission::ParamError),
+    /// A parameter the module cannot read, given to a helper that reads it.
+    #[error("{0} cannot be read")]
+    Unreadable(String),
+    /// A time that is not one, or too long.
+    #[error(transparent)]
+    Time(#[from] crate::duration::DurationError),
+    /// A time of 0 where time must pass.
+    #[error("a time of 0 makes no sense here")]
+    ZeroTime,
 }
 
 /// The helper with this name (without colon), or the unique one it is a prefix of.

@@ -29,8 +29,8 @@ pub enum ConsoleError {
         expected: &'static str,
     },
     /// A time `advance` cannot read (the duration grammar's own message).
-    #[error("{0}")]
-    Time(String),
+    #[error(transparent)]
+    Time(#[from] crate::duration::DurationError),
     /// A value beyond what the device takes: `analog value 5000 is out of range 0..4095`.
     #[error("{what} {value} is out of range 0..{max}")]
     OutOfRange {
@@ -119,6 +119,51 @@ pub enum SimStartError {
     #[cfg(feature = "cli")]
     #[error(transparent)]
     Flags(#[from] clap::Error),
+    /// A module address out of 1..255 (`--modules`).
+    #[error("module address {0} is out of range 1..255")]
+    AddressRange(i64),
+    /// A word that is no module address (`--modules`).
+    #[error("'{0}' is not a module address (1..255)")]
+    NotAnAddress(String),
+    /// `N:` with nothing after the colon (`--modules`).
+    #[error("'{0}' names no profile after the ':'")]
+    NoProfile(String),
+    /// The profile named with a module cannot be had (the dialect's own error).
+    #[error("{0}")]
+    Profile(Box<dyn std::error::Error + Send + Sync>),
+    /// A word of `--boot-loader=LIST` that is no module address.
+    #[error("'{word}' is not a module address (1..255) in --boot-loader={list}")]
+    BootLoaderAddress {
+        /// The word as written.
+        word: String,
+        /// The whole list.
+        list: String,
+    },
+    /// A switch flag's motor that is no motor number.
+    #[error("'{word}' is not a motor number (0..255) in '{spec}'")]
+    NotAMotor {
+        /// The word as written.
+        word: String,
+        /// The whole `MOTOR:POS`.
+        spec: String,
+    },
+    /// A switch position that is no whole number of microsteps.
+    #[error("'{0}' is not a position in microsteps")]
+    NotAPosition(String),
+    /// A value that must be a positive number.
+    #[error("'{0}' is not a positive number")]
+    NotPositive(String),
+    /// A real-value grid coarser than the reply check admits.
+    #[error(
+        "a step of {step} puts real values further from the user value than a drive's \
+         resolution (at most {widest})"
+    )]
+    GridTooCoarse {
+        /// The step given.
+        step: f64,
+        /// The widest step the check admits.
+        widest: f64,
+    },
     /// `--modules` names an address twice.
     #[error("module address {0} is given twice in --modules")]
     Twice(u8),

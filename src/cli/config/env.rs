@@ -29,7 +29,7 @@ pub(in crate::cli) fn apply(cmd: Command) -> Result<Command, clap::Error> {
             None => Some("not UTF-8 text".to_string()),
             // A usb: name is checked as a file's port is.
             Some(text) => match UsbSpec::parse(text) {
-                Some(Err(why)) if id == "port" => Some(why),
+                Some(Err(why)) if id == "port" => Some(why.to_string()),
                 _ => option_accepts(&cmd, &id, text).err(),
             },
         };

@@ -274,7 +274,7 @@ fn checked(
         }
         (Kind::Text, DeValue::String(s)) => {
             if let Some(Err(why)) = UsbSpec::parse(s) {
-                return Err(why);
+                return Err(why.to_string());
             }
             s.to_string()
         }

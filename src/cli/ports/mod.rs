@@ -256,13 +256,13 @@ fn list_ports(all: &[Port], placeholders: bool, out: &mut dyn Write) -> io::Resu
 /// Whether the port `--port` names is there now: a device file that exists, or a `usb:` name
 /// that resolves to exactly one adapter. `Err` for a `usb:` name that is malformed or matches
 /// several adapters (those do not get better by waiting).
-pub(super) fn present(port: &str) -> Result<bool, String> {
+pub(super) fn present(port: &str) -> Result<bool, usb::UsbError> {
     match usb::UsbSpec::parse(port) {
         None => Ok(Path::new(port).exists()),
         Some(spec) => match usb::find(&spec?) {
-            usb::Found::One(_) => Ok(true),
-            usb::Found::None(_) => Ok(false),
-            usb::Found::Several(why) => Err(why),
+            Ok(_) => Ok(true),
+            Err(usb::UsbError::Absent(_)) => Ok(false),
+            Err(several) => Err(several),
         },
     }
 }

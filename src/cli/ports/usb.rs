@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use crate::exit::Exit;
+use crate::exit::{Exit, ExitStatus};
 
 use super::list::{Kind, Port, Usb, ports};
 
@@ -23,15 +23,9 @@ pub(crate) struct UsbSpec {
 impl UsbSpec {
     /// `usb:VID:PID[:SERIAL][:IF]`, ids in hex, the interface a decimal number (`usb:VID:PID::IF`
     /// without a serial number); `None` when `port` is a path.
-    pub(crate) fn parse(port: &str) -> Option<Result<UsbSpec, String>> {
+    pub(crate) fn parse(port: &str) -> Option<Result<UsbSpec, UsbError>> {
         let rest = port.strip_prefix(PREFIX)?;
-        let bad = || {
-            format!(
-                "`{port}`: a USB adapter is named usb:VID:PID, usb:VID:PID:SERIAL or, for one \
-                 port of a multi-port adapter, usb:VID:PID:SERIAL:IF, with the ids in hex as \
-                 `tmclsh ports` shows them (e.g. usb:0403:6001)"
-            )
-        };
+        let bad = || UsbError::Malformed(port.to_string());
         let mut parts = rest.splitn(3, ':');
         let hex = |s: Option<&str>| {
             s.filter(|s| (1..=4).contains(&s.len()))
@@ -89,37 +83,52 @@ impl std::fmt::Display for UsbSpec {
     }
 }
 
-/// Where a port named by USB ids is now.
-#[derive(Debug)]
-pub(crate) enum Found {
-    /// One adapter matches: its device file.
-    One(PathBuf),
-    /// None is plugged in (exit 3 when it is opened: the link is not there).
-    None(String),
-    /// Several match (exit 2: the name does not say which).
-    Several(String),
+/// Why a `usb:` name gives no one port: a malformed name and one several adapters fit are
+/// refused (they do not get better by waiting); one no adapter answers to is a link that is not
+/// there.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub(crate) enum UsbError {
+    /// Not of the form `usb:VID:PID[:SERIAL][:IF]`.
+    #[error(
+        "`{0}`: a USB adapter is named usb:VID:PID, usb:VID:PID:SERIAL or, for one port of a \
+         multi-port adapter, usb:VID:PID:SERIAL:IF, with the ids in hex as `tmclsh ports` shows \
+         them (e.g. usb:0403:6001)"
+    )]
+    Malformed(String),
+    /// No adapter of these ids is plugged in.
+    #[error("no USB adapter {0} is plugged in (`tmclsh ports` lists the serial ports)")]
+    Absent(UsbSpec),
+    /// Several ports fit the name: they are listed, with a name that picks one.
+    #[error("{spec} matches {count} ports: {listed}{hint}")]
+    Several {
+        /// The name as parsed.
+        spec: UsbSpec,
+        /// How many ports fit.
+        count: usize,
+        /// The ports, with what tells them apart.
+        listed: String,
+        /// How to name one of them.
+        hint: String,
+    },
 }
 
-impl Found {
-    /// The device file, or the failure with its exit code.
-    pub(crate) fn path(self) -> Result<PathBuf, (Exit, String)> {
+/// A name no adapter answers to is a link not there (exit 3); the others are refused (exit 2).
+impl ExitStatus for UsbError {
+    fn exit(&self) -> Exit {
         match self {
-            Found::One(path) => Ok(path),
-            Found::None(why) => Err((Exit::Link, why)),
-            Found::Several(why) => Err((Exit::Refused, why)),
+            UsbError::Absent(_) => Exit::Link,
+            UsbError::Malformed(_) | UsbError::Several { .. } => Exit::Refused,
         }
     }
 }
 
 /// Looks the adapter up among the ports of this machine.
-pub(crate) fn find(spec: &UsbSpec) -> Found {
+pub(crate) fn find(spec: &UsbSpec) -> Result<PathBuf, UsbError> {
     let ports = ports().unwrap_or_default();
     let found: Vec<&Port> = ports.iter().filter(|p| spec.matches(p)).collect();
     match found.as_slice() {
-        [one] => Found::One(one.path.clone()),
-        [] => Found::None(format!(
-            "no USB adapter {spec} is plugged in (`tmclsh ports` lists the serial ports)"
-        )),
+        [one] => Ok(one.path.clone()),
+        [] => Err(UsbError::Absent(spec.clone())),
         several => {
             let listed: Vec<String> = several
                 .iter()
@@ -156,12 +165,12 @@ pub(crate) fn find(spec: &UsbSpec) -> Found {
                 )),
                 _ => None,
             });
-            Found::Several(format!(
-                "{spec} matches {} ports: {}{}",
-                several.len(),
-                listed.join(", "),
-                example.unwrap_or_else(|| "; give the device file instead".into())
-            ))
+            Err(UsbError::Several {
+                spec: spec.clone(),
+                count: several.len(),
+                listed: listed.join(", "),
+                hint: example.unwrap_or_else(|| "; give the device file instead".into()),
+            })
         }
     }
 }

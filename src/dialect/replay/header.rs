@@ -7,10 +7,10 @@ use crate::session::transcript::{HEADER_TITLE, Header, split_quoted, unescape};
 impl Header {
     /// Reads a header's text back (the inverse of [`Header::to_text`]); fields it does not know
     /// are skipped, so later versions may add some.
-    pub fn parse(text: &str) -> Result<Header, String> {
+    pub fn parse(text: &str) -> Result<Header, HeaderError> {
         let mut rest = text
             .strip_prefix(HEADER_TITLE)
-            .ok_or_else(|| format!("a header that does not start with '{HEADER_TITLE}'"))?;
+            .ok_or(HeaderError::NoTitle)?;
         let (mut dialect, mut module, mut profile, mut profiles, mut version) =
             (None, None, None, None, None);
         loop {
@@ -20,12 +20,12 @@ impl Header {
             }
             let (key, after) = rest
                 .split_once(' ')
-                .ok_or_else(|| format!("a header field without a value: {rest}"))?;
-            let (quoted, after) = split_quoted(after)
-                .ok_or_else(|| format!("the header field {key} has no quoted value"))?;
+                .ok_or_else(|| HeaderError::NoValue(rest.to_string()))?;
+            let (quoted, after) =
+                split_quoted(after).ok_or_else(|| HeaderError::Unquoted(key.to_string()))?;
             let value = unescape(quoted)
                 .and_then(|b| String::from_utf8(b).ok())
-                .ok_or_else(|| format!("the header field {key} is not text"))?;
+                .ok_or_else(|| HeaderError::NotText(key.to_string()))?;
             match key {
                 "dialect" => dialect = Some(value),
                 "module" => module = Some(value),
@@ -38,17 +38,43 @@ impl Header {
         }
         let dialect = match dialect {
             Some(name) if by_name(&name).is_some() => name,
-            Some(other) => return Err(format!("a header naming the unknown dialect '{other}'")),
-            None => return Err("a header without a dialect".into()),
+            Some(other) => return Err(HeaderError::UnknownDialect(other)),
+            None => return Err(HeaderError::NoDialect),
         };
         Ok(Header {
             dialect,
-            module: module.ok_or("a header without a module")?,
+            module: module.ok_or(HeaderError::NoModule)?,
             profile,
             profiles,
             version: version.unwrap_or_default(),
         })
     }
+}
+
+/// Why a header line cannot be read back.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum HeaderError {
+    /// Not a header this program wrote.
+    #[error("a header that does not start with '{HEADER_TITLE}'")]
+    NoTitle,
+    /// A field name with nothing after it (the rest of the header).
+    #[error("a header field without a value: {0}")]
+    NoValue(String),
+    /// A field whose value is not in quotes.
+    #[error("the header field {0} has no quoted value")]
+    Unquoted(String),
+    /// A field whose value is not UTF-8.
+    #[error("the header field {0} is not text")]
+    NotText(String),
+    /// A dialect no list has.
+    #[error("a header naming the unknown dialect '{0}'")]
+    UnknownDialect(String),
+    /// No dialect field.
+    #[error("a header without a dialect")]
+    NoDialect,
+    /// No module field.
+    #[error("a header without a module")]
+    NoModule,
 }
 
 #[cfg(test)]

@@ -10,6 +10,7 @@ use std::fmt::Write as _;
 
 use crate::exit::{Exit, ExitStatus};
 
+pub use header::HeaderError;
 use parse::{Entry, Record};
 pub use recognise::{Recognised, recognise};
 

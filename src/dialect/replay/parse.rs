@@ -3,6 +3,8 @@
 
 use crate::session::transcript::{self, Header, unescape};
 
+use super::header::HeaderError;
+
 /// One transcript line.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Record {
@@ -34,7 +36,7 @@ pub struct Entry {
 
 /// Parses a whole transcript; blank lines are skipped, anything else malformed is an error that
 /// names the line — except an unfinished last line, which a full disk cuts short: it is left out.
-pub fn parse(text: &str) -> Result<Vec<Entry>, String> {
+pub fn parse(text: &str) -> Result<Vec<Entry>, ParseError> {
     let mut entries = Vec::new();
     let count = text.lines().count();
     for (i, raw) in text.lines().enumerate() {
@@ -63,17 +65,21 @@ fn cut_short(raw: &str) -> bool {
 }
 
 /// One line: `None` when blank.
-fn parse_line(line: usize, raw: &str) -> Result<Option<Entry>, String> {
+fn parse_line(line: usize, raw: &str) -> Result<Option<Entry>, ParseError> {
     if raw.trim().is_empty() {
         return Ok(None);
     }
-    let bad = |what: &str| format!("line {line}: {what}: {}", excerpt(raw));
+    let bad = |what| ParseError::Line {
+        line,
+        what,
+        excerpt: excerpt(raw),
+    };
     let (time, rest) = raw.split_once(' ').ok_or_else(|| bad("no time stamp"))?;
     let (tag, rest) = rest.split_once(' ').unwrap_or((rest, ""));
     let record = match tag {
         "--" => Record::Note(rest.to_string()),
         transcript::HEADER_TAG => {
-            Record::Header(Header::parse(rest).map_err(|e| format!("line {line}: {e}"))?)
+            Record::Header(Header::parse(rest).map_err(|why| ParseError::Header { line, why })?)
         }
         "tx" | "rx" => {
             let (quoted, meaning) = split_quoted(rest).ok_or_else(|| bad("no quoted bytes"))?;
@@ -94,6 +100,29 @@ fn parse_line(line: usize, raw: &str) -> Result<Option<Entry>, String> {
         time: time.to_string(),
         record,
     }))
+}
+
+/// Why a transcript's text cannot be read back: the line, and what is wrong with it.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ParseError {
+    /// A line that is no transcript line, and its start.
+    #[error("line {line}: {what}: {excerpt}")]
+    Line {
+        /// The line, from 1.
+        line: usize,
+        /// What is missing or wrong.
+        what: &'static str,
+        /// The line's start, escaped.
+        excerpt: String,
+    },
+    /// A header line that cannot be read.
+    #[error("line {line}: {why}")]
+    Header {
+        /// The line, from 1.
+        line: usize,
+        /// Why.
+        why: HeaderError,
+    },
 }
 
 /// The start of a line for a message: escaped, and cut short (the file may be anything).
@@ -157,7 +186,10 @@ mod tests {
 
     #[test]
     fn malformed_lines_are_refused_with_their_number() {
-        assert_eq!(parse("x\n").unwrap_err(), "line 1: no time stamp: \"x\"");
+        assert_eq!(
+            parse("x\n").unwrap_err().to_string(),
+            "line 1: no time stamp: \"x\""
+        );
         // A last line cut inside its time stamp by a full disk is left out.
         let cut = "2026-01-01T00:00:00.000Z -- session opened\n2026-01-01T00:00:0";
         assert_eq!(parse(cut).unwrap().len(), 1);
@@ -165,23 +197,31 @@ mod tests {
         assert_eq!(parse("t -- a\nt tx \"AG").unwrap().len(), 1, "cut short");
         assert!(parse("t tx \"AG\nt -- a\n").is_err());
         assert!(parse("t tx \"AG\n").is_err(), "a whole line");
-        let error = parse("t -- ok\nt zz \"a\"\n").unwrap_err();
+        let error = parse("t -- ok\nt zz \"a\"\n").unwrap_err().to_string();
         assert!(
             error.starts_with("line 2: not a transcript line"),
             "{error}"
         );
         let long = format!("t zz \x1b[2J{}", "x".repeat(10_000));
-        let error = parse(&long).unwrap_err();
+        let error = parse(&long).unwrap_err().to_string();
         assert!(error.len() < 200 && error.contains("\\x1B[2J"), "{error}");
-        let error = parse("t ## tmclsh transcript: dialect \"x\", module \"y\"\n").unwrap_err();
+        let error = parse("t ## tmclsh transcript: dialect \"x\", module \"y\"\n")
+            .unwrap_err()
+            .to_string();
         assert!(
             error.starts_with("line 1: a header naming the unknown dialect 'x'"),
             "{error}"
         );
-        assert!(parse("t tx \"\\q\"\n").unwrap_err().contains("bad escape"));
+        assert!(
+            parse("t tx \"\\q\"\n")
+                .unwrap_err()
+                .to_string()
+                .contains("bad escape")
+        );
         assert!(
             parse("t tx unquoted\n")
                 .unwrap_err()
+                .to_string()
                 .contains("no quoted bytes")
         );
     }

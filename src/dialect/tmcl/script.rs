@@ -14,7 +14,7 @@ use crate::dialect::tmcl::protocol::{Instruction, Opcode, Status};
 use crate::dialect::tmcl::session::{TmclExchange, TmclReply, TmclSession};
 
 use crate::script::common::duration;
-use crate::script::failure::{Fallible, device, refused};
+use crate::script::failure::{Fallible, device, refused, thrown};
 use crate::script::registry::ScriptFn;
 use crate::script::sandbox::{READ_LIMIT, Sandbox};
 use crate::script::volatile;
@@ -457,7 +457,7 @@ fn axis(session: &Shared, param: &Dynamic) -> Fallible<u8> {
     s.profile()
         .find_axis(&name)
         .map(|p| p.number)
-        .map_err(|e| refused(e.to_string()))
+        .map_err(|e| thrown(e.into()))
 }
 
 /// A global parameter given by number or name (a name must be in `bank`).
@@ -470,7 +470,7 @@ fn global(session: &Shared, param: &Dynamic, bank: INT) -> Fallible<u8> {
     let p = s
         .profile()
         .find_global(&name)
-        .map_err(|e| refused(e.to_string()))?;
+        .map_err(|e| thrown(e.into()))?;
     if INT::from(p.bank()) != bank {
         return Err(refused(format!(
             "global parameter '{}' is in bank {}, not bank {bank}",
@@ -524,7 +524,7 @@ fn word(what: &str, n: INT) -> Fallible<i32> {
 fn program(sandbox: &Sandbox, path: &str, profile: &Profile) -> Fallible<Vec<Instruction>> {
     let bytes = sandbox
         .read(path, READ_LIMIT)
-        .map_err(|r| refused(r.to_string()))?;
+        .map_err(|r| thrown(r.into()))?;
     asm::load_program(&bytes, path, profile).map_err(|e| {
         let place = match &e {
             LoadError::Source(errors) => errors.errors.first().map(|first| {

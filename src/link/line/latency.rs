@@ -77,7 +77,7 @@ impl Outcome {
 pub fn settle(
     found: Duration,
     keep: bool,
-    lower: impl FnOnce() -> Result<(), String>,
+    lower: impl FnOnce() -> std::io::Result<()>,
     reread: impl FnOnce() -> Option<Duration>,
 ) -> Outcome {
     if found <= LOW {
@@ -86,7 +86,7 @@ pub fn settle(
     if keep {
         return Outcome::Kept(found);
     }
-    let why = lower().err();
+    let why = lower().err().map(|e| e.to_string());
     match reread() {
         Some(now) if now <= LOW => Outcome::Lowered {
             from: found,
@@ -165,7 +165,12 @@ mod tests {
             }
         );
         assert_eq!(
-            settle(ms(16), false, || Err("not a tty".into()), || None),
+            settle(
+                ms(16),
+                false,
+                || Err(std::io::Error::other("not a tty")),
+                || None
+            ),
             Outcome::High {
                 timer: ms(16),
                 why: Some("not a tty".into())

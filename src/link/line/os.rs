@@ -6,8 +6,8 @@
 
 use super::{Counters, ModemLines, Rs485};
 
-/// Why a call did not work: the OS error, in words.
-pub(in crate::link) type OsResult<T> = Result<T, String>;
+/// Why a call did not work: the OS error.
+pub(in crate::link) type OsResult<T> = std::io::Result<T>;
 
 #[cfg(target_os = "linux")]
 pub(in crate::link) use linux::{Os, Saved};
@@ -80,10 +80,6 @@ mod linux {
         reserved: [libc::c_int; 9],
     }
 
-    fn last_error() -> String {
-        std::io::Error::last_os_error().to_string()
-    }
-
     /// The calls on one open port.
     #[derive(Debug, Clone, Copy)]
     pub(in crate::link) struct Os {
@@ -96,12 +92,16 @@ mod linux {
             Os { fd }
         }
 
-        /// `ioctl(fd, request, arg)`, its failure in words.
+        /// `ioctl(fd, request, arg)`, and the OS error when it fails.
         fn ioctl<T>(&self, request: libc::Ioctl, arg: *mut T) -> OsResult<()> {
             // SAFETY: `fd` is an open descriptor the caller owns, and `arg` points to a value
             // of the kernel's structure for `request`, alive for the call.
             let rc = unsafe { libc::ioctl(self.fd, request, arg) };
-            if rc < 0 { Err(last_error()) } else { Ok(()) }
+            if rc < 0 {
+                Err(std::io::Error::last_os_error())
+            } else {
+                Ok(())
+            }
         }
 
         /// Sets the low-latency flag (what the driver does with it is the driver's).
@@ -172,14 +172,14 @@ mod linux {
             let mut termios = std::mem::MaybeUninit::<libc::termios>::uninit();
             // SAFETY: tcgetattr fills the termios it is given; it is read only on success.
             if unsafe { libc::tcgetattr(self.fd, termios.as_mut_ptr()) } < 0 {
-                return Err(last_error());
+                return Err(std::io::Error::last_os_error());
             }
             // SAFETY: initialised by the successful tcgetattr above.
             let mut termios = unsafe { termios.assume_init() };
             termios.c_cflag &= !libc::HUPCL;
             // SAFETY: a termios read from this descriptor, changed in one flag.
             if unsafe { libc::tcsetattr(self.fd, libc::TCSANOW, &termios) } < 0 {
-                return Err(last_error());
+                return Err(std::io::Error::last_os_error());
             }
             Ok(())
         }
@@ -188,7 +188,7 @@ mod linux {
         pub(in crate::link) fn drain(&self) -> OsResult<()> {
             // SAFETY: a plain call on an open descriptor.
             if unsafe { libc::tcdrain(self.fd) } < 0 {
-                return Err(last_error());
+                return Err(std::io::Error::last_os_error());
             }
             Ok(())
         }
@@ -221,7 +221,13 @@ mod linux {
 mod elsewhere {
     use super::{Counters, ModemLines, OsResult, Rs485};
 
-    const NOT_HERE: &str = "not available on this system";
+    /// What every call answers here.
+    fn not_here() -> std::io::Error {
+        std::io::Error::new(
+            std::io::ErrorKind::Unsupported,
+            "not available on this system",
+        )
+    }
 
     /// The calls, none of which this system has here.
     #[derive(Debug, Clone, Copy)]
@@ -237,31 +243,31 @@ mod elsewhere {
         }
 
         pub(in crate::link) fn restore_rs485(&self, _: &Saved) -> OsResult<()> {
-            Err(NOT_HERE.into())
+            Err(not_here())
         }
 
         pub(in crate::link) fn set_low_latency(&self) -> OsResult<()> {
-            Err(NOT_HERE.into())
+            Err(not_here())
         }
 
         pub(in crate::link) fn modem_lines(&self) -> OsResult<ModemLines> {
-            Err(NOT_HERE.into())
+            Err(not_here())
         }
 
         pub(in crate::link) fn set_rs485(&self, _: &Rs485) -> OsResult<()> {
-            Err(NOT_HERE.into())
+            Err(not_here())
         }
 
         pub(in crate::link) fn counters(&self) -> OsResult<Counters> {
-            Err(NOT_HERE.into())
+            Err(not_here())
         }
 
         pub(in crate::link) fn keep_lines_on_close(&self) -> OsResult<()> {
-            Err(NOT_HERE.into())
+            Err(not_here())
         }
 
         pub(in crate::link) fn drain(&self) -> OsResult<()> {
-            Err(NOT_HERE.into())
+            Err(not_here())
         }
     }
 }

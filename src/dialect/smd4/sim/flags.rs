@@ -56,16 +56,16 @@ pub struct QuirkFlags {
     pub flags_without_item: bool,
 }
 
-fn positive(text: &str) -> Result<f64, String> {
+fn positive(text: &str) -> Result<f64, SimStartError> {
     text.parse::<f64>()
         .ok()
         .filter(|x| x.is_finite() && *x > 0.0)
-        .ok_or_else(|| format!("'{text}' is not a positive number"))
+        .ok_or_else(|| SimStartError::NotPositive(text.to_string()))
 }
 
 /// A grid step whose real values the reply check admits: half a step off at most, so at most
 /// twice the data's absolute user/real tolerance.
-fn grid_step(text: &str) -> Result<f64, String> {
+fn grid_step(text: &str) -> Result<f64, SimStartError> {
     let step = positive(text)?;
     let widest = Smd4Spec::builtin()
         .commands
@@ -73,10 +73,7 @@ fn grid_step(text: &str) -> Result<f64, String> {
         .find_map(|c| c.real_tolerance)
         .map_or(f64::INFINITY, |t| 2.0 * t.absolute);
     if step > widest {
-        return Err(format!(
-            "a step of {step} puts real values further from the user value than a drive's \
-             resolution (at most {widest})"
-        ));
+        return Err(SimStartError::GridTooCoarse { step, widest });
     }
     Ok(step)
 }

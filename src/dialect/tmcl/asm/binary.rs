@@ -52,6 +52,13 @@ pub enum BinaryError {
     TooMany(usize),
 }
 
+/// Instructions that make no program file are refused (exit 2).
+impl crate::exit::ExitStatus for BinaryError {
+    fn exit(&self) -> crate::exit::Exit {
+        crate::exit::Exit::Refused
+    }
+}
+
 /// Whether `bytes` start like a program file (as opposed to source text).
 pub fn is_program_file(bytes: &[u8]) -> bool {
     bytes.starts_with(&MAGIC)

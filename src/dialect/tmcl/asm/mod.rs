@@ -167,6 +167,13 @@ pub enum LoadError {
     },
 }
 
+/// A file that does not load is refused before anything is sent.
+impl crate::exit::ExitStatus for LoadError {
+    fn exit(&self) -> crate::exit::Exit {
+        crate::exit::Exit::Refused
+    }
+}
+
 /// A source file's bytes as text: not UTF-8 only in comments (old Windows files), so invalid
 /// bytes are replaced; a byte order mark skipped; CR LF and CR-only line ends (old Mac
 /// editors, TMCL-IDE exports) made LF, so every line is its own.

@@ -58,8 +58,7 @@ pub fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exi
         eprintln!("{warning}");
     }
     if let Some(path) = &args.output {
-        let bytes = asm::write_binary(&program.instructions)
-            .map_err(|e| Failure::new(Exit::Refused, e.to_string()))?;
+        let bytes = asm::write_binary(&program.instructions)?;
         crate::file::write(path, &bytes)
             .map_err(|e| Failure::new(Exit::Refused, format!("cannot write {e}")))?;
     }

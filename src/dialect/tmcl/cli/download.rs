@@ -49,7 +49,7 @@ pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Res
     // The bytes read and checked above, not the file read again.
     let name = args.file.display().to_string();
     let result = load_program(&bytes, &name, &profile)
-        .map_err(|e| SessionError::Failed(Failure::refused(e.to_string())))
+        .map_err(|e| SessionError::Failed(e.into()))
         .and_then(|program| download_and_run(tmcl, &program, args.run));
     for notice in session.take_notices() {
         crate::cli::diagnose(&notice);

@@ -34,8 +34,7 @@ pub fn run(args: &ProfilesArgs, out: &mut dyn Write) -> Result<Exit, Failure> {
             crate::json::write(&json!({ "profiles": all }), out)
         }
         (Some(arg), json) => {
-            let profile =
-                catalogue::resolve(arg).map_err(|e| Failure::new(Exit::Refused, e.to_string()))?;
+            let profile = catalogue::resolve(arg)?;
             if json {
                 crate::json::write(&json!({ "profile": detail_json(&profile) }), out)
             } else {

@@ -268,6 +268,38 @@ impl AsciiWord {
     }
 }
 
+/// A command row whose words name nothing the table knows.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub(crate) enum CommandRowError {
+    /// An operand kind that is not one.
+    #[error("command {number}: unknown operand kind '{kind}'")]
+    Operand {
+        /// The command's number.
+        number: u8,
+        /// The kind as written (with its `?`).
+        kind: String,
+    },
+    /// A `param_use` other than read, write or store.
+    #[error("command {number}: unknown param_use '{word}'")]
+    ParamUse {
+        /// The command's number.
+        number: u8,
+        /// The word as written.
+        word: String,
+    },
+}
+
+impl CommandRowError {
+    /// The number of the command whose row it is.
+    pub(crate) fn number(&self) -> u8 {
+        match self {
+            CommandRowError::Operand { number, .. } | CommandRowError::ParamUse { number, .. } => {
+                *number
+            }
+        }
+    }
+}
+
 /// All commands of a profile.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CommandTable {
@@ -278,7 +310,10 @@ pub struct CommandTable {
 }
 
 impl CommandTable {
-    pub(crate) fn from_rows(rows: &[CommandRow], ascii_words: Vec<String>) -> Result<Self, String> {
+    pub(crate) fn from_rows(
+        rows: &[CommandRow],
+        ascii_words: Vec<String>,
+    ) -> Result<Self, CommandRowError> {
         let mut commands = Vec::with_capacity(rows.len());
         for row in rows {
             let operands = row
@@ -291,8 +326,9 @@ impl CommandTable {
                     };
                     OperandKind::parse(word)
                         .map(|kind| Operand { kind, optional })
-                        .ok_or_else(|| {
-                            format!("command {}: unknown operand kind '{text}'", row.number)
+                        .ok_or_else(|| CommandRowError::Operand {
+                            number: row.number,
+                            kind: text.clone(),
                         })
                 })
                 .collect::<Result<Vec<_>, _>>()?;
@@ -312,10 +348,10 @@ impl CommandTable {
                     Some("write") => Some(ParamUse::Write),
                     Some("store") => Some(ParamUse::Store),
                     Some(other) => {
-                        return Err(format!(
-                            "command {}: unknown param_use '{other}'",
-                            row.number
-                        ));
+                        return Err(CommandRowError::ParamUse {
+                            number: row.number,
+                            word: other.to_string(),
+                        });
                     }
                 },
                 starts_motion: row.starts_motion,

@@ -3,7 +3,7 @@
 //! another parameter, and how its command set differs from the built-in table.
 
 use super::ParamKind;
-use super::commands::CommandTable;
+use super::commands::{CommandRowError, CommandTable};
 use super::load::ProfileFile;
 pub use super::range_when::{Condition, RangeWhen};
 
@@ -212,7 +212,10 @@ pub(crate) fn identity(file: &ProfileFile) -> Identity {
 
 /// The command table of a file without `[[command]]` rows: the built-in one less `[commands]
 /// absent`, plus `[[extra_command]]`, with the ranges of `[[command_range]]`. The checker has passed the numbers and mnemonics.
-pub(crate) fn compose(base: &CommandTable, file: &ProfileFile) -> Result<CommandTable, String> {
+pub(crate) fn compose(
+    base: &CommandTable,
+    file: &ProfileFile,
+) -> Result<CommandTable, CommandRowError> {
     let mut table = base.clone();
     // The built-in table's conditions name the TMCM-142's parameters: they hold for a module
     // whose profile has the parameter named.

@@ -202,6 +202,13 @@ pub enum ProfileError {
     },
 }
 
+/// Tables that cannot be had are refused before anything is sent.
+impl crate::exit::ExitStatus for ProfileError {
+    fn exit(&self) -> crate::exit::Exit {
+        crate::exit::Exit::Refused
+    }
+}
+
 /// Why a parameter name did not resolve.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum LookupError {
@@ -239,6 +246,13 @@ pub enum LookupError {
         /// The profile's module name.
         module: String,
     },
+}
+
+/// A name that fits no parameter is refused before anything is sent.
+impl crate::exit::ExitStatus for LookupError {
+    fn exit(&self) -> crate::exit::Exit {
+        crate::exit::Exit::Refused
+    }
 }
 
 impl Profile {
@@ -293,15 +307,15 @@ impl Profile {
         if !problems.is_empty() {
             return Err(check::render(text, &problems).join("\n"));
         }
-        let at = |place: Vec<check::Step>, message: String| {
-            check::render(text, &[check::Problem::at(place, message)]).join("\n")
+        let at = |place: Vec<check::Step>, message: &dyn std::fmt::Display| {
+            check::render(text, &[check::Problem::at(place, message.to_string())]).join("\n")
         };
         let mut commands = command_table(&file, fallback_commands, at)?;
         family::apply_ascii(&mut commands, &file);
         let (axis, global) = parameters(&file);
         file.snapshot
             .check_names(|ident| axis.iter().chain(&global).any(|p| p.ident == ident))
-            .map_err(|e| at(vec![check::Step::Key("snapshot")], e.to_string()))?;
+            .map_err(|e| at(vec![check::Step::Key("snapshot")], &e))?;
         Ok(Profile {
             module: file.meta.module.clone(),
             axes: file.meta.axes,
@@ -453,25 +467,22 @@ fn expand(row: &ParamRow, kind: ParamKind) -> Vec<Param> {
 fn command_table(
     file: &ProfileFile,
     fallback: Option<&CommandTable>,
-    at: impl Fn(Vec<check::Step>, String) -> String,
+    at: impl Fn(Vec<check::Step>, &dyn std::fmt::Display) -> String,
 ) -> Result<CommandTable, String> {
     if file.command.is_empty() {
         let base = fallback.ok_or_else(|| "no [[command]] rows".to_string())?;
         return family::compose(base, file)
-            .map_err(|message| at(vec![check::Step::Key("extra_command")], message));
+            .map_err(|e| at(vec![check::Step::Key("extra_command")], &e));
     }
     let ascii_words = file.ascii.as_ref().map(|a| a.ascii_only_commands.clone());
-    CommandTable::from_rows(&file.command, ascii_words.unwrap_or_default()).map_err(|message| {
-        // The table names the command by number; numbers are unique by now.
-        let row = file
-            .command
-            .iter()
-            .position(|r| message.starts_with(&format!("command {}:", r.number)));
+    CommandTable::from_rows(&file.command, ascii_words.unwrap_or_default()).map_err(|e| {
+        // The error names the command by number; numbers are unique by now.
+        let row = file.command.iter().position(|r| r.number == e.number());
         let place = match row {
             Some(i) => vec![check::Step::Key("command"), check::Step::Row(i)],
             None => vec![check::Step::Key("command")],
         };
-        at(place, message)
+        at(place, &e)
     })
 }
 

@@ -23,7 +23,7 @@ pub fn load(path: &Path, profile: &Profile) -> Result<Vec<Instruction>, SessionE
     let name = path.display().to_string();
     let bytes = crate::file::read(path, crate::file::READ_LIMIT)
         .map_err(|e| failed(Failure::refused(format!("cannot read {e}"))))?;
-    asm::load_program(&bytes, &name, profile).map_err(|e| failed(Failure::refused(e.to_string())))
+    asm::load_program(&bytes, &name, profile).map_err(failed)
 }
 
 /// Downloads with a progress bar on a terminal, then optionally runs; returns what to tell the

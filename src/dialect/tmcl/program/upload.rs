@@ -215,7 +215,7 @@ pub fn upload_to(
         }
         Output::Binary(path) => {
             let bytes = asm::write_binary(&upload.instructions)
-                .map_err(|e| SessionError::Failed(crate::exit::Failure::refused(e.to_string())))?;
+                .map_err(|e| SessionError::Failed(e.into()))?;
             written(path, &bytes)?;
             Ok(summary(path) + "\n")
         }

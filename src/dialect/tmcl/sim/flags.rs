@@ -27,19 +27,21 @@ pub struct ModuleSpec {
 }
 
 /// `N` or `N:PROFILE`.
-fn module_spec(text: &str) -> Result<ModuleSpec, String> {
+fn module_spec(text: &str) -> Result<ModuleSpec, SimStartError> {
     let (address, profile) = match text.split_once(':') {
         Some((a, p)) => (a.trim(), Some(p.trim())),
         None => (text.trim(), None),
     };
     let address = match address.parse::<i64>() {
         Ok(n @ 1..=255) => n as u8,
-        Ok(n) => return Err(format!("module address {n} is out of range 1..255")),
-        Err(_) => return Err(format!("'{address}' is not a module address (1..255)")),
+        Ok(n) => return Err(SimStartError::AddressRange(n)),
+        Err(_) => return Err(SimStartError::NotAnAddress(address.to_string())),
     };
     let profile = match profile {
-        Some("") => return Err(format!("'{text}' names no profile after the ':'")),
-        Some(name) => Some(catalogue::resolve(Path::new(name)).map_err(|e| e.to_string())?),
+        Some("") => return Err(SimStartError::NoProfile(text.to_string())),
+        Some(name) => Some(
+            catalogue::resolve(Path::new(name)).map_err(|e| SimStartError::Profile(Box::new(e)))?,
+        ),
         None => None,
     };
     Ok(ModuleSpec { address, profile })
@@ -56,16 +58,17 @@ pub enum BootLoaders {
 }
 
 /// `all` (the value of a bare `--boot-loader`) or a list of module addresses.
-fn boot_loaders(text: &str) -> Result<BootLoaders, String> {
+fn boot_loaders(text: &str) -> Result<BootLoaders, SimStartError> {
     if text == "all" {
         return Ok(BootLoaders::All);
     }
     text.split(',')
         .map(|a| match a.trim().parse::<i64>() {
             Ok(n @ 1..=255) => Ok(n as u8),
-            _ => Err(format!(
-                "'{a}' is not a module address (1..255) in --boot-loader={text}"
-            )),
+            _ => Err(SimStartError::BootLoaderAddress {
+                word: a.to_string(),
+                list: text.to_string(),
+            }),
         })
         .collect::<Result<_, _>>()
         .map(BootLoaders::At)
@@ -80,13 +83,16 @@ pub struct SwitchSpec {
     pub position: i64,
 }
 
-fn switch_spec(text: &str) -> Result<SwitchSpec, String> {
+fn switch_spec(text: &str) -> Result<SwitchSpec, SimStartError> {
     let (motor, position) = match text.split_once(':') {
         Some((m, p)) => {
             let motor = m
                 .trim()
                 .parse::<u8>()
-                .map_err(|_| format!("'{m}' is not a motor number (0..255) in '{text}'"))?;
+                .map_err(|_| SimStartError::NotAMotor {
+                    word: m.to_string(),
+                    spec: text.to_string(),
+                })?;
             (Some(motor), p)
         }
         None => (None, text),
@@ -94,7 +100,7 @@ fn switch_spec(text: &str) -> Result<SwitchSpec, String> {
     let position = position
         .trim()
         .parse::<i64>()
-        .map_err(|_| format!("'{position}' is not a position in microsteps"))?;
+        .map_err(|_| SimStartError::NotAPosition(position.into()))?;
     Ok(SwitchSpec { motor, position })
 }
 
