@@ -153,12 +153,12 @@ impl TmclSession {
         if let Some(Op::Command(instruction)) = op {
             self.forget_host(&instruction);
         }
-        self.core.wire.send(&line, format_args!("to {name}"))?;
+        let sent = self.core.wire.send(&line, format_args!("to {name}"))?;
         let timeout = match wait {
             Wait::Optional(wait) => wait,
             Wait::Reply | Wait::Barrier => self.core.options.timeout,
         };
-        let deadline = Instant::now() + timeout;
+        let deadline = sent + timeout;
         let state = self.modules.get(&module);
         let echo_known = state.is_some_and(|m| m.echo_known);
         let echo_required = state.is_some_and(|m| m.echo_known && m.echo != super::Echo::None);
@@ -170,6 +170,10 @@ impl TmclSession {
             // Room for the echo and the line ends around it, taken without growing.
             held: Vec::with_capacity(wire_text.len() + 8),
         };
+        // When the line was last read (at first, when the request went out): bytes that keep
+        // coming cannot hold the exchange past its deadline, and the first wait reads no clock
+        // of its own.
+        let mut read_at = sent;
         loop {
             let found = self.scan(&mut scan, module, echo_required);
             *echoed = scan.echo_seen;
@@ -188,11 +192,12 @@ impl TmclSession {
                 let held = std::mem::take(&mut scan.held);
                 return self.accept(module, text, op, held, found, deadline);
             }
-            if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
+            if read_at >= deadline || !self.core.wire.fill(deadline)? {
                 // After BIN the module may be in binary mode, where a CR would start a frame.
                 let resync_cr = !leaves_ascii(op, text);
                 return Err(self.timed_out(module, timeout, &mut scan, resync_cr));
             }
+            read_at = self.core.wire.heard_at().unwrap_or(deadline);
         }
     }
 
