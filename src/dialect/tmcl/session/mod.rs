@@ -101,6 +101,8 @@ pub struct TmclSession {
     version_host: Option<u8>,
     /// The host address each identified module replies with (see `protocol/host_clash.rs`).
     hosts: BTreeMap<u8, u8>,
+    /// The buffers of ASCII exchanges, kept between them.
+    buffers: ascii::Buffers,
 }
 
 /// How the command line opens a session: what decides its profile and its mode.
@@ -188,6 +190,7 @@ impl TmclSession {
             probing_reset: false,
             version_host: None,
             hosts: BTreeMap::new(),
+            buffers: ascii::Buffers::default(),
         };
         // What another program or module sent just before may sit in a binary receiver: the
         // first frame on a shared line waits for it to fall quiet (a private one has no other).
@@ -287,7 +290,7 @@ impl TmclSession {
                     .notices
                     .push(format!("not validated: {error}"));
                 let sent = line::format_raw(&raw, self.target);
-                self.ascii_request(module, &sent, None)
+                self.ascii_request(module, sent, None)
             }
         }
     }
@@ -338,7 +341,7 @@ impl TmclSession {
             (WireMode::Ascii, Op::Ascii(AsciiWord::Bin)) => self.leave_ascii(module)?,
             (WireMode::Ascii, _) => {
                 let text = format_line(&line, self.target, &profile);
-                self.ascii_request(module, &text, Some(op))
+                self.ascii_request(module, text, Some(op))
                     .map_err(|e| self.after_ascii_silence(module, e))?
             }
             (WireMode::Binary, Op::Command(instruction)) => {
