@@ -64,11 +64,31 @@ impl Scan<'_> {
 }
 
 /// The buffers of ASCII exchanges, kept between them so that a transaction allocates only what
-/// it returns: the line sent (and then each line judged), and the record of its own bytes.
+/// it returns: the line sent (and then each line judged), and the record of its own bytes; and
+/// the last line read as a reply, with what it read as (a polling loop gets the same reply
+/// again and again, and reading one is a pure function of its bytes).
 #[derive(Debug, Default)]
 pub(super) struct Buffers {
     line: Vec<u8>,
     record: Vec<u8>,
+    reply: Option<(Vec<u8>, Option<AsciiReply>)>,
+}
+
+impl Buffers {
+    /// `line` read as a reply ([`parse_reply_bytes`]), the last answer again for the same bytes.
+    fn parse_reply(&mut self, line: &[u8]) -> Option<AsciiReply> {
+        if let Some((last, read)) = &self.reply {
+            if last.as_slice() == line {
+                return *read;
+            }
+        }
+        let read = parse_reply_bytes(line);
+        let (last, kept) = self.reply.get_or_insert_with(|| (Vec::new(), None));
+        last.clear();
+        last.extend_from_slice(line);
+        *kept = read;
+        read
+    }
 }
 
 /// A reply found in the buffer: the reply, its text, and the bytes its line takes.
@@ -295,7 +315,7 @@ impl TmclSession {
     ) -> Result<Option<Found>, SessionError> {
         let c = address_char(module).unwrap_or('?');
         let acceptable = scan.echo_seen || !echo_required;
-        match parse_reply_bytes(line) {
+        match self.buffers.parse_reply(line) {
             Some(reply) if reply.status == Status::PositionReachedEvent => {
                 self.core.wire.notices.push(format!(
                     "{}: target position reached (event)",
