@@ -17,6 +17,12 @@ pub trait Clock: Send + Sync {
     fn real_time_until(&self, target: Duration) -> Option<Duration> {
         Some(target.saturating_sub(self.now()))
     }
+
+    /// When the wall-clock `deadline` falls on this clock, seen at `now` (the clock's time just
+    /// read): as much later than `now` as the deadline is later than the wall clock.
+    fn deadline(&self, now: Duration, deadline: Instant) -> Duration {
+        now + deadline.saturating_duration_since(Instant::now())
+    }
 }
 
 /// Real time.
@@ -47,6 +53,11 @@ impl Clock for SystemClock {
 
     fn wait(&self, duration: Duration) {
         std::thread::sleep(duration);
+    }
+
+    /// The wall clock is this clock: the deadline is read off it, without reading the time.
+    fn deadline(&self, _now: Duration, deadline: Instant) -> Duration {
+        deadline.saturating_duration_since(self.start)
     }
 }
 
@@ -104,5 +115,21 @@ mod tests {
         let clock = SystemClock::new();
         let a = clock.now();
         assert!(clock.now() >= a);
+    }
+
+    #[test]
+    fn a_wall_deadline_falls_as_far_ahead_on_either_clock() {
+        let ahead = Duration::from_secs(3600);
+        let system = SystemClock::new();
+        let now = system.now();
+        let on_system = system.deadline(now, Instant::now() + ahead);
+        assert!(on_system >= now + ahead && on_system <= system.now() + ahead);
+        let manual = ManualClock::new();
+        manual.advance(Duration::from_secs(5));
+        let on_manual = manual.deadline(manual.now(), Instant::now() + ahead);
+        assert!(on_manual <= Duration::from_secs(5) + ahead);
+        assert!(on_manual > Duration::from_secs(5) + ahead - Duration::from_secs(60));
+        let past = Instant::now();
+        assert_eq!(manual.deadline(manual.now(), past), Duration::from_secs(5));
     }
 }

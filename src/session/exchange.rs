@@ -4,8 +4,6 @@
 //! the next one resynchronises first, and a reply followed by more than its line end is line
 //! noise.
 
-use std::time::Instant;
-
 use super::core::SessionCore;
 use super::rx::is_line_break;
 use super::wire::{Peer, Settled, Wire, nothing_benign};
@@ -34,8 +32,8 @@ fn round_trip(
     timeout: std::time::Duration,
 ) -> Result<String, SessionError> {
     let bytes = format!("{line}\r\n");
-    wire.send(bytes.as_bytes(), format_args!("{line}"))?;
-    let deadline = Instant::now() + timeout + wire.wire_time(bytes.len() as u32);
+    let sent = wire.send(bytes.as_bytes(), format_args!("{line}"))?;
+    let deadline = sent + timeout + wire.wire_time(bytes.len() as u32);
     loop {
         let breaks = wire.rx.bytes().iter().take_while(|&&b| is_line_break(b));
         let breaks = breaks.count();

@@ -94,6 +94,12 @@ pub(crate) struct Wire {
     echo: Echo,
     /// The buffer of [`Wire::fill`] and the drain between exchanges, reused.
     scratch: Vec<u8>,
+    /// When the wire was made: a deadline already past, for a read that only looks (the drain
+    /// between exchanges) without reading the clock.
+    made: Instant,
+    /// When the last send went out, until the next read takes it as the start of its first
+    /// wait slice instead of reading the clock again.
+    just_sent: Option<Instant>,
 }
 
 /// How much one read of the link takes at most.
@@ -128,6 +134,8 @@ impl Wire {
             took_all: false,
             echo: Echo::default(),
             scratch: Vec::new(),
+            made: Instant::now(),
+            just_sent: None,
         };
         // What the line said of itself on opening (a latency timer left high, modem lines a
         // port lacks) belongs in the transcript too: a log shared later explains itself.
@@ -153,6 +161,7 @@ impl Wire {
         benign: Benign,
     ) -> Result<(), SessionError> {
         self.in_flight = None;
+        self.just_sent = None;
         self.drain(benign)?;
         if !urgent && self.suspect.covers(peer) {
             self.resync(timeout)?;
@@ -166,6 +175,7 @@ impl Wire {
     /// Ends the exchange started by [`Wire::begin`]: a failed one leaves its peer suspect; what
     /// was discarded becomes one notice per kind.
     pub(crate) fn finish(&mut self, ok: bool) {
+        self.just_sent = None;
         match (self.in_flight.take(), ok) {
             (Some(peer), false) => {
                 self.suspect.add(peer);
@@ -182,15 +192,22 @@ impl Wire {
         self.discards = Discards::default();
     }
 
-    /// Writes bytes to the link and the transcript. The meaning is formatted only when a
-    /// transcript is being written (pass `format_args!`), so it costs nothing otherwise.
-    pub(crate) fn send(&mut self, bytes: &[u8], meaning: impl Display) -> Result<(), SessionError> {
+    /// Writes bytes to the link and the transcript; returns when they went out, from which an
+    /// exchange counts its time-out. The meaning is formatted only when a transcript is being
+    /// written (pass `format_args!`), so it costs nothing otherwise.
+    pub(crate) fn send(
+        &mut self,
+        bytes: &[u8],
+        meaning: impl Display,
+    ) -> Result<Instant, SessionError> {
         self.log(Entry::Sent, bytes, meaning);
         self.took_all = false;
         self.link.send(bytes).map_err(SessionError::from)?;
-        self.last_sent = Some(Instant::now());
+        let sent = Instant::now();
+        self.last_sent = Some(sent);
+        self.just_sent = Some(sent);
         self.sent_for_echo(bytes);
-        Ok(())
+        Ok(sent)
     }
 
     /// Keeps the line idle until nothing was sent or heard on it for `gap` (a module in binary
@@ -255,7 +272,10 @@ impl Wire {
             if interrupt::pending() {
                 return Err(SessionError::Interrupted);
             }
-            let slice_end = until.min(Instant::now() + interrupt::SLICE);
+            // A slice from the send just made is a little shorter than one from now, never
+            // longer; later slices start from the clock.
+            let start = self.just_sent.take().unwrap_or_else(Instant::now);
+            let slice_end = until.min(start + interrupt::SLICE);
             match self.link.recv(buf, slice_end) {
                 Ok(n) => {
                     let heard = Instant::now();
@@ -289,6 +309,11 @@ impl Wire {
                 }
             }
         }
+    }
+
+    /// When bytes last arrived (the last read that took any).
+    pub(crate) fn heard_at(&self) -> Option<Instant> {
+        self.last_heard
     }
 
     /// Whether anything at all has come from the line since it was opened: a session that

@@ -104,8 +104,9 @@ impl Link for SimLink {
         if buf.is_empty() {
             return Ok(0);
         }
-        // The deadline is wall time; the wait happens on the simulation clock. It is read only
-        // when nothing is due yet: a read whose output is there asks the clock once.
+        // The deadline is wall time; the wait happens on the simulation clock. It is placed on
+        // that clock only when nothing is due yet: a read whose output is there asks the clock
+        // once, and so does a look on the wall clock (see `Clock::deadline`).
         let mut until = None;
         loop {
             // Output due now is taken even behind what a full buffer left, so that a read
@@ -122,8 +123,7 @@ impl Link for SimLink {
             if hung {
                 return Err(LinkError::Lost("the simulator hung up".into()));
             }
-            let until = *until
-                .get_or_insert_with(|| now + deadline.saturating_duration_since(Instant::now()));
+            let until = *until.get_or_insert_with(|| self.clock.deadline(now, deadline));
             if now >= until {
                 return Err(LinkError::Timeout);
             }

@@ -63,6 +63,34 @@ impl Scan<'_> {
     }
 }
 
+/// The buffers of ASCII exchanges, kept between them so that a transaction allocates only what
+/// it returns: the line sent (and then each line judged), and the record of its own bytes; and
+/// the last line read as a reply, with what it read as (a polling loop gets the same reply
+/// again and again, and reading one is a pure function of its bytes).
+#[derive(Debug, Default)]
+pub(super) struct Buffers {
+    line: Vec<u8>,
+    record: Vec<u8>,
+    reply: Option<(Vec<u8>, Option<AsciiReply>)>,
+}
+
+impl Buffers {
+    /// `line` read as a reply ([`parse_reply_bytes`]), the last answer again for the same bytes.
+    fn parse_reply(&mut self, line: &[u8]) -> Option<AsciiReply> {
+        if let Some((last, read)) = &self.reply {
+            if last.as_slice() == line {
+                return *read;
+            }
+        }
+        let read = parse_reply_bytes(line);
+        let (last, kept) = self.reply.get_or_insert_with(|| (Vec::new(), None));
+        last.clear();
+        last.extend_from_slice(line);
+        *kept = read;
+        read
+    }
+}
+
 /// A reply found in the buffer: the reply, its text, and the bytes its line takes.
 type Found = (AsciiReply, String, usize);
 
@@ -83,7 +111,7 @@ impl TmclSession {
     pub(super) fn ascii_request(
         &mut self,
         module: u8,
-        text: &str,
+        text: String,
         op: Option<Op>,
     ) -> Result<TmclExchange, SessionError> {
         self.ascii_request_with(module, text, op, Wait::Reply)
@@ -94,17 +122,18 @@ impl TmclSession {
     pub(super) fn ascii_barrier_request(
         &mut self,
         module: u8,
-        text: &str,
+        text: String,
     ) -> Result<TmclExchange, SessionError> {
         self.ascii_request_with(module, text, None, Wait::Barrier)
     }
 
     /// As [`Self::ascii_request`], waiting for what `wait` says. A request puts a barrier on
     /// the line first when an earlier one's reply may still come without an echo to tell it.
+    /// The exchange returned holds `text` as what was sent.
     pub(super) fn ascii_request_with(
         &mut self,
         module: u8,
-        text: &str,
+        text: String,
         op: Option<Op>,
         wait: Wait,
     ) -> Result<TmclExchange, SessionError> {
@@ -116,11 +145,11 @@ impl TmclSession {
         }
         self.ascii_sent = true;
         self.frames_aligned = false;
-        let wire_text = self.spelling(text);
+        let wire_text = self.spelling(&text);
         let optional = matches!(wait, Wait::Optional(_));
         let mut echoed = false;
         let result = self.exchange(module, optional, |s| {
-            s.ascii_exchange(module, text, &wire_text, op, wait, &mut echoed)
+            s.ascii_exchange(module, &text, &wire_text, op, wait, &mut echoed)
         });
         let c = address_char(module).unwrap_or('?');
         match &result {
@@ -134,7 +163,11 @@ impl TmclSession {
                 .unanswered
                 .remember(wire_text.into_owned().into_bytes(), echoed),
         }
-        result
+        // The line typed, not a copy of it.
+        result.map(|exchange| TmclExchange {
+            sent: text,
+            ..exchange
+        })
     }
 
     fn ascii_exchange(
@@ -147,29 +180,38 @@ impl TmclSession {
         echoed: &mut bool,
     ) -> Result<TmclExchange, SessionError> {
         let name = ModuleName(module);
-        let mut line = Vec::with_capacity(wire_text.len() + 1);
+        let mut line = std::mem::take(&mut self.buffers.line);
+        line.clear();
         line.extend_from_slice(wire_text.as_bytes());
         line.push(b'\r');
         if let Some(Op::Command(instruction)) = op {
             self.forget_host(&instruction);
         }
-        self.core.wire.send(&line, format_args!("to {name}"))?;
+        let sent = self.core.wire.send(&line, format_args!("to {name}"))?;
+        self.buffers.line = line;
         let timeout = match wait {
             Wait::Optional(wait) => wait,
             Wait::Reply | Wait::Barrier => self.core.options.timeout,
         };
-        let deadline = Instant::now() + timeout;
+        let deadline = sent + timeout;
         let state = self.modules.get(&module);
         let echo_known = state.is_some_and(|m| m.echo_known);
         let echo_required = state.is_some_and(|m| m.echo_known && m.echo != super::Echo::None);
+        let mut held = std::mem::take(&mut self.buffers.record);
+        held.clear();
+        // Room for the echo and the line ends around it, taken without growing.
+        held.reserve(wire_text.len() + 8);
         let mut scan = Scan {
             sent: wire_text.as_bytes(),
             echo_seen: false,
             in_junk: false,
             barrier: wait == Wait::Barrier,
-            // Room for the echo and the line ends around it, taken without growing.
-            held: Vec::with_capacity(wire_text.len() + 8),
+            held,
         };
+        // When the line was last read (at first, when the request went out): bytes that keep
+        // coming cannot hold the exchange past its deadline, and the first wait reads no clock
+        // of its own.
+        let mut read_at = sent;
         loop {
             let found = self.scan(&mut scan, module, echo_required);
             *echoed = scan.echo_seen;
@@ -188,11 +230,12 @@ impl TmclSession {
                 let held = std::mem::take(&mut scan.held);
                 return self.accept(module, text, op, held, found, deadline);
             }
-            if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
+            if read_at >= deadline || !self.core.wire.fill(deadline)? {
                 // After BIN the module may be in binary mode, where a CR would start a frame.
                 let resync_cr = !leaves_ascii(op, text);
                 return Err(self.timed_out(module, timeout, &mut scan, resync_cr));
             }
+            read_at = self.core.wire.heard_at().unwrap_or(deadline);
         }
     }
 
@@ -249,8 +292,12 @@ impl TmclSession {
                 self.core.wire.discard(used, UNEXPECTED);
                 continue;
             }
-            let line = self.core.wire.rx.bytes()[..end].to_vec();
-            if let Some(found) = self.judge(scan, module, &line, used, echo_required)? {
+            let mut line = std::mem::take(&mut self.buffers.line);
+            line.clear();
+            line.extend_from_slice(&self.core.wire.rx.bytes()[..end]);
+            let judged = self.judge(scan, module, &line, used, echo_required);
+            self.buffers.line = line;
+            if let Some(found) = judged? {
                 return Ok(Some(found));
             }
         }
@@ -268,7 +315,7 @@ impl TmclSession {
     ) -> Result<Option<Found>, SessionError> {
         let c = address_char(module).unwrap_or('?');
         let acceptable = scan.echo_seen || !echo_required;
-        match parse_reply_bytes(line) {
+        match self.buffers.parse_reply(line) {
             Some(reply) if reply.status == Status::PositionReachedEvent => {
                 self.core.wire.notices.push(format!(
                     "{}: target position reached (event)",
@@ -409,9 +456,11 @@ impl TmclSession {
                     &record,
                     format_args!("{c}: {}, value {}", reply.status, reply.value),
                 );
+                self.buffers.record = record;
                 Ok(TmclExchange {
                     module,
-                    sent: text.to_string(),
+                    // Filled in by `ascii_request_with`, which owns the line.
+                    sent: String::new(),
                     op,
                     reply: TmclReply::Status {
                         status: reply.status,
@@ -535,7 +584,11 @@ fn reply_shaped(line: &[u8], c: char) -> bool {
 
 /// Bytes as text, one character per byte (Latin-1), so no byte is lost or merged.
 fn latin1(bytes: &[u8]) -> String {
-    bytes.iter().map(|&b| char::from(b)).collect()
+    // ASCII is the same in both: copied whole.
+    match std::str::from_utf8(bytes) {
+        Ok(text) if bytes.is_ascii() => text.to_owned(),
+        _ => bytes.iter().map(|&b| char::from(b)).collect(),
+    }
 }
 
 /// Whether `line` is a garbled copy of what was sent (same address character, nearly the same

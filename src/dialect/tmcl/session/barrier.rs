@@ -177,7 +177,7 @@ impl TmclSession {
         }
         let text = format!("{c}{ASCII_BARRIER}");
         self.note_barrier(module, &text);
-        match self.ascii_barrier_request(module, &text) {
+        match self.ascii_barrier_request(module, text.clone()) {
             Ok(_) => {
                 self.unanswered.forget(c);
                 Ok(())

@@ -74,7 +74,7 @@ impl TmclSession {
         // echoes.
         self.core.wire.probe_echo();
         let can = self.can_form(|| can::request(&frame));
-        self.core.wire.send(
+        let sent_at = self.core.wire.send(
             &frame,
             format_args!("{sent} to {} in binary{can}", ModuleName(module)),
         )?;
@@ -90,16 +90,19 @@ impl TmclSession {
         if instruction.command == Opcode::FactoryDefaults {
             return Ok(exchange((TmclReply::Nothing, String::new())));
         }
-        let deadline = Instant::now() + self.core.options.timeout;
+        let deadline = sent_at + self.core.options.timeout;
+        // When the line was last read (as in `ascii.rs`).
+        let mut read_at = sent_at;
         loop {
             while let Some(raw) = self.front_frame() {
                 if let Some(answer) = self.take_frame(module, instruction, &raw, deadline)? {
                     return Ok(exchange(answer));
                 }
             }
-            if Instant::now() >= deadline || !self.core.wire.fill(deadline)? {
+            if read_at >= deadline || !self.core.wire.fill(deadline)? {
                 return Err(self.binary_timeout(module));
             }
+            read_at = self.core.wire.heard_at().unwrap_or(deadline);
         }
     }
 

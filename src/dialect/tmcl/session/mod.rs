@@ -14,6 +14,7 @@ mod faces;
 mod guard;
 mod identify;
 mod mode;
+mod prepared;
 mod probe;
 mod relink;
 mod reset;
@@ -101,6 +102,10 @@ pub struct TmclSession {
     version_host: Option<u8>,
     /// The host address each identified module replies with (see `protocol/host_clash.rs`).
     hosts: BTreeMap<u8, u8>,
+    /// The buffers of ASCII exchanges, kept between them.
+    buffers: ascii::Buffers,
+    /// The last ASCII request checked and spelled.
+    prepared: prepared::Prepared,
 }
 
 /// How the command line opens a session: what decides its profile and its mode.
@@ -188,6 +193,8 @@ impl TmclSession {
             probing_reset: false,
             version_host: None,
             hosts: BTreeMap::new(),
+            buffers: ascii::Buffers::default(),
+            prepared: prepared::Prepared::default(),
         };
         // What another program or module sent just before may sit in a binary receiver: the
         // first frame on a shared line waits for it to fall quiet (a private one has no other).
@@ -287,7 +294,7 @@ impl TmclSession {
                     .notices
                     .push(format!("not validated: {error}"));
                 let sent = line::format_raw(&raw, self.target);
-                self.ascii_request(module, &sent, None)
+                self.ascii_request(module, sent, None)
             }
         }
     }
@@ -321,24 +328,40 @@ impl TmclSession {
             op,
         };
         let profile = self.profile_of(module);
-        match validate::validate(&line, &profile, mode) {
-            Ok(warnings) => self
-                .core
-                .wire
-                .notices
-                .extend(warnings.iter().map(ToString::to_string)),
-            Err(error) if self.core.options.validate => return Err(error.into()),
-            Err(error) => self
-                .core
-                .wire
-                .notices
-                .push(format!("not validated: {error}")),
+        // The line checked and spelled the last time, if it is this one (see `prepared.rs`).
+        let known = self
+            .prepared
+            .text(&line, &profile, mode)
+            .map(str::to_string);
+        let mut clean = false;
+        if known.is_none() {
+            match validate::validate(&line, &profile, mode) {
+                Ok(warnings) => {
+                    clean = warnings.is_empty();
+                    self.core
+                        .wire
+                        .notices
+                        .extend(warnings.iter().map(ToString::to_string));
+                }
+                Err(error) if self.core.options.validate => return Err(error.into()),
+                Err(error) => self
+                    .core
+                    .wire
+                    .notices
+                    .push(format!("not validated: {error}")),
+            }
         }
         let exchange = match (wire, op) {
             (WireMode::Ascii, Op::Ascii(AsciiWord::Bin)) => self.leave_ascii(module)?,
             (WireMode::Ascii, _) => {
-                let text = format_line(&line, self.target, &profile);
-                self.ascii_request(module, &text, Some(op))
+                let text = known.unwrap_or_else(|| {
+                    let text = format_line(&line, self.target, &profile);
+                    if clean {
+                        self.prepared.keep(line, &profile, mode, &text);
+                    }
+                    text
+                });
+                self.ascii_request(module, text, Some(op))
                     .map_err(|e| self.after_ascii_silence(module, e))?
             }
             (WireMode::Binary, Op::Command(instruction)) => {

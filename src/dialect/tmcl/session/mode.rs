@@ -338,7 +338,7 @@ impl TmclSession {
         let c = address_char(module).unwrap_or('?');
         let probe = Instruction::new(Opcode::Ggp, 67, 0, 0);
         let text = format!("{c}{}", self.describe_instruction(&probe));
-        let exchange = match self.ascii_request(module, &text, Some(Op::Command(probe))) {
+        let exchange = match self.ascii_request(module, text, Some(Op::Command(probe))) {
             Ok(x) => x,
             Err(SessionError::Timeout { timeout, .. }) => {
                 self.modules.remove(&module);
@@ -414,7 +414,7 @@ impl TmclSession {
         let wait = self.optional_wait(BIN_EXCHANGE_BYTES);
         let result = self.ascii_request_with(
             module,
-            &text,
+            text.clone(),
             Some(Op::Ascii(AsciiWord::Bin)),
             super::ascii::Wait::Optional(wait),
         );

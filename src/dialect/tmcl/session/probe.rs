@@ -89,9 +89,12 @@ impl TmclSession {
         }
         self.ascii_sent = true;
         self.frames_aligned = false;
-        self.core.wire.send(
-            b"\r",
-            "end of line, clears what the probes left in line buffers",
-        )
+        self.core
+            .wire
+            .send(
+                b"\r",
+                "end of line, clears what the probes left in line buffers",
+            )
+            .map(|_| ())
     }
 }

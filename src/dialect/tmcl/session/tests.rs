@@ -892,3 +892,58 @@ fn an_answer_to_136_that_is_no_version_string_picks_no_profile() {
     assert_eq!(s.profile().name, "tmcm-142", "the profile it started with");
     s.close();
 }
+
+/// A session on the built-in simulator in-process, on a manual clock.
+fn on_the_simulator() -> TmclSession {
+    let clock = Arc::new(crate::clock::ManualClock::new());
+    let bus = crate::dialect::tmcl::sim::Bus::builtin();
+    let link = crate::sim::inprocess::SimLink::new(Box::new(bus), clock);
+    TmclSession::open(Box::new(link), Profile::builtin(), options(), None).unwrap()
+}
+
+#[test]
+fn a_repeated_request_gets_each_reply_as_it_comes() {
+    // The spelling and the checks of the last request, and the reading of the last reply, are
+    // kept for a polling loop: what comes back must still be each reply's own.
+    let mut s = on_the_simulator();
+    let gap = Instruction::new(crate::dialect::tmcl::protocol::Opcode::Gap, 4, 0, 0);
+    let sap = |v| Instruction::new(crate::dialect::tmcl::protocol::Opcode::Sap, 4, 0, v);
+    for value in [100, 100, 2047, 100, 0, 0, 1] {
+        s.request(1, sap(value)).unwrap();
+        for _ in 0..2 {
+            let x = s.request(1, gap).unwrap();
+            assert_eq!(x.value(), Some(value));
+            assert_eq!(x.sent, "AGAP 4, 0");
+            assert_eq!(x.raw, format!("BA 100 {value}"));
+        }
+    }
+    // Another module's line, then the same again: spelled for each.
+    let x = s.exchange_line("GAP 4, 0").unwrap();
+    assert_eq!((x.sent.as_str(), x.value()), ("AGAP 4, 0", Some(1)));
+    // A line refused after one that was kept is checked on its own.
+    let x = s.request(
+        1,
+        Instruction::new(crate::dialect::tmcl::protocol::Opcode::Gap, 4, 3, 0),
+    );
+    assert!(
+        matches!(x, Err(SessionError::Refused(_))),
+        "the module has one motor: {x:?}"
+    );
+    s.close();
+}
+
+#[test]
+fn a_request_with_a_warning_warns_each_time() {
+    let mut s = on_the_simulator();
+    let profile = Profile::builtin();
+    let unknown = (0..=255u8)
+        .find(|&n| profile.axis_param(n).is_none())
+        .expect("a number the profile does not describe");
+    let line = format!("GAP {unknown}, 0");
+    for _ in 0..3 {
+        let _ = s.exchange_line(&line);
+        let notices = s.take_notices().join("\n");
+        assert!(notices.contains(&unknown.to_string()), "{notices}");
+    }
+    s.close();
+}

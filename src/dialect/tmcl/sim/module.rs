@@ -32,6 +32,14 @@ impl Sink<'_> {
     }
 }
 
+/// What the ASCII line input reads of the module's settings.
+#[derive(Debug, Clone, Copy)]
+struct LineSettings {
+    address: Option<u8>,
+    echo: Echo,
+    max: usize,
+}
+
 /// A module on the bus.
 pub(crate) struct Module {
     pub machine: Machine,
@@ -46,6 +54,8 @@ pub(crate) struct Module {
     text: String,
     /// The last line read and what it asked for (see [`Module::read_line`]).
     last_line: Option<(String, Result<Op, Status>)>,
+    /// The last reply line sent, as written (see [`Module::send_line`]).
+    last_reply: Option<(AsciiReply, Vec<u8>)>,
 }
 
 impl Module {
@@ -59,6 +69,7 @@ impl Module {
             line: LineInput::new(),
             text: String::new(),
             last_line: None,
+            last_reply: None,
         };
         module.power_up();
         module
@@ -85,9 +96,15 @@ impl Module {
             self.decoder.clear();
         }
         self.last_byte = t;
+        // What the line input needs of the module's settings, read again after each line (a
+        // line may change them: SGP 66, SGP 67).
+        let mut settings = None;
         for &byte in bytes {
             if self.ascii {
-                self.ascii_byte(t, byte, sink);
+                let line = *settings.get_or_insert_with(|| self.line_settings());
+                if self.ascii_byte(t, byte, line, sink) {
+                    settings = None;
+                }
             } else {
                 self.decoder.push(&[byte]);
                 match self.decoder.next_frame() {
@@ -207,16 +224,25 @@ impl Module {
         sink.out.extend_from_slice(&reply);
     }
 
-    fn ascii_byte(&mut self, t: f64, byte: u8, sink: &mut Sink) {
-        let config = self.machine.ascii_config();
-        let cx = Context {
+    /// The module's address character, echo mode and longest line, as its settings are now.
+    fn line_settings(&self) -> LineSettings {
+        LineSettings {
             address: address_char(self.machine.address()).map(|c| c as u8),
-            echo: Echo::from_config(config),
-            quirks: sink.quirks,
+            echo: Echo::from_config(self.machine.ascii_config()),
             max: self.machine.profile.sim.ascii_line_max,
+        }
+    }
+
+    /// One byte in ASCII mode; true when it completed a line for this module (executed).
+    fn ascii_byte(&mut self, t: f64, byte: u8, settings: LineSettings, sink: &mut Sink) -> bool {
+        let cx = Context {
+            address: settings.address,
+            echo: settings.echo,
+            quirks: sink.quirks,
+            max: settings.max,
         };
         if !self.line.feed(byte, &cx, sink.out) {
-            return;
+            return false;
         }
         let mut text = std::mem::take(&mut self.text);
         text.clear();
@@ -233,6 +259,7 @@ impl Module {
             self.decoder.clear();
         }
         self.apply(outcome.effect);
+        true
     }
 
     /// What a line after its address character asks for, or the status it is refused with. The
@@ -308,7 +335,17 @@ impl Module {
             value,
         };
         sink.log(|| format!("module {} -> {:?}", self.machine.slot, reply.format()));
-        reply.write_to(sink.out);
+        // Written once for a polling host that gets the same reply again and again.
+        match &mut self.last_reply {
+            Some((last, written)) if *last == reply => sink.out.extend_from_slice(written),
+            kept => {
+                let (last, written) = kept.get_or_insert_with(|| (reply, Vec::new()));
+                *last = reply;
+                written.clear();
+                reply.write_to(written);
+                sink.out.extend_from_slice(written);
+            }
+        }
         sink.out.extend_from_slice(sink.quirks.reply_end.bytes());
     }
 

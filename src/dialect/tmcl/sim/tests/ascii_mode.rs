@@ -130,3 +130,44 @@ fn quirks_switch_replies_and_endings() {
     assert_eq!(sim.line("ABIN"), "ABIN\n", "echo, then BIN without reply");
     assert_eq!(sim.gap(1), 0);
 }
+
+#[test]
+fn a_line_that_changes_the_echo_or_the_address_rules_the_next_line_of_the_same_write() {
+    // What the line input reads of the settings is read again after each line: one write of
+    // several lines is answered as the same bytes written one at a time.
+    let lines: &[u8] = b"ASGP 67, 0, 32\rAGAP 4, 0\rASGP 67, 0, 16\rAGAP 4, 0\r\
+        ASGP 67, 0, 0\rAGAP 4, 0\rASGP 66, 0, 2\rAGAP 4, 0\rBGAP 4, 0\rBSGP 66, 0, 1\rAGAP 4, 0\r";
+    let mut whole = ascii(0);
+    let at_once = whole.send(lines);
+    let mut bytes = ascii(0);
+    let one_by_one: Vec<u8> = lines.iter().flat_map(|&b| bytes.send(&[b])).collect();
+    assert_eq!(
+        String::from_utf8_lossy(&at_once),
+        String::from_utf8_lossy(&one_by_one)
+    );
+    let text = String::from_utf8(at_once).unwrap();
+    assert!(
+        text.starts_with("ASGP 67, 0, 32\r"),
+        "character echo first: {text}"
+    );
+    assert!(
+        text.contains("\rAGAP 4, 0\rBA 100 1000000\r"),
+        "line echo later: {text}"
+    );
+    assert!(
+        text.contains("BGAP 4, 0\r"),
+        "module 2 after SGP 66: {text}"
+    );
+}
+
+#[test]
+fn a_repeated_reply_is_written_anew_when_anything_in_it_changes() {
+    let mut sim = ascii(0x20);
+    assert_eq!(sim.line("AGAP 4, 0"), "BA 100 1000000\r");
+    assert_eq!(sim.line("AGAP 4, 0"), "BA 100 1000000\r");
+    sim.line("ASAP 4, 0, 7");
+    assert_eq!(sim.line("AGAP 4, 0"), "BA 100 7\r");
+    assert_eq!(sim.line("AGAP 4, 0"), "BA 100 7\r");
+    sim.line("ASGP 76, 0, 8");
+    assert_eq!(sim.line("AGAP 4, 0"), "HA 100 7\r");
+}
