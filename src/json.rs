@@ -10,9 +10,6 @@ use std::io::{self, Write};
 
 pub use serde_json::{Map, Value, json};
 
-/// An object under construction.
-pub type Object = Map<String, Value>;
-
 /// `value` as one line of ASCII JSON (no line end).
 pub fn line(value: &Value) -> String {
     let mut bytes = Vec::new();
@@ -24,11 +21,6 @@ pub fn line(value: &Value) -> String {
 /// Writes `value` as one line of ASCII JSON and a line end: a command's whole `--json` output.
 pub fn write(value: &Value, out: &mut dyn Write) -> io::Result<()> {
     writeln!(out, "{}", line(value))
-}
-
-/// `Some(x)` as its JSON value, `None` as `null`.
-pub fn optional<T: Into<Value>>(value: Option<T>) -> Value {
-    value.map_or(Value::Null, Into::into)
 }
 
 /// serde_json's compact output (which escapes C0 controls), with DEL and every character beyond
@@ -74,11 +66,5 @@ mod tests {
         );
         let back: Value = serde_json::from_str(&line).unwrap();
         assert_eq!(back["raw"], text);
-    }
-
-    #[test]
-    fn an_absent_value_is_null() {
-        assert_eq!(optional::<u8>(None), Value::Null);
-        assert_eq!(optional(Some(3u8)), json!(3));
     }
 }

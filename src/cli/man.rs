@@ -78,11 +78,6 @@ pub const EXAMPLES: &[Example] = &[
     },
 ];
 
-/// Prints the page.
-pub fn run(out: &mut dyn Write) -> io::Result<()> {
-    out.write_all(&render()?)
-}
-
 /// The whole page.
 pub fn render() -> io::Result<Vec<u8>> {
     let mut cmd = super::command();

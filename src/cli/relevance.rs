@@ -14,70 +14,55 @@ use super::connection::ModuleArgs;
 use super::position::{flag, leaf_matches, subcommand_mut, subcommand_path};
 
 /// Shared options a subcommand receives with the group but has no use for: hidden from its help
-/// and refused when given. (subcommand, option ids, why) — the ids are checked by a test.
-const UNUSED: &[(&str, &[&str], &str)] = &[
+/// and refused when given. (subcommands, option ids, why) — the ids are checked by a test.
+const UNUSED: &[(&[&str], &[&str], &str)] = &[
     (
-        "download",
+        &["download"],
         &["no_validate"],
         "a program is checked when it is assembled or loaded",
     ),
     (
-        "download",
+        &["download"],
         &["address", "prefix_comma", "quiet_gap"],
         "it stores TMCL programs",
     ),
     (
-        "upload",
+        &["upload"],
         &["no_validate"],
         "it sends only reads of program memory",
     ),
     (
-        "upload",
+        &["upload"],
         &["address", "prefix_comma", "quiet_gap"],
         "it reads TMCL programs",
     ),
     (
-        "scan",
+        &["scan"],
         &["module", "address"],
         "a scan tries every address in --addresses",
     ),
     (
-        "scan",
+        &["scan"],
         &["no_enter", "stay_ascii", "binary"],
         "a scan finds modules in either mode and leaves each in the mode it was found in",
     ),
     (
-        "scan",
+        &["scan"],
         &["say_module"],
         "a scan names every module it finds",
     ),
     (
-        "scan",
+        &["scan"],
         &["echo"],
         "a scan reads the echo of every module and leaves it as found",
     ),
     (
-        "scan",
+        &["scan", "params", "snapshot save", "snapshot diff"],
         &["no_validate", "quiet_gap"],
         "it sends no typed lines",
     ),
     (
-        "params",
-        &["no_validate", "quiet_gap"],
-        "it sends no typed lines",
-    ),
-    (
-        "snapshot save",
-        &["no_validate", "quiet_gap"],
-        "it sends no typed lines",
-    ),
-    (
-        "snapshot diff",
-        &["no_validate", "quiet_gap"],
-        "it sends no typed lines",
-    ),
-    (
-        "snapshot restore",
+        &["snapshot restore"],
         &["quiet_gap"],
         "it asks for no multi-line replies",
     ),
@@ -92,12 +77,14 @@ const SHOWS_ALL: &str = "config";
 /// Hides the options of [`UNUSED`] from the help of their subcommands (they are still parsed, so
 /// that [`check`] can say why they are refused; clap_complete lists hidden options all the same).
 pub(super) fn hide_unused(mut cmd: Command) -> Command {
-    for (path, ids, _) in UNUSED {
-        let words: Vec<&str> = path.split(' ').collect();
-        cmd = in_subcommand(cmd, &words, &|sub: Command| {
-            ids.iter()
-                .fold(sub, |sub, id| sub.mut_arg(*id, |a| a.hide(true)))
-        });
+    for (paths, ids, _) in UNUSED {
+        for path in *paths {
+            let words: Vec<&str> = path.split(' ').collect();
+            cmd = in_subcommand(cmd, &words, &|sub: Command| {
+                ids.iter()
+                    .fold(sub, |sub, id| sub.mut_arg(*id, |a| a.hide(true)))
+            });
+        }
     }
     cmd
 }
@@ -162,7 +149,7 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
         format!("`tmclsh {words}`")
     };
     for (at, ids, why) in UNUSED {
-        if *at == words {
+        if at.contains(&words) {
             refuse(ids, format!("does not apply to {named}: {why}"));
         }
     }
@@ -170,7 +157,7 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
         for other in all().iter().filter(|d| !std::ptr::eq(**d, chosen)) {
             let why = other.refusal(chosen);
             let ids = other.owned_options();
-            refuse(&ids.iter().map(String::as_str).collect::<Vec<_>>(), why);
+            refuse(&strs(&ids), why);
         }
         for (at, owner) in ONE_DIALECT {
             let owner = crate::dialect::by_name(owner).expect("a listed dialect");
@@ -218,25 +205,13 @@ fn refusals(words: &str, leaf: &ArgMatches) -> Vec<(String, String)> {
         refuse(&LINE_IDS, why.into());
     }
     if words == "params" && !given("values") {
-        let ids = module_ids();
-        let linked: Vec<&str> = ids
-            .iter()
-            .map(String::as_str)
-            .filter(|id| !["protocol", "profile"].contains(id))
-            .collect();
         let why =
             "does not apply to `tmclsh params` without --values: the table comes from the profile";
-        refuse(&linked, why.into());
+        refuse(&strs(&link_ids()), why.into());
     }
     if words == "snapshot diff" && has_value(leaf, "other") {
-        let ids = module_ids();
-        let offline: Vec<&str> = ids
-            .iter()
-            .map(String::as_str)
-            .filter(|id| !["protocol", "profile"].contains(id))
-            .collect();
         refuse(
-            &offline,
+            &strs(&link_ids()),
             "does not apply to comparing two snapshot files".into(),
         );
     }
@@ -279,11 +254,18 @@ fn has_value(matches: &ArgMatches, id: &str) -> bool {
     matches.try_contains_id(id).unwrap_or(false) && matches.value_source(id).is_some()
 }
 
-/// The ids of the shared connection and session options.
-fn module_ids() -> Vec<String> {
+/// The ids as `refuse` takes them.
+fn strs(ids: &[String]) -> Vec<&str> {
+    ids.iter().map(String::as_str).collect()
+}
+
+/// The ids of the shared connection and session options that need a module: all but
+/// `--protocol` and `--profile`, which also choose the tables read offline.
+fn link_ids() -> Vec<String> {
     ModuleArgs::augment_args(Command::new("module"))
         .get_arguments()
         .map(|a| a.get_id().to_string())
+        .filter(|id| !["protocol", "profile"].contains(&id.as_str()))
         .collect()
 }
 
@@ -294,7 +276,10 @@ mod tests {
     #[test]
     fn every_unused_option_names_a_subcommand_and_an_option_it_has() {
         let cmd = <crate::cli::Cli as clap::CommandFactory>::command();
-        for (path, ids, _) in UNUSED {
+        for (path, ids, _) in UNUSED
+            .iter()
+            .flat_map(|(paths, ids, why)| paths.iter().map(move |path| (path, ids, why)))
+        {
             let sub = path
                 .split(' ')
                 .try_fold(&cmd, |cmd, word| cmd.find_subcommand(word))

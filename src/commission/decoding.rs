@@ -47,11 +47,6 @@ impl BitField {
 }
 
 impl Decoding {
-    /// Whether there is nothing to decode.
-    pub fn is_empty(&self) -> bool {
-        self.values.is_empty() && self.bits.is_empty() && self.fields.is_empty()
-    }
-
     /// What `value` means (`9600 baud`; `target position reached, motor standing`; `start-up:
     /// ASCII, echo: line after CR`), if the tables say.
     pub fn explain(&self, value: i64) -> Option<String> {
@@ -100,7 +95,6 @@ mod tests {
         };
         assert_eq!(decoding.explain(1).as_deref(), Some("on"));
         assert_eq!(decoding.explain(2), None);
-        assert!(Decoding::default().is_empty());
         assert_eq!(Decoding::default().explain(0), None);
         let flags = Decoding {
             bits: vec![Bit {

@@ -47,13 +47,13 @@ pub fn explain(this: &Dialect, line: &str, error: SessionError) -> SessionError 
 /// The dialect other than `this` whose scripts call the function `name`, if `this` has no
 /// function of that name.
 pub fn script_dialect(this: &Dialect, name: &str) -> Option<&'static Dialect> {
-    if this.script_functions.iter().any(|f| f.name == name) {
+    if this.script_functions.iter().any(|f| f.name() == name) {
         return None;
     }
     all()
         .iter()
         .copied()
-        .find(|d| *d != this && d.script_functions.iter().any(|f| f.name == name))
+        .find(|d| *d != this && d.script_functions.iter().any(|f| f.name() == name))
 }
 
 /// What to say about a script of `other`'s: "this looks like a TMCL script — add `--protocol

@@ -31,7 +31,7 @@ pub fn names(dialect: &Dialect) -> impl Iterator<Item = &'static str> {
     SHARED
         .iter()
         .chain(dialect.script_functions)
-        .map(|f| f.name)
+        .map(ScriptFn::name)
 }
 
 #[cfg(test)]
@@ -59,13 +59,18 @@ mod tests {
     #[test]
     fn each_function_is_listed_once_per_table() {
         for (title, table) in tables() {
-            let mut names: Vec<&str> = table.iter().map(|f| f.name).collect();
+            let mut names: Vec<&str> = table.iter().map(ScriptFn::name).collect();
             names.sort_unstable();
             let all = names.len();
             names.dedup();
             assert_eq!(names.len(), all, "{title}");
             for f in table {
-                assert!(f.signature.starts_with(f.name), "{f:?}");
+                let name = f.name();
+                assert!(f.signature.contains('('), "{f:?}");
+                assert!(
+                    !name.is_empty() && name.chars().all(|c| c == '_' || c.is_ascii_alphanumeric()),
+                    "{f:?}"
+                );
                 assert!(!f.help.is_empty() && !f.help.contains('\n'), "{f:?}");
             }
         }

@@ -42,9 +42,7 @@ pub enum Section {
 /// One helper command.
 #[derive(Debug, Clone, Copy)]
 pub struct Helper {
-    /// Name without the colon.
-    pub name: &'static str,
-    /// Usage line.
+    /// Usage line: the colon and the name, then the arguments.
     pub usage: &'static str,
     /// One-line description.
     pub summary: &'static str,
@@ -56,17 +54,23 @@ pub struct Helper {
 
 /// A helper (for the tables).
 pub const fn helper(
-    name: &'static str,
     usage: &'static str,
     summary: &'static str,
     arg: ArgKind,
     section: Section,
 ) -> Helper {
     Helper {
-        name,
         usage,
         summary,
         arg,
         section,
+    }
+}
+
+impl Helper {
+    /// Its name without the colon: the usage line's first word.
+    pub fn name(&self) -> &'static str {
+        let word = self.usage.split(' ').next().unwrap_or_default();
+        word.strip_prefix(':').unwrap_or(word)
     }
 }

@@ -72,11 +72,6 @@ struct Open {
 }
 
 impl SerialLink {
-    /// Opens `path` at `baud`, 8N1, no flow control, the line as the system leaves it.
-    pub fn open(path: &str, baud: u32) -> Result<Self, LinkError> {
-        SerialLink::open_with(path, baud, LineOptions::default())
-    }
-
     /// Opens `path` at `baud` with the line settings `options`.
     /// A rate of 0 is refused before the port is opened (the command line refuses it earlier; a
     /// byte would take for ever).
@@ -521,7 +516,9 @@ mod tests {
 
     #[test]
     fn a_rate_of_0_is_refused_before_opening() {
-        let Err(LinkError::Open(message)) = SerialLink::open("/dev/null", 0) else {
+        let Err(LinkError::Open(message)) =
+            SerialLink::open_with("/dev/null", 0, LineOptions::default())
+        else {
             panic!("opened at 0 baud");
         };
         assert!(message.contains("at 0 baud"), "{message}");

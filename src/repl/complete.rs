@@ -20,10 +20,10 @@ fn complete_helper(rest: &str, start: usize, word: &str, grammar: &dyn Grammar) 
     let dialect = grammar.dialect();
     let Some((name, _)) = rest.split_once(' ') else {
         let candidates = helpers::available(dialect)
-            .filter(|h| h.name.starts_with(&rest.to_ascii_lowercase()))
+            .filter(|h| h.name().starts_with(&rest.to_ascii_lowercase()))
             .map(|h| Candidate {
-                display: format!(":{}", h.name),
-                replacement: format!(":{} ", h.name),
+                display: format!(":{}", h.name()),
+                replacement: format!(":{} ", h.name()),
             })
             .collect();
         return Completion::Words { start, candidates };
@@ -53,7 +53,7 @@ fn complete_helper(rest: &str, start: usize, word: &str, grammar: &dyn Grammar) 
         ArgKind::Param => name_candidates(grammar, &lower),
         ArgKind::Topic => {
             let mut topics: Vec<&str> = grammar.topics().to_vec();
-            topics.extend(helpers::available(dialect).map(|h| h.name));
+            topics.extend(helpers::available(dialect).map(|h| h.name()));
             topics.extend(crate::dialect::functions::names(dialect));
             let mut seen = std::collections::HashSet::new();
             topics.retain(|t| seen.insert(*t));

@@ -46,7 +46,7 @@ impl ReplHelper {
             let name = rest.split_whitespace().next().unwrap_or("");
             let dialect = self.grammar.dialect();
             let on_its_way = !rest.contains(char::is_whitespace)
-                && helpers::available(dialect).any(|h| h.name.starts_with(name));
+                && helpers::available(dialect).any(|h| h.name().starts_with(name));
             return match helpers::find(name, dialect) {
                 Ok(_) => Check::Valid,
                 Err(_) if on_its_way => Check::Incomplete,

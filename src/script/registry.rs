@@ -10,81 +10,73 @@ use std::fmt::Write;
 /// A function scripts can call.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ScriptFn {
-    /// Its name.
-    pub name: &'static str,
     /// How it is called, optional arguments in brackets, with what it returns (`-> int`).
     pub signature: &'static str,
     /// What it does, in one line.
     pub help: &'static str,
 }
 
-const fn f(name: &'static str, signature: &'static str, help: &'static str) -> ScriptFn {
-    ScriptFn {
-        name,
-        signature,
-        help,
+const fn f(signature: &'static str, help: &'static str) -> ScriptFn {
+    ScriptFn { signature, help }
+}
+
+impl ScriptFn {
+    /// Its name: the signature up to its parenthesis.
+    pub fn name(&self) -> &'static str {
+        let signature = self.signature;
+        signature
+            .split_once('(')
+            .map_or(signature, |(name, _)| name)
     }
 }
 
 /// The functions every script has, whatever its dialect.
 pub const SHARED: &[ScriptFn] = &[
     f(
-        "test",
         "test(name, || { … })",
         "runs the closure as one named test case: a failure is reported (run --junit), the motors stopped, and the next block runs",
     ),
     f(
-        "assert",
         "assert(condition[, message])",
         "fails the script (exit 1) when the condition is false",
     ),
     f(
-        "assert_eq",
         "assert_eq(a, b[, message])",
         "fails the script (exit 1) unless a equals b (numbers compared as numbers), showing both",
     ),
     f(
-        "assert_near",
         "assert_near(a, b, tolerance)",
         "fails the script (exit 1) unless a and b differ by at most tolerance",
     ),
     f(
-        "wait_until",
         "wait_until(|| condition, timeout_ms)",
         "polls the closure until it is true; a timeout (exit 3) quotes the condition and its last value",
     ),
     f(
-        "sleep",
         "sleep(ms)",
         "waits ms milliseconds (Ctrl-C and --max-time end it)",
     ),
     f(
-        "log",
         "log(message)",
         "writes the message to the transcript (--log), or to stderr without one",
     ),
     f(
-        "exit",
         "exit([value])",
         "ends the script: exit() or exit(0) passes, any other value fails it (exit 1)",
     ),
     f(
-        "snapshot_save",
         "snapshot_save(path) -> int",
         "saves every readable parameter to a new snapshot file; returns how many",
     ),
     f(
-        "snapshot_diff",
         "snapshot_diff(path) -> [#{name, place, file, current, unit}]",
         "compares a snapshot file with the module; returns the settings that differ",
     ),
     f(
-        "snapshot_restore",
         "snapshot_restore(path[, store[, force]]) -> int",
         "writes a snapshot's settings back, each verified; store makes them permanent; returns how many",
     ),
     f(
-        "record_csv",
         "record_csv(path, params, interval_ms, duration_ms) -> int",
         "samples parameters every interval_ms for duration_ms into a new CSV file; returns how many samples",
     ),
@@ -95,7 +87,7 @@ pub fn find<'a>(tables: &[&'a [ScriptFn]], name: &str) -> Option<&'a ScriptFn> {
     tables
         .iter()
         .flat_map(|t| t.iter())
-        .find(|f| f.name == name)
+        .find(|f| f.name() == name)
 }
 
 /// `:help NAME` for a script function: its signature and help.

@@ -107,11 +107,6 @@ impl Sandbox {
         Sandbox { roots, overwrite }
     }
 
-    /// The directories, canonical.
-    pub fn roots(&self) -> &[PathBuf] {
-        &self.roots
-    }
-
     fn inside(&self, path: &Path) -> bool {
         self.roots.iter().any(|root| path.starts_with(root))
     }

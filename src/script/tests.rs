@@ -168,7 +168,7 @@ fn registered(register: impl FnOnce(&mut Engine)) -> Vec<String> {
 }
 
 fn sorted(functions: &[registry::ScriptFn]) -> Vec<String> {
-    let mut names: Vec<String> = functions.iter().map(|f| f.name.to_string()).collect();
+    let mut names: Vec<String> = functions.iter().map(|f| f.name().to_string()).collect();
     names.sort();
     names
 }

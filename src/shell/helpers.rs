@@ -8,91 +8,78 @@ use crate::dialect::{Dialect, all};
 /// The helpers every dialect has (`:params` and `:target` are answered by the dialect).
 pub const SHARED: &[Helper] = &[
     helper(
-        "help",
         ":help [topic]",
         "this help; topics: a command, a parameter, a helper, params, exit, ascii or addressing",
         ArgKind::Topic,
         Section::Session,
     ),
     helper(
-        "params",
         ":params [--values] [--motor N] [filter]",
         "list the module's parameters or settings (matching filter); --values reads them, --motor N (with --values) one motor's",
         ArgKind::Param,
         Section::Session,
     ),
     helper(
-        "target",
         ":target [N|CHAR]",
         "show the module addressed, or address another (TMCL: 2 or B; SMD4: @N, none for no prefix)",
         ArgKind::Module,
         Section::Session,
     ),
     helper(
-        "log",
         ":log FILE|off|time [on|off]",
         "append a transcript of every byte to FILE, or stop; time: the time before each reply",
         ArgKind::File,
         Section::Output,
     ),
     helper(
-        "line",
         ":line",
         "the link's state: rate, modem lines, latency timer, bytes and replies, error counters",
         ArgKind::None,
         Section::Output,
     ),
     helper(
-        "raw",
         ":raw",
         "toggle showing replies exactly as received",
         ArgKind::None,
         Section::Output,
     ),
     helper(
-        "source",
         ":source SCRIPT.rhai [ARGS...]",
         "run a Rhai script against the session (Ctrl-C stops it and the motors)",
         ArgKind::File,
         Section::Tools,
     ),
     helper(
-        "snapshot",
         ":snapshot save|diff|restore FILE",
         "save the module's parameters to a TOML file, compare with one, or write one back",
         ArgKind::Snapshot,
         Section::Tools,
     ),
     helper(
-        "scan",
         ":scan [ADDRESSES] [TIME]",
         "find the modules on the bus (TMCL 1-26 with firmware and echo; SMD4 1-247)",
         ArgKind::Module,
         Section::Tools,
     ),
     helper(
-        "watch",
         ":watch PARAM[,PARAM…] [INTERVAL]",
         "live table of parameters; any key stops, Ctrl-C also stops the motor",
         ArgKind::Param,
         Section::Tools,
     ),
     helper(
-        "record",
         ":record FILE.csv PARAM[,…] [INTERVAL] [DURATION]",
         "sample parameters with timestamps into a CSV file",
         ArgKind::Record,
         Section::Tools,
     ),
     helper(
-        "plot",
         ":plot [FILE.csv]",
         "chart the last recording (or a CSV file) against time",
         ArgKind::File,
         Section::Tools,
     ),
     helper(
-        "quit",
         ":quit",
         "leave, putting the modules back in the mode they were found in",
         ArgKind::None,
@@ -166,12 +153,12 @@ pub enum HelperError {
 /// The helper with this name (without colon), or the unique one it is a prefix of.
 pub fn find(name: &str, dialect: &'static Dialect) -> Result<&'static Helper, HelperError> {
     let name = name.to_ascii_lowercase();
-    if let Some(h) = available(dialect).find(|h| h.name == name) {
+    if let Some(h) = available(dialect).find(|h| h.name() == name) {
         return Ok(h);
     }
     let elsewhere = all()
         .iter()
-        .find(|d| d.helpers.iter().any(|h| h.name == name));
+        .find(|d| d.helpers.iter().any(|h| h.name() == name));
     if let Some(other) = elsewhere {
         return Err(HelperError::Elsewhere {
             name,
@@ -179,17 +166,17 @@ pub fn find(name: &str, dialect: &'static Dialect) -> Result<&'static Helper, He
         });
     }
     let matches: Vec<&Helper> = available(dialect)
-        .filter(|h| h.name.starts_with(&name))
+        .filter(|h| h.name().starts_with(&name))
         .collect();
     match matches.as_slice() {
         [one] => Ok(one),
         [] => {
-            let nearest = crate::suggest::nearest(&name, available(dialect).map(|h| h.name));
+            let nearest = crate::suggest::nearest(&name, available(dialect).map(|h| h.name()));
             Err(HelperError::Unknown { name, nearest })
         }
         many => Err(HelperError::Ambiguous {
             name,
-            candidates: many.iter().map(|h| h.name).collect(),
+            candidates: many.iter().map(|h| h.name()).collect(),
         }),
     }
 }
@@ -202,9 +189,9 @@ mod tests {
 
     #[test]
     fn helpers_resolve_by_name_or_unique_prefix() {
-        assert_eq!(find("params", &TMCL).unwrap().name, "params");
-        assert_eq!(find("par", &TMCL).unwrap().name, "params");
-        assert_eq!(find("QUIT", &SMD4).unwrap().name, "quit");
+        assert_eq!(find("params", &TMCL).unwrap().name(), "params");
+        assert_eq!(find("par", &TMCL).unwrap().name(), "params");
+        assert_eq!(find("QUIT", &SMD4).unwrap().name(), "quit");
         assert!(
             find("r", &TMCL)
                 .unwrap_err()
@@ -217,7 +204,7 @@ mod tests {
                 .to_string()
                 .contains("ambiguous: :raw, :record")
         );
-        assert_eq!(find("ra", &SMD4).unwrap().name, "raw");
+        assert_eq!(find("ra", &SMD4).unwrap().name(), "raw");
         assert_eq!(
             find("prams", &TMCL).unwrap_err().to_string(),
             "unknown helper ':prams' (:help lists them); did you mean :params?"
@@ -250,10 +237,16 @@ mod tests {
     }
 
     #[test]
-    fn every_helper_has_usage_starting_with_its_name() {
+    fn every_helper_s_usage_starts_with_a_colon_and_its_name() {
         let all = SHARED.iter().chain(all().iter().flat_map(|d| d.helpers));
         for h in all {
-            assert!(h.usage.starts_with(&format!(":{}", h.name)), "{}", h.name);
+            assert!(h.usage.starts_with(':'), "{}", h.usage);
+            assert!(!h.name().is_empty(), "{}", h.usage);
+            assert!(
+                h.name().chars().all(|c| c.is_ascii_lowercase()),
+                "{}",
+                h.usage
+            );
         }
     }
 }

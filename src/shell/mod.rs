@@ -101,7 +101,7 @@ impl Shell {
                 helper.usage
             )));
         }
-        match helper.name {
+        match helper.name() {
             "help" => help::write_help(arg, dialect, self.session_ref(), out)?,
             "log" => self.set_log(arg, out)?,
             "raw" => {
@@ -112,7 +112,7 @@ impl Shell {
             "line" => line::write_line_state(self.session(), out)?,
             "snapshot" | "scan" | "watch" | "record" | "plot" => {
                 let session = self.session.as_deref_mut().expect("the session is back");
-                commission::helper(session, &mut self.commission, helper.name, arg, out)?
+                commission::helper(session, &mut self.commission, helper.name(), arg, out)?
             }
             "quit" => return Ok(Flow::Quit),
             "params" if values::values_filter(arg).is_some() => {

@@ -36,16 +36,7 @@ pub struct Faults {
     pub seed: u64,
 }
 
-impl Faults {
-    /// Whether any fault is configured.
-    pub fn any(&self) -> bool {
-        self.drop_rate > 0.0
-            || self.corrupt_rate > 0.0
-            || self.delay_rate > 0.0
-            || self.silent_after.is_some()
-            || self.hangup_after.is_some()
-    }
-}
+impl Faults {}
 
 /// xorshift64*: tiny, fast and deterministic; quality is ample for fault decisions.
 #[derive(Debug, Clone)]
@@ -123,11 +114,6 @@ impl<D: Device> Faulty<D> {
             queue: VecDeque::new(),
             scratch: Vec::new(),
         }
-    }
-
-    /// The wrapped device, mutably.
-    pub fn inner_mut(&mut self) -> &mut D {
-        &mut self.inner
     }
 
     /// Restarts the fault decisions from `seed` and the counts from zero (console `seed N`):

@@ -49,11 +49,6 @@ impl SimLink {
         self
     }
 
-    /// The clock the link runs on.
-    pub fn clock(&self) -> Arc<dyn Clock> {
-        self.clock.clone()
-    }
-
     /// Runs `f` on the device at the current time (set inputs, inspect motion).
     pub fn with_device<R>(&self, f: impl FnOnce(&mut dyn Device, Duration) -> R) -> R {
         let now = self.clock.now();

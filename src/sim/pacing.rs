@@ -46,16 +46,6 @@ impl<D: Device> Paced<D> {
         Duration::from_nanos(bytes * 10 * 1_000_000_000 / self.baud)
     }
 
-    /// The wrapped device.
-    pub fn inner(&self) -> &D {
-        &self.inner
-    }
-
-    /// The wrapped device, mutably.
-    pub fn inner_mut(&mut self) -> &mut D {
-        &mut self.inner
-    }
-
     /// Queues what the inner device sent at `t` for the outgoing line.
     fn collect(&mut self, t: Duration) {
         self.inner.poll_output(t, &mut self.scratch);

@@ -65,7 +65,7 @@ fn row_is_single_spaced(row: &str) -> bool {
 fn no_help_or_usage_line_of_any_helper_has_a_doubled_space() {
     for dialect in tmclsh::dialect::all() {
         let names: Vec<&str> = helpers::available(dialect)
-            .map(|h| h.name)
+            .map(|h| h.name())
             .filter(|&n| n != "quit")
             .collect();
         // The overview, each helper's help, and each helper given arguments it refuses.

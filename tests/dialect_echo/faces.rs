@@ -32,7 +32,7 @@ impl Faces for EchoSession {
         _: &str,
         out: &mut dyn Write,
     ) -> Result<(), SessionError> {
-        match helper.name {
+        match helper.name() {
             "params" => Ok(writeln!(out, "{NO_PARAMS}")?),
             name => Err(SessionError::Usage(format!(
                 ":{name} has nothing to do on the {MODULE}"

@@ -13,7 +13,6 @@ use super::session::EchoSession;
 
 /// The functions [`register`] adds, for `:help`, `run --help` and the other dialects' sessions.
 pub const FUNCTIONS: &[ScriptFn] = &[ScriptFn {
-    name: "echo",
     signature: "echo(text) -> string",
     help: "sends ECHO text; returns what came back",
 }];

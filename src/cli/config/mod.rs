@@ -71,92 +71,66 @@ pub struct Key {
     pub unset: &'static str,
 }
 
+/// A key that sets the option of its own name.
+const fn key(name: &'static str, kind: Kind, example: &'static str, unset: &'static str) -> Key {
+    Key {
+        name,
+        id: name,
+        kind,
+        example,
+        unset,
+    }
+}
+
 /// Every key, in the order `tmclsh config` shows them.
 pub const KEYS: &[Key] = &[
-    Key {
-        name: "port",
-        id: "port",
-        kind: Kind::Text,
-        example: "port = \"/dev/ttyUSB0\" or \"usb:0403:6001\"",
-        unset: "no serial port",
-    },
-    Key {
-        name: "tcp",
-        id: "tcp",
-        kind: Kind::Text,
-        example: "tcp = \"192.168.1.20:4001\"",
-        unset: "no TCP link",
-    },
-    Key {
-        name: "can",
-        id: "can",
-        kind: Kind::Text,
-        example: "can = \"slcan:/dev/ttyACM0\" or \"socketcan:can0\"",
-        unset: "no CAN link",
-    },
-    Key {
-        name: "sim",
-        id: "sim",
-        kind: Kind::Bool,
-        example: "sim = true",
-        unset: "",
-    },
-    Key {
-        name: "baud",
-        id: "baud",
-        kind: Kind::Integer,
-        example: "baud = 115200",
-        unset: "",
-    },
-    Key {
-        name: "protocol",
-        id: "protocol",
-        kind: Kind::Text,
-        example: "protocol = \"smd4\"",
-        unset: "",
-    },
-    Key {
-        name: "profile",
-        id: "profile",
-        kind: Kind::NameOrPath,
-        example: "profile = \"tmcm-1140\" or \"profiles/my-module.toml\"",
-        unset: "the built-in TMCM-142 tables",
-    },
-    Key {
-        name: "module",
-        id: "module",
-        kind: Kind::Integer,
-        example: "module = 2",
-        unset: "",
-    },
-    Key {
-        name: "timeout",
-        id: "timeout",
-        kind: Kind::Integer,
-        example: "milliseconds, timeout = 500",
-        unset: "",
-    },
-    Key {
-        name: "reconnect",
-        id: "reconnect",
-        kind: Kind::Text,
-        example: "reconnect = \"30s\"",
-        unset: "a lost link ends a run that is not interactive (exit 3)",
-    },
-    Key {
-        name: "echo",
-        id: "echo",
-        kind: Kind::Text,
-        example: "echo = \"line\"",
-        unset: "each module's echo as found",
-    },
-    Key {
-        name: "local_echo",
-        id: "local_echo",
-        kind: Kind::Text,
-        example: "local_echo = \"on\" (or \"off\", \"auto\")",
-        unset: "",
-    },
+    key(
+        "port",
+        Kind::Text,
+        "port = \"/dev/ttyUSB0\" or \"usb:0403:6001\"",
+        "no serial port",
+    ),
+    key(
+        "tcp",
+        Kind::Text,
+        "tcp = \"192.168.1.20:4001\"",
+        "no TCP link",
+    ),
+    key(
+        "can",
+        Kind::Text,
+        "can = \"slcan:/dev/ttyACM0\" or \"socketcan:can0\"",
+        "no CAN link",
+    ),
+    key("sim", Kind::Bool, "sim = true", ""),
+    key("baud", Kind::Integer, "baud = 115200", ""),
+    key("protocol", Kind::Text, "protocol = \"smd4\"", ""),
+    key(
+        "profile",
+        Kind::NameOrPath,
+        "profile = \"tmcm-1140\" or \"profiles/my-module.toml\"",
+        "the built-in TMCM-142 tables",
+    ),
+    key("module", Kind::Integer, "module = 2", ""),
+    key("timeout", Kind::Integer, "milliseconds, timeout = 500", ""),
+    key(
+        "reconnect",
+        Kind::Text,
+        "reconnect = \"30s\"",
+        "a lost link ends a run that is not interactive (exit 3)",
+    ),
+    key(
+        "echo",
+        Kind::Text,
+        "echo = \"line\"",
+        "each module's echo as found",
+    ),
+    key(
+        "local_echo",
+        Kind::Text,
+        "local_echo = \"on\" (or \"off\", \"auto\")",
+        "",
+    ),
     Key {
         name: "log_dir",
         id: "log",
@@ -164,41 +138,26 @@ pub const KEYS: &[Key] = &[
         example: "log_dir = \"logs\"",
         unset: "no transcript",
     },
-    Key {
-        name: "dtr",
-        id: "dtr",
-        kind: Kind::Text,
-        example: "dtr = \"off\" (on, off or keep)",
-        unset: "as opening the port sets it",
-    },
-    Key {
-        name: "rts",
-        id: "rts",
-        kind: Kind::Text,
-        example: "rts = \"keep\" (on, off or keep)",
-        unset: "as opening the port sets it",
-    },
-    Key {
-        name: "rs485",
-        id: "rs485",
-        kind: Kind::Bool,
-        example: "rs485 = true",
-        unset: "",
-    },
-    Key {
-        name: "rs485_delay",
-        id: "rs485_delay",
-        kind: Kind::Text,
-        example: "milliseconds, rs485_delay = \"1\" or \"1,2\"",
-        unset: "no delays (RS-485 only when rs485 = true)",
-    },
-    Key {
-        name: "keep_latency",
-        id: "keep_latency",
-        kind: Kind::Bool,
-        example: "keep_latency = true",
-        unset: "",
-    },
+    key(
+        "dtr",
+        Kind::Text,
+        "dtr = \"off\" (on, off or keep)",
+        "as opening the port sets it",
+    ),
+    key(
+        "rts",
+        Kind::Text,
+        "rts = \"keep\" (on, off or keep)",
+        "as opening the port sets it",
+    ),
+    key("rs485", Kind::Bool, "rs485 = true", ""),
+    key(
+        "rs485_delay",
+        Kind::Text,
+        "milliseconds, rs485_delay = \"1\" or \"1,2\"",
+        "no delays (RS-485 only when rs485 = true)",
+    ),
+    key("keep_latency", Kind::Bool, "keep_latency = true", ""),
 ];
 
 /// The values of the configuration files that apply, the project's over the user's.

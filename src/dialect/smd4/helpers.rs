@@ -9,7 +9,6 @@ use crate::session::SessionError;
 
 /// The helpers only SMD4 drives have.
 pub const HELPERS: &[Helper] = &[helper(
-    "flags",
     ":flags",
     "the SFLAGS and EFLAGS bit tables with the drive's current flags",
     ArgKind::None,
@@ -23,7 +22,7 @@ pub fn run(
     arg: &str,
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
-    match helper.name {
+    match helper.name() {
         "params" => {
             let mut any = false;
             for spec in hints::matching(&session.spec().commands, arg) {

@@ -23,32 +23,26 @@ use crate::script::waiting;
 /// the engine).
 pub const FUNCTIONS: &[ScriptFn] = &[
     ScriptFn {
-        name: "send",
         signature: "send(line) -> [string]",
         help: "sends a line as typed; returns the data items, throws on an error code",
     },
     ScriptFn {
-        name: "reply",
         signature: "reply(line) -> #{sflags, eflags, data, error, ok, raw}",
         help: "sends a line as typed; returns the whole reply, never throws on an error code",
     },
     ScriptFn {
-        name: "flags",
         signature: "flags() -> #{sflags, eflags, standby, status, errors}",
         help: "reads SYS:FLAGS with each flag named",
     },
     ScriptFn {
-        name: "wait_standby",
         signature: "wait_standby(timeout_ms)",
         help: "waits until the motor stands still (standby flag); a timeout is exit 3",
     },
     ScriptFn {
-        name: "parse_number",
         signature: "parse_number(item) -> float",
         help: "a reply's data item as a number",
     },
     ScriptFn {
-        name: "target",
         signature: "target(address)",
         help: "addresses another drive on the bus (0..247)",
     },

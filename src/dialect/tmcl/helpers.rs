@@ -16,70 +16,60 @@ use crate::session::SessionError;
 /// The helpers only TMCL modules have.
 pub const HELPERS: &[Helper] = &[
     helper(
-        "echo",
         ":echo char|line|none",
         "set the module's echo (global parameter 67 bits 4/5, keeping bit 0)",
         ArgKind::Echo,
         Section::Session,
     ),
     helper(
-        "run",
         ":run [address]",
         "start the module's stored TMCL program (ASCII RUN, or command 129)",
         ArgKind::Address,
         Section::Module,
     ),
     helper(
-        "stop",
         ":stop",
         "stop the module's TMCL program (ASCII STOP, or command 128)",
         ArgKind::None,
         Section::Module,
     ),
     helper(
-        "step",
         ":step",
         "execute the program's next instruction (command 130)",
         ArgKind::None,
         Section::Module,
     ),
     helper(
-        "reset",
         ":reset",
         "program counter to 0, program stopped (command 131)",
         ArgKind::None,
         Section::Module,
     ),
     helper(
-        "status",
         ":status",
         "application status (135): stopped, running, stepping or reset",
         ArgKind::None,
         Section::Module,
     ),
     helper(
-        "download",
         ":download FILE [--run]",
         "store a program (.tmc source or .bin) in the module, verify it, optionally run it",
         ArgKind::File,
         Section::Module,
     ),
     helper(
-        "upload",
         ":upload [FILE.tmc|FILE.bin]",
         "read the stored program back (command 134): print it as source, or write it",
         ArgKind::File,
         Section::Module,
     ),
     helper(
-        "bin",
         ":bin",
         "leave ASCII mode; lines are then sent as binary frames (direct mode)",
         ArgKind::None,
         Section::Module,
     ),
     helper(
-        "ascii",
         ":ascii",
         "enter ASCII mode again (command 139)",
         ArgKind::None,
@@ -95,7 +85,7 @@ pub fn run(
     out: &mut dyn Write,
 ) -> Result<(), SessionError> {
     let usage = || SessionError::Usage(format!("usage: {}", helper.usage));
-    match helper.name {
+    match helper.name() {
         "params" => params(session, arg, out),
         "target" => target(session, arg, out),
         "echo" => {
@@ -131,7 +121,7 @@ pub fn run(
             write!(out, "{text}")?;
             Ok(())
         }
-        "bin" | "ascii" => switch_mode(session, helper.name == "ascii", out),
+        "bin" | "ascii" => switch_mode(session, helper.name() == "ascii", out),
         other => unreachable!("helper table and TMCL dispatch disagree on :{other}"),
     }
 }

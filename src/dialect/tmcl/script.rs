@@ -24,152 +24,122 @@ use crate::script::waiting;
 /// the engine).
 pub const FUNCTIONS: &[ScriptFn] = &[
     ScriptFn {
-        name: "send",
         signature: "send(line) -> int",
         help: "sends a line as typed in the shell; returns the reply's value, throws on an error status",
     },
     ScriptFn {
-        name: "reply",
         signature: "reply(line) -> #{status, value, ok, raw}",
         help: "sends a line as typed; returns the whole reply, never throws on a device status",
     },
     ScriptFn {
-        name: "gap",
         signature: "gap(param, motor) -> int",
         help: "reads an axis parameter (GAP), given by number or name",
     },
     ScriptFn {
-        name: "sap",
         signature: "sap(param, motor, value)",
         help: "sets an axis parameter (SAP)",
     },
     ScriptFn {
-        name: "stap",
         signature: "stap(param, motor)",
         help: "stores an axis parameter in EEPROM (STAP)",
     },
     ScriptFn {
-        name: "rsap",
         signature: "rsap(param, motor)",
         help: "restores an axis parameter from EEPROM (RSAP)",
     },
     ScriptFn {
-        name: "ggp",
         signature: "ggp(param, bank) -> int",
         help: "reads a global parameter (GGP), given by number or name",
     },
     ScriptFn {
-        name: "sgp",
         signature: "sgp(param, bank, value)",
         help: "sets a global parameter (SGP)",
     },
     ScriptFn {
-        name: "stgp",
         signature: "stgp(param, bank)",
         help: "stores a global parameter in EEPROM (STGP)",
     },
     ScriptFn {
-        name: "rsgp",
         signature: "rsgp(param, bank)",
         help: "restores a global parameter from EEPROM (RSGP)",
     },
     ScriptFn {
-        name: "mvp_abs",
         signature: "mvp_abs(motor, position)",
         help: "moves to an absolute position (MVP ABS)",
     },
     ScriptFn {
-        name: "mvp_rel",
         signature: "mvp_rel(motor, offset)",
         help: "moves by an offset from the target position (MVP REL)",
     },
     ScriptFn {
-        name: "mvp_coord",
         signature: "mvp_coord(motor, n)",
         help: "moves to stored coordinate n (MVP COORD)",
     },
     ScriptFn {
-        name: "ror",
         signature: "ror(motor, velocity)",
         help: "rotates right at a velocity (ROR)",
     },
     ScriptFn {
-        name: "rol",
         signature: "rol(motor, velocity)",
         help: "rotates left at a velocity (ROL)",
     },
     ScriptFn {
-        name: "mst",
         signature: "mst(motor)",
         help: "stops the motor (MST)",
     },
     ScriptFn {
-        name: "rfs_start",
         signature: "rfs_start(motor)",
         help: "starts the reference search (RFS START)",
     },
     ScriptFn {
-        name: "rfs_stop",
         signature: "rfs_stop(motor)",
         help: "stops the reference search (RFS STOP)",
     },
     ScriptFn {
-        name: "rfs_status",
         signature: "rfs_status(motor) -> int",
         help: "the reference search's status: 0 when it has ended (RFS STATUS)",
     },
     ScriptFn {
-        name: "wait_pos",
         signature: "wait_pos(motor, timeout_ms)",
         help: "waits until the motor reaches its target position; a timeout is exit 3",
     },
     ScriptFn {
-        name: "sio",
         signature: "sio(port, bank, value)",
         help: "sets an output (SIO)",
     },
     ScriptFn {
-        name: "gio",
         signature: "gio(port, bank) -> int",
         help: "reads an input or output (GIO)",
     },
     ScriptFn {
-        name: "sco",
         signature: "sco(n, motor, position)",
         help: "stores coordinate n (SCO)",
     },
     ScriptFn {
-        name: "gco",
         signature: "gco(n, motor) -> int",
         help: "reads coordinate n (GCO)",
     },
     ScriptFn {
-        name: "target",
         signature: "target(address)",
         help: "addresses another module on the bus: 1..26 or a letter (\"B\")",
     },
     ScriptFn {
-        name: "firmware_version",
         signature: "firmware_version() -> string",
         help: "the firmware version string (command 136, in binary mode and back)",
     },
     ScriptFn {
-        name: "download",
         signature: "download(path) -> int",
         help: "stores a program (source or program file) in the module, verified; returns how many instructions",
     },
     ScriptFn {
-        name: "program_status",
         signature: "program_status() -> int",
         help: "the stand-alone program's status (135): 0 stopped, 1 running, 2 stepping, 3 reset",
     },
     ScriptFn {
-        name: "run_program",
         signature: "run_program()",
         help: "starts the stored program",
     },
     ScriptFn {
-        name: "stop_program",
         signature: "stop_program()",
         help: "stops the stored program",
     },

@@ -135,11 +135,6 @@ impl Decoder {
             }
         }
     }
-
-    /// Whether part of a line is waiting for its CR.
-    pub fn partial(&self) -> bool {
-        !self.line.is_empty()
-    }
 }
 
 fn lossy(bytes: &[u8]) -> String {

@@ -61,17 +61,6 @@ pub enum Outcome {
     },
 }
 
-impl Outcome {
-    /// The timer now.
-    pub fn timer(&self) -> Duration {
-        match self {
-            Outcome::Low(t) | Outcome::Kept(t) => *t,
-            Outcome::Lowered { to, .. } => *to,
-            Outcome::High { timer, .. } => *timer,
-        }
-    }
-}
-
 /// Decides, from the timer found, whether to set the low-latency flag (`lower`, which returns
 /// the ioctl's error), and reads the timer again after it (`reread`).
 pub fn settle(

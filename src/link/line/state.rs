@@ -64,11 +64,6 @@ pub struct Counters {
 }
 
 impl Counters {
-    /// The errors, summed.
-    pub fn errors(&self) -> u64 {
-        self.frame + self.overrun + self.parity + self.brk + self.buf_overrun
-    }
-
     /// The errors that grew from `before` to `self`, in words (`3 framing errors, 1 overrun`);
     /// `None` when none did.
     pub fn moved_since(&self, before: &Counters) -> Option<String> {
@@ -127,6 +122,5 @@ mod tests {
             Some("3 framing errors, 1 overrun")
         );
         assert_eq!(before.moved_since(&before), None);
-        assert_eq!(after.errors(), 6);
     }
 }

@@ -80,10 +80,10 @@ fn the_script_directory_and_the_working_directory_are_the_roots() {
     let d = dir("roots");
     let sandbox = Sandbox::for_script(&d.join("s.rhai"), &[], false);
     let cwd = std::env::current_dir().unwrap().canonicalize().unwrap();
-    assert_eq!(sandbox.roots(), [d.clone(), cwd]);
+    assert_eq!(sandbox.roots, [d.clone(), cwd]);
     let relative = Sandbox::for_script(Path::new("s.rhai"), std::slice::from_ref(&d), false);
     assert_eq!(
-        relative.roots().len(),
+        relative.roots.len(),
         2,
         "the script's directory is the working one"
     );

@@ -106,7 +106,7 @@ fn a_silent_device_still_executes() {
     let mut out = Vec::new();
     device.poll_output(Duration::ZERO, &mut out);
     assert!(out.is_empty());
-    let motor = device.inner_mut().motor(Duration::ZERO, 1).unwrap();
+    let motor = device.inner.motor(Duration::ZERO, 1).unwrap();
     assert_eq!(motor.target, 1000, "the silent module moved anyway");
 }
 

@@ -262,11 +262,6 @@ impl Smd4Sim {
         self.working.get(&mnemonic.to_ascii_uppercase())
     }
 
-    /// The options the drive was built with.
-    pub fn options(&self) -> &Smd4SimOptions {
-        &self.options
-    }
-
     fn number(&self, mnemonic: &str) -> f64 {
         self.working.get(mnemonic).map_or(0.0, Setting::number)
     }

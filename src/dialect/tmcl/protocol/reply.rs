@@ -37,16 +37,9 @@ impl AsciiReply {
         self.to_string()
     }
 
-    /// The bytes a module sends for this reply, without line ending (the host character as one
-    /// byte, whatever it is).
-    pub fn to_bytes(&self) -> Vec<u8> {
-        let mut bytes = Vec::new();
-        self.write_to(&mut bytes);
-        bytes
-    }
-
-    /// Appends [`AsciiReply::to_bytes`] to `out` (the simulator's reply path, without a buffer
-    /// of its own).
+    /// Appends the bytes a module sends for this reply to `out`, without line ending (the host
+    /// character as one byte, whatever it is; the simulator's reply path, without a buffer of its
+    /// own).
     pub fn write_to(&self, out: &mut Vec<u8>) {
         use std::io::Write as _;
         out.push(host_byte(self.host));
@@ -246,7 +239,8 @@ mod tests {
                 status: Status::Ok,
                 value: -7,
             };
-            let bytes = reply.to_bytes();
+            let mut bytes = Vec::new();
+            reply.write_to(&mut bytes);
             assert_eq!(bytes[0], 0x40u8.wrapping_add(address));
             let parsed = parse_reply_bytes(&bytes);
             if matches!(bytes[0], b'\r' | b'\n') {

@@ -59,9 +59,6 @@ impl LineEnd {
             LineEnd::CrLf => b"\r\n",
         }
     }
-
-    /// The names the command line accepts.
-    pub const NAMES: [&'static str; 4] = ["none", "cr", "lf", "crlf"];
 }
 
 impl FromStr for LineEnd {
