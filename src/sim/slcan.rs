@@ -187,6 +187,16 @@ impl Device for SlcanAdapter {
         self.decoder = Decoder::default();
         self.bus.reconnect()
     }
+
+    /// The bus behind hung up (the console's `hangup`, `--hangup-after`): the adapter goes with it.
+    fn hung_up(&self) -> bool {
+        self.bus.hung_up()
+    }
+
+    /// The console's commands are for the modules and faults behind the adapter.
+    fn control(&mut self, now: Duration, command: &str) -> Option<Result<String, ConsoleError>> {
+        self.bus.control(now, command)
+    }
 }
 
 #[cfg(test)]

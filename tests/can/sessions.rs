@@ -173,3 +173,25 @@ fn can_options_are_refused_where_they_cannot_apply() {
         stderr(&out)
     );
 }
+
+#[test]
+fn the_console_reaches_the_modules_and_faults_behind_the_slcan_adapter() {
+    let mut sim = slcan_sim(&[]);
+    let read = |sim: &Sim| {
+        let out = over_can(sim, &["--value", "-c", "GIO 3, 0"]);
+        assert_eq!(code(&out), 0, "{}", stderr(&out));
+        stdout(&out).trim().to_string()
+    };
+    assert_eq!(read(&sim), "0");
+    let answer = sim.console("input 3 1");
+    assert!(answer.starts_with("ok"), "{answer}");
+    assert_eq!(
+        read(&sim),
+        "1",
+        "the input set on the console is read over CAN"
+    );
+    let answer = sim.console("faults");
+    assert!(answer.starts_with("ok seed"), "{answer}");
+    let answer = sim.console("hangup");
+    assert_eq!(answer, "ok hung up");
+}
