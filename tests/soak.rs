@@ -4,7 +4,7 @@
 //! with a reported error; a different value returned normally is a silent wrong value, and there
 //! must be none. The seed makes each cell replay: `tmclsh sim --seed N` or the console's `seed N`.
 
-mod harness;
+pub(crate) mod harness;
 
 use harness::{
     Counts, Fault, Plan, Target, one_character_changed, one_digit_changed, run_cell,

@@ -65,23 +65,10 @@ pub fn code(output: &Output) -> i32 {
     output.status.code().expect("tmclsh exited normally")
 }
 
-/// A fresh, empty directory in the system temp dir. Process ids wrap (a container's `pid_max` may
-/// be 32768), so a name left by an earlier run is skipped, never reused.
+/// A fresh, empty directory in the system temp dir (the soak harness's, which the benchmark
+/// shares).
 pub fn tempdir() -> std::path::PathBuf {
-    use std::sync::atomic::{AtomicUsize, Ordering};
-    static NEXT: AtomicUsize = AtomicUsize::new(0);
-    loop {
-        let dir = std::env::temp_dir().join(format!(
-            "tmclsh-test-{}-{}",
-            std::process::id(),
-            NEXT.fetch_add(1, Ordering::Relaxed)
-        ));
-        match std::fs::create_dir(&dir) {
-            Ok(()) => return dir,
-            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
-            Err(e) => panic!("cannot create {}: {e}", dir.display()),
-        }
-    }
+    crate::soak::harness::fresh_dir("tmclsh-test")
 }
 
 /// `tmclsh ARGS` in a pseudo-terminal, with extra environment variables.

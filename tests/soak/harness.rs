@@ -655,11 +655,17 @@ fn run_script(bin: &Path, pty: &str, target: Target, script: &Path) -> Command {
 }
 
 fn scratch_dir() -> PathBuf {
+    fresh_dir("tmclsh-soak")
+}
+
+/// A new, empty directory `PREFIX-PID-N` in the system temp dir. Process ids wrap (a container's
+/// `pid_max` may be 32768), so a name an earlier run left is skipped, never reused.
+pub fn fresh_dir(prefix: &str) -> PathBuf {
     use std::sync::atomic::{AtomicUsize, Ordering};
     static NEXT: AtomicUsize = AtomicUsize::new(0);
     loop {
         let dir = std::env::temp_dir().join(format!(
-            "tmclsh-soak-{}-{}",
+            "{prefix}-{}-{}",
             std::process::id(),
             NEXT.fetch_add(1, Ordering::Relaxed)
         ));
