@@ -33,7 +33,7 @@ use crate::dialect::tmcl::protocol::line::{
 };
 use crate::dialect::tmcl::protocol::syntax::parse_line;
 use crate::dialect::tmcl::protocol::validate::{self, Mode};
-use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode};
+use crate::dialect::tmcl::protocol::{Instruction, ModuleName, Opcode, error::InputError};
 use crate::link::Link;
 
 use crate::session::core::{Addresses, SessionCore};
@@ -317,6 +317,16 @@ impl TmclSession {
         }
     }
 
+    /// A line the profile refuses: the refusal, or under `--no-validate` a notice and on.
+    fn invalid(&mut self, error: InputError) -> Result<(), SessionError> {
+        if self.core.options.validate {
+            return Err(error.into());
+        }
+        let notice = format!("not validated: {error}");
+        self.core.wire.notices.push(notice);
+        Ok(())
+    }
+
     fn perform_once(&mut self, module: u8, op: Op) -> Result<TmclExchange, SessionError> {
         let wire = self.contact(module)?;
         let mode = match wire {
@@ -343,12 +353,7 @@ impl TmclSession {
                         .notices
                         .extend(warnings.iter().map(ToString::to_string));
                 }
-                Err(error) if self.core.options.validate => return Err(error.into()),
-                Err(error) => self
-                    .core
-                    .wire
-                    .notices
-                    .push(format!("not validated: {error}")),
+                Err(error) => self.invalid(error)?,
             }
         }
         let exchange = match (wire, op) {
@@ -440,12 +445,7 @@ impl TmclSession {
         };
         match validate::validate(&line, &self.profile_of(module), Mode::Program) {
             Ok(_) => {}
-            Err(error) if self.core.options.validate => return Err(error.into()),
-            Err(error) => self
-                .core
-                .wire
-                .notices
-                .push(format!("not validated: {error}")),
+            Err(error) => self.invalid(error)?,
         }
         self.binary_request(module, instruction)
     }
