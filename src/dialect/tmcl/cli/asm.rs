@@ -27,9 +27,7 @@ pub struct AsmArgs {
 /// Assembles the program: checks it against the profile, prints the listing or writes the
 /// program file.
 pub fn run(args: &AsmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
-    let name = args.file.display().to_string();
-    let bytes = crate::file::read(&args.file, crate::file::READ_LIMIT)
-        .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {e}")))?;
+    let (name, bytes) = super::read_input(&args.file)?;
     if asm::is_program_file(&bytes) {
         return Err(Failure::new(
             Exit::Refused,

@@ -21,9 +21,7 @@ pub struct DisasmArgs {
 /// Turns the program file back into source for the profile, warning of instructions no program
 /// may hold.
 pub fn run(args: &DisasmArgs, profile: &Profile, out: &mut dyn Write) -> Result<Exit, Failure> {
-    let name = args.file.display().to_string();
-    let bytes = crate::file::read(&args.file, crate::file::READ_LIMIT)
-        .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {e}")))?;
+    let (name, bytes) = super::read_input(&args.file)?;
     let instructions = asm::read_binary(&bytes)
         .map_err(|e| Failure::new(Exit::Refused, format!("{name}: {e}")))?;
     let disassembly = asm::disassemble(&instructions, profile);

@@ -9,7 +9,7 @@ use crate::dialect::tmcl::profile::catalogue;
 use crate::dialect::tmcl::program::download::download_and_run;
 use crate::dialect::{Configured, Purpose, tmcl};
 use crate::exit::{Exit, Failure};
-use crate::session::{SessionError, interrupt};
+use crate::session::SessionError;
 
 use crate::cli::connection::{Audience, ModuleArgs};
 
@@ -29,13 +29,7 @@ pub struct DownloadArgs {
 
 /// Runs `download`.
 pub fn run(args: DownloadArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
-    interrupt::install();
-    if !tmcl::is(args.module.protocol()) {
-        return Err(Failure::new(
-            Exit::Refused,
-            "this subcommand works with TMCL modules only",
-        ));
-    }
+    super::start_module_command(&args.module)?;
     // A file that cannot be read, or a program no module could take, is refused before the port
     // is opened.
     let bytes = crate::file::read(&args.file, crate::file::READ_LIMIT)

@@ -8,7 +8,12 @@ pub mod download;
 pub mod profiles;
 pub mod upload;
 
+use std::path::Path;
+
+use crate::cli::connection::ModuleArgs;
 use crate::dialect::Configured;
+use crate::exit::{Exit, Failure};
+use crate::session::interrupt;
 
 use super::profile::Profile;
 
@@ -16,4 +21,25 @@ use super::profile::Profile;
 pub fn profile(configs: &Configured) -> &Profile {
     let tmcl = configs.of(&super::DIALECT);
     super::config::profile(tmcl).expect("TMCL is configured with its profile")
+}
+
+/// What `download` and `upload` do before anything else: take Ctrl-C, and refuse a module of
+/// another protocol.
+fn start_module_command(module: &ModuleArgs) -> Result<(), Failure> {
+    interrupt::install();
+    if super::is(module.protocol()) {
+        Ok(())
+    } else {
+        Err(Failure::new(
+            Exit::Refused,
+            "this subcommand works with TMCL modules only",
+        ))
+    }
+}
+
+/// The file `asm` or `disasm` reads, with the name its messages give it.
+fn read_input(path: &Path) -> Result<(String, Vec<u8>), Failure> {
+    let bytes = crate::file::read(path, crate::file::READ_LIMIT)
+        .map_err(|e| Failure::new(Exit::Refused, format!("cannot read {e}")))?;
+    Ok((path.display().to_string(), bytes))
 }

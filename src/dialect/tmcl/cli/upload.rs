@@ -7,7 +7,6 @@ use std::path::PathBuf;
 use crate::dialect::tmcl::program::upload::{Output, upload_to};
 use crate::dialect::{Configured, Purpose, tmcl};
 use crate::exit::{Exit, Failure};
-use crate::session::interrupt;
 
 use crate::cli::connection::{Audience, ModuleArgs};
 
@@ -27,13 +26,7 @@ pub struct UploadArgs {
 
 /// Runs `upload`.
 pub fn run(args: UploadArgs, configs: &Configured, out: &mut dyn Write) -> Result<Exit, Failure> {
-    interrupt::install();
-    if !tmcl::is(args.module.protocol()) {
-        return Err(Failure::new(
-            Exit::Refused,
-            "this subcommand works with TMCL modules only",
-        ));
-    }
+    super::start_module_command(&args.module)?;
     let output = match &args.output {
         Some(path) => Output::for_file(path).map_err(Failure::from)?,
         None => Output::Print,
