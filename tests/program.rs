@@ -214,3 +214,28 @@ fn a_timer_interrupt_program_counts_on_a_module_with_interrupts() {
     sim.console("advance 1s");
     assert_eq!(lines(&sim, &["GGP 0, 2"]), ["BA 100 20"]);
 }
+
+#[test]
+fn download_and_upload_refuse_an_smd4_drive_named_by_the_environment() {
+    // `--protocol smd4` on the command line is refused by clap's layer; the variable reaches the
+    // subcommand itself, which must refuse before opening anything.
+    for args in [
+        &["download", &test2(), "--sim"][..],
+        &["upload", "--sim"][..],
+    ] {
+        let out = std::process::Command::new(crate::util::bin())
+            .args(args)
+            .env("TMCLSH_PROTOCOL", "smd4")
+            .env("NO_COLOR", "1")
+            .stdin(std::process::Stdio::null())
+            .output()
+            .unwrap();
+        assert_eq!(code(&out), 2, "{args:?}: {}", stderr(&out));
+        assert_eq!(
+            stderr(&out),
+            "tmclsh: this subcommand works with TMCL modules only\n",
+            "{args:?}"
+        );
+        assert_eq!(stdout(&out), "", "{args:?}");
+    }
+}
